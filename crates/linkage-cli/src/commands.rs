@@ -1,0 +1,249 @@
+//! The commands: each returns its whole output as text, or an error message.
+
+use linkage::scene::{Branch, SolverPath};
+use linkage::sweep::{csv_header, csv_row};
+use linkage::synthesis::{DieCutterSpec, crank_rocker, die_cutter, die_cutter_as_printed};
+use linkage::{Kinematics, Mechanism, Solution};
+use serde_json::{Value, json};
+
+use crate::{Command, Format, PathArg, SceneArgs, SynthCommand};
+
+/// Runs one command.
+pub fn run(command: Command) -> Result<String, String> {
+    match command {
+        Command::Sweep {
+            scene,
+            steps,
+            format,
+        } => sweep(&scene, steps, format),
+        Command::At {
+            scene,
+            input_deg,
+            format,
+        } => at(&scene, input_deg, format),
+        Command::Report { scene } => report(&scene),
+        Command::Synth { what } => synth(what),
+    }
+}
+
+fn load(args: &SceneArgs) -> Result<Kinematics, String> {
+    let text = std::fs::read_to_string(&args.scene)
+        .map_err(|e| format!("cannot read scene {}: {e}", args.scene.display()))?;
+    let mut mech =
+        Mechanism::from_ron(&text).map_err(|e| format!("{}: {e}", args.scene.display()))?;
+    if let Some(spec) = &args.branch {
+        apply_branches(&mut mech, spec)?;
+    }
+    if let Some(w) = args.speed_rad_s {
+        if !w.is_finite() {
+            return Err(format!(
+                "--speed-rad-s {w} is invalid: must be a finite number"
+            ));
+        }
+        mech.driver.speed_rad_s = w;
+    }
+    let path = match args.path {
+        PathArg::Auto => mech.solver.path,
+        PathArg::ClosedForm => SolverPath::ClosedForm,
+        PathArg::Newton => SolverPath::Newton,
+    };
+    Kinematics::with_path(mech, path).map_err(|e| e.to_string())
+}
+
+/// `C=left,E=flip`: sides keep the end joints the scene names.
+fn apply_branches(mech: &mut Mechanism, spec: &str) -> Result<(), String> {
+    for item in spec.split(',').filter(|s| !s.is_empty()) {
+        let (point, side) = item.split_once('=').ok_or_else(|| {
+            format!("--branch `{item}`: expected POINT=left|right|along|against|flip")
+        })?;
+        let current = mech
+            .point_index(point)
+            .and_then(|p| mech.branch_for(p).cloned());
+        let ends = match &current {
+            Some(Branch::Left(f, t) | Branch::Right(f, t)) => Some((f.clone(), t.clone())),
+            _ => None,
+        };
+        let branch = match (side.to_ascii_lowercase().as_str(), ends) {
+            ("flip", _) => current.map(|b| b.flipped()).ok_or_else(|| {
+                format!("--branch {point}=flip: the scene gives no branch at `{point}`")
+            })?,
+            ("along", _) => Branch::Along,
+            ("against", _) => Branch::Against,
+            ("left", Some((f, t))) => Branch::Left(f, t),
+            ("right", Some((f, t))) => Branch::Right(f, t),
+            ("left" | "right", None) => {
+                return Err(format!(
+                    "--branch {point}={side}: the scene has no Left/Right branch at `{point}` to reuse its end joints"
+                ));
+            }
+            _ => {
+                return Err(format!(
+                    "--branch `{item}`: side must be left, right, along, against or flip"
+                ));
+            }
+        };
+        mech.set_branch(point, branch).map_err(|e| e.to_string())?;
+    }
+    Ok(())
+}
+
+fn check_finite(values: &[f64], what: &str) -> Result<(), String> {
+    match values.iter().position(|v| !v.is_finite()) {
+        Some(i) => Err(format!(
+            "non-finite value in {what} (column {i}); refusing to print it"
+        )),
+        None => Ok(()),
+    }
+}
+
+fn to_csv(header: &[String], rows: &[Vec<f64>]) -> Result<String, String> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record(header).map_err(|e| e.to_string())?;
+    for r in rows {
+        w.write_record(r.iter().map(|v| format!("{v:e}")))
+            .map_err(|e| e.to_string())?;
+    }
+    String::from_utf8(w.into_inner().map_err(|e| e.to_string())?).map_err(|e| e.to_string())
+}
+
+fn json_text(v: &Value) -> Result<String, String> {
+    serde_json::to_string_pretty(v)
+        .map(|s| s + "\n")
+        .map_err(|e| e.to_string())
+}
+
+fn sweep(args: &SceneArgs, steps: usize, format: Format) -> Result<String, String> {
+    let mut k = load(args)?;
+    let sw = linkage::sweep::sweep(&mut k, steps).map_err(|e| e.to_string())?;
+    let m = k.mechanism();
+    let header = csv_header(m);
+    let rows: Vec<Vec<f64>> = sw
+        .solutions
+        .iter()
+        .zip(&sw.angles)
+        .map(|(s, a)| csv_row(m, s, a))
+        .collect();
+    for r in &rows {
+        check_finite(r, "sweep")?;
+    }
+    for x in &sw.near_singular {
+        eprintln!(
+            "warning: near a dead point/tangency at input {:.4} deg (velocities lose digits)",
+            x.to_degrees()
+        );
+    }
+    match format {
+        Format::Csv => to_csv(&header, &rows),
+        Format::Json => json_text(&json!({
+            "scene": m.name,
+            "solver_path": k.path().label(),
+            "input_speed_rad_s": m.driver.speed_rad_s,
+            "range_rad": sw.range,
+            "near_singular_inputs_rad": sw.near_singular,
+            "columns": header,
+            "rows": rows,
+        })),
+    }
+}
+
+fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<String, String> {
+    let mut k = load(args)?;
+    let s: Solution = k.solve(input_deg.to_radians()).map_err(|e| e.to_string())?;
+    let m = k.mechanism();
+    let angles: Vec<f64> = s.links.iter().map(|l| l.angle_rad()).collect();
+    let header = csv_header(m);
+    let row = csv_row(m, &s, &angles);
+    check_finite(&row, "solution")?;
+    match format {
+        Format::Csv => to_csv(&header, &[row]),
+        Format::Json => {
+            let v2 = |v: &linkage::Vec2| json!([v.x, v.y]);
+            let points: serde_json::Map<String, Value> = m
+                .points
+                .iter()
+                .zip(&s.points)
+                .map(|(p, q)| {
+                    (p.name.clone(), json!({"position": v2(&q.position), "velocity": v2(&q.velocity), "acceleration": v2(&q.acceleration)}))
+                })
+                .collect();
+            let links: serde_json::Map<String, Value> = m
+                .moving_links()
+                .map(|l| {
+                    let lm = &s.links[l];
+                    (m.links[l].name.clone(), json!({"theta": lm.angle_rad(), "omega": lm.omega_rad_s, "alpha": lm.alpha_rad_s2}))
+                })
+                .collect();
+            let polygons = linkage::polygon::polygons(&k, &s);
+            json_text(&json!({
+                "scene": m.name,
+                "solver_path": k.path().label(),
+                "input_rad": s.input_rad,
+                "input_speed_rad_s": s.input_speed_rad_s,
+                "conditioning": s.conditioning,
+                "columns": header,
+                "row": row,
+                "points": points,
+                "links": links,
+                "polygons": polygons,
+                "notes": m.notes,
+            }))
+        }
+    }
+}
+
+fn report(args: &SceneArgs) -> Result<String, String> {
+    let mut k = load(args)?;
+    let r = linkage::analysis::report(&mut k).map_err(|e| e.to_string())?;
+    json_text(&serde_json::to_value(&r).map_err(|e| e.to_string())?)
+}
+
+fn synth(what: SynthCommand) -> Result<String, String> {
+    match what {
+        SynthCommand::CrankRocker {
+            rocker,
+            swing_deg,
+            k,
+            rocker_start_deg,
+            arc_deg,
+            side,
+            scene_out,
+        } => {
+            let choice = arc_deg.map(|a| (a.to_radians(), if side >= 0 { 1 } else { -1 }));
+            let d = crank_rocker(
+                rocker,
+                swing_deg.to_radians(),
+                k,
+                rocker_start_deg.to_radians(),
+                choice,
+            )
+            .map_err(|e| e.to_string())?;
+            if let Some(path) = scene_out {
+                let scene = linkage::synthesis::four_bar_scene(&d, k);
+                let text = scene.to_ron().map_err(|e| e.to_string())?;
+                std::fs::write(&path, text)
+                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+            }
+            json_text(&serde_json::to_value(&d).map_err(|e| e.to_string())?)
+        }
+        SynthCommand::DieCutter {
+            stroke_mm,
+            k,
+            link_mm,
+            rpm,
+            as_printed,
+        } => {
+            let spec = DieCutterSpec {
+                stroke_m: stroke_mm * 1e-3,
+                k,
+                link_m: link_mm * 1e-3,
+                crank_rpm: rpm,
+            };
+            let (scene, _) = match as_printed.as_deref() {
+                Some([ab, bc]) => die_cutter_as_printed(ab * 1e-3, bc * 1e-3, &spec),
+                _ => die_cutter(&spec),
+            }
+            .map_err(|e| e.to_string())?;
+            scene.to_ron().map(|t| t + "\n").map_err(|e| e.to_string())
+        }
+    }
+}

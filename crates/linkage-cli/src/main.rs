@@ -1,0 +1,149 @@
+//! `linkage`: the headless command line over scene files.
+//!
+//! A contract scripts depend on: see README.md, "CLI". Errors go to stderr with a
+//! non-zero exit status and a message naming the cause.
+
+mod commands;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+/// Planar linkage kinematics, analysis and synthesis from scene files.
+#[derive(Parser, Debug)]
+#[command(name = "linkage", version, about)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+/// Output format.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+enum Format {
+    Csv,
+    Json,
+}
+
+/// Solver path.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+enum PathArg {
+    /// Closed form when the chain decomposes into dyads, else Newton.
+    Auto,
+    /// Closed-form Assur dyads.
+    ClosedForm,
+    /// Newton–Raphson on the loop-closure constraints.
+    Newton,
+}
+
+/// Options shared by the commands that solve a scene.
+#[derive(clap::Args, Debug)]
+struct SceneArgs {
+    /// Scene file (RON).
+    scene: PathBuf,
+    /// Override assembly branches: POINT=left|right|along|against|flip[,...]
+    #[arg(long)]
+    branch: Option<String>,
+    /// Solver path.
+    #[arg(long, value_enum, default_value_t = PathArg::Auto)]
+    path: PathArg,
+    /// Input speed in rad/s for velocities (default: the scene's crank speed).
+    #[arg(long)]
+    speed_rad_s: Option<f64>,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// One input cycle (or the assemblable range) as CSV or JSON.
+    Sweep {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// Number of positions.
+        #[arg(long, default_value_t = 360)]
+        steps: usize,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Csv)]
+        format: Format,
+    },
+    /// One position; JSON adds the velocity and acceleration polygon equations.
+    At {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// Input (crank) angle in degrees.
+        #[arg(long, allow_negative_numbers = true)]
+        input_deg: f64,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Json)]
+        format: Format,
+    },
+    /// Assembly range, limit positions, strokes, swings, K, Grashof, transmission angle, toggles (JSON).
+    Report {
+        #[command(flatten)]
+        scene: SceneArgs,
+    },
+    /// Dimensional synthesis.
+    Synth {
+        #[command(subcommand)]
+        what: SynthCommand,
+    },
+}
+
+#[derive(Subcommand, Debug)]
+enum SynthCommand {
+    /// Crank-rocker from rocker length, swing and time ratio K (JSON; --scene-out writes a scene).
+    CrankRocker {
+        /// Rocker length CD, m.
+        #[arg(long)]
+        rocker: f64,
+        /// Rocker swing, degrees.
+        #[arg(long)]
+        swing_deg: f64,
+        /// Time ratio K (> 1).
+        #[arg(long)]
+        k: f64,
+        /// Angle of the first rocker limit position about D, degrees.
+        #[arg(long, default_value_t = 45.0, allow_negative_numbers = true)]
+        rocker_start_deg: f64,
+        /// The free choice: A's angle on the synthesis circle (default: best transmission angle).
+        #[arg(long, allow_negative_numbers = true)]
+        arc_deg: Option<f64>,
+        /// Which mirror circle A lies on when --arc-deg is given (+1 or -1).
+        #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
+        side: i8,
+        /// Write the four-bar as a scene file here.
+        #[arg(long)]
+        scene_out: Option<PathBuf>,
+    },
+    /// The die cutter's toggle six-bar from stroke H, K and CD = CE = L (scene RON on stdout).
+    DieCutter {
+        /// Stroke H, mm.
+        #[arg(long, default_value_t = 50.0)]
+        stroke_mm: f64,
+        /// Time ratio K.
+        #[arg(long, default_value_t = 1.3)]
+        k: f64,
+        /// CD = CE = L, mm.
+        #[arg(long, default_value_t = 600.0)]
+        link_mm: f64,
+        /// Crank speed, rpm.
+        #[arg(long, default_value_t = 50.0)]
+        rpm: f64,
+        /// Build the "as printed" variant with these AB and BC (mm) instead.
+        #[arg(long, num_args = 2, value_names = ["AB_MM", "BC_MM"])]
+        as_printed: Option<Vec<f64>>,
+    },
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match commands::run(cli.command) {
+        Ok(text) => {
+            print!("{text}");
+            ExitCode::SUCCESS
+        }
+        Err(message) => {
+            eprintln!("error: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}

@@ -1,0 +1,721 @@
+//! Analyses of any 1-DOF chain: assembly range, limit positions of every output
+//! (found by Brent root-finding on the output's velocity ratio, bracketed on a grid),
+//! strokes, swings, time ratio K, Grashof class, transmission angle and toggles.
+
+use serde::Serialize;
+
+use crate::closed_form::Group;
+use crate::error::{LinkageError, Result};
+use crate::kinematics::Kinematics;
+use crate::motion::{Solution, Vec2, cross, perp};
+use crate::roots_util::{refine, sign_changes};
+
+const TAU: f64 = std::f64::consts::TAU;
+/// Grid used to bracket roots: 0.5 deg over a full turn.
+const GRID: usize = 720;
+
+/// Input intervals (rad) over which the chain assembles on its branch.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct AssemblyRanges {
+    /// True when the input turns fully (a crank).
+    pub full_rotation: bool,
+    /// Intervals `[start, end]` in rad, ascending within [0, 2π) (end may pass 2π).
+    pub intervals: Vec<[f64; 2]>,
+}
+
+/// Assembly ranges of a closed-form chain (root-finding on the groups' margins).
+/// A Newton-only chain is reported as assembling fully (not checked).
+pub fn assembly_ranges_of(k: &Kinematics) -> AssemblyRanges {
+    let Some(cf) = k.closed_form() else {
+        return AssemblyRanges {
+            full_rotation: true,
+            intervals: vec![[0.0, TAU]],
+        };
+    };
+    let mut links = vec![Default::default(); k.mechanism().links.len()];
+    let mut margin = |x: f64| cf.margin(x, &mut links).0;
+    let xs: Vec<f64> = (0..=GRID).map(|i| TAU * i as f64 / GRID as f64).collect();
+    let ms: Vec<f64> = xs.iter().map(|&x| margin(x)).collect();
+    let roots: Vec<f64> = sign_changes(&ms)
+        .into_iter()
+        .filter_map(|i| refine(xs[i], xs[i + 1], &mut margin))
+        .collect();
+    if roots.is_empty() {
+        let full = ms[0] >= 0.0;
+        return AssemblyRanges {
+            full_rotation: full,
+            intervals: if full { vec![[0.0, TAU]] } else { vec![] },
+        };
+    }
+    // Walk the circle from the first root; an interval starts where the margin rises.
+    let mut intervals = Vec::new();
+    for (n, &r) in roots.iter().enumerate() {
+        let next = if n + 1 < roots.len() {
+            roots[n + 1]
+        } else {
+            roots[0] + TAU
+        };
+        let mid = 0.5 * (r + next);
+        if margin(mid.rem_euclid(TAU)) > 0.0 {
+            intervals.push([r, next]);
+        }
+    }
+    AssemblyRanges {
+        full_rotation: false,
+        intervals,
+    }
+}
+
+/// "the reachable input range is 34.30..117.70 deg" and similar.
+pub fn describe_ranges(r: &AssemblyRanges) -> String {
+    if r.full_rotation {
+        return "the chain assembles at every input angle".into();
+    }
+    if r.intervals.is_empty() {
+        return "the chain assembles at no input angle (check link lengths)".into();
+    }
+    let parts: Vec<String> = r
+        .intervals
+        .iter()
+        .map(|[a, b]| format!("{:.2}..{:.2} deg", a.to_degrees(), b.to_degrees()))
+        .collect();
+    format!("reachable input range: {}", parts.join(" or "))
+}
+
+/// An output whose extremes are sought: a link pinned to ground, or a slider.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Output {
+    /// Angle of a link pinned to ground (other than the input).
+    Rocker {
+        /// Link index.
+        link: usize,
+        /// Link name.
+        name: String,
+    },
+    /// Displacement of a prismatic joint.
+    Slide {
+        /// Index into `Mechanism::sliders`.
+        slider: usize,
+        /// Slider link name.
+        name: String,
+    },
+}
+
+impl Output {
+    /// Display name.
+    pub fn name(&self) -> &str {
+        match self {
+            Self::Rocker { name, .. } | Self::Slide { name, .. } => name,
+        }
+    }
+
+    /// Value at a solution (rad or m; rocker angles in (-π, π]).
+    pub fn value(&self, s: &Solution) -> f64 {
+        match self {
+            Self::Rocker { link, .. } => s.links[*link].angle_rad(),
+            Self::Slide { slider, .. } => s.slides[*slider].displacement_m,
+        }
+    }
+
+    /// Rate at a solution (rad/s or m/s).
+    pub fn rate(&self, s: &Solution) -> f64 {
+        match self {
+            Self::Rocker { link, .. } => s.links[*link].omega_rad_s,
+            Self::Slide { slider, .. } => s.slides[*slider].velocity_m_s,
+        }
+    }
+
+    fn is_angle(&self) -> bool {
+        matches!(self, Self::Rocker { .. })
+    }
+}
+
+/// The outputs of a mechanism: rockers (links pinned to ground), then sliders.
+pub fn outputs(k: &Kinematics) -> Vec<Output> {
+    let m = k.mechanism();
+    let mut out: Vec<Output> = m
+        .moving_links()
+        .filter(|&l| l != m.driver.link)
+        .filter(|&l| {
+            m.revolutes
+                .iter()
+                .any(|r| (r.a == l && r.b == m.ground) || (r.b == l && r.a == m.ground))
+        })
+        .map(|l| Output::Rocker {
+            link: l,
+            name: m.links[l].name.clone(),
+        })
+        .collect();
+    out.extend(m.sliders.iter().enumerate().map(|(i, s)| Output::Slide {
+        slider: i,
+        name: m.links[s.slider].name.clone(),
+    }));
+    out
+}
+
+/// An extreme of one output.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct LimitPosition {
+    /// Input angle, rad.
+    pub input_rad: f64,
+    /// Output name.
+    pub output: String,
+    /// "max" or "min".
+    pub kind: &'static str,
+    /// Output value there (rad or m).
+    pub value: f64,
+}
+
+/// Acute transmission angle summary, rad.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct TransmissionAngle {
+    /// Smallest transmission angle over the cycle (0 = locked, π/2 = ideal).
+    pub min: f64,
+    /// Largest.
+    pub max: f64,
+    /// Input angle where the minimum occurs, rad.
+    pub at: f64,
+    /// Input angle where the maximum occurs, rad.
+    pub at_max: f64,
+    /// The group where the minimum occurs.
+    pub group: String,
+}
+
+/// Grashof classification of a four-bar loop.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Grashof {
+    /// crank-rocker, double-crank, rocker-crank, double-rocker, change-point, triple-rocker.
+    pub class: String,
+    /// s + l ≤ p + q.
+    pub grashof: bool,
+    /// s + l = p + q (within 1e-9 relative).
+    pub change_point: bool,
+    /// Shortest plus longest, m.
+    pub s_plus_l_m: f64,
+    /// The other two, m.
+    pub p_plus_q_m: f64,
+    /// Lengths: ground, input, coupler, output, m.
+    pub lengths_m: [f64; 4],
+    /// Link names in the same order.
+    pub links: [String; 4],
+    /// False: the mechanism is this four-bar; true: the four-bar is its driving loop.
+    pub embedded: bool,
+}
+
+/// A position where an output/input velocity ratio is zero or infinite.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Toggle {
+    /// Input angle, rad.
+    pub input_rad: f64,
+    /// "zero" (a limit of `output`) or "infinite" (a dead point of the input).
+    pub ratio: &'static str,
+    /// The output, or the group that locks.
+    pub output: String,
+    /// Revolute joints whose two links are collinear there (within 0.1 deg).
+    pub collinear_joints: Vec<String>,
+}
+
+/// A near-singular position met during a sweep.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Tangency {
+    /// Input angle, rad.
+    pub input_rad: f64,
+    /// Conditioning there.
+    pub conditioning: f64,
+}
+
+/// Everything `linkage report` prints.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Report {
+    /// Mechanism name.
+    pub name: String,
+    /// Solver path used.
+    pub solver_path: &'static str,
+    /// Assembly ranges, rad.
+    pub assembly_range_rad: Vec<[f64; 2]>,
+    /// Whether the input turns fully.
+    pub full_rotation: bool,
+    /// Limit positions of every output.
+    pub limit_positions: Vec<LimitPosition>,
+    /// Stroke of every slider, m.
+    pub strokes_m: indexmap::IndexMap<String, f64>,
+    /// Swing of every rocker, rad.
+    pub swings_rad: indexmap::IndexMap<String, f64>,
+    /// Time ratio K ≥ 1 of the main output (null when undefined).
+    pub time_ratio: Option<f64>,
+    /// Which output K refers to and which stroke is slower.
+    pub time_ratio_note: Option<String>,
+    /// Grashof class (null when the chain has no driving four-bar loop).
+    pub grashof: Option<Grashof>,
+    /// Transmission angle summary (null when no group has one).
+    pub transmission_angle_rad: Option<TransmissionAngle>,
+    /// Toggle positions.
+    pub toggles: Vec<Toggle>,
+    /// Input speed the scene uses, rad/s.
+    pub input_speed_rad_s: f64,
+    /// Notes from the scene.
+    pub notes: Vec<String>,
+}
+
+/// Evaluates solutions at unit input speed (rates are velocity ratios).
+struct Probe<'a> {
+    k: &'a mut Kinematics,
+    sol: Solution,
+}
+
+impl Probe<'_> {
+    fn at(&mut self, x: f64) -> Option<&Solution> {
+        self.k
+            .solve_into(x, 1.0, &mut self.sol)
+            .ok()
+            .map(|_| &self.sol)
+    }
+}
+
+/// Grid over the assembly ranges: for a full turn one closed loop, else each interval
+/// shrunk by a hair (the ends are dead points where velocities are undefined).
+fn grids(r: &AssemblyRanges, start: f64) -> Vec<Vec<f64>> {
+    if r.full_rotation {
+        return vec![
+            (0..=GRID)
+                .map(|i| start + TAU * i as f64 / GRID as f64)
+                .collect(),
+        ];
+    }
+    r.intervals
+        .iter()
+        .map(|&[a, b]| {
+            let n = ((b - a) / TAU * GRID as f64).ceil().max(16.0) as usize;
+            let eps = 1e-9 * (b - a);
+            (0..=n)
+                .map(|i| a + eps + (b - a - 2.0 * eps) * i as f64 / n as f64)
+                .collect()
+        })
+        .collect()
+}
+
+/// Limit positions of `out` over the assembly ranges, by root-finding on its rate.
+pub fn limit_positions(
+    k: &mut Kinematics,
+    out: &Output,
+    ranges: &AssemblyRanges,
+) -> Vec<LimitPosition> {
+    let start = k.mechanism().driver.start_rad;
+    let mut probe = Probe {
+        sol: k.empty_solution(),
+        k,
+    };
+    let mut found = Vec::new();
+    for xs in grids(ranges, start) {
+        let rates: Vec<f64> = xs
+            .iter()
+            .map(|&x| probe.at(x).map_or(f64::NAN, |s| out.rate(s)))
+            .collect();
+        for i in sign_changes(&rates) {
+            let Some(root) = refine(xs[i], xs[i + 1], |x| {
+                probe.at(x).map_or(f64::NAN, |s| out.rate(s))
+            }) else {
+                continue;
+            };
+            let Some(s) = probe.at(root) else { continue };
+            found.push(LimitPosition {
+                input_rad: root.rem_euclid(TAU),
+                output: out.name().to_string(),
+                kind: if rates[i] > 0.0 { "max" } else { "min" },
+                value: out.value(s),
+            });
+        }
+    }
+    found
+}
+
+/// Range swept by an output: the span between its extremes, including the ends of
+/// limited input ranges; a rocker that turns fully sweeps 2π.
+fn span(
+    k: &mut Kinematics,
+    out: &Output,
+    limits: &[LimitPosition],
+    ranges: &AssemblyRanges,
+) -> f64 {
+    let mut values: Vec<f64> = limits.iter().map(|l| l.value).collect();
+    if !ranges.full_rotation {
+        let mut sol = k.empty_solution();
+        for [a, b] in &ranges.intervals {
+            for x in [*a, *b] {
+                if k.solve_into(x, 0.0, &mut sol).is_ok() {
+                    values.push(out.value(&sol));
+                }
+            }
+        }
+    }
+    if values.is_empty() {
+        return if out.is_angle() { TAU } else { 0.0 };
+    }
+    if out.is_angle() {
+        // Angles: the smallest arc that holds every extreme.
+        let base = values[0];
+        let rel: Vec<f64> = values
+            .iter()
+            .map(|v| (v - base + std::f64::consts::PI).rem_euclid(TAU))
+            .collect();
+        let hi = rel.iter().cloned().fold(f64::MIN, f64::max);
+        let lo = rel.iter().cloned().fold(f64::MAX, f64::min);
+        hi - lo
+    } else {
+        let hi = values.iter().cloned().fold(f64::MIN, f64::max);
+        let lo = values.iter().cloned().fold(f64::MAX, f64::min);
+        hi - lo
+    }
+}
+
+/// Time ratio of an output with exactly two limits on a fully turning input:
+/// slower stroke angle / faster stroke angle, and a note saying which is slower.
+pub fn time_ratio(limits: &[LimitPosition], speed_rad_s: f64) -> Option<(f64, String)> {
+    let [a, b] = limits else { return None };
+    let (max, min) = if a.kind == "max" { (a, b) } else { (b, a) };
+    if max.kind == min.kind {
+        return None;
+    }
+    let rising = if speed_rad_s >= 0.0 {
+        (max.input_rad - min.input_rad).rem_euclid(TAU)
+    } else {
+        (min.input_rad - max.input_rad).rem_euclid(TAU)
+    };
+    let falling = TAU - rising;
+    let k = rising.max(falling) / rising.min(falling);
+    let slower = if rising > falling {
+        "rising (min to max)"
+    } else {
+        "falling (max to min)"
+    };
+    Some((
+        k,
+        format!(
+            "{}: {slower} stroke is slower; crank turns {:.3} deg rising, {:.3} deg falling; \
+             angle between limit positions theta = {:.3} deg",
+            max.output,
+            rising.to_degrees(),
+            falling.to_degrees(),
+            (rising - std::f64::consts::PI).abs().to_degrees()
+        ),
+    ))
+}
+
+/// Grashof class of the four-bar formed by ground, the crank and the first RRR dyad
+/// when that dyad closes on ground.
+pub fn grashof(k: &Kinematics) -> Option<Grashof> {
+    let m = k.mechanism();
+    let cf = k.closed_form()?;
+    let Some(Group::Rrr(g)) = cf.groups.first() else {
+        return None;
+    };
+    let crank = m.driver.link;
+    let (a_on_crank, ground_pin) = if g.a.link == crank && g.c.link == m.ground {
+        (g.a.local, g.c.local)
+    } else {
+        return None;
+    };
+    let pivot = &m.revolutes[m.driver.pivot];
+    let (crank_pivot_local, ground_pivot) = if pivot.a == m.ground {
+        (pivot.b_local, pivot.a_local)
+    } else {
+        (pivot.a_local, pivot.b_local)
+    };
+    let lengths = [
+        (ground_pin - ground_pivot).norm(),
+        (a_on_crank - crank_pivot_local).norm(),
+        g.len_i,
+        g.len_j,
+    ];
+    let names = [m.ground, crank, g.i, g.j].map(|l| m.links[l].name.clone());
+    let mut sorted = lengths;
+    sorted.sort_by(f64::total_cmp);
+    let (s, l) = (sorted[0], sorted[3]);
+    let (sl, pq) = (s + l, sorted[1] + sorted[2]);
+    let change_point = (sl - pq).abs() <= 1e-9 * sl;
+    let shortest = (0..4)
+        .min_by(|&x, &y| lengths[x].total_cmp(&lengths[y]))
+        .unwrap_or(0);
+    let class = if change_point {
+        "change-point"
+    } else if sl > pq {
+        "triple-rocker (non-Grashof)"
+    } else {
+        match shortest {
+            0 => "double-crank (drag link)",
+            1 => "crank-rocker",
+            2 => "double-rocker (Grashof, coupler shortest)",
+            _ => "rocker-crank",
+        }
+    };
+    Some(Grashof {
+        class: class.into(),
+        grashof: sl <= pq || change_point,
+        change_point,
+        s_plus_l_m: sl,
+        p_plus_q_m: pq,
+        lengths_m: lengths,
+        links: names,
+        embedded: m.links.len() != 4 || !m.sliders.is_empty(),
+    })
+}
+
+/// The two lines whose acute angle is a group's transmission angle, with their
+/// angular velocities: RRR: the two links at the inner joint; RRP: the coupler and
+/// the normal of the guide (90° minus the pressure angle).
+fn transmission_lines(k: &Kinematics, g: usize, s: &Solution) -> Option<(Vec2, f64, Vec2, f64)> {
+    let cf = k.closed_form()?;
+    match &cf.groups[g] {
+        Group::Rrr(d) => {
+            let mid = s.links[d.i].world(&d.mid_on_i);
+            let a = s.links[d.a.link].world(&d.a.local);
+            let c = s.links[d.c.link].world(&d.c.local);
+            Some((
+                mid - a,
+                s.links[d.i].omega_rad_s,
+                mid - c,
+                s.links[d.j].omega_rad_s,
+            ))
+        }
+        Group::Rrp(d) => {
+            let mid = s.links[d.j].world(&d.mid_on_j);
+            let a = s.links[d.a.link].world(&d.a.local);
+            let guide = &s.links[d.slide.guide];
+            let u = guide.rotation * d.slide.direction_local;
+            Some((
+                mid - a,
+                s.links[d.i].omega_rad_s,
+                perp(&u),
+                guide.omega_rad_s,
+            ))
+        }
+        _ => None,
+    }
+}
+
+fn acute(l1: &Vec2, l2: &Vec2) -> f64 {
+    cross(l1, l2).abs().atan2(l1.dot(l2).abs())
+}
+
+/// Transmission angle extremes over the assembly ranges (root-finding on the
+/// angle's rate, plus the crossings of 90° and the ends of limited ranges).
+pub fn transmission_angle(
+    k: &mut Kinematics,
+    ranges: &AssemblyRanges,
+) -> Option<TransmissionAngle> {
+    let groups = k.group_count();
+    let start = k.mechanism().driver.start_rad;
+    let names: Vec<String> = (0..groups).map(|g| k.group_name(g)).collect();
+    let mut best: Option<TransmissionAngle> = None;
+    let mut sol = k.empty_solution();
+    for (g, name) in names.iter().enumerate() {
+        let mut candidates: Vec<(f64, f64)> = Vec::new();
+        let eval = |k: &mut Kinematics, x: f64, sol: &mut Solution| -> Option<(f64, f64, f64)> {
+            k.solve_into(x, 1.0, sol).ok()?;
+            let (l1, w1, l2, w2) = transmission_lines(k, g, sol)?;
+            Some((acute(&l1, &l2), w1 - w2, l1.dot(&l2)))
+        };
+        for xs in grids(ranges, start) {
+            let vals: Vec<Option<(f64, f64, f64)>> =
+                xs.iter().map(|&x| eval(k, x, &mut sol)).collect();
+            if vals.iter().all(Option::is_none) {
+                continue;
+            }
+            for (x, v) in xs.iter().zip(&vals) {
+                if let (Some((mu, _, _)), true) = (v, !ranges.full_rotation) {
+                    candidates.push((*x, *mu));
+                }
+            }
+            let rate: Vec<f64> = vals.iter().map(|v| v.map_or(f64::NAN, |t| t.1)).collect();
+            let dot: Vec<f64> = vals.iter().map(|v| v.map_or(f64::NAN, |t| t.2)).collect();
+            for (series, which) in [(rate, 1), (dot, 2)] {
+                for i in sign_changes(&series) {
+                    let root = refine(xs[i], xs[i + 1], |x| {
+                        eval(k, x, &mut sol)
+                            .map_or(f64::NAN, |t| if which == 1 { t.1 } else { t.2 })
+                    });
+                    if let Some(r) = root {
+                        if let Some((mu, _, _)) = eval(k, r, &mut sol) {
+                            candidates.push((r.rem_euclid(TAU), mu));
+                        }
+                    }
+                }
+            }
+            if candidates.is_empty() {
+                // Constant angle (e.g. a rocker whose coupler keeps its angle).
+                if let Some((mu, _, _)) = vals.iter().flatten().next() {
+                    candidates.push((xs[0], *mu));
+                }
+            }
+        }
+        let Some(&(at, min)) = candidates.iter().min_by(|a, b| a.1.total_cmp(&b.1)) else {
+            continue;
+        };
+        let Some(&(at_max, max)) = candidates.iter().max_by(|a, b| a.1.total_cmp(&b.1)) else {
+            continue;
+        };
+        let better = best.as_ref().is_none_or(|b| min < b.min);
+        let best_max = best.as_ref().map_or(max, |b| b.max.max(max));
+        let best_at_max = if best.as_ref().is_none_or(|b| max >= b.max) {
+            at_max
+        } else {
+            best.as_ref().map_or(at_max, |b| b.at_max)
+        };
+        if better {
+            best = Some(TransmissionAngle {
+                min,
+                max: best_max,
+                at,
+                at_max: best_at_max,
+                group: name.clone(),
+            });
+        } else if let Some(b) = &mut best {
+            b.max = best_max;
+            b.at_max = best_at_max;
+        }
+    }
+    best
+}
+
+/// Points where two moving links meet and lie on one line (within `tol_rad`): each
+/// link's direction is taken from the point to its next joint point.
+pub fn collinear_joints(k: &Kinematics, s: &Solution, tol_rad: f64) -> Vec<String> {
+    let m = k.mechanism();
+    let other_joint = |link: usize, not: usize| -> Option<Vec2> {
+        m.links[link]
+            .points
+            .iter()
+            .find(|(p, _)| *p != not && m.revolutes.iter().any(|r| r.point == *p))
+            .map(|(_, local)| s.links[link].world(local))
+    };
+    let mut found = Vec::new();
+    for (pi, point) in m.points.iter().enumerate() {
+        let users: Vec<usize> = m
+            .moving_links()
+            .filter(|&l| m.links[l].local(pi).is_some())
+            .collect();
+        for (n, &a) in users.iter().enumerate() {
+            for &b in &users[n + 1..] {
+                let j = s.points[pi].position;
+                let (Some(pa), Some(pb)) = (other_joint(a, pi), other_joint(b, pi)) else {
+                    continue;
+                };
+                let angle = acute(&(pa - j), &(pb - j));
+                if angle <= tol_rad {
+                    found.push(format!(
+                        "{} ({}-{}, {:.4} deg)",
+                        point.name,
+                        m.links[a].name,
+                        m.links[b].name,
+                        angle.to_degrees()
+                    ));
+                }
+            }
+        }
+    }
+    found
+}
+
+/// The full report of `linkage report`.
+pub fn report(k: &mut Kinematics) -> Result<Report> {
+    let ranges = assembly_ranges_of(k);
+    if ranges.intervals.is_empty() {
+        return Err(LinkageError::CannotAssemble {
+            input_deg: k.mechanism().driver.start_rad.to_degrees(),
+            reason: "no input angle assembles the chain".into(),
+            reachable: describe_ranges(&ranges),
+        });
+    }
+    let outs = outputs(k);
+    let mut all_limits = Vec::new();
+    let mut strokes_m = indexmap::IndexMap::new();
+    let mut swings_rad = indexmap::IndexMap::new();
+    let mut per_output = Vec::new();
+    for out in &outs {
+        let limits = limit_positions(k, out, &ranges);
+        let sp = span(k, out, &limits, &ranges);
+        match out {
+            Output::Rocker { .. } => swings_rad.insert(out.name().to_string(), sp),
+            Output::Slide { .. } => strokes_m.insert(out.name().to_string(), sp),
+        };
+        all_limits.extend(limits.iter().cloned());
+        per_output.push((out.clone(), limits));
+    }
+    let m = k.mechanism();
+    let main_link = m.output;
+    let main = per_output
+        .iter()
+        .find(|entry| match &entry.0 {
+            Output::Rocker { link, .. } => *link == main_link,
+            Output::Slide { slider, .. } => m.sliders[*slider].slider == main_link,
+        })
+        .or(per_output.first());
+    let speed = m.driver.speed_rad_s;
+    let (time_ratio, time_ratio_note) = match main {
+        Some((_, limits)) if ranges.full_rotation => match time_ratio(limits, speed) {
+            Some((kk, note)) => (Some(kk), Some(note)),
+            None => (
+                None,
+                Some("the main output does not have exactly two limit positions".into()),
+            ),
+        },
+        _ => (
+            None,
+            Some("the input does not turn fully, so no time ratio".into()),
+        ),
+    };
+    let mut toggles = Vec::new();
+    let mut sol = k.empty_solution();
+    for lp in &all_limits {
+        if k.solve_into(lp.input_rad, 1.0, &mut sol).is_ok() {
+            toggles.push(Toggle {
+                input_rad: lp.input_rad,
+                ratio: "zero",
+                output: lp.output.clone(),
+                collinear_joints: collinear_joints(k, &sol, 0.1_f64.to_radians()),
+            });
+        }
+    }
+    if !ranges.full_rotation {
+        for [a, b] in &ranges.intervals {
+            // A hair inside the range: exactly at the dead point velocities are undefined.
+            let hair = 1e-9 * (b - a);
+            for x in [*a + hair, *b - hair] {
+                let group = k
+                    .group_conditioning(x)
+                    .into_iter()
+                    .min_by(|p, q| p.1.total_cmp(&q.1))
+                    .map_or_else(|| "chain".to_string(), |(n, _)| n);
+                let collinear = if k.solve_into(x, 1.0, &mut sol).is_ok() {
+                    collinear_joints(k, &sol, 0.1_f64.to_radians())
+                } else {
+                    Vec::new()
+                };
+                toggles.push(Toggle {
+                    input_rad: x.rem_euclid(TAU),
+                    ratio: "infinite",
+                    output: group,
+                    collinear_joints: collinear,
+                });
+            }
+        }
+    }
+    let transmission_angle_rad = transmission_angle(k, &ranges);
+    let m = k.mechanism();
+    Ok(Report {
+        name: m.name.clone(),
+        solver_path: k.path().label(),
+        assembly_range_rad: ranges.intervals.clone(),
+        full_rotation: ranges.full_rotation,
+        limit_positions: all_limits,
+        strokes_m,
+        swings_rad,
+        time_ratio,
+        time_ratio_note,
+        grashof: grashof(k),
+        transmission_angle_rad,
+        toggles,
+        input_speed_rad_s: m.driver.speed_rad_s,
+        notes: m.notes.clone(),
+    })
+}

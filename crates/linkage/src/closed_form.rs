@@ -1,0 +1,782 @@
+//! Closed-form kinematics by Assur dyads (the complex-vector method of the papers):
+//! the chain is split into the driven crank and a sequence of two-link groups,
+//! each solved exactly from links already known, with its assembly branch explicit.
+//!
+//! Every group ends in one 2×2 linear system `x1·c1 + x2·c2 = rhs` for velocities
+//! and the same matrix for accelerations, so the Coriolis term of a slider riding a
+//! moving guide appears as an explicit right-hand-side term.
+
+use nalgebra::UnitComplex;
+
+use crate::error::{LinkageError, Result};
+use crate::model::{Mechanism, Prismatic};
+use crate::motion::{LinkMotion, PointMotion, Solution, Vec2, cross, perp};
+use crate::scene::Branch;
+
+/// A pin: a point fixed on a link, given in that link's coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Pin {
+    pub link: usize,
+    pub local: Vec2,
+}
+
+impl Pin {
+    #[inline]
+    fn motion(&self, links: &[LinkMotion]) -> PointMotion {
+        links[self.link].point(&self.local)
+    }
+}
+
+/// Two revolute links `i` (pinned at `a`) and `j` (pinned at `c`) joined at `mid`.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Rrr {
+    pub i: usize,
+    pub j: usize,
+    pub a: Pin,
+    pub a_on_i: Vec2,
+    pub mid_on_i: Vec2,
+    pub mid_on_j: Vec2,
+    pub c: Pin,
+    pub c_on_j: Vec2,
+    pub len_i: f64,
+    pub len_j: f64,
+    /// Direction of `mid - a` in `i`'s coordinates.
+    pub dir_i: UnitComplex<f64>,
+    /// Direction of `mid - c` in `j`'s coordinates.
+    pub dir_j: UnitComplex<f64>,
+    /// +1: `mid` left of a→c.
+    pub sign: f64,
+}
+
+/// Link `i` pinned at `a`, joined at `mid` to slider `j` on a guide of a known link.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Rrp {
+    pub i: usize,
+    pub j: usize,
+    pub a: Pin,
+    pub a_on_i: Vec2,
+    pub mid_on_j: Vec2,
+    pub len_i: f64,
+    pub dir_i: UnitComplex<f64>,
+    pub slide: Prismatic,
+    /// +1: `mid` ahead along the guide of the foot of the perpendicular from `a`.
+    pub sign: f64,
+}
+
+/// Two links pinned to known links, sliding on each other (inverted slider, quick return).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Rpr {
+    /// The sliding link and its pin.
+    pub slider: usize,
+    pub s: Pin,
+    pub s_on_slider: Vec2,
+    /// The guide link and its pin.
+    pub guide: usize,
+    pub g: Pin,
+    pub g_on_guide: Vec2,
+    /// Signed distance of the guide pin from the line the slider pin runs on.
+    pub offset: f64,
+    pub dir_u: UnitComplex<f64>,
+    pub relative: UnitComplex<f64>,
+    /// +1: the slider pin lies ahead of the guide pin along the guide.
+    pub sign: f64,
+}
+
+/// Two sliders on known guides, pinned together at `mid`.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Prp {
+    pub i: usize,
+    pub j: usize,
+    pub mid_on_i: Vec2,
+    pub mid_on_j: Vec2,
+    pub slide_i: Prismatic,
+    pub slide_j: Prismatic,
+}
+
+/// One Assur group of the decomposition.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Group {
+    Rrr(Rrr),
+    Rrp(Rrp),
+    Rpr(Rpr),
+    Prp(Prp),
+}
+
+/// Why a group could not be solved (cheap to build; named by [`ClosedForm::describe`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Failure {
+    /// Assembly margin < 0 (dimensionless; how far from assembling).
+    CannotAssemble { group: usize, margin: f64 },
+    /// The velocity system is singular (the group's two directions are parallel).
+    Singular { group: usize },
+}
+
+/// Result of one group: the assembly margin (> 0 assembles) and the conditioning.
+#[derive(Clone, Copy, Debug)]
+struct GroupOk {
+    margin: f64,
+    conditioning: f64,
+}
+
+/// Solves `x1·c1 + x2·c2 = rhs`; `None` when the columns are parallel.
+#[inline]
+fn solve2(
+    c1: &Vec2,
+    c2: &Vec2,
+    rhs: &Vec2,
+    group: usize,
+) -> std::result::Result<(f64, f64), Failure> {
+    let det = cross(c1, c2);
+    if det.abs() <= 1e-14 * c1.norm() * c2.norm() {
+        return Err(Failure::Singular { group });
+    }
+    Ok((cross(rhs, c2) / det, cross(c1, rhs) / det))
+}
+
+#[inline]
+fn direction(v: &Vec2, len: f64) -> UnitComplex<f64> {
+    UnitComplex::from_cos_sin_unchecked(v.x / len, v.y / len)
+}
+
+/// Margins between 0 and this are treated as exact tangency (rounding), not failure.
+const TANGENT_SLACK: f64 = 1e-12;
+
+impl Group {
+    /// Solves the group from the already-known links. With `motion == false` only
+    /// positions are computed (used for the assembly margin, also at singular points).
+    fn solve(
+        &self,
+        links: &mut [LinkMotion],
+        motion: bool,
+        group: usize,
+    ) -> std::result::Result<GroupOk, Failure> {
+        match self {
+            Group::Rrr(g) => g.solve(links, motion, group),
+            Group::Rrp(g) => g.solve(links, motion, group),
+            Group::Rpr(g) => g.solve(links, motion, group),
+            Group::Prp(g) => g.solve(links, motion, group),
+        }
+    }
+
+    /// The two unknown links.
+    pub(crate) fn links(&self) -> (usize, usize) {
+        match self {
+            Group::Rrr(g) => (g.i, g.j),
+            Group::Rrp(g) => (g.i, g.j),
+            Group::Rpr(g) => (g.slider, g.guide),
+            Group::Prp(g) => (g.i, g.j),
+        }
+    }
+
+    /// The group type in Assur notation.
+    pub(crate) fn kind(&self) -> &'static str {
+        match self {
+            Group::Rrr(_) => "RRR",
+            Group::Rrp(_) => "RRP",
+            Group::Rpr(_) => "RPR",
+            Group::Prp(_) => "PRP",
+        }
+    }
+}
+
+impl Rrr {
+    fn solve(
+        &self,
+        links: &mut [LinkMotion],
+        motion: bool,
+        group: usize,
+    ) -> std::result::Result<GroupOk, Failure> {
+        let pa = self.a.motion(links);
+        let pc = self.c.motion(links);
+        let d = pc.position - pa.position;
+        let dist2 = d.norm_squared();
+        let (l1, l2) = (self.len_i, self.len_j);
+        if dist2 == 0.0 {
+            let margin = -((l1 - l2) / l1).abs();
+            if margin < 0.0 {
+                return Err(Failure::CannotAssemble { group, margin });
+            }
+            return Err(Failure::Singular { group });
+        }
+        let dist = dist2.sqrt();
+        let along = (l1 * l1 - l2 * l2 + dist2) / (2.0 * dist);
+        let margin = 1.0 - (along / l1) * (along / l1);
+        if margin < -TANGENT_SLACK {
+            return Err(Failure::CannotAssemble { group, margin });
+        }
+        let h = l1 * margin.max(0.0).sqrt();
+        let dhat = d / dist;
+        let b = pa.position + dhat * along + perp(&dhat) * (self.sign * h);
+        let r1 = b - pa.position;
+        let r2 = b - pc.position;
+        let rot_i = direction(&r1, l1) * self.dir_i.inverse();
+        let rot_j = direction(&r2, l2) * self.dir_j.inverse();
+        let conditioning = (cross(&r1, &r2) / (l1 * l2)).abs();
+        let (mut wi, mut wj, mut ai, mut aj) = (0.0, 0.0, 0.0, 0.0);
+        if motion {
+            let c1 = perp(&r1);
+            let c2 = -perp(&r2);
+            (wi, wj) = solve2(&c1, &c2, &(pc.velocity - pa.velocity), group)?;
+            let rhs = pc.acceleration - pa.acceleration + r1 * (wi * wi) - r2 * (wj * wj);
+            (ai, aj) = solve2(&c1, &c2, &rhs, group)?;
+        }
+        links[self.i] = LinkMotion::from_pin(rot_i, wi, ai, &self.a_on_i, &pa);
+        links[self.j] = LinkMotion::from_pin(rot_j, wj, aj, &self.c_on_j, &pc);
+        Ok(GroupOk {
+            margin,
+            conditioning,
+        })
+    }
+}
+
+/// World data of a guide line: direction, the point of the line, the slider's rotation.
+struct GuideLine {
+    u: Vec2,
+    through: Vec2,
+    slider_rotation: UnitComplex<f64>,
+}
+
+fn guide_line(slide: &Prismatic, links: &[LinkMotion]) -> GuideLine {
+    let g = &links[slide.guide];
+    GuideLine {
+        u: g.rotation * slide.direction_local,
+        through: g.world(&slide.through_local),
+        slider_rotation: g.rotation * slide.relative,
+    }
+}
+
+/// Motion of a point riding a guide: the guide's coincident material point plus the
+/// sliding velocity, plus the Coriolis term `2 ω_guide × v_rel`.
+#[inline]
+fn riding_point(
+    on_guide: &PointMotion,
+    u: &Vec2,
+    omega_guide: f64,
+    s_dot: f64,
+    s_ddot: f64,
+) -> PointMotion {
+    PointMotion {
+        position: on_guide.position,
+        velocity: on_guide.velocity + u * s_dot,
+        acceleration: on_guide.acceleration + perp(u) * (2.0 * omega_guide * s_dot) + u * s_ddot,
+    }
+}
+
+impl Rrp {
+    fn solve(
+        &self,
+        links: &mut [LinkMotion],
+        motion: bool,
+        group: usize,
+    ) -> std::result::Result<GroupOk, Failure> {
+        let pa = self.a.motion(links);
+        let line = guide_line(&self.slide, links);
+        let u = line.u;
+        let b0 = line.through + line.slider_rotation * (self.mid_on_j - self.slide.slider_local);
+        let w = b0 - pa.position;
+        let l1 = self.len_i;
+        let off = cross(&w, &u) / l1;
+        let margin = 1.0 - off * off;
+        if margin < -TANGENT_SLACK {
+            return Err(Failure::CannotAssemble { group, margin });
+        }
+        let s = -w.dot(&u) + self.sign * l1 * margin.max(0.0).sqrt();
+        let b = b0 + u * s;
+        let r1 = b - pa.position;
+        let rot_i = direction(&r1, l1) * self.dir_i.inverse();
+        let conditioning = (r1.dot(&u) / l1).abs();
+        let guide = links[self.slide.guide];
+        let on_guide = guide.material_point_at(&b);
+        let (mut wi, mut ai, mut sd, mut sdd) = (0.0, 0.0, 0.0, 0.0);
+        if motion {
+            let c1 = perp(&r1);
+            let c2 = -u;
+            (wi, sd) = solve2(&c1, &c2, &(on_guide.velocity - pa.velocity), group)?;
+            let rhs = on_guide.acceleration + perp(&u) * (2.0 * guide.omega_rad_s * sd)
+                - pa.acceleration
+                + r1 * (wi * wi);
+            (ai, sdd) = solve2(&c1, &c2, &rhs, group)?;
+        }
+        let pb = riding_point(&on_guide, &u, guide.omega_rad_s, sd, sdd);
+        links[self.i] = LinkMotion::from_pin(rot_i, wi, ai, &self.a_on_i, &pa);
+        links[self.j] = LinkMotion::from_pin(
+            line.slider_rotation,
+            guide.omega_rad_s,
+            guide.alpha_rad_s2,
+            &self.mid_on_j,
+            &pb,
+        );
+        Ok(GroupOk {
+            margin,
+            conditioning,
+        })
+    }
+}
+
+impl Rpr {
+    fn solve(
+        &self,
+        links: &mut [LinkMotion],
+        motion: bool,
+        group: usize,
+    ) -> std::result::Result<GroupOk, Failure> {
+        let ps = self.s.motion(links);
+        let pg = self.g.motion(links);
+        let d = pg.position - ps.position;
+        let dist = d.norm();
+        let ratio = if dist > 0.0 {
+            self.offset / dist
+        } else {
+            f64::INFINITY
+        };
+        let margin = 1.0 - ratio * ratio;
+        if !(margin >= -TANGENT_SLACK) {
+            let margin = if margin.is_finite() { margin } else { -1.0 };
+            return Err(Failure::CannotAssemble { group, margin });
+        }
+        let dhat = d / dist;
+        // Along (+1) puts the slider pin ahead of the guide pin: (S - G)·U > 0.
+        let cos_phi = -self.sign * margin.max(0.0).sqrt();
+        let u = dhat * cos_phi + perp(&dhat) * (-ratio);
+        let rot_guide = UnitComplex::from_cos_sin_unchecked(u.x, u.y) * self.dir_u.inverse();
+        let rot_slider = rot_guide * self.relative;
+        let r = ps.position - pg.position;
+        let conditioning = (r.dot(&u) / dist).abs();
+        let (w, al) = if motion {
+            let c1 = perp(&r);
+            let (w, sd) = solve2(&c1, &u, &(ps.velocity - pg.velocity), group)?;
+            let rhs = ps.acceleration - pg.acceleration + r * (w * w) - perp(&u) * (2.0 * w * sd);
+            (w, solve2(&c1, &u, &rhs, group)?.0)
+        } else {
+            (0.0, 0.0)
+        };
+        links[self.guide] = LinkMotion::from_pin(rot_guide, w, al, &self.g_on_guide, &pg);
+        links[self.slider] = LinkMotion::from_pin(rot_slider, w, al, &self.s_on_slider, &ps);
+        Ok(GroupOk {
+            margin,
+            conditioning,
+        })
+    }
+}
+
+impl Prp {
+    fn solve(
+        &self,
+        links: &mut [LinkMotion],
+        motion: bool,
+        group: usize,
+    ) -> std::result::Result<GroupOk, Failure> {
+        let li = guide_line(&self.slide_i, links);
+        let lj = guide_line(&self.slide_j, links);
+        let b_i0 = li.through + li.slider_rotation * (self.mid_on_i - self.slide_i.slider_local);
+        let b_j0 = lj.through + lj.slider_rotation * (self.mid_on_j - self.slide_j.slider_local);
+        let conditioning = cross(&li.u, &lj.u).abs();
+        let (s_i, _) = solve2(&li.u, &(-lj.u), &(b_j0 - b_i0), group)?;
+        let b = b_i0 + li.u * s_i;
+        let gi = links[self.slide_i.guide];
+        let gj = links[self.slide_j.guide];
+        let on_i = gi.material_point_at(&b);
+        let on_j = gj.material_point_at(&b);
+        let (mut sd_i, mut sd_j, mut sdd_i, mut sdd_j) = (0.0, 0.0, 0.0, 0.0);
+        if motion {
+            (sd_i, sd_j) = solve2(&li.u, &(-lj.u), &(on_j.velocity - on_i.velocity), group)?;
+            let rhs = on_j.acceleration + perp(&lj.u) * (2.0 * gj.omega_rad_s * sd_j)
+                - on_i.acceleration
+                - perp(&li.u) * (2.0 * gi.omega_rad_s * sd_i);
+            (sdd_i, sdd_j) = solve2(&li.u, &(-lj.u), &rhs, group)?;
+        }
+        let pb_i = riding_point(&on_i, &li.u, gi.omega_rad_s, sd_i, sdd_i);
+        let pb_j = riding_point(&on_j, &lj.u, gj.omega_rad_s, sd_j, sdd_j);
+        links[self.i] = LinkMotion::from_pin(
+            li.slider_rotation,
+            gi.omega_rad_s,
+            gi.alpha_rad_s2,
+            &self.mid_on_i,
+            &pb_i,
+        );
+        links[self.j] = LinkMotion::from_pin(
+            lj.slider_rotation,
+            gj.omega_rad_s,
+            gj.alpha_rad_s2,
+            &self.mid_on_j,
+            &pb_j,
+        );
+        Ok(GroupOk {
+            margin: 1.0,
+            conditioning,
+        })
+    }
+}
+
+/// The closed-form solver: a crank and a sequence of dyads.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ClosedForm {
+    pub(crate) groups: Vec<Group>,
+    /// Inner joint point of each group (for names and branches).
+    pub(crate) group_points: Vec<usize>,
+    driver_link: usize,
+    driver_on_link: Vec2,
+    driver_pivot_world: Vec2,
+    link_count: usize,
+    ground: usize,
+}
+
+/// A joint seen from the decomposition.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum JointRef {
+    Rev(usize),
+    Pri(usize),
+}
+
+fn joint_links(m: &Mechanism, j: JointRef) -> (usize, usize) {
+    match j {
+        JointRef::Rev(r) => (m.revolutes[r].a, m.revolutes[r].b),
+        JointRef::Pri(p) => (m.sliders[p].slider, m.sliders[p].guide),
+    }
+}
+
+/// Local coordinates of a revolute's point on `link`.
+fn rev_local(m: &Mechanism, r: usize, link: usize) -> Vec2 {
+    let rv = &m.revolutes[r];
+    if rv.a == link { rv.a_local } else { rv.b_local }
+}
+
+fn rev_pin(m: &Mechanism, r: usize, known: usize, unknown: usize) -> (Pin, Vec2) {
+    (
+        Pin {
+            link: known,
+            local: rev_local(m, r, known),
+        },
+        rev_local(m, r, unknown),
+    )
+}
+
+fn link_len(
+    m: &Mechanism,
+    from: Vec2,
+    to: Vec2,
+    link: usize,
+    what: &str,
+) -> Result<(f64, UnitComplex<f64>)> {
+    let v = to - from;
+    let len = v.norm();
+    if len <= 1e-12 * m.size_m {
+        return Err(LinkageError::SceneInvalid(format!(
+            "link `{}` has zero length between its {what} joints",
+            m.links[link].name
+        )));
+    }
+    Ok((len, direction(&v, len)))
+}
+
+impl ClosedForm {
+    /// Decomposes the chain into dyads. Fails with [`LinkageError::NotDecomposable`]
+    /// when it has none (then use [`crate::newton::Newton`]), or with
+    /// [`LinkageError::SceneInvalid`] when a dyad's branch is missing or malformed.
+    pub fn new(m: &Mechanism) -> Result<Self> {
+        let mut joints: Vec<JointRef> = (0..m.revolutes.len()).map(JointRef::Rev).collect();
+        joints.extend((0..m.sliders.len()).map(JointRef::Pri));
+        let mut used = vec![false; joints.len()];
+        let mut known = vec![false; m.links.len()];
+        known[m.ground] = true;
+        known[m.driver.link] = true;
+        used[m.driver.pivot] = true;
+
+        let mut groups = Vec::new();
+        let mut group_points = Vec::new();
+        while known.iter().any(|k| !k) {
+            let mut found = None;
+            'search: for (ji, &jij) in joints.iter().enumerate() {
+                if used[ji] {
+                    continue;
+                }
+                let (i, j) = joint_links(m, jij);
+                if known[i] || known[j] {
+                    continue;
+                }
+                let to_known = |l: usize| -> Vec<(usize, JointRef, usize)> {
+                    joints
+                        .iter()
+                        .enumerate()
+                        .filter(|(k, _)| !used[*k] && *k != ji)
+                        .filter_map(|(k, &jr)| {
+                            let (a, b) = joint_links(m, jr);
+                            if a == l && known[b] {
+                                Some((k, jr, b))
+                            } else if b == l && known[a] {
+                                Some((k, jr, a))
+                            } else {
+                                None
+                            }
+                        })
+                        .collect()
+                };
+                let (ji_list, jj_list) = (to_known(i), to_known(j));
+                if ji_list.len() == 1 && jj_list.len() == 1 {
+                    if let Some(g) = Self::make_group(m, i, j, jij, ji_list[0], jj_list[0])? {
+                        found = Some((g, [ji, ji_list[0].0, jj_list[0].0], i, j));
+                        break 'search;
+                    }
+                }
+            }
+            let Some(((group, point), used_now, i, j)) = found else {
+                let unknown: Vec<_> = (0..m.links.len())
+                    .filter(|&l| !known[l])
+                    .map(|l| m.links[l].name.as_str())
+                    .collect();
+                return Err(LinkageError::NotDecomposable(format!(
+                    "links {} form no RRR, RRP, RPR or PRP dyad on known links",
+                    unknown.join(", ")
+                )));
+            };
+            for k in used_now {
+                used[k] = true;
+            }
+            known[i] = true;
+            known[j] = true;
+            groups.push(group);
+            group_points.push(point);
+        }
+        if let Some(k) = used.iter().position(|u| !u) {
+            let (a, b) = joint_links(m, joints[k]);
+            return Err(LinkageError::NotDecomposable(format!(
+                "the joint between `{}` and `{}` is redundant for a dyad chain",
+                m.links[a].name, m.links[b].name
+            )));
+        }
+        let pivot = &m.revolutes[m.driver.pivot];
+        let (ground_local, driver_on_link) = if pivot.a == m.ground {
+            (pivot.a_local, pivot.b_local)
+        } else {
+            (pivot.b_local, pivot.a_local)
+        };
+        Ok(Self {
+            groups,
+            group_points,
+            driver_link: m.driver.link,
+            driver_on_link,
+            driver_pivot_world: ground_local,
+            link_count: m.links.len(),
+            ground: m.ground,
+        })
+    }
+
+    /// Builds the group for unknown links `i`, `j` joined by `jij`, with one joint each
+    /// to a known link; `None` when the combination has no closed form here.
+    fn make_group(
+        m: &Mechanism,
+        i: usize,
+        j: usize,
+        jij: JointRef,
+        ji: (usize, JointRef, usize),
+        jj: (usize, JointRef, usize),
+    ) -> Result<Option<(Group, usize)>> {
+        use JointRef::{Pri, Rev};
+        let branch_of = |point: usize, describe: &str| -> Result<&Branch> {
+            m.branch_for(point).ok_or_else(|| {
+                LinkageError::SceneInvalid(format!(
+                    "the {describe} dyad with inner joint `{}` needs an assembly branch in `branches`",
+                    m.points[point].name
+                ))
+            })
+        };
+        Ok(match (ji.1, jij, jj.1) {
+            (Rev(ra), Rev(rm), Rev(rc)) => {
+                let (a, a_on_i) = rev_pin(m, ra, ji.2, i);
+                let (c, c_on_j) = rev_pin(m, rc, jj.2, j);
+                let (mid_on_i, mid_on_j) = (rev_local(m, rm, i), rev_local(m, rm, j));
+                let (len_i, dir_i) = link_len(m, a_on_i, mid_on_i, i, "two")?;
+                let (len_j, dir_j) = link_len(m, c_on_j, mid_on_j, j, "two")?;
+                let mid = m.revolutes[rm].point;
+                let (pa, pc) = (m.revolutes[ra].point, m.revolutes[rc].point);
+                let names = |p: usize| m.points[p].name.clone();
+                let sign = match branch_of(mid, "RRR")? {
+                    Branch::Left(f, t) | Branch::Right(f, t) => {
+                        let left = if (f, t) == (&names(pa), &names(pc)) {
+                            1.0
+                        } else if (f, t) == (&names(pc), &names(pa)) {
+                            -1.0
+                        } else {
+                            return Err(LinkageError::SceneInvalid(format!(
+                                "branch of `{}` must name its end joints: Left(\"{}\", \"{}\") or Right(\"{}\", \"{}\")",
+                                names(mid),
+                                names(pa),
+                                names(pc),
+                                names(pa),
+                                names(pc)
+                            )));
+                        };
+                        if matches!(m.branch_for(mid), Some(Branch::Left(..))) { left } else { -left }
+                    }
+                    _ => {
+                        return Err(LinkageError::SceneInvalid(format!(
+                            "branch of RRR joint `{}` must be Left(\"{}\", \"{}\") or Right(..), not Along/Against",
+                            names(mid),
+                            names(pa),
+                            names(pc)
+                        )));
+                    }
+                };
+                (Group::Rrr(Rrr { i, j, a, a_on_i, mid_on_i, mid_on_j, c, c_on_j, len_i, len_j, dir_i, dir_j, sign }), mid)
+            }
+            (Rev(_), Rev(_), Pri(_)) | (Pri(_), Rev(_), Rev(_)) => {
+                // Normalise: i is pinned, j slides on a known guide.
+                let (i, j, ji, jj) = if matches!(ji.1, Rev(_)) { (i, j, ji, jj) } else { (j, i, jj, ji) };
+                let (Rev(ra), Rev(rm), Pri(p)) = (ji.1, jij, jj.1) else { return Ok(None) };
+                let slide = m.sliders[p].clone();
+                if slide.slider != j {
+                    return Ok(None);
+                }
+                let (a, a_on_i) = rev_pin(m, ra, ji.2, i);
+                let (mid_on_i, mid_on_j) = (rev_local(m, rm, i), rev_local(m, rm, j));
+                let (len_i, dir_i) = link_len(m, a_on_i, mid_on_i, i, "two")?;
+                let mid = m.revolutes[rm].point;
+                let sign = match branch_of(mid, "RRP")? {
+                    Branch::Along => 1.0,
+                    Branch::Against => -1.0,
+                    _ => {
+                        return Err(LinkageError::SceneInvalid(format!(
+                            "branch of slider joint `{}` must be Along or Against (its side along the guide)",
+                            m.points[mid].name
+                        )));
+                    }
+                };
+                (Group::Rrp(Rrp { i, j, a, a_on_i, mid_on_j, len_i, dir_i, slide, sign }), mid)
+            }
+            (Rev(ra), Pri(p), Rev(rc)) => {
+                let slide = m.sliders[p].clone();
+                let (s_rev, s_known, g_rev, g_known) =
+                    if slide.slider == i { (ra, ji.2, rc, jj.2) } else { (rc, jj.2, ra, ji.2) };
+                let (s, s_on_slider) = rev_pin(m, s_rev, s_known, slide.slider);
+                let (g, g_on_guide) = rev_pin(m, g_rev, g_known, slide.guide);
+                let q_line = slide.through_local + slide.relative * (s_on_slider - slide.slider_local);
+                let offset = cross(&slide.direction_local, &(g_on_guide - q_line));
+                let sign = match branch_of(slide.point, "RPR")? {
+                    Branch::Along => 1.0,
+                    Branch::Against => -1.0,
+                    _ => {
+                        return Err(LinkageError::SceneInvalid(format!(
+                            "branch of sliding joint `{}` must be Along or Against",
+                            m.points[slide.point].name
+                        )));
+                    }
+                };
+                let dir_u = direction(&slide.direction_local, 1.0);
+                let point = slide.point;
+                (
+                    Group::Rpr(Rpr {
+                        slider: slide.slider,
+                        s,
+                        s_on_slider,
+                        guide: slide.guide,
+                        g,
+                        g_on_guide,
+                        offset,
+                        dir_u,
+                        relative: slide.relative,
+                        sign,
+                    }),
+                    point,
+                )
+            }
+            (Pri(pi), Rev(rm), Pri(pj)) => {
+                let (si, sj) = (m.sliders[pi].clone(), m.sliders[pj].clone());
+                let (si, sj) = if si.slider == i { (si, sj) } else { (sj, si) };
+                if si.slider != i || sj.slider != j {
+                    return Ok(None);
+                }
+                let mid = m.revolutes[rm].point;
+                let g = Prp {
+                    i,
+                    j,
+                    mid_on_i: rev_local(m, rm, i),
+                    mid_on_j: rev_local(m, rm, j),
+                    slide_i: si,
+                    slide_j: sj,
+                };
+                (Group::Prp(g), mid)
+            }
+            _ => return Ok(None),
+        }
+        .into())
+    }
+
+    /// Number of links (ground included) this solver writes.
+    pub fn link_count(&self) -> usize {
+        self.link_count
+    }
+
+    /// Places ground and crank for input angle `input_rad` turning at `speed_rad_s`.
+    #[inline]
+    fn place_driver(&self, links: &mut [LinkMotion], input_rad: f64, speed_rad_s: f64) {
+        links[self.ground] = LinkMotion::default();
+        let pivot = PointMotion {
+            position: self.driver_pivot_world,
+            ..Default::default()
+        };
+        links[self.driver_link] = LinkMotion::from_pin(
+            UnitComplex::new(input_rad),
+            speed_rad_s,
+            0.0,
+            &self.driver_on_link,
+            &pivot,
+        );
+    }
+
+    /// Solves all links at one input; `out.links` must have `link_count` entries.
+    /// Points and slides are not filled here (see [`crate::Kinematics`]).
+    pub(crate) fn solve_links(
+        &self,
+        input_rad: f64,
+        speed_rad_s: f64,
+        links: &mut [LinkMotion],
+    ) -> std::result::Result<f64, Failure> {
+        self.place_driver(links, input_rad, speed_rad_s);
+        let mut conditioning: f64 = 1.0;
+        for (k, g) in self.groups.iter().enumerate() {
+            conditioning = conditioning.min(g.solve(links, true, k)?.conditioning);
+        }
+        Ok(conditioning)
+    }
+
+    /// Smallest assembly margin over the groups at this input (> 0: assembles,
+    /// < 0: the first group that fails and by how much), with the group index.
+    pub(crate) fn margin(&self, input_rad: f64, links: &mut [LinkMotion]) -> (f64, usize) {
+        self.place_driver(links, input_rad, 0.0);
+        let mut worst = (f64::INFINITY, 0);
+        for (k, g) in self.groups.iter().enumerate() {
+            match g.solve(links, false, k) {
+                Ok(ok) if ok.margin < worst.0 => worst = (ok.margin, k),
+                Ok(_) => {}
+                Err(Failure::CannotAssemble { margin, .. }) => return (margin, k),
+                Err(Failure::Singular { .. }) => return (0.0, k),
+            }
+        }
+        worst
+    }
+
+    /// Velocity-system conditioning of each group at the current positions
+    /// (|sin| of the angle between its two unknown directions).
+    pub(crate) fn group_conditioning(&self, input_rad: f64, links: &mut [LinkMotion]) -> Vec<f64> {
+        self.place_driver(links, input_rad, 0.0);
+        self.groups
+            .iter()
+            .enumerate()
+            .map(|(k, g)| {
+                g.solve(links, false, k)
+                    .map(|ok| ok.conditioning)
+                    .unwrap_or(0.0)
+            })
+            .collect()
+    }
+}
+
+/// Fills points and slides of a solution from its links.
+pub(crate) fn finish_solution(m: &Mechanism, sol: &mut Solution) {
+    for (out, p) in sol.points.iter_mut().zip(&m.points) {
+        *out = sol.links[p.link].point(&p.local);
+    }
+    for (out, s) in sol.slides.iter_mut().zip(&m.sliders) {
+        *out = s.motion(&sol.links);
+    }
+}

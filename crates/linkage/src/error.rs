@@ -1,0 +1,78 @@
+//! Errors the solver returns instead of panicking; each names its cause and,
+//! where one exists, the valid range.
+
+use thiserror::Error;
+
+/// Everything that can go wrong between a scene file and a solved position.
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum LinkageError {
+    /// The scene text is not valid RON for the scene format.
+    #[error("scene syntax error at line {line}, column {column}: {message}")]
+    SceneSyntax {
+        /// 1-based line of the offending token.
+        line: usize,
+        /// 1-based column of the offending token.
+        column: usize,
+        /// What the parser expected or found.
+        message: String,
+    },
+    /// The scene parsed but describes no valid mechanism.
+    #[error("invalid scene: {0}")]
+    SceneInvalid(String),
+    /// A numeric parameter is outside its valid range (or not finite).
+    #[error("{name} = {value} is invalid: {valid}")]
+    InvalidParameter {
+        /// The parameter's name as the user knows it.
+        name: String,
+        /// The value given.
+        value: f64,
+        /// The valid range in words.
+        valid: String,
+    },
+    /// The chain cannot be assembled at this input.
+    #[error("cannot assemble at input {input_deg:.4} deg: {reason}; {reachable}")]
+    CannotAssemble {
+        /// Input angle asked for, in degrees.
+        input_deg: f64,
+        /// Which group failed and why.
+        reason: String,
+        /// The reachable input range(s) in words.
+        reachable: String,
+    },
+    /// The chain sits exactly on a dead point: velocities are undefined there.
+    #[error("singular position at input {input_deg:.4} deg: {reason}")]
+    Singular {
+        /// Input angle, in degrees.
+        input_deg: f64,
+        /// Which links are collinear.
+        reason: String,
+    },
+    /// Newton–Raphson did not reach the tolerance.
+    #[error(
+        "Newton solver did not converge at input {input_deg:.4} deg: residual {residual:.3e} after {iterations} iterations (tolerance {tolerance:.1e})"
+    )]
+    NewtonDiverged {
+        /// Input angle, in degrees.
+        input_deg: f64,
+        /// Iterations used.
+        iterations: usize,
+        /// Largest constraint residual left, in metres or radians.
+        residual: f64,
+        /// Tolerance asked for.
+        tolerance: f64,
+    },
+    /// The Newton solution moved to a different assembly branch between two steps.
+    #[error("branch jump at input {input_deg:.4} deg: {reason}")]
+    BranchJump {
+        /// Input angle, in degrees.
+        input_deg: f64,
+        /// What jumped.
+        reason: String,
+    },
+    /// The chain has no closed-form decomposition into dyads.
+    #[error("no closed-form dyad decomposition: {0}")]
+    NotDecomposable(String),
+}
+
+/// Shorthand for results carrying a [`LinkageError`].
+pub type Result<T> = std::result::Result<T, LinkageError>;

@@ -1,0 +1,253 @@
+//! The kinematics facade: one mechanism, one chosen solver path, solutions with
+//! named errors (the reachable input range included when a chain cannot assemble).
+
+use crate::closed_form::{ClosedForm, Failure, finish_solution};
+use crate::error::{LinkageError, Result};
+use crate::model::Mechanism;
+use crate::motion::{LinkMotion, Solution};
+use crate::newton::Newton;
+use crate::scene::SolverPath;
+
+/// The solver path in use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PathKind {
+    /// Closed-form Assur dyads.
+    ClosedForm,
+    /// Newton–Raphson on the loop-closure constraints.
+    Newton,
+}
+
+impl PathKind {
+    /// Human-readable name.
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::ClosedForm => "closed form",
+            Self::Newton => "Newton",
+        }
+    }
+}
+
+/// A mechanism ready to be solved at any input.
+#[derive(Clone, Debug)]
+pub struct Kinematics {
+    mech: Mechanism,
+    closed: Option<ClosedForm>,
+    newton: Option<Newton>,
+    path: PathKind,
+    scratch: Vec<LinkMotion>,
+}
+
+impl Kinematics {
+    /// Uses the path the scene asks for (`Auto`: closed form when the chain decomposes).
+    pub fn new(mech: Mechanism) -> Result<Self> {
+        let path = mech.solver.path;
+        Self::with_path(mech, path)
+    }
+
+    /// Uses the given path.
+    pub fn with_path(mech: Mechanism, path: SolverPath) -> Result<Self> {
+        let closed = match ClosedForm::new(&mech) {
+            Ok(c) => Some(c),
+            Err(LinkageError::NotDecomposable(why)) => {
+                if path == SolverPath::ClosedForm {
+                    return Err(LinkageError::NotDecomposable(why));
+                }
+                None
+            }
+            Err(e) => return Err(e),
+        };
+        let scratch = vec![LinkMotion::default(); mech.links.len()];
+        let mut k = Self {
+            mech,
+            closed,
+            newton: None,
+            path: PathKind::ClosedForm,
+            scratch,
+        };
+        if path == SolverPath::Newton || k.closed.is_none() {
+            k.newton = Some(k.build_newton()?);
+            k.path = PathKind::Newton;
+        }
+        Ok(k)
+    }
+
+    fn build_newton(&mut self) -> Result<Newton> {
+        let start = self.mech.driver.start_rad;
+        let mut pose = vec![LinkMotion::default(); self.mech.links.len()];
+        if let Some(cf) = &self.closed {
+            cf.solve_links(start, 0.0, &mut pose)
+                .map_err(|f| self.describe(f, start))?;
+        } else {
+            for l in self.mech.moving_links() {
+                let (origin, angle) = self.mech.guess[l].ok_or_else(|| {
+                    LinkageError::NotDecomposable(format!(
+                        "link `{}` needs a starting `guess: (x, y, angle)` for the Newton solver",
+                        self.mech.links[l].name
+                    ))
+                })?;
+                pose[l].origin.position = origin;
+                pose[l].rotation = nalgebra::UnitComplex::new(angle);
+            }
+            let d = self.mech.driver.link;
+            pose[d].rotation = nalgebra::UnitComplex::new(start);
+        }
+        Newton::new(
+            &self.mech,
+            &pose,
+            self.mech.solver.tolerance,
+            self.mech.solver.max_iterations,
+        )
+    }
+
+    /// The mechanism.
+    pub fn mechanism(&self) -> &Mechanism {
+        &self.mech
+    }
+
+    /// The path in use.
+    pub fn path(&self) -> PathKind {
+        self.path
+    }
+
+    /// Whether a closed-form decomposition exists (needed for assembly ranges).
+    pub fn has_closed_form(&self) -> bool {
+        self.closed.is_some()
+    }
+
+    /// A solution buffer of the right sizes.
+    pub fn empty_solution(&self) -> Solution {
+        Solution {
+            links: vec![LinkMotion::default(); self.mech.links.len()],
+            points: vec![Default::default(); self.mech.points.len()],
+            slides: vec![Default::default(); self.mech.sliders.len()],
+            ..Default::default()
+        }
+    }
+
+    /// Solves at `input_rad` with the scene's crank speed.
+    pub fn solve(&mut self, input_rad: f64) -> Result<Solution> {
+        let mut s = self.empty_solution();
+        self.solve_into(input_rad, self.mech.driver.speed_rad_s, &mut s)?;
+        Ok(s)
+    }
+
+    /// Solves at `input_rad` turning at `speed_rad_s` into `out` (no allocation when
+    /// `out` came from [`Self::empty_solution`]).
+    pub fn solve_into(
+        &mut self,
+        input_rad: f64,
+        speed_rad_s: f64,
+        out: &mut Solution,
+    ) -> Result<()> {
+        if !input_rad.is_finite() || !speed_rad_s.is_finite() {
+            return Err(LinkageError::InvalidParameter {
+                name: if input_rad.is_finite() {
+                    "input speed"
+                } else {
+                    "input angle"
+                }
+                .into(),
+                value: if input_rad.is_finite() {
+                    speed_rad_s
+                } else {
+                    input_rad
+                },
+                valid: "must be a finite number".into(),
+            });
+        }
+        if out.links.len() != self.mech.links.len() {
+            *out = self.empty_solution();
+        }
+        let conditioning = match (self.path, &self.closed, &mut self.newton) {
+            (PathKind::ClosedForm, Some(cf), _) => cf
+                .solve_links(input_rad, speed_rad_s, &mut out.links)
+                .map_err(|f| self.describe(f, input_rad))?,
+            (_, _, Some(nw)) => nw
+                .solve_links(input_rad, speed_rad_s, &mut out.links)
+                .map_err(|e| {
+                    if let (
+                        LinkageError::Singular { .. } | LinkageError::NewtonDiverged { .. },
+                        Some(cf),
+                    ) = (&e, &self.closed)
+                    {
+                        let mut links = vec![LinkMotion::default(); self.mech.links.len()];
+                        if let Err(f) = cf.solve_links(input_rad, 0.0, &mut links) {
+                            return self.describe(f, input_rad);
+                        }
+                    }
+                    e
+                })?,
+            _ => unreachable!("a Kinematics always holds the solver for its path"),
+        };
+        out.input_rad = input_rad;
+        out.input_speed_rad_s = speed_rad_s;
+        out.conditioning = conditioning;
+        finish_solution(&self.mech, out);
+        Ok(())
+    }
+
+    /// Assembly margin at `input_rad` (> 0 assembles), closed form only.
+    pub fn assembly_margin(&mut self, input_rad: f64) -> Option<f64> {
+        let cf = self.closed.as_ref()?;
+        Some(cf.margin(input_rad, &mut self.scratch).0)
+    }
+
+    /// Per-group velocity conditioning at `input_rad`, with the groups' names.
+    pub fn group_conditioning(&mut self, input_rad: f64) -> Vec<(String, f64)> {
+        let Some(cf) = &self.closed else {
+            return Vec::new();
+        };
+        let values = cf.group_conditioning(input_rad, &mut self.scratch);
+        (0..values.len())
+            .map(|g| (self.group_name(g), values[g]))
+            .collect()
+    }
+
+    /// Number of closed-form groups (0 on the Newton-only path).
+    pub fn group_count(&self) -> usize {
+        self.closed.as_ref().map_or(0, |c| c.groups.len())
+    }
+
+    pub(crate) fn closed_form(&self) -> Option<&ClosedForm> {
+        self.closed.as_ref()
+    }
+
+    /// "RRR dyad (coupler, rocker) at C".
+    pub fn group_name(&self, g: usize) -> String {
+        let Some(cf) = &self.closed else {
+            return format!("group {g}");
+        };
+        let group = &cf.groups[g];
+        let (i, j) = group.links();
+        format!(
+            "{} dyad ({}, {}) at {}",
+            group.kind(),
+            self.mech.links[i].name,
+            self.mech.links[j].name,
+            self.mech.points[cf.group_points[g]].name
+        )
+    }
+
+    fn describe(&self, f: Failure, input_rad: f64) -> LinkageError {
+        match f {
+            Failure::CannotAssemble { group, margin } => {
+                let ranges = crate::analysis::assembly_ranges_of(self);
+                LinkageError::CannotAssemble {
+                    input_deg: input_rad.to_degrees(),
+                    reason: format!(
+                        "the {} does not close (margin {margin:.3e})",
+                        self.group_name(group)
+                    ),
+                    reachable: crate::analysis::describe_ranges(&ranges),
+                }
+            }
+            Failure::Singular { group } => LinkageError::Singular {
+                input_deg: input_rad.to_degrees(),
+                reason: format!(
+                    "the two links of the {} are collinear (dead point), velocities are undefined",
+                    self.group_name(group)
+                ),
+            },
+        }
+    }
+}

@@ -1,0 +1,30 @@
+//! `linkage`: a headless planar-linkage solver.
+//!
+//! Mechanisms come from scene files ([`scene`]) and are validated into a
+//! [`Mechanism`]. [`Kinematics`] solves any input angle by one of two paths that
+//! agree to round-off: closed-form Assur dyads ([`closed_form`]) and Newton–Raphson
+//! on the loop-closure constraints ([`newton`]). [`analysis`] finds assembly ranges,
+//! limit positions, strokes, time ratio, Grashof class, transmission angle and
+//! toggles; [`polygon`] gives the velocity and acceleration polygon terms;
+//! [`synthesis`] designs crank-rockers from swing and time ratio.
+
+#![warn(missing_docs)]
+
+pub mod analysis;
+pub mod closed_form;
+pub mod error;
+pub mod kinematics;
+pub mod model;
+pub mod motion;
+pub mod newton;
+pub mod polygon;
+mod roots_util;
+pub mod scene;
+pub mod sweep;
+pub mod synthesis;
+
+pub use error::{LinkageError, Result};
+pub use kinematics::{Kinematics, PathKind};
+pub use model::Mechanism;
+pub use motion::{LinkMotion, PointMotion, SlideMotion, Solution, Vec2};
+pub use scene::SceneFile;

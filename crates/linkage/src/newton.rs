@@ -1,0 +1,559 @@
+//! General Newton–Raphson on the loop-closure constraints.
+//!
+//! The chain is cut into a spanning tree rooted at ground (driver joint first);
+//! the unknowns are the tree joints' relative coordinates (joint angle or slide),
+//! and every joint left out of the tree closes a loop with two equations. Jacobian
+//! columns are the cut joints' relative velocities for a unit rate of one tree
+//! coordinate, so one forward velocity pass per column gives them exactly. Velocity
+//! solves `J q̇ = -j_in ω_in`; acceleration solves `J q̈ = -b` where `b` is the
+//! cut joints' relative acceleration with zero coordinate accelerations (the
+//! quadratic-velocity term, Coriolis included).
+
+use nalgebra::{DMatrix, DVector, UnitComplex};
+
+use crate::error::{LinkageError, Result};
+use crate::model::{Mechanism, Prismatic};
+use crate::motion::{LinkMotion, PointMotion, Vec2, cross, perp};
+
+#[derive(Clone, Debug, PartialEq)]
+enum TreeKind {
+    Revolute {
+        on_parent: Vec2,
+        on_child: Vec2,
+    },
+    /// `parent_is_guide`: the slider is the child (else the guide is).
+    Prismatic {
+        slide: Prismatic,
+        parent_is_guide: bool,
+    },
+}
+
+#[derive(Clone, Debug, PartialEq)]
+struct TreeJoint {
+    parent: usize,
+    child: usize,
+    kind: TreeKind,
+    /// World joint point (revolute) or slide contact point, from the last position pass.
+    contact: Vec2,
+    /// World guide direction (prismatic), from the last position pass.
+    u: Vec2,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Cut {
+    Revolute {
+        a: usize,
+        a_local: Vec2,
+        b: usize,
+        b_local: Vec2,
+    },
+    Prismatic(Prismatic),
+}
+
+/// Newton–Raphson position solver with velocity and acceleration from the Jacobian.
+#[derive(Clone, Debug)]
+pub struct Newton {
+    tree: Vec<TreeJoint>,
+    cuts: Vec<Cut>,
+    ground: usize,
+    link_count: usize,
+    tolerance: f64,
+    max_iterations: usize,
+    /// Unknown coordinates (tree joints after the driver).
+    q: DVector<f64>,
+    /// dq/d(input) and d²q/d(input)² at the last solution.
+    dq: DVector<f64>,
+    ddq: DVector<f64>,
+    last_input: Option<f64>,
+    jac: DMatrix<f64>,
+    rhs: DVector<f64>,
+    rates: Vec<f64>,
+    scratch: Vec<LinkMotion>,
+    /// Iterations used by the last solve (for diagnostics and benchmarks).
+    pub last_iterations: usize,
+}
+
+/// Largest step of the input between two Newton solves on one branch, rad.
+const CONTINUATION_STEP: f64 = 2.0 * std::f64::consts::PI / 180.0;
+
+impl Newton {
+    /// Builds the tree and cut joints and the starting pose. `start` gives every
+    /// link's pose at the scene's start input (from the closed form or the scene's
+    /// guesses); the solver then tracks the branch by continuity.
+    pub fn new(
+        m: &Mechanism,
+        start: &[LinkMotion],
+        tolerance: f64,
+        max_iterations: usize,
+    ) -> Result<Self> {
+        if !(tolerance.is_finite() && tolerance > 0.0) {
+            return Err(LinkageError::InvalidParameter {
+                name: "Newton tolerance".into(),
+                value: tolerance,
+                valid: "must be finite and > 0".into(),
+            });
+        }
+        let n = m.links.len();
+        let mut visited = vec![false; n];
+        visited[m.ground] = true;
+        let mut used_rev = vec![false; m.revolutes.len()];
+        let mut used_pri = vec![false; m.sliders.len()];
+        let mut tree = Vec::new();
+        let rev_joint = |r: usize, parent: usize| -> TreeJoint {
+            let rv = &m.revolutes[r];
+            let (child, on_parent, on_child) = if rv.a == parent {
+                (rv.b, rv.a_local, rv.b_local)
+            } else {
+                (rv.a, rv.b_local, rv.a_local)
+            };
+            TreeJoint {
+                parent,
+                child,
+                kind: TreeKind::Revolute {
+                    on_parent,
+                    on_child,
+                },
+                contact: Vec2::zeros(),
+                u: Vec2::zeros(),
+            }
+        };
+        tree.push(rev_joint(m.driver.pivot, m.ground));
+        used_rev[m.driver.pivot] = true;
+        visited[m.driver.link] = true;
+        let mut queue = std::collections::VecDeque::from([m.ground, m.driver.link]);
+        while let Some(l) = queue.pop_front() {
+            for (r, rv) in m.revolutes.iter().enumerate() {
+                let other = if rv.a == l {
+                    rv.b
+                } else if rv.b == l {
+                    rv.a
+                } else {
+                    continue;
+                };
+                if used_rev[r] || visited[other] {
+                    continue;
+                }
+                used_rev[r] = true;
+                visited[other] = true;
+                tree.push(rev_joint(r, l));
+                queue.push_back(other);
+            }
+            for (p, s) in m.sliders.iter().enumerate() {
+                let other = if s.slider == l {
+                    s.guide
+                } else if s.guide == l {
+                    s.slider
+                } else {
+                    continue;
+                };
+                if used_pri[p] || visited[other] {
+                    continue;
+                }
+                used_pri[p] = true;
+                visited[other] = true;
+                tree.push(TreeJoint {
+                    parent: l,
+                    child: other,
+                    kind: TreeKind::Prismatic {
+                        slide: s.clone(),
+                        parent_is_guide: s.guide == l,
+                    },
+                    contact: Vec2::zeros(),
+                    u: Vec2::zeros(),
+                });
+                queue.push_back(other);
+            }
+        }
+        if let Some(l) = visited.iter().position(|v| !v) {
+            return Err(LinkageError::SceneInvalid(format!(
+                "link `{}` is not connected to the chain",
+                m.links[l].name
+            )));
+        }
+        let mut cuts: Vec<Cut> = m
+            .revolutes
+            .iter()
+            .enumerate()
+            .filter(|(r, _)| !used_rev[*r])
+            .map(|(_, rv)| Cut::Revolute {
+                a: rv.a,
+                a_local: rv.a_local,
+                b: rv.b,
+                b_local: rv.b_local,
+            })
+            .collect();
+        cuts.extend(
+            m.sliders
+                .iter()
+                .enumerate()
+                .filter(|(p, _)| !used_pri[*p])
+                .map(|(_, s)| Cut::Prismatic(s.clone())),
+        );
+        let unknowns = tree.len() - 1;
+        if 2 * cuts.len() != unknowns {
+            return Err(LinkageError::SceneInvalid(format!(
+                "loop closure gives {} equations for {unknowns} unknowns",
+                2 * cuts.len()
+            )));
+        }
+        let mut solver = Self {
+            tree,
+            cuts,
+            ground: m.ground,
+            link_count: n,
+            tolerance: tolerance.max(8.0 * f64::EPSILON * m.size_m),
+            max_iterations,
+            q: DVector::zeros(unknowns),
+            dq: DVector::zeros(unknowns),
+            ddq: DVector::zeros(unknowns),
+            last_input: None,
+            jac: DMatrix::zeros(unknowns, unknowns),
+            rhs: DVector::zeros(unknowns),
+            rates: vec![0.0; 2 * unknowns.max(1)],
+            scratch: vec![LinkMotion::default(); n],
+            last_iterations: 0,
+        };
+        solver.set_pose(start, m.driver.start_rad);
+        Ok(solver)
+    }
+
+    /// Number of unknown coordinates.
+    pub fn unknowns(&self) -> usize {
+        self.q.len()
+    }
+
+    /// Sets the tracked coordinates from a full set of link poses at `input_rad`.
+    pub fn set_pose(&mut self, links: &[LinkMotion], input_rad: f64) {
+        for (k, t) in self.tree.iter().enumerate().skip(1) {
+            let (p, c) = (&links[t.parent], &links[t.child]);
+            self.q[k - 1] = match &t.kind {
+                TreeKind::Revolute { .. } => (p.rotation.inverse() * c.rotation).angle(),
+                TreeKind::Prismatic { slide, .. } => {
+                    let (s, g) = (&links[slide.slider], &links[slide.guide]);
+                    (s.world(&slide.slider_local) - g.world(&slide.through_local))
+                        .dot(&(g.rotation * slide.direction_local))
+                }
+            };
+        }
+        self.dq.fill(0.0);
+        self.ddq.fill(0.0);
+        self.last_input = Some(input_rad);
+    }
+
+    /// Places every link for coordinates `q` (driver angle `input`); velocities untouched.
+    fn position_pass(&mut self, input: f64, links: &mut [LinkMotion]) {
+        links[self.ground] = LinkMotion::default();
+        for k in 0..self.tree.len() {
+            let q = if k == 0 { input } else { self.q[k - 1] };
+            let t = &mut self.tree[k];
+            let parent = links[t.parent];
+            let child = &mut links[t.child];
+            match &t.kind {
+                TreeKind::Revolute {
+                    on_parent,
+                    on_child,
+                } => {
+                    let j = parent.world(on_parent);
+                    child.rotation = parent.rotation * UnitComplex::new(q);
+                    child.origin.position = j - child.rotation * on_child;
+                    t.contact = j;
+                }
+                TreeKind::Prismatic {
+                    slide,
+                    parent_is_guide: true,
+                } => {
+                    let u = parent.rotation * slide.direction_local;
+                    let p = parent.world(&slide.through_local) + u * q;
+                    child.rotation = parent.rotation * slide.relative;
+                    child.origin.position = p - child.rotation * slide.slider_local;
+                    (t.contact, t.u) = (p, u);
+                }
+                TreeKind::Prismatic {
+                    slide,
+                    parent_is_guide: false,
+                } => {
+                    child.rotation = parent.rotation * slide.relative.inverse();
+                    let u = child.rotation * slide.direction_local;
+                    let through = parent.world(&slide.slider_local) - u * q;
+                    child.origin.position = through - child.rotation * slide.through_local;
+                    (t.contact, t.u) = (through, u);
+                }
+            }
+        }
+    }
+
+    /// Sets every link's velocity and acceleration for coordinate rates `rate(k)` and
+    /// second derivatives `accel(k)` (k = 0 is the driver), positions fixed.
+    fn motion_pass(
+        &self,
+        links: &mut [LinkMotion],
+        rate: impl Fn(usize) -> f64,
+        accel: impl Fn(usize) -> f64,
+    ) {
+        links[self.ground] = LinkMotion::default();
+        for (k, t) in self.tree.iter().enumerate() {
+            let parent = links[t.parent];
+            let (qd, qdd) = (rate(k), accel(k));
+            let child = &mut links[t.child];
+            let (omega, alpha, local, pin) = match &t.kind {
+                TreeKind::Revolute { on_child, .. } => (
+                    parent.omega_rad_s + qd,
+                    parent.alpha_rad_s2 + qdd,
+                    *on_child,
+                    parent.material_point_at(&t.contact),
+                ),
+                TreeKind::Prismatic {
+                    slide,
+                    parent_is_guide,
+                } => {
+                    let (sign, local) = if *parent_is_guide {
+                        (1.0, slide.slider_local)
+                    } else {
+                        (-1.0, slide.through_local)
+                    };
+                    let base = parent.material_point_at(&t.contact);
+                    let pin = PointMotion {
+                        position: t.contact,
+                        velocity: base.velocity + t.u * (sign * qd),
+                        acceleration: base.acceleration
+                            + perp(&t.u) * (2.0 * parent.omega_rad_s * sign * qd)
+                            + t.u * (sign * qdd),
+                    };
+                    (parent.omega_rad_s, parent.alpha_rad_s2, local, pin)
+                }
+            };
+            *child = LinkMotion::from_pin(child.rotation, omega, alpha, &local, &pin);
+        }
+    }
+
+    /// Cut-joint residuals (positions), written to `out`; returns the max-norm.
+    fn residual(&self, links: &[LinkMotion], out: &mut [f64]) -> f64 {
+        let mut worst: f64 = 0.0;
+        for (c, cut) in self.cuts.iter().enumerate() {
+            let (r0, r1) = match cut {
+                Cut::Revolute {
+                    a,
+                    a_local,
+                    b,
+                    b_local,
+                } => {
+                    let d = links[*a].world(a_local) - links[*b].world(b_local);
+                    (d.x, d.y)
+                }
+                Cut::Prismatic(s) => {
+                    let (sl, g) = (&links[s.slider], &links[s.guide]);
+                    let u = g.rotation * s.direction_local;
+                    let d = sl.world(&s.slider_local) - g.world(&s.through_local);
+                    let turn = ((g.rotation * s.relative).inverse() * sl.rotation).angle();
+                    (cross(&u, &d), turn)
+                }
+            };
+            out[2 * c] = r0;
+            out[2 * c + 1] = r1;
+            worst = worst.max(r0.abs()).max(r1.abs());
+        }
+        worst
+    }
+
+    /// First (`second == false`) or second time derivative of the cut residuals.
+    fn cut_rates(&self, links: &[LinkMotion], second: bool, out: &mut [f64]) {
+        for (c, cut) in self.cuts.iter().enumerate() {
+            let (r0, r1) = match cut {
+                Cut::Revolute {
+                    a,
+                    a_local,
+                    b,
+                    b_local,
+                } => {
+                    let (pa, pb) = (links[*a].point(a_local), links[*b].point(b_local));
+                    let d = if second {
+                        pa.acceleration - pb.acceleration
+                    } else {
+                        pa.velocity - pb.velocity
+                    };
+                    (d.x, d.y)
+                }
+                Cut::Prismatic(s) => {
+                    let (sl, g) = (&links[s.slider], &links[s.guide]);
+                    let u = g.rotation * s.direction_local;
+                    let (p, q) = (sl.point(&s.slider_local), g.point(&s.through_local));
+                    let d = p.position - q.position;
+                    let dd = p.velocity - q.velocity;
+                    let u_dot = perp(&u) * g.omega_rad_s;
+                    if second {
+                        let u_ddot =
+                            perp(&u) * g.alpha_rad_s2 - u * (g.omega_rad_s * g.omega_rad_s);
+                        let ddd = p.acceleration - q.acceleration;
+                        (
+                            cross(&u_ddot, &d) + 2.0 * cross(&u_dot, &dd) + cross(&u, &ddd),
+                            sl.alpha_rad_s2 - g.alpha_rad_s2,
+                        )
+                    } else {
+                        (
+                            cross(&u_dot, &d) + cross(&u, &dd),
+                            sl.omega_rad_s - g.omega_rad_s,
+                        )
+                    }
+                }
+            };
+            out[2 * c] = r0;
+            out[2 * c + 1] = r1;
+        }
+    }
+
+    /// Jacobian of the cut residuals at the current positions (columns: unknowns) and,
+    /// in `self.rates`, the driver's column.
+    fn build_jacobian(&mut self, links: &mut [LinkMotion]) {
+        let n = self.q.len();
+        let mut col = vec![0.0; 2 * self.cuts.len()];
+        for k in 0..=n {
+            self.motion_pass(links, |i| if i == k { 1.0 } else { 0.0 }, |_| 0.0);
+            self.cut_rates(links, false, &mut col);
+            if k == 0 {
+                self.rates[..col.len()].copy_from_slice(&col);
+            } else {
+                for (r, v) in col.iter().enumerate() {
+                    self.jac[(r, k - 1)] = *v;
+                }
+            }
+        }
+    }
+
+    /// Solves at `input_rad` with input speed `speed_rad_s` (constant), writing every
+    /// link's motion to `links`. Returns a conditioning estimate in [0, 1].
+    pub fn solve_links(
+        &mut self,
+        input_rad: f64,
+        speed_rad_s: f64,
+        links: &mut [LinkMotion],
+    ) -> Result<f64> {
+        if !input_rad.is_finite() || !speed_rad_s.is_finite() {
+            return Err(LinkageError::InvalidParameter {
+                name: "input".into(),
+                value: if input_rad.is_finite() {
+                    speed_rad_s
+                } else {
+                    input_rad
+                },
+                valid: "input angle and speed must be finite".into(),
+            });
+        }
+        let last = self.last_input.unwrap_or(input_rad);
+        // Shortest signed turn from the last solved input, so a full cycle is continuous.
+        let delta = (input_rad - last + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
+            - std::f64::consts::PI;
+        let steps = (delta.abs() / CONTINUATION_STEP).ceil().max(1.0) as usize;
+        for s in 1..=steps {
+            let at = last + delta * (s as f64 / steps as f64);
+            let h = delta / steps as f64;
+            let predicted = &self.q + &self.dq * h + &self.ddq * (0.5 * h * h);
+            self.q.copy_from(&predicted);
+            self.correct(at, links)?;
+            // Branch guard: a correction far larger than the predictor's error means
+            // Newton converged to the other assembly mode.
+            let jump = (&self.q - &predicted).amax();
+            if jump > 0.1 && self.last_iterations > 0 {
+                self.q.copy_from(&predicted);
+                return Err(LinkageError::BranchJump {
+                    input_deg: at.to_degrees(),
+                    reason: format!(
+                        "Newton correction of {jump:.3} rad from the predicted pose; near a dead point"
+                    ),
+                });
+            }
+            self.update_derivatives(links)?;
+        }
+        self.last_input = Some(input_rad);
+        // Final motion at the real speed: q̇ = ω q', q̈ = ω² q'' (constant input speed).
+        let w = speed_rad_s;
+        let (dq, ddq) = (self.dq.clone(), self.ddq.clone());
+        self.motion_pass(
+            links,
+            |k| if k == 0 { w } else { w * dq[k - 1] },
+            |k| if k == 0 { 0.0 } else { w * w * ddq[k - 1] },
+        );
+        let det = self.jac.determinant().abs();
+        let norms: f64 = self.jac.column_iter().map(|c| c.norm()).product();
+        Ok(if norms > 0.0 {
+            (det / norms).min(1.0)
+        } else {
+            1.0
+        })
+    }
+
+    /// Newton iterations at fixed input from the current `q`.
+    fn correct(&mut self, input: f64, links: &mut [LinkMotion]) -> Result<()> {
+        let mut res = vec![0.0; 2 * self.cuts.len()];
+        for iter in 0..=self.max_iterations {
+            self.position_pass(input, links);
+            let worst = self.residual(links, &mut res);
+            if !worst.is_finite() {
+                break;
+            }
+            if worst <= self.tolerance {
+                self.last_iterations = iter;
+                return Ok(());
+            }
+            if iter == self.max_iterations {
+                return Err(LinkageError::NewtonDiverged {
+                    input_deg: input.to_degrees(),
+                    iterations: iter,
+                    residual: worst,
+                    tolerance: self.tolerance,
+                });
+            }
+            self.build_jacobian(links);
+            self.rhs.iter_mut().zip(&res).for_each(|(r, v)| *r = -v);
+            let lu = self.jac.clone().lu();
+            if !lu.solve_mut(&mut self.rhs) {
+                return Err(LinkageError::Singular {
+                    input_deg: input.to_degrees(),
+                    reason: "the loop-closure Jacobian is singular (dead point or unassemblable)"
+                        .into(),
+                });
+            }
+            self.q += &self.rhs;
+        }
+        Err(LinkageError::NewtonDiverged {
+            input_deg: input.to_degrees(),
+            iterations: self.max_iterations,
+            residual: f64::NAN,
+            tolerance: self.tolerance,
+        })
+    }
+
+    /// Computes dq/d(input) and d²q/d(input)² at the converged pose.
+    fn update_derivatives(&mut self, links: &mut [LinkMotion]) -> Result<()> {
+        let n = self.q.len();
+        self.build_jacobian(links);
+        let lu = self.jac.clone().lu();
+        for r in 0..n {
+            self.rhs[r] = -self.rates[r];
+        }
+        if !lu.solve_mut(&mut self.rhs) {
+            return Err(LinkageError::Singular {
+                input_deg: self.last_input.unwrap_or(0.0).to_degrees(),
+                reason: "the loop-closure Jacobian is singular: a dead point of this input".into(),
+            });
+        }
+        self.dq.copy_from(&self.rhs);
+        let dq = self.dq.clone();
+        self.motion_pass(links, |k| if k == 0 { 1.0 } else { dq[k - 1] }, |_| 0.0);
+        let mut bias = vec![0.0; 2 * self.cuts.len()];
+        self.cut_rates(links, true, &mut bias);
+        for r in 0..n {
+            self.rhs[r] = -bias[r];
+        }
+        lu.solve_mut(&mut self.rhs);
+        self.ddq.copy_from(&self.rhs);
+        Ok(())
+    }
+
+    /// Scratch link buffer of the right size.
+    pub fn scratch(&mut self) -> &mut Vec<LinkMotion> {
+        if self.scratch.len() != self.link_count {
+            self.scratch = vec![LinkMotion::default(); self.link_count];
+        }
+        &mut self.scratch
+    }
+}

@@ -1,0 +1,415 @@
+//! Velocity and acceleration polygon data: for every dyad, its vector equations
+//! (`v_C = v_B + v_CB`, `a_C^n + a_C^t = a_B^n + a_B^t + a_CB^n + a_CB^t`, with the
+//! Coriolis term where a slider rides a moving guide) and, per term, the vector,
+//! whether its magnitude and direction are known before solving the group, and the
+//! direction in words, as the textbooks tabulate them.
+
+use serde::Serialize;
+
+use crate::closed_form::Group;
+use crate::kinematics::Kinematics;
+use crate::model::Mechanism;
+use crate::motion::{PointMotion, Solution, Vec2, perp};
+
+/// One vector of a polygon equation.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Term {
+    /// Symbol, e.g. `v_CB` or `a_C^t` (`^k` marks Coriolis, `^r` sliding).
+    pub symbol: String,
+    /// The vector, m/s or m/s².
+    pub vector: [f64; 2],
+    /// Its length.
+    pub magnitude: f64,
+    /// Its direction, rad.
+    pub direction_rad: f64,
+    /// Magnitude known before the group is solved.
+    pub magnitude_known: bool,
+    /// Direction known before the group is solved.
+    pub direction_known: bool,
+    /// The direction in words (`perp CD`, `along guide`, `C to D`).
+    pub direction: String,
+}
+
+/// One vector equation: sum of `lhs` = sum of `rhs`.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct VectorEquation {
+    /// `velocity` or `acceleration`.
+    pub kind: &'static str,
+    /// The group it solves.
+    pub group: String,
+    /// The equation in symbols.
+    pub equation: String,
+    /// Left side terms.
+    pub lhs: Vec<Term>,
+    /// Right side terms.
+    pub rhs: Vec<Term>,
+}
+
+impl VectorEquation {
+    /// |Σlhs − Σrhs|: zero up to round-off for a solved position.
+    pub fn residual(&self) -> f64 {
+        let sum = |t: &[Term]| {
+            t.iter().fold(Vec2::zeros(), |acc, t| {
+                acc + Vec2::new(t.vector[0], t.vector[1])
+            })
+        };
+        (sum(&self.lhs) - sum(&self.rhs)).norm()
+    }
+}
+
+fn term(
+    symbol: String,
+    v: Vec2,
+    magnitude_known: bool,
+    direction_known: bool,
+    direction: String,
+) -> Term {
+    Term {
+        symbol,
+        vector: [v.x, v.y],
+        magnitude: v.norm(),
+        direction_rad: v.y.atan2(v.x),
+        magnitude_known,
+        direction_known,
+        direction,
+    }
+}
+
+fn point_name(m: &Mechanism, link: usize, local: &Vec2) -> String {
+    m.links[link]
+        .points
+        .iter()
+        .find(|(_, l)| (l - local).norm() <= 1e-12 * (1.0 + local.norm()))
+        .map_or_else(
+            || format!("{}?", m.links[link].name),
+            |(p, _)| m.points[*p].name.clone(),
+        )
+}
+
+/// The ground pivot name of a link that is pinned to ground.
+fn ground_pivot(m: &Mechanism, link: usize) -> Option<String> {
+    m.revolutes
+        .iter()
+        .find(|r| (r.a == link && r.b == m.ground) || (r.b == link && r.a == m.ground))
+        .map(|r| m.points[r.point].name.clone())
+}
+
+/// Terms of a known point P on `link`: none on ground; `v_P` (perp OP) and
+/// `a_P^n + a_P^t` on a link turning about a ground pivot O; else the whole vector.
+fn known_point(
+    m: &Mechanism,
+    s: &Solution,
+    link: usize,
+    name: &str,
+    p: &PointMotion,
+    accel: bool,
+) -> Vec<Term> {
+    if link == m.ground {
+        return Vec::new();
+    }
+    let l = &s.links[link];
+    match ground_pivot(m, link) {
+        Some(o) => {
+            let r = p.position
+                - s.links[link].world(
+                    &m.links[link]
+                        .local(m.point_index(&o).unwrap_or(0))
+                        .unwrap_or_default(),
+                );
+            if accel {
+                vec![
+                    term(
+                        format!("a_{name}^n"),
+                        -r * l.omega_rad_s.powi(2),
+                        true,
+                        true,
+                        format!("{name} to {o}"),
+                    ),
+                    term(
+                        format!("a_{name}^t"),
+                        perp(&r) * l.alpha_rad_s2,
+                        true,
+                        true,
+                        format!("perp {o}{name}"),
+                    ),
+                ]
+            } else {
+                vec![term(
+                    format!("v_{name}"),
+                    p.velocity,
+                    true,
+                    true,
+                    format!("perp {o}{name}"),
+                )]
+            }
+        }
+        None => {
+            let v = if accel { p.acceleration } else { p.velocity };
+            vec![term(
+                format!("{}_{name}", if accel { "a" } else { "v" }),
+                v,
+                true,
+                true,
+                "known".into(),
+            )]
+        }
+    }
+}
+
+/// Relative terms of M about A on a link turning at (ω, α): `v_MA` or `a_MA^n + a_MA^t`
+/// (named `v_M`, `a_M^n`, `a_M^t` when A is a ground pivot).
+fn relative(
+    m_name: &str,
+    a_name: &str,
+    r: Vec2,
+    omega: f64,
+    alpha: f64,
+    a_fixed: bool,
+    accel: bool,
+) -> Vec<Term> {
+    let sym = if a_fixed {
+        m_name.to_string()
+    } else {
+        format!("{m_name}{a_name}")
+    };
+    if accel {
+        vec![
+            term(
+                format!("a_{sym}^n"),
+                -r * omega * omega,
+                true,
+                true,
+                format!("{m_name} to {a_name}"),
+            ),
+            term(
+                format!("a_{sym}^t"),
+                perp(&r) * alpha,
+                false,
+                true,
+                format!("perp {m_name}{a_name}"),
+            ),
+        ]
+    } else {
+        vec![term(
+            format!("v_{sym}"),
+            perp(&r) * omega,
+            false,
+            true,
+            format!("perp {m_name}{a_name}"),
+        )]
+    }
+}
+
+/// Terms of a point M riding a guide of `guide` link: the guide's coincident point
+/// M' (if the guide moves), Coriolis, and the sliding term along the guide.
+fn riding(
+    m: &Mechanism,
+    s: &Solution,
+    guide: usize,
+    m_name: &str,
+    pm: &PointMotion,
+    u: Vec2,
+    accel: bool,
+) -> Vec<Term> {
+    let g = &s.links[guide];
+    let on = g.material_point_at(&pm.position);
+    let v_rel = pm.velocity - on.velocity;
+    let coriolis = perp(&v_rel) * (2.0 * g.omega_rad_s);
+    let fixed = guide == m.ground;
+    let prime = format!("{m_name}'");
+    let rel = if fixed {
+        m_name.to_string()
+    } else {
+        format!("{m_name}{prime}")
+    };
+    let _ = u;
+    let mut t = Vec::new();
+    if accel {
+        if !fixed {
+            t.push(term(
+                format!("a_{prime}"),
+                on.acceleration,
+                true,
+                true,
+                format!("known ({} point at {m_name})", m.links[guide].name),
+            ));
+            t.push(term(
+                format!("a_{rel}^k"),
+                coriolis,
+                true,
+                true,
+                "Coriolis: 2 omega_guide x v_rel".into(),
+            ));
+        }
+        let sym = if fixed {
+            format!("a_{rel}")
+        } else {
+            format!("a_{rel}^r")
+        };
+        t.push(term(
+            sym,
+            pm.acceleration - on.acceleration - coriolis,
+            false,
+            true,
+            "along guide".into(),
+        ));
+    } else {
+        if !fixed {
+            t.push(term(
+                format!("v_{prime}"),
+                on.velocity,
+                true,
+                true,
+                format!("known ({} point at {m_name})", m.links[guide].name),
+            ));
+        }
+        t.push(term(
+            format!("v_{rel}"),
+            v_rel,
+            false,
+            true,
+            "along guide".into(),
+        ));
+    }
+    t
+}
+
+fn equation(kind: &'static str, group: String, lhs: Vec<Term>, rhs: Vec<Term>) -> VectorEquation {
+    let side = |t: &[Term]| {
+        if t.is_empty() {
+            "0".to_string()
+        } else {
+            t.iter()
+                .map(|x| x.symbol.as_str())
+                .collect::<Vec<_>>()
+                .join(" + ")
+        }
+    };
+    VectorEquation {
+        kind,
+        equation: format!("{} = {}", side(&lhs), side(&rhs)),
+        group,
+        lhs,
+        rhs,
+    }
+}
+
+/// Polygon equations of every group at a solved position (empty on the Newton-only path).
+pub fn polygons(k: &Kinematics, s: &Solution) -> Vec<VectorEquation> {
+    let m = k.mechanism();
+    let Some(cf) = k.closed_form() else {
+        return Vec::new();
+    };
+    let mut out = Vec::new();
+    for (gi, group) in cf.groups.iter().enumerate() {
+        let gname = k.group_name(gi);
+        for accel in [false, true] {
+            let kind = if accel { "acceleration" } else { "velocity" };
+            let (lhs, rhs) = match group {
+                Group::Rrr(d) => {
+                    let (a, c) = (d.a.link, d.c.link);
+                    let (an, cn) = (point_name(m, a, &d.a.local), point_name(m, c, &d.c.local));
+                    let mn = m.points[cf.group_points[gi]].name.clone();
+                    let (pa, pc) = (s.links[a].point(&d.a.local), s.links[c].point(&d.c.local));
+                    let pm = s.links[d.i].point(&d.mid_on_i);
+                    let (li, lj) = (&s.links[d.i], &s.links[d.j]);
+                    let mut lhs = known_point(m, s, c, &cn, &pc, accel);
+                    lhs.extend(relative(
+                        &mn,
+                        &cn,
+                        pm.position - pc.position,
+                        lj.omega_rad_s,
+                        lj.alpha_rad_s2,
+                        c == m.ground,
+                        accel,
+                    ));
+                    let mut rhs = known_point(m, s, a, &an, &pa, accel);
+                    rhs.extend(relative(
+                        &mn,
+                        &an,
+                        pm.position - pa.position,
+                        li.omega_rad_s,
+                        li.alpha_rad_s2,
+                        a == m.ground,
+                        accel,
+                    ));
+                    (lhs, rhs)
+                }
+                Group::Rrp(d) => {
+                    let an = point_name(m, d.a.link, &d.a.local);
+                    let mn = m.points[cf.group_points[gi]].name.clone();
+                    let pa = s.links[d.a.link].point(&d.a.local);
+                    let pm = s.links[d.j].point(&d.mid_on_j);
+                    let u = d.slide.direction(&s.links);
+                    let li = &s.links[d.i];
+                    let lhs = riding(m, s, d.slide.guide, &mn, &pm, u, accel);
+                    let mut rhs = known_point(m, s, d.a.link, &an, &pa, accel);
+                    rhs.extend(relative(
+                        &mn,
+                        &an,
+                        pm.position - pa.position,
+                        li.omega_rad_s,
+                        li.alpha_rad_s2,
+                        d.a.link == m.ground,
+                        accel,
+                    ));
+                    (lhs, rhs)
+                }
+                Group::Rpr(d) => {
+                    let sn = point_name(m, d.s.link, &d.s.local);
+                    let gn = point_name(m, d.g.link, &d.g.local);
+                    let ps = s.links[d.s.link].point(&d.s.local);
+                    let pg = s.links[d.g.link].point(&d.g.local);
+                    let guide = &s.links[d.guide];
+                    let lhs = known_point(m, s, d.s.link, &sn, &ps, accel);
+                    let mut rhs = known_point(m, s, d.g.link, &gn, &pg, accel);
+                    let prime = format!("{sn}'");
+                    rhs.extend(relative(
+                        &prime,
+                        &gn,
+                        ps.position - pg.position,
+                        guide.omega_rad_s,
+                        guide.alpha_rad_s2,
+                        d.g.link == m.ground,
+                        accel,
+                    ));
+                    let u = guide.rotation * Vec2::new(d.dir_u.cos_angle(), d.dir_u.sin_angle());
+                    let slide = riding(m, s, d.guide, &sn, &ps, u, accel);
+                    // The coincident point's own motion is already on this side: keep only
+                    // the Coriolis and sliding terms.
+                    rhs.extend(
+                        slide
+                            .into_iter()
+                            .filter(|t| !t.symbol.ends_with(&format!("_{prime}"))),
+                    );
+                    (lhs, rhs)
+                }
+                Group::Prp(d) => {
+                    let mn = m.points[cf.group_points[gi]].name.clone();
+                    let pm = s.links[d.i].point(&d.mid_on_i);
+                    let lhs = riding(
+                        m,
+                        s,
+                        d.slide_j.guide,
+                        &mn,
+                        &pm,
+                        d.slide_j.direction(&s.links),
+                        accel,
+                    );
+                    let rhs = riding(
+                        m,
+                        s,
+                        d.slide_i.guide,
+                        &mn,
+                        &pm,
+                        d.slide_i.direction(&s.links),
+                        accel,
+                    );
+                    (lhs, rhs)
+                }
+            };
+            out.push(equation(kind, gname.clone(), lhs, rhs));
+        }
+    }
+    out
+}

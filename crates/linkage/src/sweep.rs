@@ -1,0 +1,136 @@
+//! One input cycle (or the assemblable range) solved at evenly spaced inputs, and the
+//! CSV contract of `linkage sweep`: `input_rad`, then `P_x,P_y,P_vx,P_vy,P_ax,P_ay`
+//! per named point, then `L_theta,L_omega,L_alpha` per moving link, SI units.
+
+use crate::analysis::{AssemblyRanges, assembly_ranges_of, describe_ranges};
+use crate::error::{LinkageError, Result};
+use crate::kinematics::Kinematics;
+use crate::model::Mechanism;
+use crate::motion::Solution;
+
+/// Conditioning below which a sweep position is reported as near a tangency.
+pub const NEAR_SINGULAR: f64 = 1e-3;
+
+/// A solved sweep.
+#[derive(Clone, Debug)]
+pub struct Sweep {
+    /// Solutions in input order.
+    pub solutions: Vec<Solution>,
+    /// Link angles unwrapped along the sweep, rad: `angles[row][link]`.
+    pub angles: Vec<Vec<f64>>,
+    /// Inputs (rad) where the conditioning fell below [`NEAR_SINGULAR`].
+    pub near_singular: Vec<f64>,
+    /// The range swept, rad.
+    pub range: [f64; 2],
+}
+
+/// The input interval a sweep covers: a full turn from the start angle, or the
+/// assembly interval that holds the start angle (ends pulled in by a hair, since
+/// the ends are dead points).
+pub fn sweep_range(k: &Kinematics) -> Result<([f64; 2], bool)> {
+    let start = k.mechanism().driver.start_rad;
+    let ranges: AssemblyRanges = assembly_ranges_of(k);
+    if ranges.full_rotation {
+        return Ok(([start, start + std::f64::consts::TAU], true));
+    }
+    let inside = |[a, b]: &[f64; 2]| {
+        let x = start.rem_euclid(std::f64::consts::TAU);
+        (x >= *a && x <= *b) || (x + std::f64::consts::TAU >= *a && x + std::f64::consts::TAU <= *b)
+    };
+    let [a, b] = ranges
+        .intervals
+        .iter()
+        .find(|r| inside(r))
+        .or(ranges.intervals.first())
+        .copied()
+        .ok_or_else(|| LinkageError::CannotAssemble {
+            input_deg: start.to_degrees(),
+            reason: "no input angle assembles the chain".into(),
+            reachable: describe_ranges(&ranges),
+        })?;
+    let hair = 1e-7 * (b - a);
+    Ok(([a + hair, b - hair], false))
+}
+
+/// Solves `steps` positions over [`sweep_range`] at the scene's input speed (a full
+/// turn excludes its end, which repeats the start).
+pub fn sweep(k: &mut Kinematics, steps: usize) -> Result<Sweep> {
+    if steps < 2 {
+        return Err(LinkageError::InvalidParameter {
+            name: "steps".into(),
+            value: steps as f64,
+            valid: "must be at least 2".into(),
+        });
+    }
+    let ([a, b], full) = sweep_range(k)?;
+    let speed = k.mechanism().driver.speed_rad_s;
+    let divisions = if full { steps } else { steps - 1 };
+    let mut solutions = Vec::with_capacity(steps);
+    let mut angles: Vec<Vec<f64>> = Vec::with_capacity(steps);
+    let mut near_singular = Vec::new();
+    for i in 0..steps {
+        let x = a + (b - a) * i as f64 / divisions as f64;
+        let mut s = k.empty_solution();
+        k.solve_into(x, speed, &mut s)?;
+        if s.conditioning < NEAR_SINGULAR {
+            near_singular.push(x);
+        }
+        let row: Vec<f64> = match angles.last() {
+            None => s.links.iter().map(|l| l.angle_rad()).collect(),
+            Some(prev) => s
+                .links
+                .iter()
+                .zip(prev)
+                .map(|(l, p)| unwrap_near(l.angle_rad(), *p))
+                .collect(),
+        };
+        angles.push(row);
+        solutions.push(s);
+    }
+    Ok(Sweep {
+        solutions,
+        angles,
+        near_singular,
+        range: [a, b],
+    })
+}
+
+/// `angle` shifted by whole turns to be within π of `reference`.
+pub fn unwrap_near(angle: f64, reference: f64) -> f64 {
+    angle + ((reference - angle) / std::f64::consts::TAU).round() * std::f64::consts::TAU
+}
+
+/// The CSV header of `sweep` and `at`.
+pub fn csv_header(m: &Mechanism) -> Vec<String> {
+    let mut h = vec!["input_rad".to_string()];
+    for p in &m.points {
+        for suffix in ["x", "y", "vx", "vy", "ax", "ay"] {
+            h.push(format!("{}_{suffix}", p.name));
+        }
+    }
+    for l in m.moving_links() {
+        for suffix in ["theta", "omega", "alpha"] {
+            h.push(format!("{}_{suffix}", m.links[l].name));
+        }
+    }
+    h
+}
+
+/// One CSV row matching [`csv_header`]; `angles` are the (unwrapped) link angles.
+pub fn csv_row(m: &Mechanism, s: &Solution, angles: &[f64]) -> Vec<f64> {
+    let mut row = vec![s.input_rad];
+    for p in &s.points {
+        row.extend([
+            p.position.x,
+            p.position.y,
+            p.velocity.x,
+            p.velocity.y,
+            p.acceleration.x,
+            p.acceleration.y,
+        ]);
+    }
+    for l in m.moving_links() {
+        row.extend([angles[l], s.links[l].omega_rad_s, s.links[l].alpha_rad_s2]);
+    }
+    row
+}

@@ -1,0 +1,50 @@
+//! Linkage Lab: the eframe/egui viewer over the `linkage` solver.
+//!
+//! The same crate builds the desktop app (`src/main.rs`) and the browser demo
+//! (wasm32, started by [`start_web`]).
+
+mod app;
+
+pub use app::LinkageApp;
+
+/// Reads `--exit-after-frames N` from the command line (for headless smoke runs).
+///
+/// Returns `None` when the flag is absent or its value is not a whole number.
+pub fn exit_after_frames_from_args(args: impl IntoIterator<Item = String>) -> Option<u64> {
+    let mut args = args.into_iter();
+    while let Some(arg) = args.next() {
+        if arg == "--exit-after-frames" {
+            return args.next().and_then(|n| n.parse().ok());
+        }
+    }
+    None
+}
+
+/// Starts the app on the page's `<canvas id="linkage_canvas">` (browser only).
+#[cfg(target_arch = "wasm32")]
+pub fn start_web() {
+    use eframe::wasm_bindgen::JsCast as _;
+    wasm_bindgen_futures::spawn_local(async {
+        let Some(document) = web_sys::window().and_then(|w| w.document()) else {
+            log::error!("no document: Linkage Lab must run in a browser page");
+            return;
+        };
+        let Some(canvas) = document
+            .get_element_by_id("linkage_canvas")
+            .and_then(|e| e.dyn_into::<web_sys::HtmlCanvasElement>().ok())
+        else {
+            log::error!("the page has no <canvas id=\"linkage_canvas\">");
+            return;
+        };
+        let result = eframe::WebRunner::new()
+            .start(
+                canvas,
+                eframe::WebOptions::default(),
+                Box::new(|cc| Ok(Box::new(LinkageApp::new(cc, None)))),
+            )
+            .await;
+        if let Err(err) = result {
+            log::error!("failed to start Linkage Lab: {err:?}");
+        }
+    });
+}

@@ -1,0 +1,29 @@
+//! Entry points only: the native window and the browser start.
+
+#![cfg_attr(not(debug_assertions), windows_subsystem = "windows")]
+
+#[cfg(not(target_arch = "wasm32"))]
+fn main() -> eframe::Result {
+    let options = eframe::NativeOptions {
+        viewport: eframe::egui::ViewportBuilder::default()
+            .with_title("Linkage Lab")
+            .with_inner_size([1100.0, 720.0]),
+        ..Default::default()
+    };
+    let exit_after_frames = linkage_lab::exit_after_frames_from_args(std::env::args());
+    eframe::run_native(
+        "Linkage Lab",
+        options,
+        Box::new(move |cc| {
+            Ok(Box::new(linkage_lab::LinkageApp::new(
+                cc,
+                exit_after_frames,
+            )))
+        }),
+    )
+}
+
+#[cfg(target_arch = "wasm32")]
+fn main() {
+    linkage_lab::start_web();
+}
