@@ -276,9 +276,12 @@ impl Probe<'_> {
 /// shrunk by a hair (the ends are dead points where velocities are undefined).
 fn grids(r: &AssemblyRanges, start: f64) -> Vec<Vec<f64>> {
     if r.full_rotation {
+        // Offset by a fraction of a step: scenes start at symmetric angles (0, 90 deg)
+        // where limits often sit exactly, and a root on a grid point has no sign change.
+        const OFFSET: f64 = 0.3713;
         return vec![
             (0..=GRID)
-                .map(|i| start + TAU * i as f64 / GRID as f64)
+                .map(|i| start + TAU * (i as f64 + OFFSET) / GRID as f64)
                 .collect(),
         ];
     }
