@@ -65,6 +65,8 @@ pub struct Newton {
     dq: DVector<f64>,
     ddq: DVector<f64>,
     last_input: Option<f64>,
+    /// Sign of det J at the last solution (0 before the first): the assembly mode.
+    det_sign: f64,
     jac: DMatrix<f64>,
     rhs: DVector<f64>,
     rates: Vec<f64>,
@@ -207,6 +209,7 @@ impl Newton {
             dq: DVector::zeros(unknowns),
             ddq: DVector::zeros(unknowns),
             last_input: None,
+            det_sign: 0.0,
             jac: DMatrix::zeros(unknowns, unknowns),
             rhs: DVector::zeros(unknowns),
             rates: vec![0.0; 2 * unknowns.max(1)],
@@ -442,25 +445,47 @@ impl Newton {
         // Shortest signed turn from the last solved input, so a full cycle is continuous.
         let delta = (input_rad - last + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
             - std::f64::consts::PI;
-        let steps = (delta.abs() / CONTINUATION_STEP).ceil().max(1.0) as usize;
-        for s in 1..=steps {
-            let at = last + delta * (s as f64 / steps as f64);
-            let h = delta / steps as f64;
+        let (mut at, mut h) = (last, delta.signum() * CONTINUATION_STEP.min(delta.abs()));
+        while (input_rad - at).abs() > 0.0 && delta != 0.0 {
+            let remaining = last + delta - at;
+            if h.abs() > remaining.abs() {
+                h = remaining;
+            }
+            let saved = (
+                self.q.clone(),
+                self.dq.clone(),
+                self.ddq.clone(),
+                self.det_sign,
+            );
             let predicted = &self.q + &self.dq * h + &self.ddq * (0.5 * h * h);
             self.q.copy_from(&predicted);
-            self.correct(at, links)?;
-            // Branch guard: a correction far larger than the predictor's error means
-            // Newton converged to the other assembly mode.
-            let jump = (&self.q - &predicted).amax();
-            if jump > 0.1 && self.last_iterations > 0 {
-                self.q.copy_from(&predicted);
-                return Err(LinkageError::BranchJump {
-                    input_deg: at.to_degrees(),
-                    reason: format!(
-                        "Newton correction of {jump:.3} rad from the predicted pose; near a dead point"
-                    ),
-                });
+            let ok = self
+                .correct(at + h, links)
+                .and_then(|_| self.update_derivatives(links));
+            // The sign of det J flips exactly where the solution passes to the other
+            // assembly mode: refuse that step and retry it shorter.
+            let jumped = saved.3 != 0.0 && self.det_sign != saved.3;
+            if ok.is_err() || jumped {
+                (self.q, self.dq, self.ddq, self.det_sign) = saved;
+                h *= 0.5;
+                if h.abs() < 1e-9 {
+                    return Err(match ok {
+                        Err(e) => e,
+                        Ok(()) => LinkageError::BranchJump {
+                            input_deg: (at + 2.0 * h).to_degrees(),
+                            reason: "Newton would pass to the other assembly mode (det J changes sign): a dead point".into(),
+                        },
+                    });
+                }
+                continue;
             }
+            at += h;
+            if (last + delta - at).abs() <= 1e-15 * (1.0 + at.abs()) {
+                break;
+            }
+        }
+        if delta == 0.0 {
+            self.correct(input_rad, links)?;
             self.update_derivatives(links)?;
         }
         self.last_input = Some(input_rad);
@@ -513,6 +538,13 @@ impl Newton {
                 });
             }
             self.q += &self.rhs;
+            // Near a dead point J is ill-conditioned and the residual floor can sit above
+            // the tolerance; a step at round-off level means Newton has converged anyway.
+            if self.rhs.amax() <= 4.0 * f64::EPSILON * (1.0 + self.q.amax()) {
+                self.position_pass(input, links);
+                self.last_iterations = iter + 1;
+                return Ok(());
+            }
         }
         Err(LinkageError::NewtonDiverged {
             input_deg: input.to_degrees(),
@@ -527,6 +559,7 @@ impl Newton {
         let n = self.q.len();
         self.build_jacobian(links);
         let lu = self.jac.clone().lu();
+        self.det_sign = lu.determinant().signum();
         for r in 0..n {
             self.rhs[r] = -self.rates[r];
         }

@@ -289,7 +289,7 @@ pub struct SolverSpec {
     /// Preferred path.
     #[serde(default)]
     pub path: SolverPath,
-    /// Newton tolerance on the constraint residual, m (and rad).
+    /// Newton tolerance on the constraint residual, m (and rad); default 1e-14.
     #[serde(default = "default_tolerance")]
     pub tolerance: f64,
     /// Newton iteration limit.
@@ -298,7 +298,7 @@ pub struct SolverSpec {
 }
 
 fn default_tolerance() -> f64 {
-    1e-13
+    1e-14
 }
 
 fn default_max_iterations() -> usize {

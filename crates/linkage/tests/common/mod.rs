@@ -1,0 +1,46 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+use linkage::scene::SolverPath;
+use linkage::{Kinematics, Mechanism};
+
+/// Every scene shipped in `assets/scenes`.
+pub const SCENES: [&str; 6] = [
+    "paper_cup_feed.ron",
+    "die_cutter.ron",
+    "die_cutter_as_printed.ron",
+    "gravity_flipper.ron",
+    "slider_crank.ron",
+    "quick_return.ron",
+];
+
+/// Text of a shipped scene.
+pub fn scene_text(file: &str) -> String {
+    let path = format!("{}/../../assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"));
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("cannot read {path}: {e}"))
+}
+
+/// A shipped scene, validated.
+pub fn mechanism(file: &str) -> Mechanism {
+    Mechanism::from_ron(&scene_text(file)).unwrap_or_else(|e| panic!("{file}: {e}"))
+}
+
+/// A shipped scene on the given solver path.
+pub fn kinematics(file: &str, path: SolverPath) -> Kinematics {
+    Kinematics::with_path(mechanism(file), path).unwrap_or_else(|e| panic!("{file}: {e}"))
+}
+
+/// Inputs over the scene's sweep range (full turn or assembly interval).
+pub fn cycle(k: &Kinematics, n: usize) -> Vec<f64> {
+    let ([a, b], full) = linkage::sweep::sweep_range(k).expect("scene assembles somewhere");
+    let div = if full { n } else { n - 1 };
+    (0..n)
+        .map(|i| a + (b - a) * i as f64 / div as f64)
+        .collect()
+}
+
+/// Wraps an angle difference into (-π, π].
+pub fn wrap(a: f64) -> f64 {
+    let t = std::f64::consts::TAU;
+    a - (a / t).round() * t
+}
