@@ -291,6 +291,26 @@ impl Mechanism {
             }
         }
 
+        // Two joints of one link at the same place make that link a point: no length,
+        // no angle (a zero-length crank, say).
+        for link in &links {
+            let joints: Vec<&(usize, Vec2)> = link
+                .points
+                .iter()
+                .filter(|(p, _)| on_links[*p].len() > 1)
+                .collect();
+            for (n, (pa, a)) in joints.iter().enumerate() {
+                for (pb, b) in &joints[n + 1..] {
+                    if (a - b).norm() <= 1e-12 * size_m.max(f64::MIN_POSITIVE) {
+                        return Err(invalid(format!(
+                            "link `{}` has zero length between its joints `{}` and `{}`",
+                            link.name, points[*pa].name, points[*pb].name
+                        )));
+                    }
+                }
+            }
+        }
+
         let link_of = |name: &str, ctx: &str| -> Result<usize> {
             links.iter().position(|l| l.name == name).ok_or_else(|| {
                 invalid(format!(

@@ -58,6 +58,8 @@ pub struct Newton {
     ground: usize,
     link_count: usize,
     tolerance: f64,
+    /// Largest residual accepted when Newton stalls at round-off (1e-12 of the size).
+    stall_residual: f64,
     max_iterations: usize,
     /// Unknown coordinates (tree joints after the driver).
     q: DVector<f64>,
@@ -204,6 +206,7 @@ impl Newton {
             ground: m.ground,
             link_count: n,
             tolerance: tolerance.max(8.0 * f64::EPSILON * m.size_m),
+            stall_residual: 1e-12 * m.size_m,
             max_iterations,
             q: DVector::zeros(unknowns),
             dq: DVector::zeros(unknowns),
@@ -542,8 +545,19 @@ impl Newton {
             // the tolerance; a step at round-off level means Newton has converged anyway.
             if self.rhs.amax() <= 4.0 * f64::EPSILON * (1.0 + self.q.amax()) {
                 self.position_pass(input, links);
-                self.last_iterations = iter + 1;
-                return Ok(());
+                // ...but only at a solution: outside the assembly range Newton also
+                // stalls, at a least-residual pose that closes nothing.
+                let worst = self.residual(links, &mut res);
+                if worst <= self.stall_residual {
+                    self.last_iterations = iter + 1;
+                    return Ok(());
+                }
+                return Err(LinkageError::NewtonDiverged {
+                    input_deg: input.to_degrees(),
+                    iterations: iter + 1,
+                    residual: worst,
+                    tolerance: self.tolerance,
+                });
             }
         }
         Err(LinkageError::NewtonDiverged {
