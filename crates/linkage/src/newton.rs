@@ -77,6 +77,9 @@ pub struct Newton {
     pub last_iterations: usize,
 }
 
+/// Largest change of any coordinate the predictor may make in one step (rad or m/m).
+const MAX_PREDICTED_CHANGE: f64 = 0.2;
+
 /// Largest step of the input between two Newton solves on one branch, rad.
 const CONTINUATION_STEP: f64 = 2.0 * std::f64::consts::PI / 180.0;
 
@@ -221,6 +224,17 @@ impl Newton {
         };
         solver.set_pose(start, m.driver.start_rad);
         Ok(solver)
+    }
+
+    /// Keeps joint angles in (-π, π]: they only enter through sin/cos, and a large
+    /// angle would cost digits there.
+    fn wrap_angles(&mut self) {
+        for (k, t) in self.tree.iter().enumerate().skip(1) {
+            if matches!(t.kind, TreeKind::Revolute { .. }) {
+                let q = &mut self.q[k - 1];
+                *q -= (*q / std::f64::consts::TAU).round() * std::f64::consts::TAU;
+            }
+        }
     }
 
     /// Number of unknown coordinates.
@@ -460,8 +474,14 @@ impl Newton {
                 self.ddq.clone(),
                 self.det_sign,
             );
-            let predicted = &self.q + &self.dq * h + &self.ddq * (0.5 * h * h);
-            self.q.copy_from(&predicted);
+            let increment = &self.dq * h + &self.ddq * (0.5 * h * h);
+            // Near a dead point the derivatives blow up: a large predicted change means
+            // the step is too long for the branch to be followed safely.
+            if increment.amax() > MAX_PREDICTED_CHANGE && h.abs() >= 2e-7 {
+                h *= 0.5;
+                continue;
+            }
+            self.q += &increment;
             let ok = self
                 .correct(at + h, links)
                 .and_then(|_| self.update_derivatives(links));
@@ -471,7 +491,7 @@ impl Newton {
             if ok.is_err() || jumped {
                 (self.q, self.dq, self.ddq, self.det_sign) = saved;
                 h *= 0.5;
-                if h.abs() < 1e-9 {
+                if h.abs() < 1e-7 {
                     return Err(match ok {
                         Err(e) => e,
                         Ok(()) => LinkageError::BranchJump {
@@ -482,6 +502,7 @@ impl Newton {
                 }
                 continue;
             }
+            self.wrap_angles();
             at += h;
             if (last + delta - at).abs() <= 1e-15 * (1.0 + at.abs()) {
                 break;
@@ -512,12 +533,20 @@ impl Newton {
     /// Newton iterations at fixed input from the current `q`.
     fn correct(&mut self, input: f64, links: &mut [LinkMotion]) -> Result<()> {
         let mut res = vec![0.0; 2 * self.cuts.len()];
+        let mut previous = f64::INFINITY;
         for iter in 0..=self.max_iterations {
             self.position_pass(input, links);
             let worst = self.residual(links, &mut res);
-            if !worst.is_finite() {
-                break;
+            // Growing residual after a few steps: diverging (no solution near here).
+            if !worst.is_finite() || (iter >= 4 && worst > previous) {
+                return Err(LinkageError::NewtonDiverged {
+                    input_deg: input.to_degrees(),
+                    iterations: iter,
+                    residual: worst,
+                    tolerance: self.tolerance,
+                });
             }
+            previous = worst;
             if worst <= self.tolerance {
                 self.last_iterations = iter;
                 return Ok(());

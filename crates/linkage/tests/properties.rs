@@ -73,13 +73,14 @@ fn check(text: &str) -> Result<(), TestCaseError> {
             match k.solve(x) {
                 Ok(s) => {
                     prop_assert!(closure_residual(&m, &s) < 1e-12, "{path:?} residual at {x}");
-                    prop_assert!(s.points.iter().all(|p| {
+                    let finite = s.points.iter().all(|p| {
                         p.position
                             .iter()
                             .chain(p.velocity.iter())
                             .chain(p.acceleration.iter())
                             .all(|v| v.is_finite())
-                    }));
+                    });
+                    prop_assert!(finite, "{path:?}: non-finite value at {x}");
                 }
                 Err(LinkageError::CannotAssemble { reachable, .. }) => {
                     prop_assert!(
