@@ -1,1 +1,64 @@
-fn main() {}
+//! Per-position cost of a full cycle of 3600 positions with positions, velocities and
+//! accelerations, for a four-bar (the flipper's geometry on a crank-rocker: the
+//! paper-cup feed's four-bar) and the die cutter's six-bar, on both solver paths.
+//!
+//! Criterion reports the time for one cycle; divide by 3600 for the per-position
+//! figure (the README and issue notes quote both).
+
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use linkage::scene::SolverPath;
+use linkage::{Kinematics, Mechanism};
+
+const POSITIONS: usize = 3600;
+
+fn scene(file: &str) -> Mechanism {
+    let path = format!("{}/../../assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
+    Mechanism::from_ron(&text).unwrap_or_else(|e| panic!("{path}: {e}"))
+}
+
+/// A crank-rocker four-bar: the paper-cup feed without its slider.
+fn four_bar() -> Mechanism {
+    let text = r#"Scene(name: "four-bar", models: Kinematics, length_unit: Millimetre,
+        links: [
+            (name: "ground", ground: true, points: {"A": (0.0, 0.0), "D": (200.0, 0.0)}),
+            (name: "crank", points: {"A": (0.0, 0.0), "B": (50.0, 0.0)}),
+            (name: "coupler", points: {"B": (0.0, 0.0), "C": (180.0, 0.0)}),
+            (name: "rocker", points: {"D": (0.0, 0.0), "C": (120.0, 0.0)}),
+        ],
+        driver: (link: "crank", speed: Rpm(45.0)),
+        branches: {"C": Left("B", "D")})"#;
+    Mechanism::from_ron(text).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn cycle(c: &mut Criterion) {
+    let mut group = c.benchmark_group("cycle_3600_positions_pva");
+    group.throughput(Throughput::Elements(POSITIONS as u64));
+    for (name, mech) in [
+        ("four_bar", four_bar()),
+        ("die_cutter_six_bar", scene("die_cutter.ron")),
+    ] {
+        for path in [SolverPath::ClosedForm, SolverPath::Newton] {
+            let mut k = Kinematics::with_path(mech.clone(), path).unwrap_or_else(|e| panic!("{e}"));
+            let mut sol = k.empty_solution();
+            let w = mech.driver.speed_rad_s;
+            let label = format!("{name}/{}", k.path().label().replace(' ', "_"));
+            group.bench_function(label, |b| {
+                b.iter(|| {
+                    let mut checksum = 0.0;
+                    for i in 0..POSITIONS {
+                        let x = std::f64::consts::TAU * i as f64 / POSITIONS as f64;
+                        if k.solve_into(x, w, &mut sol).is_ok() {
+                            checksum += sol.points[sol.points.len() - 1].acceleration.x;
+                        }
+                    }
+                    std::hint::black_box(checksum)
+                })
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, cycle);
+criterion_main!(benches);

@@ -127,7 +127,8 @@ fn solve2(
     group: usize,
 ) -> std::result::Result<(f64, f64), Failure> {
     let det = cross(c1, c2);
-    if det.abs() <= 1e-14 * c1.norm() * c2.norm() {
+    // |sin| of the angle between the columns below 1e-14, compared squared (no sqrt).
+    if det * det <= 1e-28 * c1.norm_squared() * c2.norm_squared() {
         return Err(Failure::Singular { group });
     }
     Ok((cross(rhs, c2) / det, cross(c1, rhs) / det))

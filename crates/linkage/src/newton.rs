@@ -69,9 +69,16 @@ pub struct Newton {
     last_input: Option<f64>,
     /// Sign of det J at the last solution (0 before the first): the assembly mode.
     det_sign: f64,
+    /// |det J| over the product of its column norms at the last solution.
+    conditioning: f64,
     jac: DMatrix<f64>,
     rhs: DVector<f64>,
     rates: Vec<f64>,
+    /// Reused buffers: Jacobian column / bias, residual, saved state, predictor step.
+    col_buf: Vec<f64>,
+    res_buf: Vec<f64>,
+    saved: (DVector<f64>, DVector<f64>, DVector<f64>),
+    increment: DVector<f64>,
     scratch: Vec<LinkMotion>,
     /// Iterations used by the last solve (for diagnostics and benchmarks).
     pub last_iterations: usize,
@@ -203,6 +210,7 @@ impl Newton {
                 2 * cuts.len()
             )));
         }
+        let cuts_len = cuts.len();
         let mut solver = Self {
             tree,
             cuts,
@@ -216,9 +224,18 @@ impl Newton {
             ddq: DVector::zeros(unknowns),
             last_input: None,
             det_sign: 0.0,
+            conditioning: 1.0,
             jac: DMatrix::zeros(unknowns, unknowns),
             rhs: DVector::zeros(unknowns),
             rates: vec![0.0; 2 * unknowns.max(1)],
+            col_buf: vec![0.0; 2 * cuts_len],
+            res_buf: vec![0.0; 2 * cuts_len],
+            saved: (
+                DVector::zeros(unknowns),
+                DVector::zeros(unknowns),
+                DVector::zeros(unknowns),
+            ),
+            increment: DVector::zeros(unknowns),
             scratch: vec![LinkMotion::default(); n],
             last_iterations: 0,
         };
@@ -425,7 +442,7 @@ impl Newton {
     /// in `self.rates`, the driver's column.
     fn build_jacobian(&mut self, links: &mut [LinkMotion]) {
         let n = self.q.len();
-        let mut col = vec![0.0; 2 * self.cuts.len()];
+        let mut col = std::mem::take(&mut self.col_buf);
         for k in 0..=n {
             self.motion_pass(links, |i| if i == k { 1.0 } else { 0.0 }, |_| 0.0);
             self.cut_rates(links, false, &mut col);
@@ -437,6 +454,7 @@ impl Newton {
                 }
             }
         }
+        self.col_buf = col;
     }
 
     /// Solves at `input_rad` with input speed `speed_rad_s` (constant), writing every
@@ -468,28 +486,32 @@ impl Newton {
             if h.abs() > remaining.abs() {
                 h = remaining;
             }
-            let saved = (
-                self.q.clone(),
-                self.dq.clone(),
-                self.ddq.clone(),
-                self.det_sign,
-            );
-            let increment = &self.dq * h + &self.ddq * (0.5 * h * h);
+            let saved_sign = self.det_sign;
+            self.saved.0.copy_from(&self.q);
+            self.saved.1.copy_from(&self.dq);
+            self.saved.2.copy_from(&self.ddq);
+            // Second-order predictor q + q' h + q'' h²/2, built in place.
+            self.increment.copy_from(&self.dq);
+            self.increment *= h;
+            self.increment.axpy(0.5 * h * h, &self.ddq, 1.0);
             // Near a dead point the derivatives blow up: a large predicted change means
             // the step is too long for the branch to be followed safely.
-            if increment.amax() > MAX_PREDICTED_CHANGE && h.abs() >= 2e-7 {
+            if self.increment.amax() > MAX_PREDICTED_CHANGE && h.abs() >= 2e-7 {
                 h *= 0.5;
                 continue;
             }
-            self.q += &increment;
+            self.q += &self.increment;
             let ok = self
                 .correct(at + h, links)
                 .and_then(|_| self.update_derivatives(links));
             // The sign of det J flips exactly where the solution passes to the other
             // assembly mode: refuse that step and retry it shorter.
-            let jumped = saved.3 != 0.0 && self.det_sign != saved.3;
+            let jumped = saved_sign != 0.0 && self.det_sign != saved_sign;
             if ok.is_err() || jumped {
-                (self.q, self.dq, self.ddq, self.det_sign) = saved;
+                self.q.copy_from(&self.saved.0);
+                self.dq.copy_from(&self.saved.1);
+                self.ddq.copy_from(&self.saved.2);
+                self.det_sign = saved_sign;
                 h *= 0.5;
                 if h.abs() < 1e-7 {
                     return Err(match ok {
@@ -515,28 +537,28 @@ impl Newton {
         self.last_input = Some(input_rad);
         // Final motion at the real speed: q̇ = ω q', q̈ = ω² q'' (constant input speed).
         let w = speed_rad_s;
-        let (dq, ddq) = (self.dq.clone(), self.ddq.clone());
         self.motion_pass(
             links,
-            |k| if k == 0 { w } else { w * dq[k - 1] },
-            |k| if k == 0 { 0.0 } else { w * w * ddq[k - 1] },
+            |k| if k == 0 { w } else { w * self.dq[k - 1] },
+            |k| if k == 0 { 0.0 } else { w * w * self.ddq[k - 1] },
         );
-        let det = self.jac.determinant().abs();
-        let norms: f64 = self.jac.column_iter().map(|c| c.norm()).product();
-        Ok(if norms > 0.0 {
-            (det / norms).min(1.0)
-        } else {
-            1.0
-        })
+        Ok(self.conditioning)
     }
 
     /// Newton iterations at fixed input from the current `q`.
     fn correct(&mut self, input: f64, links: &mut [LinkMotion]) -> Result<()> {
-        let mut res = vec![0.0; 2 * self.cuts.len()];
+        let mut res = std::mem::take(&mut self.res_buf);
+        let outcome = self.iterate(input, links, &mut res);
+        self.res_buf = res;
+        outcome
+    }
+
+    /// The Newton loop of [`Self::correct`], with the residual buffer passed in.
+    fn iterate(&mut self, input: f64, links: &mut [LinkMotion], res: &mut [f64]) -> Result<()> {
         let mut previous = f64::INFINITY;
         for iter in 0..=self.max_iterations {
             self.position_pass(input, links);
-            let worst = self.residual(links, &mut res);
+            let worst = self.residual(links, res);
             // Growing residual after a few steps: diverging (no solution near here).
             if !worst.is_finite() || (iter >= 4 && worst > previous) {
                 return Err(LinkageError::NewtonDiverged {
@@ -560,7 +582,10 @@ impl Newton {
                 });
             }
             self.build_jacobian(links);
-            self.rhs.iter_mut().zip(&res).for_each(|(r, v)| *r = -v);
+            self.rhs
+                .iter_mut()
+                .zip(res.iter())
+                .for_each(|(r, v)| *r = -v);
             let lu = self.jac.clone().lu();
             if !lu.solve_mut(&mut self.rhs) {
                 return Err(LinkageError::Singular {
@@ -576,7 +601,7 @@ impl Newton {
                 self.position_pass(input, links);
                 // ...but only at a solution: outside the assembly range Newton also
                 // stalls, at a least-residual pose that closes nothing.
-                let worst = self.residual(links, &mut res);
+                let worst = self.residual(links, res);
                 if worst <= self.stall_residual {
                     self.last_iterations = iter + 1;
                     return Ok(());
@@ -602,7 +627,14 @@ impl Newton {
         let n = self.q.len();
         self.build_jacobian(links);
         let lu = self.jac.clone().lu();
-        self.det_sign = lu.determinant().signum();
+        let det = lu.determinant();
+        self.det_sign = det.signum();
+        let norms: f64 = self.jac.column_iter().map(|c| c.norm()).product();
+        self.conditioning = if norms > 0.0 {
+            (det.abs() / norms).min(1.0)
+        } else {
+            1.0
+        };
         for r in 0..n {
             self.rhs[r] = -self.rates[r];
         }
@@ -613,13 +645,17 @@ impl Newton {
             });
         }
         self.dq.copy_from(&self.rhs);
-        let dq = self.dq.clone();
-        self.motion_pass(links, |k| if k == 0 { 1.0 } else { dq[k - 1] }, |_| 0.0);
-        let mut bias = vec![0.0; 2 * self.cuts.len()];
+        self.motion_pass(
+            links,
+            |k| if k == 0 { 1.0 } else { self.dq[k - 1] },
+            |_| 0.0,
+        );
+        let mut bias = std::mem::take(&mut self.col_buf);
         self.cut_rates(links, true, &mut bias);
         for r in 0..n {
             self.rhs[r] = -bias[r];
         }
+        self.col_buf = bias;
         lu.solve_mut(&mut self.rhs);
         self.ddq.copy_from(&self.rhs);
         Ok(())
