@@ -537,10 +537,10 @@ pub fn transmission_angle(
                         eval(k, x, &mut sol)
                             .map_or(f64::NAN, |t| if which == 1 { t.1 } else { t.2 })
                     });
-                    if let Some(r) = root {
-                        if let Some((mu, _, _)) = eval(k, r, &mut sol) {
-                            candidates.push((r.rem_euclid(TAU), mu));
-                        }
+                    if let Some(r) = root
+                        && let Some((mu, _, _)) = eval(k, r, &mut sol)
+                    {
+                        candidates.push((r.rem_euclid(TAU), mu));
                     }
                 }
             }

@@ -331,7 +331,7 @@ impl Rpr {
             f64::INFINITY
         };
         let margin = 1.0 - ratio * ratio;
-        if !(margin >= -TANGENT_SLACK) {
+        if margin.is_nan() || margin < -TANGENT_SLACK {
             let margin = if margin.is_finite() { margin } else { -1.0 };
             return Err(Failure::CannotAssemble { group, margin });
         }
@@ -513,11 +513,12 @@ impl ClosedForm {
                         .collect()
                 };
                 let (ji_list, jj_list) = (to_known(i), to_known(j));
-                if ji_list.len() == 1 && jj_list.len() == 1 {
-                    if let Some(g) = Self::make_group(m, i, j, jij, ji_list[0], jj_list[0])? {
-                        found = Some((g, [ji, ji_list[0].0, jj_list[0].0], i, j));
-                        break 'search;
-                    }
+                if ji_list.len() == 1
+                    && jj_list.len() == 1
+                    && let Some(g) = Self::make_group(m, i, j, jij, ji_list[0], jj_list[0])?
+                {
+                    found = Some((g, [ji, ji_list[0].0, jj_list[0].0], i, j));
+                    break 'search;
                 }
             }
             let Some(((group, point), used_now, i, j)) = found else {

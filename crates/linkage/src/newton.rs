@@ -56,7 +56,6 @@ pub struct Newton {
     tree: Vec<TreeJoint>,
     cuts: Vec<Cut>,
     ground: usize,
-    link_count: usize,
     tolerance: f64,
     /// Largest residual accepted when Newton stalls at round-off (1e-12 of the size).
     stall_residual: f64,
@@ -79,7 +78,6 @@ pub struct Newton {
     res_buf: Vec<f64>,
     saved: (DVector<f64>, DVector<f64>, DVector<f64>),
     increment: DVector<f64>,
-    scratch: Vec<LinkMotion>,
     /// Iterations used by the last solve (for diagnostics and benchmarks).
     pub last_iterations: usize,
 }
@@ -215,7 +213,6 @@ impl Newton {
             tree,
             cuts,
             ground: m.ground,
-            link_count: n,
             tolerance: tolerance.max(8.0 * f64::EPSILON * m.size_m),
             stall_residual: 1e-12 * m.size_m,
             max_iterations,
@@ -236,7 +233,6 @@ impl Newton {
                 DVector::zeros(unknowns),
             ),
             increment: DVector::zeros(unknowns),
-            scratch: vec![LinkMotion::default(); n],
             last_iterations: 0,
         };
         solver.set_pose(start, m.driver.start_rad);
@@ -652,20 +648,10 @@ impl Newton {
         );
         let mut bias = std::mem::take(&mut self.col_buf);
         self.cut_rates(links, true, &mut bias);
-        for r in 0..n {
-            self.rhs[r] = -bias[r];
-        }
+        self.rhs.iter_mut().zip(&bias).for_each(|(r, b)| *r = -b);
         self.col_buf = bias;
         lu.solve_mut(&mut self.rhs);
         self.ddq.copy_from(&self.rhs);
         Ok(())
-    }
-
-    /// Scratch link buffer of the right size.
-    pub fn scratch(&mut self) -> &mut Vec<LinkMotion> {
-        if self.scratch.len() != self.link_count {
-            self.scratch = vec![LinkMotion::default(); self.link_count];
-        }
-        &mut self.scratch
     }
 }

@@ -80,7 +80,8 @@ fn design_at(c1: Vec2, c2: Vec2, rocker: f64, theta: f64, side: i8, t: f64) -> O
     let ground = a.norm();
     let lengths = [crank, coupler, rocker, ground];
     let longest = lengths.iter().cloned().fold(0.0, f64::max);
-    if !(crank > 1e-9 * rocker)
+    if crank.is_nan()
+        || crank <= 1e-9 * rocker
         || lengths[1..].iter().any(|&l| l <= crank)
         || crank + longest >= lengths.iter().sum::<f64>() - crank - longest
     {
@@ -168,13 +169,12 @@ pub fn crank_rocker(
     for side in [1i8, -1] {
         for i in 0..SAMPLES {
             let t = std::f64::consts::TAU * i as f64 / SAMPLES as f64;
-            if let Some(d) = design_at(c1, c2, rocker_m, theta, side, t) {
-                if best
+            if let Some(d) = design_at(c1, c2, rocker_m, theta, side, t)
+                && best
                     .as_ref()
                     .is_none_or(|b| d.min_transmission_rad > b.min_transmission_rad)
-                {
-                    best = Some(d);
-                }
+            {
+                best = Some(d);
             }
         }
     }

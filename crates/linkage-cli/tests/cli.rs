@@ -1,0 +1,233 @@
+//! The CLI contract that outside scripts depend on: column names and order, JSON
+//! keys, exit status and error messages.
+
+use std::process::Command;
+
+fn scene(file: &str) -> String {
+    format!("{}/../../assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Runs `linkage ARGS`; returns (success, stdout, stderr).
+fn linkage(args: &[&str]) -> (bool, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_linkage"))
+        .args(args)
+        .output()
+        .expect("run linkage");
+    (
+        out.status.success(),
+        String::from_utf8_lossy(&out.stdout).into(),
+        String::from_utf8_lossy(&out.stderr).into(),
+    )
+}
+
+#[test]
+fn sweep_csv_has_the_contract_header_and_finite_rows() {
+    let (ok, out, err) = linkage(&["sweep", &scene("slider_crank.ron"), "--steps", "36"]);
+    assert!(ok, "{err}");
+    let mut lines = out.lines();
+    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    assert_eq!(header[0], "input_rad");
+    assert_eq!(
+        &header[1..7],
+        ["A_x", "A_y", "A_vx", "A_vy", "A_ax", "A_ay"]
+    );
+    assert_eq!(
+        &header[header.len() - 3..],
+        ["slider_theta", "slider_omega", "slider_alpha"]
+    );
+    assert!(header.contains(&"rod_omega") && header.contains(&"C_ax"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| {
+            l.split(',')
+                .map(|v| v.parse::<f64>().expect("number"))
+                .collect()
+        })
+        .collect();
+    assert_eq!(rows.len(), 36);
+    assert!(
+        rows.iter()
+            .all(|r| r.len() == header.len() && r.iter().all(|v| v.is_finite()))
+    );
+    // SI units at the scene's 300 rpm: |v_B| = 0.05 m · 31.416 rad/s.
+    let (bvx, bvy) = (
+        header.iter().position(|h| *h == "B_vx").expect("B_vx"),
+        header.iter().position(|h| *h == "B_vy").expect("B_vy"),
+    );
+    let vb = rows[5][bvx].hypot(rows[5][bvy]);
+    assert!(
+        (vb - 0.05 * 10.0 * std::f64::consts::PI).abs() < 1e-12,
+        "{vb}"
+    );
+}
+
+#[test]
+fn at_json_adds_polygon_equations() {
+    let (ok, out, err) = linkage(&[
+        "at",
+        &scene("die_cutter.ron"),
+        "--input-deg",
+        "30",
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    let polygons = v["polygons"].as_array().expect("polygons");
+    let eqs: Vec<&str> = polygons
+        .iter()
+        .map(|p| p["equation"].as_str().unwrap_or(""))
+        .collect();
+    assert!(eqs.contains(&"v_C = v_B + v_CB"), "{eqs:?}");
+    assert!(
+        eqs.contains(&"a_C^n + a_C^t = a_B^n + a_B^t + a_CB^n + a_CB^t"),
+        "{eqs:?}"
+    );
+    let term = &polygons[0]["rhs"][1];
+    assert_eq!(term["symbol"], "v_CB");
+    assert_eq!(term["magnitude_known"], false);
+    assert_eq!(term["direction"], "perp CB");
+    // CSV form: the sweep header and one row.
+    let (ok, csv, _) = linkage(&[
+        "at",
+        &scene("die_cutter.ron"),
+        "--input-deg",
+        "30",
+        "--format",
+        "csv",
+    ]);
+    assert!(ok && csv.lines().count() == 2 && csv.starts_with("input_rad,"));
+}
+
+#[test]
+fn report_has_the_contract_keys() {
+    let (ok, out, err) = linkage(&["report", &scene("paper_cup_feed.ron")]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    for key in [
+        "assembly_range_rad",
+        "limit_positions",
+        "strokes_m",
+        "swings_rad",
+        "time_ratio",
+        "grashof",
+        "transmission_angle_rad",
+    ] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    for key in ["min", "max", "at"] {
+        assert!(
+            v["transmission_angle_rad"][key].is_f64(),
+            "transmission_angle_rad.{key}"
+        );
+    }
+    assert_eq!(v["grashof"]["class"], "crank-rocker");
+    let (ok, out, _) = linkage(&["report", &scene("quick_return.ron")]);
+    assert!(ok);
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    assert!(v["grashof"].is_null(), "no four-bar loop in the shaper");
+}
+
+#[test]
+fn synth_commands_design_and_write_scenes() {
+    let dir = std::env::temp_dir().join(format!("linkage-cli-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let out_scene = dir.join("cr.ron");
+    let (ok, out, err) = linkage(&[
+        "synth",
+        "crank-rocker",
+        "--rocker",
+        "0.5",
+        "--swing-deg",
+        "45",
+        "--k",
+        "1.25",
+        "--scene-out",
+        out_scene.to_str().expect("utf-8 path"),
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    let (a, b) = (
+        v["crank_m"].as_f64().expect("a"),
+        v["coupler_m"].as_f64().expect("b"),
+    );
+    assert!(a > 0.0 && b > a);
+    let (ok, rep, err) = linkage(&["report", out_scene.to_str().expect("path")]);
+    assert!(ok, "{err}");
+    let r: serde_json::Value = serde_json::from_str(&rep).expect("json");
+    assert!((r["time_ratio"].as_f64().expect("K") - 1.25).abs() < 1e-6);
+    let (ok, text, err) = linkage(&["synth", "die-cutter"]);
+    assert!(ok, "{err}");
+    assert!(linkage::Mechanism::from_ron(&text).is_ok());
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+#[test]
+fn errors_exit_nonzero_and_name_the_cause() {
+    let cases: [(Vec<String>, &str); 6] = [
+        (
+            vec!["report".into(), "/no/such/scene.ron".into()],
+            "cannot read scene",
+        ),
+        (
+            vec![
+                "at".into(),
+                scene("gravity_flipper.ron"),
+                "--input-deg".into(),
+                "20".into(),
+            ],
+            "reachable input range: 34.30..117.66 deg",
+        ),
+        (
+            vec![
+                "sweep".into(),
+                scene("slider_crank.ron"),
+                "--branch".into(),
+                "C=sideways".into(),
+            ],
+            "side must be",
+        ),
+        (
+            vec![
+                "sweep".into(),
+                scene("slider_crank.ron"),
+                "--steps".into(),
+                "1".into(),
+            ],
+            "at least 2",
+        ),
+        (
+            vec![
+                "synth".into(),
+                "crank-rocker".into(),
+                "--rocker".into(),
+                "0.5".into(),
+                "--swing-deg".into(),
+                "200".into(),
+                "--k".into(),
+                "1.2".into(),
+            ],
+            "(0, 180)",
+        ),
+        (
+            vec![
+                "at".into(),
+                scene("slider_crank.ron"),
+                "--input-deg".into(),
+                "NaN".into(),
+            ],
+            "finite",
+        ),
+    ];
+    for (args, needle) in cases {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let (ok, _, err) = linkage(&args);
+        assert!(!ok, "{args:?} should fail");
+        assert!(err.contains(needle), "{args:?}: `{needle}` not in `{err}`");
+    }
+    // A malformed scene names line and column.
+    let bad = std::env::temp_dir().join(format!("linkage-bad-{}.ron", std::process::id()));
+    std::fs::write(&bad, "Scene(\n  name: 12,\n)").expect("write");
+    let (ok, _, err) = linkage(&["report", bad.to_str().expect("path")]);
+    assert!(!ok && err.contains("line 2, column"), "{err}");
+    let _ = std::fs::remove_file(bad);
+}
