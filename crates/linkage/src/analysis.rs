@@ -344,7 +344,9 @@ fn span(
     if !ranges.full_rotation {
         let mut sol = k.empty_solution();
         for [a, b] in &ranges.intervals {
-            for x in [*a, *b] {
+            // A hair inside: exactly at the dead point the solve is singular.
+            let hair = 1e-9 * (b - a);
+            for x in [*a + hair, *b - hair] {
                 if k.solve_into(x, 0.0, &mut sol).is_ok() {
                     values.push(out.value(&sol));
                 }
@@ -629,14 +631,28 @@ pub fn report(k: &mut Kinematics) -> Result<Report> {
             reachable: describe_ranges(&ranges),
         });
     }
+    // Extremes, strokes and toggles belong to the interval the mechanism starts in: a
+    // disjoint interval is another assembly of the same links that it cannot reach.
+    let start = k.mechanism().driver.start_rad.rem_euclid(TAU);
+    let working = AssemblyRanges {
+        full_rotation: ranges.full_rotation,
+        intervals: ranges
+            .intervals
+            .iter()
+            .find(|[a, b]| (*a <= start && start <= *b) || (*a <= start + TAU && start + TAU <= *b))
+            .or(ranges.intervals.first())
+            .into_iter()
+            .copied()
+            .collect(),
+    };
     let outs = outputs(k);
     let mut all_limits = Vec::new();
     let mut strokes_m = indexmap::IndexMap::new();
     let mut swings_rad = indexmap::IndexMap::new();
     let mut per_output = Vec::new();
     for out in &outs {
-        let limits = limit_positions(k, out, &ranges);
-        let sp = span(k, out, &limits, &ranges);
+        let limits = limit_positions(k, out, &working);
+        let sp = span(k, out, &limits, &working);
         match out {
             Output::Rocker { .. } => swings_rad.insert(out.name().to_string(), sp),
             Output::Slide { .. } => strokes_m.insert(out.name().to_string(), sp),
@@ -679,8 +695,8 @@ pub fn report(k: &mut Kinematics) -> Result<Report> {
             });
         }
     }
-    if !ranges.full_rotation {
-        for [a, b] in &ranges.intervals {
+    if !working.full_rotation {
+        for [a, b] in &working.intervals {
             // A hair inside the range: exactly at the dead point velocities are undefined.
             let hair = 1e-9 * (b - a);
             for x in [*a + hair, *b - hair] {
@@ -703,7 +719,7 @@ pub fn report(k: &mut Kinematics) -> Result<Report> {
             }
         }
     }
-    let transmission_angle_rad = transmission_angle(k, &ranges);
+    let transmission_angle_rad = transmission_angle(k, &working);
     let m = k.mechanism();
     Ok(Report {
         name: m.name.clone(),

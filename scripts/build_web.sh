@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Builds the web demo into dist/ without trunk: cargo for wasm32, then wasm-bindgen at
+# exactly the Cargo.lock version (installed with cargo if missing), then index.html
+# with the trunk link replaced by a module import. With --serve, serves dist/ on
+# http://127.0.0.1:8080 (python3's http.server).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+rustup target add wasm32-unknown-unknown >/dev/null
+want=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/[^0-9.]/, ""); print; exit }' Cargo.lock)
+have=$(wasm-bindgen --version 2>/dev/null | awk '{print $2}' || true)
+if [ "$have" != "$want" ]; then
+    echo "installing wasm-bindgen-cli $want (Cargo.lock) ..."
+    # Not --locked: its lock file names a crate version this registry lacks.
+    cargo install wasm-bindgen-cli --version "$want"
+fi
+
+cargo build --release --target wasm32-unknown-unknown --bin linkage-lab
+rm -rf dist && mkdir -p dist
+wasm-bindgen --target web --no-typescript --out-dir dist \
+    target/wasm32-unknown-unknown/release/linkage-lab.wasm
+sed -e 's|<link data-trunk rel="rust"[^>]*/>|<script type="module">import init from "./linkage-lab.js"; init();</script>|' \
+    index.html > dist/index.html
+ls -l dist
+
+if [ "${1:-}" = "--serve" ]; then
+    echo "serving http://127.0.0.1:8080"
+    exec python3 -m http.server 8080 --bind 127.0.0.1 --directory dist
+fi

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Every check CI runs: formatting, clippy (native and wasm32), all tests, and the CLI
+# over every shipped scene. Run it from anywhere in the repository.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+echo "== cargo fmt --check"
+cargo fmt --all -- --check
+
+echo "== clippy (native, all targets)"
+cargo clippy --workspace --all-targets -- -D warnings
+
+echo "== clippy (wasm32: the solver, the CLI and the app compile for the browser)"
+cargo clippy --workspace --target wasm32-unknown-unknown -- -D warnings
+
+echo "== tests"
+cargo test --workspace
+
+echo "== CLI over every scene"
+cargo build -q -p linkage-cli
+for scene in assets/scenes/*.ron; do
+    target/debug/linkage report "$scene" > /dev/null
+    target/debug/linkage sweep "$scene" --steps 36 > /dev/null
+    echo "ok $scene"
+done
