@@ -86,12 +86,18 @@ fn point_name(m: &Mechanism, link: usize, local: &Vec2) -> String {
         )
 }
 
-/// The ground pivot name of a link that is pinned to ground.
-fn ground_pivot(m: &Mechanism, link: usize) -> Option<String> {
-    m.revolutes
-        .iter()
-        .find(|r| (r.a == link && r.b == m.ground) || (r.b == link && r.a == m.ground))
-        .map(|r| m.points[r.point].name.clone())
+/// The ground pivot of a link pinned to ground: its name and place on the link.
+fn ground_pivot(m: &Mechanism, link: usize) -> Option<(String, Vec2)> {
+    m.revolutes.iter().find_map(|r| {
+        let local = if r.a == link && r.b == m.ground {
+            r.a_local
+        } else if r.b == link && r.a == m.ground {
+            r.b_local
+        } else {
+            return None;
+        };
+        Some((m.points[r.point].name.clone(), local))
+    })
 }
 
 /// Terms of a known point P on `link`: none on ground; `v_P` (perp OP) and
@@ -109,13 +115,8 @@ fn known_point(
     }
     let l = &s.links[link];
     match ground_pivot(m, link) {
-        Some(o) => {
-            let r = p.position
-                - s.links[link].world(
-                    &m.links[link]
-                        .local(m.point_index(&o).unwrap_or(0))
-                        .unwrap_or_default(),
-                );
+        Some((o, pivot_local)) => {
+            let r = p.position - l.world(&pivot_local);
             if accel {
                 vec![
                     term(
@@ -208,7 +209,6 @@ fn riding(
     guide: usize,
     m_name: &str,
     pm: &PointMotion,
-    u: Vec2,
     accel: bool,
 ) -> Vec<Term> {
     let g = &s.links[guide];
@@ -222,7 +222,6 @@ fn riding(
     } else {
         format!("{m_name}{prime}")
     };
-    let _ = u;
     let mut t = Vec::new();
     if accel {
         if !fixed {
@@ -340,9 +339,8 @@ pub fn polygons(k: &Kinematics, s: &Solution) -> Vec<VectorEquation> {
                     let mn = m.points[cf.group_points[gi]].name.clone();
                     let pa = s.links[d.a.link].point(&d.a.local);
                     let pm = s.links[d.j].point(&d.mid_on_j);
-                    let u = d.slide.direction(&s.links);
                     let li = &s.links[d.i];
-                    let lhs = riding(m, s, d.slide.guide, &mn, &pm, u, accel);
+                    let lhs = riding(m, s, d.slide.guide, &mn, &pm, accel);
                     let mut rhs = known_point(m, s, d.a.link, &an, &pa, accel);
                     rhs.extend(relative(
                         &mn,
@@ -373,8 +371,7 @@ pub fn polygons(k: &Kinematics, s: &Solution) -> Vec<VectorEquation> {
                         d.g.link == m.ground,
                         accel,
                     ));
-                    let u = guide.rotation * Vec2::new(d.dir_u.cos_angle(), d.dir_u.sin_angle());
-                    let slide = riding(m, s, d.guide, &sn, &ps, u, accel);
+                    let slide = riding(m, s, d.guide, &sn, &ps, accel);
                     // The coincident point's own motion is already on this side: keep only
                     // the Coriolis and sliding terms.
                     rhs.extend(
@@ -387,24 +384,8 @@ pub fn polygons(k: &Kinematics, s: &Solution) -> Vec<VectorEquation> {
                 Group::Prp(d) => {
                     let mn = m.points[cf.group_points[gi]].name.clone();
                     let pm = s.links[d.i].point(&d.mid_on_i);
-                    let lhs = riding(
-                        m,
-                        s,
-                        d.slide_j.guide,
-                        &mn,
-                        &pm,
-                        d.slide_j.direction(&s.links),
-                        accel,
-                    );
-                    let rhs = riding(
-                        m,
-                        s,
-                        d.slide_i.guide,
-                        &mn,
-                        &pm,
-                        d.slide_i.direction(&s.links),
-                        accel,
-                    );
+                    let lhs = riding(m, s, d.slide_j.guide, &mn, &pm, accel);
+                    let rhs = riding(m, s, d.slide_i.guide, &mn, &pm, accel);
                     (lhs, rhs)
                 }
             };
