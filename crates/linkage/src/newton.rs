@@ -71,6 +71,8 @@ pub struct Newton {
     /// |det J| over the product of its column norms at the last solution.
     conditioning: f64,
     jac: DMatrix<f64>,
+    /// LU of the Jacobian at the last converged pose, reused by chord iterations.
+    lu: Option<nalgebra::linalg::LU<f64, nalgebra::Dyn, nalgebra::Dyn>>,
     rhs: DVector<f64>,
     rates: Vec<f64>,
     /// Reused buffers: Jacobian column / bias, residual, saved state, predictor step.
@@ -223,6 +225,7 @@ impl Newton {
             det_sign: 0.0,
             conditioning: 1.0,
             jac: DMatrix::zeros(unknowns, unknowns),
+            lu: None,
             rhs: DVector::zeros(unknowns),
             rates: vec![0.0; 2 * unknowns.max(1)],
             col_buf: vec![0.0; 2 * cuts_len],
@@ -270,6 +273,7 @@ impl Newton {
         }
         self.dq.fill(0.0);
         self.ddq.fill(0.0);
+        self.lu = None;
         self.last_input = Some(input_rad);
     }
 
@@ -550,8 +554,14 @@ impl Newton {
     }
 
     /// The Newton loop of [`Self::correct`], with the residual buffer passed in.
+    ///
+    /// The first iterations reuse the LU of the previous converged pose (chord
+    /// Newton): the predictor leaves an error of order h³ and the old Jacobian is off by
+    /// order h, so each chord step gains about three digits; when a step gains less
+    /// than one, a fresh Jacobian is factored and iterations are Newton's again.
     fn iterate(&mut self, input: f64, links: &mut [LinkMotion], res: &mut [f64]) -> Result<()> {
         let mut previous = f64::INFINITY;
+        let mut fresh = self.lu.is_none();
         for iter in 0..=self.max_iterations {
             self.position_pass(input, links);
             let worst = self.residual(links, res);
@@ -564,6 +574,7 @@ impl Newton {
                     tolerance: self.tolerance,
                 });
             }
+            let slow = worst > 0.1 * previous;
             previous = worst;
             if worst <= self.tolerance {
                 self.last_iterations = iter;
@@ -577,13 +588,37 @@ impl Newton {
                     tolerance: self.tolerance,
                 });
             }
-            self.build_jacobian(links);
+            if !fresh && (slow || iter >= 3) {
+                self.lu = None;
+            }
+            if self.lu.is_none() {
+                self.build_jacobian(links);
+                self.lu = Some(self.jac.clone().lu());
+                fresh = true;
+            }
             self.rhs
                 .iter_mut()
                 .zip(res.iter())
                 .for_each(|(r, v)| *r = -v);
-            let lu = self.jac.clone().lu();
-            if !lu.solve_mut(&mut self.rhs) {
+            let mut solved = self
+                .lu
+                .as_ref()
+                .is_some_and(|lu| lu.solve_mut(&mut self.rhs));
+            if !solved && !fresh {
+                // The stale factorization is singular; the fresh one may not be.
+                self.build_jacobian(links);
+                self.lu = Some(self.jac.clone().lu());
+                fresh = true;
+                self.rhs
+                    .iter_mut()
+                    .zip(res.iter())
+                    .for_each(|(r, v)| *r = -v);
+                solved = self
+                    .lu
+                    .as_ref()
+                    .is_some_and(|lu| lu.solve_mut(&mut self.rhs));
+            }
+            if !solved {
                 return Err(LinkageError::Singular {
                     input_deg: input.to_degrees(),
                     reason: "the loop-closure Jacobian is singular (dead point or unassemblable)"
@@ -593,7 +628,7 @@ impl Newton {
             self.q += &self.rhs;
             // Near a dead point J is ill-conditioned and the residual floor can sit above
             // the tolerance; a step at round-off level means Newton has converged anyway.
-            if self.rhs.amax() <= 4.0 * f64::EPSILON * (1.0 + self.q.amax()) {
+            if fresh && self.rhs.amax() <= 4.0 * f64::EPSILON * (1.0 + self.q.amax()) {
                 self.position_pass(input, links);
                 // ...but only at a solution: outside the assembly range Newton also
                 // stalls, at a least-residual pose that closes nothing.
@@ -652,6 +687,7 @@ impl Newton {
         self.col_buf = bias;
         lu.solve_mut(&mut self.rhs);
         self.ddq.copy_from(&self.rhs);
+        self.lu = Some(lu);
         Ok(())
     }
 }
