@@ -512,6 +512,8 @@ impl Newton {
                 self.dq.copy_from(&self.saved.1);
                 self.ddq.copy_from(&self.saved.2);
                 self.det_sign = saved_sign;
+                // The factorization belongs to the failed pose: start the retry fresh.
+                self.lu = None;
                 h *= 0.5;
                 if h.abs() < 1e-7 {
                     return Err(match ok {
@@ -590,6 +592,8 @@ impl Newton {
             }
             if !fresh && (slow || iter >= 3) {
                 self.lu = None;
+                // Judge divergence from here on by true Newton steps only.
+                previous = f64::INFINITY;
             }
             if self.lu.is_none() {
                 self.build_jacobian(links);
