@@ -177,7 +177,14 @@ impl Kinematics {
                     }
                     e
                 })?,
-            _ => unreachable!("a Kinematics always holds the solver for its path"),
+            // Not reachable through `new`/`with_path`, which always build the solver of
+            // the path they pick; an error rather than a panic all the same.
+            _ => {
+                return Err(LinkageError::NotDecomposable(format!(
+                    "no solver was built for the {} path",
+                    self.path.label()
+                )));
+            }
         };
         out.input_rad = input_rad;
         out.input_speed_rad_s = speed_rad_s;
