@@ -40,10 +40,12 @@ pub(crate) struct Rrr {
     pub c_on_j: Vec2,
     pub len_i: f64,
     pub len_j: f64,
-    /// Direction of `mid - a` in `i`'s coordinates.
-    pub dir_i: UnitComplex<f64>,
-    /// Direction of `mid - c` in `j`'s coordinates.
-    pub dir_j: UnitComplex<f64>,
+    pub inv_len_i: f64,
+    pub inv_len_j: f64,
+    /// Inverse of the direction of `mid - a` in `i`'s coordinates.
+    pub dir_i_inv: UnitComplex<f64>,
+    /// Inverse of the direction of `mid - c` in `j`'s coordinates.
+    pub dir_j_inv: UnitComplex<f64>,
     /// +1: `mid` left of a→c.
     pub sign: f64,
 }
@@ -57,7 +59,9 @@ pub(crate) struct Rrp {
     pub a_on_i: Vec2,
     pub mid_on_j: Vec2,
     pub len_i: f64,
-    pub dir_i: UnitComplex<f64>,
+    pub inv_len_i: f64,
+    /// Inverse of the direction of `mid - a` in `i`'s coordinates.
+    pub dir_i_inv: UnitComplex<f64>,
     pub slide: Prismatic,
     /// +1: `mid` ahead along the guide of the foot of the perpendicular from `a`.
     pub sign: f64,
@@ -118,7 +122,40 @@ struct GroupOk {
     conditioning: f64,
 }
 
-/// Solves `x1·c1 + x2·c2 = rhs`; `None` when the columns are parallel.
+/// The 2×2 system `x1·c1 + x2·c2 = rhs` of one group, factored once and solved for
+/// the velocity and the acceleration right-hand sides (one division in all).
+struct Pair {
+    c1: Vec2,
+    c2: Vec2,
+    inv_det: f64,
+}
+
+impl Pair {
+    /// Fails with `Singular` when the columns are parallel (|sin| below 1e-14).
+    #[inline]
+    fn new(c1: Vec2, c2: Vec2, group: usize) -> std::result::Result<Self, Failure> {
+        let det = cross(&c1, &c2);
+        // Compared squared: no square roots on the hot path.
+        if det * det <= 1e-28 * c1.norm_squared() * c2.norm_squared() {
+            return Err(Failure::Singular { group });
+        }
+        Ok(Self {
+            c1,
+            c2,
+            inv_det: 1.0 / det,
+        })
+    }
+
+    #[inline]
+    fn solve(&self, rhs: &Vec2) -> (f64, f64) {
+        (
+            cross(rhs, &self.c2) * self.inv_det,
+            cross(&self.c1, rhs) * self.inv_det,
+        )
+    }
+}
+
+/// `solve` for a one-off system.
 #[inline]
 fn solve2(
     c1: &Vec2,
@@ -126,17 +163,13 @@ fn solve2(
     rhs: &Vec2,
     group: usize,
 ) -> std::result::Result<(f64, f64), Failure> {
-    let det = cross(c1, c2);
-    // |sin| of the angle between the columns below 1e-14, compared squared (no sqrt).
-    if det * det <= 1e-28 * c1.norm_squared() * c2.norm_squared() {
-        return Err(Failure::Singular { group });
-    }
-    Ok((cross(rhs, c2) / det, cross(c1, rhs) / det))
+    Ok(Pair::new(*c1, *c2, group)?.solve(rhs))
 }
 
+/// The rotation whose x-axis is the unit vector `unit`.
 #[inline]
-fn direction(v: &Vec2, len: f64) -> UnitComplex<f64> {
-    UnitComplex::from_cos_sin_unchecked(v.x / len, v.y / len)
+fn direction(unit: &Vec2) -> UnitComplex<f64> {
+    UnitComplex::from_cos_sin_unchecked(unit.x, unit.y)
 }
 
 /// Margins between 0 and this are treated as exact tangency (rounding), not failure.
@@ -199,27 +232,27 @@ impl Rrr {
             }
             return Err(Failure::Singular { group });
         }
-        let dist = dist2.sqrt();
-        let along = (l1 * l1 - l2 * l2 + dist2) / (2.0 * dist);
-        let margin = 1.0 - (along / l1) * (along / l1);
+        let inv_dist = 1.0 / dist2.sqrt();
+        let along = (l1 * l1 - l2 * l2 + dist2) * (0.5 * inv_dist);
+        let ratio = along * self.inv_len_i;
+        let margin = 1.0 - ratio * ratio;
         if margin < -TANGENT_SLACK {
             return Err(Failure::CannotAssemble { group, margin });
         }
         let h = l1 * margin.max(0.0).sqrt();
-        let dhat = d / dist;
+        let dhat = d * inv_dist;
         let b = pa.position + dhat * along + perp(&dhat) * (self.sign * h);
         let r1 = b - pa.position;
         let r2 = b - pc.position;
-        let rot_i = direction(&r1, l1) * self.dir_i.inverse();
-        let rot_j = direction(&r2, l2) * self.dir_j.inverse();
-        let conditioning = (cross(&r1, &r2) / (l1 * l2)).abs();
+        let rot_i = direction(&(r1 * self.inv_len_i)) * self.dir_i_inv;
+        let rot_j = direction(&(r2 * self.inv_len_j)) * self.dir_j_inv;
+        let conditioning = (cross(&r1, &r2) * self.inv_len_i * self.inv_len_j).abs();
         let (mut wi, mut wj, mut ai, mut aj) = (0.0, 0.0, 0.0, 0.0);
         if motion {
-            let c1 = perp(&r1);
-            let c2 = -perp(&r2);
-            (wi, wj) = solve2(&c1, &c2, &(pc.velocity - pa.velocity), group)?;
+            let pair = Pair::new(perp(&r1), -perp(&r2), group)?;
+            (wi, wj) = pair.solve(&(pc.velocity - pa.velocity));
             let rhs = pc.acceleration - pa.acceleration + r1 * (wi * wi) - r2 * (wj * wj);
-            (ai, aj) = solve2(&c1, &c2, &rhs, group)?;
+            (ai, aj) = pair.solve(&rhs);
         }
         links[self.i] = LinkMotion::from_pin(rot_i, wi, ai, &self.a_on_i, &pa);
         links[self.j] = LinkMotion::from_pin(rot_j, wj, aj, &self.c_on_j, &pc);
@@ -276,7 +309,7 @@ impl Rrp {
         let b0 = line.through + line.slider_rotation * (self.mid_on_j - self.slide.slider_local);
         let w = b0 - pa.position;
         let l1 = self.len_i;
-        let off = cross(&w, &u) / l1;
+        let off = cross(&w, &u) * self.inv_len_i;
         let margin = 1.0 - off * off;
         if margin < -TANGENT_SLACK {
             return Err(Failure::CannotAssemble { group, margin });
@@ -284,19 +317,18 @@ impl Rrp {
         let s = -w.dot(&u) + self.sign * l1 * margin.max(0.0).sqrt();
         let b = b0 + u * s;
         let r1 = b - pa.position;
-        let rot_i = direction(&r1, l1) * self.dir_i.inverse();
-        let conditioning = (r1.dot(&u) / l1).abs();
+        let rot_i = direction(&(r1 * self.inv_len_i)) * self.dir_i_inv;
+        let conditioning = (r1.dot(&u) * self.inv_len_i).abs();
         let guide = links[self.slide.guide];
         let on_guide = guide.material_point_at(&b);
         let (mut wi, mut ai, mut sd, mut sdd) = (0.0, 0.0, 0.0, 0.0);
         if motion {
-            let c1 = perp(&r1);
-            let c2 = -u;
-            (wi, sd) = solve2(&c1, &c2, &(on_guide.velocity - pa.velocity), group)?;
+            let pair = Pair::new(perp(&r1), -u, group)?;
+            (wi, sd) = pair.solve(&(on_guide.velocity - pa.velocity));
             let rhs = on_guide.acceleration + perp(&u) * (2.0 * guide.omega_rad_s * sd)
                 - pa.acceleration
                 + r1 * (wi * wi);
-            (ai, sdd) = solve2(&c1, &c2, &rhs, group)?;
+            (ai, sdd) = pair.solve(&rhs);
         }
         let pb = riding_point(&on_guide, &u, guide.omega_rad_s, sd, sdd);
         links[self.i] = LinkMotion::from_pin(rot_i, wi, ai, &self.a_on_i, &pa);
@@ -345,9 +377,10 @@ impl Rpr {
         let conditioning = (r.dot(&u) / dist).abs();
         let (w, al) = if motion {
             let c1 = perp(&r);
-            let (w, sd) = solve2(&c1, &u, &(ps.velocity - pg.velocity), group)?;
+            let pair = Pair::new(c1, u, group)?;
+            let (w, sd) = pair.solve(&(ps.velocity - pg.velocity));
             let rhs = ps.acceleration - pg.acceleration + r * (w * w) - perp(&u) * (2.0 * w * sd);
-            (w, solve2(&c1, &u, &rhs, group)?.0)
+            (w, pair.solve(&rhs).0)
         } else {
             (0.0, 0.0)
         };
@@ -380,11 +413,12 @@ impl Prp {
         let on_j = gj.material_point_at(&b);
         let (mut sd_i, mut sd_j, mut sdd_i, mut sdd_j) = (0.0, 0.0, 0.0, 0.0);
         if motion {
-            (sd_i, sd_j) = solve2(&li.u, &(-lj.u), &(on_j.velocity - on_i.velocity), group)?;
+            let pair = Pair::new(li.u, -lj.u, group)?;
+            (sd_i, sd_j) = pair.solve(&(on_j.velocity - on_i.velocity));
             let rhs = on_j.acceleration + perp(&lj.u) * (2.0 * gj.omega_rad_s * sd_j)
                 - on_i.acceleration
                 - perp(&li.u) * (2.0 * gi.omega_rad_s * sd_i);
-            (sdd_i, sdd_j) = solve2(&li.u, &(-lj.u), &rhs, group)?;
+            (sdd_i, sdd_j) = pair.solve(&rhs);
         }
         let pb_i = riding_point(&on_i, &li.u, gi.omega_rad_s, sd_i, sdd_i);
         let pb_j = riding_point(&on_j, &lj.u, gj.omega_rad_s, sd_j, sdd_j);
@@ -467,7 +501,7 @@ fn link_len(
             m.links[link].name
         )));
     }
-    Ok((len, direction(&v, len)))
+    Ok((len, direction(&(v / len))))
 }
 
 impl ClosedForm {
@@ -619,7 +653,23 @@ impl ClosedForm {
                         )));
                     }
                 };
-                (Group::Rrr(Rrr { i, j, a, a_on_i, mid_on_i, mid_on_j, c, c_on_j, len_i, len_j, dir_i, dir_j, sign }), mid)
+                (Group::Rrr(Rrr {
+                        i,
+                        j,
+                        a,
+                        a_on_i,
+                        mid_on_i,
+                        mid_on_j,
+                        c,
+                        c_on_j,
+                        len_i,
+                        len_j,
+                        inv_len_i: 1.0 / len_i,
+                        inv_len_j: 1.0 / len_j,
+                        dir_i_inv: dir_i.inverse(),
+                        dir_j_inv: dir_j.inverse(),
+                        sign,
+                    }), mid)
             }
             (Rev(_), Rev(_), Pri(_)) | (Pri(_), Rev(_), Rev(_)) => {
                 // Normalise: i is pinned, j slides on a known guide.
@@ -643,7 +693,18 @@ impl ClosedForm {
                         )));
                     }
                 };
-                (Group::Rrp(Rrp { i, j, a, a_on_i, mid_on_j, len_i, dir_i, slide, sign }), mid)
+                (Group::Rrp(Rrp {
+                        i,
+                        j,
+                        a,
+                        a_on_i,
+                        mid_on_j,
+                        len_i,
+                        inv_len_i: 1.0 / len_i,
+                        dir_i_inv: dir_i.inverse(),
+                        slide,
+                        sign,
+                    }), mid)
             }
             (Rev(ra), Pri(p), Rev(rc)) => {
                 let slide = m.sliders[p].clone();
@@ -663,7 +724,7 @@ impl ClosedForm {
                         )));
                     }
                 };
-                let dir_u = direction(&slide.direction_local, 1.0);
+                let dir_u = direction(&slide.direction_local);
                 let point = slide.point;
                 (
                     Group::Rpr(Rpr {
@@ -776,7 +837,15 @@ impl ClosedForm {
 /// Fills points and slides of a solution from its links.
 pub(crate) fn finish_solution(m: &Mechanism, sol: &mut Solution) {
     for (out, p) in sol.points.iter_mut().zip(&m.points) {
-        *out = sol.links[p.link].point(&p.local);
+        *out = if p.link == m.ground {
+            // Ground is the world frame: no rotation, no motion.
+            PointMotion {
+                position: p.local,
+                ..Default::default()
+            }
+        } else {
+            sol.links[p.link].point(&p.local)
+        };
     }
     for (out, s) in sol.slides.iter_mut().zip(&m.sliders) {
         *out = s.motion(&sol.links);
