@@ -6,7 +6,7 @@ use linkage::synthesis::{DieCutterSpec, crank_rocker, die_cutter, die_cutter_as_
 use linkage::{Kinematics, Mechanism, Solution};
 use serde_json::{Value, json};
 
-use crate::{Command, Format, PathArg, SceneArgs, SynthCommand};
+use crate::{Command, Format, MethodArg, PathArg, SceneArgs, SynthCommand};
 
 /// Runs one command.
 pub fn run(command: Command) -> Result<String, String> {
@@ -23,10 +23,35 @@ pub fn run(command: Command) -> Result<String, String> {
         } => at(&scene, input_deg, format),
         Command::Report { scene } => report(&scene),
         Command::Synth { what } => synth(what),
+        Command::Simulate {
+            scene,
+            method,
+            dt,
+            dphi,
+            t_end,
+            no_stops,
+            dt_out,
+            format,
+        } => {
+            let (method, step) = match method {
+                MethodArg::Energy => (linkage::dynamics::Method::EnergyIncrement, dphi),
+                MethodArg::Euler => (linkage::dynamics::Method::SemiImplicitEuler, dt),
+                MethodArg::Rk4 => (linkage::dynamics::Method::Rk4, dt),
+            };
+            crate::simulate::run(
+                &scene,
+                method,
+                step,
+                t_end,
+                !no_stops,
+                dt_out.unwrap_or(dt),
+                format,
+            )
+        }
     }
 }
 
-fn load(args: &SceneArgs) -> Result<Kinematics, String> {
+pub(crate) fn load(args: &SceneArgs) -> Result<Kinematics, String> {
     let text = std::fs::read_to_string(&args.scene)
         .map_err(|e| format!("cannot read scene {}: {e}", args.scene.display()))?;
     let mut mech =
@@ -87,7 +112,7 @@ fn apply_branches(mech: &mut Mechanism, spec: &str) -> Result<(), String> {
     Ok(())
 }
 
-fn check_finite(values: &[f64], what: &str) -> Result<(), String> {
+pub(crate) fn check_finite(values: &[f64], what: &str) -> Result<(), String> {
     match values.iter().position(|v| !v.is_finite()) {
         Some(i) => Err(format!(
             "non-finite value in {what} (column {i}); refusing to print it"
@@ -96,7 +121,7 @@ fn check_finite(values: &[f64], what: &str) -> Result<(), String> {
     }
 }
 
-fn to_csv(header: &[String], rows: &[Vec<f64>]) -> Result<String, String> {
+pub(crate) fn to_csv(header: &[String], rows: &[Vec<f64>]) -> Result<String, String> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record(header).map_err(|e| e.to_string())?;
     for r in rows {
@@ -106,7 +131,7 @@ fn to_csv(header: &[String], rows: &[Vec<f64>]) -> Result<String, String> {
     String::from_utf8(w.into_inner().map_err(|e| e.to_string())?).map_err(|e| e.to_string())
 }
 
-fn json_text(v: &Value) -> Result<String, String> {
+pub(crate) fn json_text(v: &Value) -> Result<String, String> {
     serde_json::to_string_pretty(v)
         .map(|s| s + "\n")
         .map_err(|e| e.to_string())

@@ -231,3 +231,46 @@ fn errors_exit_nonzero_and_name_the_cause() {
     assert!(!ok && err.contains("line 2, column"), "{err}");
     let _ = std::fs::remove_file(bad);
 }
+
+#[test]
+fn simulate_prints_a_uniform_grid_with_links_energy_and_events() {
+    let (ok, out, err) = linkage(&[
+        "simulate",
+        &scene("gravity_flipper.ron"),
+        "--dt",
+        "1e-4",
+        "--dt-out",
+        "0.01",
+    ]);
+    assert!(ok, "{err}");
+    let mut lines = out.lines();
+    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    assert_eq!(
+        &header[..5],
+        ["t", "q", "q_dot", "link1_theta", "link1_omega"]
+    );
+    assert_eq!(header.last(), Some(&"energy_balance_j"));
+    let t: Vec<f64> = lines
+        .map(|l| l.split(',').next().expect("t").parse().expect("number"))
+        .collect();
+    assert!(
+        t.windows(2)
+            .take(t.len() - 2)
+            .all(|w| ((w[1] - w[0]) - 0.01).abs() < 1e-12),
+        "uniform grid"
+    );
+    let (ok, out, err) = linkage(&[
+        "simulate",
+        &scene("gravity_flipper.ron"),
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    let event = &v["events"][0];
+    assert_eq!(event["name"], "table end stop");
+    assert!(event["links"]["table"]["theta"].is_f64() && event["links"]["link3"]["omega"].is_f64());
+    assert!(v["stats"]["rhs_evaluations"].as_u64().expect("count") > 0);
+    let (ok, _, err) = linkage(&["simulate", &scene("slider_crank.ron")]);
+    assert!(!ok && err.contains("no link has a mass"), "{err}");
+}

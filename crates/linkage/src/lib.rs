@@ -12,6 +12,7 @@
 
 pub mod analysis;
 pub mod closed_form;
+pub mod dynamics;
 pub mod error;
 pub mod kinematics;
 pub mod model;

@@ -1,0 +1,296 @@
+//! Force elements and the reduction to the input coordinate.
+
+use crate::error::{LinkageError, Result};
+use crate::kinematics::Kinematics;
+use crate::model::Mechanism;
+use crate::motion::{Solution, Vec2};
+use crate::scene::{DamperSpec, ForceWhen, FreeLength, Models};
+
+/// Mass data of one moving link, SI.
+#[derive(Clone, Debug, PartialEq)]
+struct Body {
+    link: usize,
+    mass_kg: f64,
+    centroid: Vec2,
+    inertia_kg_m2: f64,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+struct Spring {
+    a: usize,
+    b: usize,
+    k: f64,
+    free_length_m: f64,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+enum Damper {
+    Linear { a: usize, b: usize, c: f64 },
+    Rotational { a: usize, b: usize, c: f64 },
+}
+
+#[derive(Clone, Debug, PartialEq)]
+struct PointForce {
+    point: usize,
+    force: Vec2,
+    when: ForceWhen,
+}
+
+/// The reduced model at one position: J, dJ/dq and the generalized forces, split so
+/// that the energy balance can be checked.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Reduced {
+    /// Equivalent inertia J(q), kg·m² (per rad² of the input).
+    pub j: f64,
+    /// dJ/dq.
+    pub dj_dq: f64,
+    /// Generalized force from conservative elements (gravity, springs, constant
+    /// always-on forces), N·m.
+    pub m_conservative: f64,
+    /// Generalized force from dampers (depends on q̇), N·m.
+    pub m_damping: f64,
+    /// Generalized force from torques and stroke-dependent forces, N·m.
+    pub m_other: f64,
+}
+
+impl Reduced {
+    /// Total equivalent moment M(q, q̇, t).
+    pub fn moment(&self) -> f64 {
+        self.m_conservative + self.m_damping + self.m_other
+    }
+
+    /// q̈ from J q̈ + ½ J' q̇² = M.
+    pub fn acceleration(&self, q_dot: f64) -> f64 {
+        (self.moment() - 0.5 * self.dj_dq * q_dot * q_dot) / self.j
+    }
+}
+
+/// Energy terms at one state, J.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct EnergyTerms {
+    /// Kinetic energy ½ J q̇².
+    pub kinetic: f64,
+    /// Gravity potential.
+    pub gravity: f64,
+    /// Spring potential.
+    pub spring: f64,
+    /// Potential of constant always-on point forces (−F·r).
+    pub forces: f64,
+}
+
+impl EnergyTerms {
+    /// Kinetic plus potential.
+    pub fn total(&self) -> f64 {
+        self.kinetic + self.gravity + self.spring + self.forces
+    }
+}
+
+/// The force elements a scene declares, resolved to indices and SI units.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ForceModel {
+    bodies: Vec<Body>,
+    gravity: Option<Vec2>,
+    springs: Vec<Spring>,
+    dampers: Vec<Damper>,
+    point_forces: Vec<PointForce>,
+    torques: Vec<(usize, f64)>,
+}
+
+fn missing(link: &str, field: &str) -> LinkageError {
+    LinkageError::SceneInvalid(format!(
+        "link `{link}` needs `{field}` for dynamics (a Dynamics scene needs mass, centroid and inertia on every moving link)"
+    ))
+}
+
+impl ForceModel {
+    /// Builds the model; `start` is the solution at the start position (for springs
+    /// unstretched there). A `Dynamics` scene must give every moving link its mass,
+    /// centroid and inertia; other scenes use what they give (absent = massless).
+    pub fn new(m: &Mechanism, start: &Solution) -> Result<Self> {
+        let strict = m.models == Models::Dynamics;
+        let mut bodies = Vec::new();
+        for l in m.moving_links() {
+            let link = &m.links[l];
+            match (link.mass_kg, link.centroid_m, link.inertia_kg_m2) {
+                (Some(mass_kg), Some(centroid), Some(inertia_kg_m2)) => bodies.push(Body {
+                    link: l,
+                    mass_kg,
+                    centroid,
+                    inertia_kg_m2,
+                }),
+                (None, _, _) if strict => return Err(missing(&link.name, "mass")),
+                (_, None, _) if strict => return Err(missing(&link.name, "centroid")),
+                (_, _, None) if strict => return Err(missing(&link.name, "inertia")),
+                (Some(mass_kg), centroid, inertia) => bodies.push(Body {
+                    link: l,
+                    mass_kg,
+                    centroid: centroid.unwrap_or_default(),
+                    inertia_kg_m2: inertia.unwrap_or(0.0),
+                }),
+                (None, _, _) => {}
+            }
+        }
+        let point = |name: &str| -> Result<usize> {
+            m.point_index(name)
+                .ok_or_else(|| LinkageError::SceneInvalid(format!("unknown point `{name}`")))
+        };
+        let link = |name: &str| -> Result<usize> {
+            m.link_index(name)
+                .ok_or_else(|| LinkageError::SceneInvalid(format!("unknown link `{name}`")))
+        };
+        let f = &m.forces;
+        let mut springs = Vec::new();
+        for s in &f.springs {
+            let (a, b) = (point(&s.a)?, point(&s.b)?);
+            let free_length_m = match s.free_length {
+                FreeLength::Length(l) => l,
+                FreeLength::UnstretchedAtStart => {
+                    (start.points[a].position - start.points[b].position).norm()
+                }
+            };
+            springs.push(Spring {
+                a,
+                b,
+                k: s.k_n_per_m,
+                free_length_m,
+            });
+        }
+        let mut dampers = Vec::new();
+        for d in &f.dampers {
+            dampers.push(match d {
+                DamperSpec::Linear { a, b, c_n_s_per_m } => Damper::Linear {
+                    a: point(a)?,
+                    b: point(b)?,
+                    c: *c_n_s_per_m,
+                },
+                DamperSpec::Rotational {
+                    link_a,
+                    link_b,
+                    c_n_m_s,
+                } => Damper::Rotational {
+                    a: link(link_a)?,
+                    b: link(link_b)?,
+                    c: *c_n_m_s,
+                },
+            });
+        }
+        let mut point_forces = Vec::new();
+        for p in &f.point_forces {
+            point_forces.push(PointForce {
+                point: point(&p.point)?,
+                force: Vec2::new(p.force_n.0, p.force_n.1),
+                when: p.when,
+            });
+        }
+        let mut torques = Vec::new();
+        for t in &f.torques {
+            torques.push((link(&t.link)?, t.torque_n_m));
+        }
+        Ok(Self {
+            bodies,
+            gravity: f.gravity.map(|(x, y)| Vec2::new(x, y)),
+            springs,
+            dampers,
+            point_forces,
+            torques,
+        })
+    }
+
+    /// J, dJ/dq and the equivalent moments at the position of `unit`, a solution at
+    /// unit input speed (its velocities are velocity ratios), for input rate `q_dot`.
+    pub fn reduce(&self, unit: &Solution, q_dot: f64) -> Reduced {
+        let mut r = Reduced::default();
+        for b in &self.bodies {
+            let l = &unit.links[b.link];
+            let s = l.point(&b.centroid);
+            r.j += b.mass_kg * s.velocity.norm_squared()
+                + b.inertia_kg_m2 * l.omega_rad_s * l.omega_rad_s;
+            r.dj_dq += 2.0
+                * (b.mass_kg * s.velocity.dot(&s.acceleration)
+                    + b.inertia_kg_m2 * l.omega_rad_s * l.alpha_rad_s2);
+            if let Some(g) = self.gravity {
+                r.m_conservative += b.mass_kg * g.dot(&s.velocity);
+            }
+        }
+        for s in &self.springs {
+            let (pa, pb) = (&unit.points[s.a], &unit.points[s.b]);
+            let d = pa.position - pb.position;
+            let len = d.norm();
+            if len > 0.0 {
+                // Tension k(L − L0) pulls the ends together: power −T·dL/dt.
+                r.m_conservative -=
+                    s.k * (len - s.free_length_m) * d.dot(&(pa.velocity - pb.velocity)) / len;
+            }
+        }
+        for d in &self.dampers {
+            let rate = match *d {
+                Damper::Linear { a, b, .. } => {
+                    let (pa, pb) = (&unit.points[a], &unit.points[b]);
+                    let dd = pa.position - pb.position;
+                    let len = dd.norm();
+                    if len > 0.0 {
+                        dd.dot(&(pa.velocity - pb.velocity)) / len
+                    } else {
+                        0.0
+                    }
+                }
+                Damper::Rotational { a, b, .. } => {
+                    unit.links[a].omega_rad_s - unit.links[b].omega_rad_s
+                }
+            };
+            let c = match *d {
+                Damper::Linear { c, .. } | Damper::Rotational { c, .. } => c,
+            };
+            r.m_damping -= c * rate * rate * q_dot;
+        }
+        for p in &self.point_forces {
+            let ratio = p.force.dot(&unit.points[p.point].velocity);
+            match p.when {
+                ForceWhen::Always => r.m_conservative += ratio,
+                // Acts while the point moves against the force (the force does negative work).
+                ForceWhen::WorkingStroke => {
+                    if ratio * q_dot < 0.0 {
+                        r.m_other += ratio;
+                    }
+                }
+            }
+        }
+        for &(l, t) in &self.torques {
+            r.m_other += t * unit.links[l].omega_rad_s;
+        }
+        r
+    }
+
+    /// Potential energies and kinetic energy at the position of `unit` for rate `q_dot`.
+    pub fn energy(&self, unit: &Solution, j: f64, q_dot: f64) -> EnergyTerms {
+        let mut e = EnergyTerms {
+            kinetic: 0.5 * j * q_dot * q_dot,
+            ..Default::default()
+        };
+        if let Some(g) = self.gravity {
+            for b in &self.bodies {
+                e.gravity -= b.mass_kg * g.dot(&unit.links[b.link].world(&b.centroid));
+            }
+        }
+        for s in &self.springs {
+            let len = (unit.points[s.a].position - unit.points[s.b].position).norm();
+            e.spring += 0.5 * s.k * (len - s.free_length_m).powi(2);
+        }
+        for p in &self.point_forces {
+            if p.when == ForceWhen::Always {
+                e.forces -= p.force.dot(&unit.points[p.point].position);
+            }
+        }
+        e
+    }
+
+    /// True when the scene has no mass at all (nothing to integrate).
+    pub fn is_massless(&self) -> bool {
+        self.bodies.is_empty()
+    }
+}
+
+/// Solves the kinematics at `q` with unit input speed (velocity ratios).
+pub(crate) fn unit_solution(k: &mut Kinematics, q: f64, out: &mut Solution) -> Result<()> {
+    k.solve_into(q, 1.0, out)
+}
