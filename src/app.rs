@@ -23,11 +23,12 @@ impl eframe::App for LinkageApp {
         ui.heading("Linkage Lab");
         ui.label("Planar linkage simulator");
         self.frames_drawn += 1;
-        if self
-            .exit_after_frames
-            .is_some_and(|n| self.frames_drawn >= n)
-        {
-            ui.ctx().send_viewport_cmd(egui::ViewportCommand::Close);
+        if let Some(n) = self.exit_after_frames {
+            // egui repaints only on input: a smoke run has to ask for every frame.
+            ui.ctx().request_repaint();
+            if self.frames_drawn >= n {
+                ui.ctx().send_viewport_cmd(egui::ViewportCommand::Close);
+            }
         }
     }
 }
