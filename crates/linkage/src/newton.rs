@@ -596,31 +596,15 @@ impl Newton {
                 previous = f64::INFINITY;
             }
             if self.lu.is_none() {
-                self.build_jacobian(links);
-                self.lu = Some(self.jac.clone().lu());
+                self.refactor(links);
                 fresh = true;
             }
-            self.rhs
-                .iter_mut()
-                .zip(res.iter())
-                .for_each(|(r, v)| *r = -v);
-            let mut solved = self
-                .lu
-                .as_ref()
-                .is_some_and(|lu| lu.solve_mut(&mut self.rhs));
+            let mut solved = self.newton_step(res);
             if !solved && !fresh {
                 // The stale factorization is singular; the fresh one may not be.
-                self.build_jacobian(links);
-                self.lu = Some(self.jac.clone().lu());
+                self.refactor(links);
                 fresh = true;
-                self.rhs
-                    .iter_mut()
-                    .zip(res.iter())
-                    .for_each(|(r, v)| *r = -v);
-                solved = self
-                    .lu
-                    .as_ref()
-                    .is_some_and(|lu| lu.solve_mut(&mut self.rhs));
+                solved = self.newton_step(res);
             }
             if !solved {
                 return Err(LinkageError::Singular {
@@ -655,6 +639,20 @@ impl Newton {
             residual: f64::NAN,
             tolerance: self.tolerance,
         })
+    }
+
+    /// Builds and factors the Jacobian at the current positions.
+    fn refactor(&mut self, links: &mut [LinkMotion]) {
+        self.build_jacobian(links);
+        self.lu = Some(self.jac.clone().lu());
+    }
+
+    /// Solves `J Δ = −res` into `self.rhs` with the held factorization; false if singular.
+    fn newton_step(&mut self, res: &[f64]) -> bool {
+        self.rhs.iter_mut().zip(res).for_each(|(r, v)| *r = -v);
+        self.lu
+            .as_ref()
+            .is_some_and(|lu| lu.solve_mut(&mut self.rhs))
     }
 
     /// Computes dq/d(input) and d²q/d(input)² at the converged pose.
