@@ -19,15 +19,7 @@ fn scene(file: &str) -> Mechanism {
 
 /// A crank-rocker four-bar: the paper-cup feed without its slider.
 fn four_bar() -> Mechanism {
-    let text = r#"Scene(name: "four-bar", models: Kinematics, length_unit: Millimetre,
-        links: [
-            (name: "ground", ground: true, points: {"A": (0.0, 0.0), "D": (200.0, 0.0)}),
-            (name: "crank", points: {"A": (0.0, 0.0), "B": (50.0, 0.0)}),
-            (name: "coupler", points: {"B": (0.0, 0.0), "C": (180.0, 0.0)}),
-            (name: "rocker", points: {"D": (0.0, 0.0), "C": (120.0, 0.0)}),
-        ],
-        driver: (link: "crank", speed: Rpm(45.0)),
-        branches: {"C": Left("B", "D")})"#;
+    let text = include_str!("four_bar.ron");
     Mechanism::from_ron(text).unwrap_or_else(|e| panic!("{e}"))
 }
 

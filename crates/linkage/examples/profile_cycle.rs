@@ -2,15 +2,7 @@
 //! `valgrind --tool=callgrind target/release/examples/profile_cycle [newton]`.
 use linkage::{Kinematics, Mechanism};
 fn main() {
-    let text = r#"Scene(name: "four-bar", models: Kinematics, length_unit: Millimetre,
-        links: [
-            (name: "ground", ground: true, points: {"A": (0.0, 0.0), "D": (200.0, 0.0)}),
-            (name: "crank", points: {"A": (0.0, 0.0), "B": (50.0, 0.0)}),
-            (name: "coupler", points: {"B": (0.0, 0.0), "C": (180.0, 0.0)}),
-            (name: "rocker", points: {"D": (0.0, 0.0), "C": (120.0, 0.0)}),
-        ],
-        driver: (link: "crank", speed: Rpm(45.0)),
-        branches: {"C": Left("B", "D")})"#;
+    let text = include_str!("../benches/four_bar.ron");
     let path = if std::env::args().any(|a| a == "newton") {
         linkage::scene::SolverPath::Newton
     } else {
