@@ -66,6 +66,20 @@ pub fn assembly_ranges_of(k: &Kinematics) -> AssemblyRanges {
     }
 }
 
+impl AssemblyRanges {
+    /// The interval holding input `x` (any turn), else the first; `None` when the
+    /// chain assembles nowhere.
+    pub fn containing(&self, x: f64) -> Option<[f64; 2]> {
+        let x = x.rem_euclid(TAU);
+        let holds = |[a, b]: &&[f64; 2]| (*a <= x && x <= *b) || (*a <= x + TAU && x + TAU <= *b);
+        self.intervals
+            .iter()
+            .find(holds)
+            .or(self.intervals.first())
+            .copied()
+    }
+}
+
 /// "the reachable input range is 34.30..117.70 deg" and similar.
 pub fn describe_ranges(r: &AssemblyRanges) -> String {
     if r.full_rotation {
@@ -511,9 +525,10 @@ pub fn transmission_angle(
     let groups = k.group_count();
     let start = k.mechanism().driver.start_rad;
     let names: Vec<String> = (0..groups).map(|g| k.group_name(g)).collect();
-    let mut best: Option<TransmissionAngle> = None;
+    // (input, angle, group) over all groups: the extremes are taken over all of them.
+    let mut all: Vec<(f64, f64, usize)> = Vec::new();
     let mut sol = k.empty_solution();
-    for (g, name) in names.iter().enumerate() {
+    for g in 0..names.len() {
         let mut candidates: Vec<(f64, f64)> = Vec::new();
         let eval = |k: &mut Kinematics, x: f64, sol: &mut Solution| -> Option<(f64, f64, f64)> {
             k.solve_into(x, 1.0, sol).ok()?;
@@ -553,33 +568,17 @@ pub fn transmission_angle(
                 }
             }
         }
-        let Some(&(at, min)) = candidates.iter().min_by(|a, b| a.1.total_cmp(&b.1)) else {
-            continue;
-        };
-        let Some(&(at_max, max)) = candidates.iter().max_by(|a, b| a.1.total_cmp(&b.1)) else {
-            continue;
-        };
-        let better = best.as_ref().is_none_or(|b| min < b.min);
-        let best_max = best.as_ref().map_or(max, |b| b.max.max(max));
-        let best_at_max = if best.as_ref().is_none_or(|b| max >= b.max) {
-            at_max
-        } else {
-            best.as_ref().map_or(at_max, |b| b.at_max)
-        };
-        if better {
-            best = Some(TransmissionAngle {
-                min,
-                max: best_max,
-                at,
-                at_max: best_at_max,
-                group: name.clone(),
-            });
-        } else if let Some(b) = &mut best {
-            b.max = best_max;
-            b.at_max = best_at_max;
-        }
+        all.extend(candidates.into_iter().map(|(x, mu)| (x, mu, g)));
     }
-    best
+    let &(at, min, group) = all.iter().min_by(|a, b| a.1.total_cmp(&b.1))?;
+    let &(at_max, max, _) = all.iter().max_by(|a, b| a.1.total_cmp(&b.1))?;
+    Some(TransmissionAngle {
+        min,
+        max,
+        at,
+        at_max,
+        group: names[group].clone(),
+    })
 }
 
 /// Points where two moving links meet and lie on one line (within `tol_rad`): each
@@ -633,16 +632,11 @@ pub fn report(k: &mut Kinematics) -> Result<Report> {
     }
     // Extremes, strokes and toggles belong to the interval the mechanism starts in: a
     // disjoint interval is another assembly of the same links that it cannot reach.
-    let start = k.mechanism().driver.start_rad.rem_euclid(TAU);
     let working = AssemblyRanges {
         full_rotation: ranges.full_rotation,
         intervals: ranges
-            .intervals
-            .iter()
-            .find(|[a, b]| (*a <= start && start <= *b) || (*a <= start + TAU && start + TAU <= *b))
-            .or(ranges.intervals.first())
+            .containing(k.mechanism().driver.start_rad)
             .into_iter()
-            .copied()
             .collect(),
     };
     let outs = outputs(k);

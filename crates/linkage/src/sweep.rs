@@ -33,16 +33,8 @@ pub fn sweep_range(k: &Kinematics) -> Result<([f64; 2], bool)> {
     if ranges.full_rotation {
         return Ok(([start, start + std::f64::consts::TAU], true));
     }
-    let inside = |[a, b]: &[f64; 2]| {
-        let x = start.rem_euclid(std::f64::consts::TAU);
-        (x >= *a && x <= *b) || (x + std::f64::consts::TAU >= *a && x + std::f64::consts::TAU <= *b)
-    };
     let [a, b] = ranges
-        .intervals
-        .iter()
-        .find(|r| inside(r))
-        .or(ranges.intervals.first())
-        .copied()
+        .containing(start)
         .ok_or_else(|| LinkageError::CannotAssemble {
             input_deg: start.to_degrees(),
             reason: "no input angle assembles the chain".into(),
