@@ -157,9 +157,15 @@ struct Rhs<'a> {
 }
 
 impl Rhs<'_> {
+    /// Solves the kinematics at `q` (one RHS evaluation) and reduces there.
     fn reduce(&mut self, q: f64, q_dot: f64) -> Result<Reduced> {
         self.evaluations += 1;
         unit_solution(self.k, q, &mut self.sol)?;
+        self.reduce_here(q, q_dot)
+    }
+
+    /// Reduces at the position already solved in `self.sol` (at `q`).
+    fn reduce_here(&mut self, q: f64, q_dot: f64) -> Result<Reduced> {
         let r = self.forces.reduce(&self.sol, q_dot);
         if !(r.j > 0.0 && r.j.is_finite()) {
             return Err(LinkageError::Singular {
@@ -179,7 +185,14 @@ impl Rhs<'_> {
 
     /// A full sample at (t, q, q̇), with the non-conservative work carried in.
     fn sample(&mut self, t: f64, q: f64, q_dot: f64, work: f64) -> Result<(Sample, Reduced)> {
-        let r = self.reduce(q, q_dot)?;
+        self.evaluations += 1;
+        unit_solution(self.k, q, &mut self.sol)?;
+        self.sample_here(t, q, q_dot, work)
+    }
+
+    /// As [`Self::sample`], at the position already solved in `self.sol`.
+    fn sample_here(&mut self, t: f64, q: f64, q_dot: f64, work: f64) -> Result<(Sample, Reduced)> {
+        let r = self.reduce_here(q, q_dot)?;
         let e: EnergyTerms = self.forces.energy(&self.sol, r.j, q_dot);
         Ok((
             Sample {
@@ -266,11 +279,11 @@ pub fn simulate(
         forces: &forces,
         evaluations: 0,
     };
-    let (first, _) = rhs.sample(0.0, q0, q_dot0, 0.0)?;
+    let (first, first_reduced) = rhs.sample(0.0, q0, q_dot0, 0.0)?;
     let mut samples = vec![first];
     let mut events = Vec::new();
     let mut steps = 0usize;
-    // Signed distance of every stop's link from its stop angle at a state.
+    // Signed distance of a stop's link from its stop angle at input q.
     let gap = |rhs: &mut Rhs<'_>, q: f64, stop: &Stop| -> f64 {
         if unit_solution(rhs.k, q, &mut rhs.sol).is_err() {
             return f64::NAN;
@@ -278,12 +291,15 @@ pub fn simulate(
         let a = rhs.sol.links[stop.link].angle_rad() - stop.angle;
         a - (a / std::f64::consts::TAU).round() * std::f64::consts::TAU
     };
-    'run: while samples.last().is_some_and(|s| s.t < t_end) {
-        let a = *samples.last().unwrap_or(&first);
-        let next = match method {
-            Method::Rk4 => rk4_step(&mut rhs, &a, step.min(t_end - a.t))?,
-            Method::SemiImplicitEuler => euler_step(&mut rhs, &a, step.min(t_end - a.t))?,
-            Method::EnergyIncrement => match energy_step(&mut rhs, &a, step)? {
+    // The state at the start of each step, with its reduction and stop gaps, carried
+    // over from the end of the previous step rather than solved again.
+    let (mut a, mut ra) = (first, first_reduced);
+    let mut gaps: Vec<f64> = stops.iter().map(|stop| gap(&mut rhs, a.q, stop)).collect();
+    'run: while a.t < t_end {
+        let (next, r_next) = match method {
+            Method::Rk4 => rk4_step(&mut rhs, &a, &ra, step.min(t_end - a.t))?,
+            Method::SemiImplicitEuler => euler_step(&mut rhs, &a, &ra, step.min(t_end - a.t))?,
+            Method::EnergyIncrement => match energy_step(&mut rhs, &a, &ra, step)? {
                 Some(b) => b,
                 None => {
                     events.push(SimEvent {
@@ -296,13 +312,13 @@ pub fn simulate(
             },
         };
         steps += 1;
-        for stop in &stops {
-            let (ga, gb) = (gap(&mut rhs, a.q, stop), gap(&mut rhs, next.q, stop));
+        for (stop, ga) in stops.iter().zip(gaps.iter_mut()) {
+            let gb = gap(&mut rhs, next.q, stop);
             if ga.is_finite()
                 && gb.is_finite()
-                && ga != 0.0
+                && *ga != 0.0
                 && ga.signum() != gb.signum()
-                && (ga - gb).abs() < 1.0
+                && (*ga - gb).abs() < 1.0
             {
                 let t_hit = refine(a.t, next.t, |t| {
                     gap(&mut rhs, interpolate(&a, &next, t).q, stop)
@@ -320,8 +336,10 @@ pub fn simulate(
                     break 'run;
                 }
             }
+            *ga = gb;
         }
         samples.push(next);
+        (a, ra) = (next, r_next);
     }
     let stats = RunStats {
         steps,
@@ -341,8 +359,9 @@ fn work(a: &Sample, b: &Sample, ra: &Reduced, rb: &Reduced) -> f64 {
     0.5 * (ra.m_damping + ra.m_other + rb.m_damping + rb.m_other) * (b.q - a.q)
 }
 
-fn rk4_step(rhs: &mut Rhs<'_>, a: &Sample, h: f64) -> Result<Sample> {
-    let ra = rhs.reduce(a.q, a.q_dot)?;
+/// One RK4 step from `a`, whose reduction `ra` is known: three new stages and the
+/// end state, four kinematic solves.
+fn rk4_step(rhs: &mut Rhs<'_>, a: &Sample, ra: &Reduced, h: f64) -> Result<(Sample, Reduced)> {
     let k1 = (a.q_dot, ra.acceleration(a.q_dot));
     let k2 = (
         a.q_dot + 0.5 * h * k1.1,
@@ -359,24 +378,28 @@ fn rk4_step(rhs: &mut Rhs<'_>, a: &Sample, h: f64) -> Result<Sample> {
     let q = a.q + h / 6.0 * (k1.0 + 2.0 * k2.0 + 2.0 * k3.0 + k4.0);
     let q_dot = a.q_dot + h / 6.0 * (k1.1 + 2.0 * k2.1 + 2.0 * k3.1 + k4.1);
     let (mut b, rb) = rhs.sample(a.t + h, q, q_dot, a.work_nonconservative)?;
-    b.work_nonconservative += work(a, &b, &ra, &rb);
-    Ok(b)
+    b.work_nonconservative += work(a, &b, ra, &rb);
+    Ok((b, rb))
 }
 
-fn euler_step(rhs: &mut Rhs<'_>, a: &Sample, h: f64) -> Result<Sample> {
-    let ra = rhs.reduce(a.q, a.q_dot)?;
+/// One semi-implicit Euler step from `a` (reduction `ra` known): one kinematic solve.
+fn euler_step(rhs: &mut Rhs<'_>, a: &Sample, ra: &Reduced, h: f64) -> Result<(Sample, Reduced)> {
     let q_dot = a.q_dot + h * ra.acceleration(a.q_dot);
     let q = a.q + h * q_dot;
     let (mut b, rb) = rhs.sample(a.t + h, q, q_dot, a.work_nonconservative)?;
-    b.work_nonconservative += work(a, &b, &ra, &rb);
-    Ok(b)
+    b.work_nonconservative += work(a, &b, ra, &rb);
+    Ok((b, rb))
 }
 
 /// One energy increment of size `dphi` in the direction of motion (from rest: the
 /// direction the moment pushes). `None` at a turning point (kinetic energy would go
-/// negative).
-fn energy_step(rhs: &mut Rhs<'_>, a: &Sample, dphi: f64) -> Result<Option<Sample>> {
-    let ra = rhs.reduce(a.q, a.q_dot)?;
+/// negative). One kinematic solve, at the new q.
+fn energy_step(
+    rhs: &mut Rhs<'_>,
+    a: &Sample,
+    ra: &Reduced,
+    dphi: f64,
+) -> Result<Option<(Sample, Reduced)>> {
     let direction = if a.q_dot != 0.0 {
         a.q_dot.signum()
     } else {
@@ -394,7 +417,9 @@ fn energy_step(rhs: &mut Rhs<'_>, a: &Sample, dphi: f64) -> Result<Option<Sample
     }
     let q_dot = direction * w2.sqrt();
     let t = a.t + 2.0 * dq / (a.q_dot + q_dot);
-    let (mut b, rb) = rhs.sample(t, q, q_dot, a.work_nonconservative)?;
-    b.work_nonconservative += work(a, &b, &ra, &rb);
-    Ok(Some(b))
+    // J at q does not depend on q̇; only the damping moment does, so the solve just
+    // done at q serves the sample too.
+    let (mut b, rb) = rhs.sample_here(t, q, q_dot, a.work_nonconservative)?;
+    b.work_nonconservative += work(a, &b, ra, &rb);
+    Ok(Some((b, rb)))
 }
