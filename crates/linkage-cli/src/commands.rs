@@ -6,7 +6,7 @@ use linkage::synthesis::{DieCutterSpec, crank_rocker, die_cutter, die_cutter_as_
 use linkage::{Kinematics, Mechanism, Solution};
 use serde_json::{Value, json};
 
-use crate::{Command, Format, MethodArg, PathArg, SceneArgs, SynthCommand};
+use crate::{Command, Format, PathArg, SceneArgs, SynthCommand};
 
 /// Runs one command.
 pub fn run(command: Command) -> Result<String, String> {
@@ -23,31 +23,7 @@ pub fn run(command: Command) -> Result<String, String> {
         } => at(&scene, input_deg, format),
         Command::Report { scene } => report(&scene),
         Command::Synth { what } => synth(what),
-        Command::Simulate {
-            scene,
-            method,
-            dt,
-            dphi,
-            t_end,
-            no_stops,
-            dt_out,
-            format,
-        } => {
-            let (method, step) = match method {
-                MethodArg::Energy => (linkage::dynamics::Method::EnergyIncrement, dphi),
-                MethodArg::Euler => (linkage::dynamics::Method::SemiImplicitEuler, dt),
-                MethodArg::Rk4 => (linkage::dynamics::Method::Rk4, dt),
-            };
-            crate::simulate::run(
-                &scene,
-                method,
-                step,
-                t_end,
-                !no_stops,
-                dt_out.unwrap_or(dt),
-                format,
-            )
-        }
+        Command::Simulate { scene, sim, format } => crate::simulate::run(&scene, &sim, format),
     }
 }
 

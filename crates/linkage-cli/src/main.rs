@@ -82,28 +82,13 @@ enum Command {
         #[command(flatten)]
         scene: SceneArgs,
     },
-    /// Forward dynamics of the 1-DOF chain from rest at the scene's start angle.
+    /// Forward dynamics of the 1-DOF chain from rest at the scene's start angle:
+    /// samples on a uniform time grid (CSV or JSON with events and cost).
     Simulate {
         #[command(flatten)]
         scene: SceneArgs,
-        /// Integration method.
-        #[arg(long, value_enum, default_value_t = MethodArg::Rk4)]
-        method: MethodArg,
-        /// Time step, s (euler, rk4).
-        #[arg(long, default_value_t = 1e-4)]
-        dt: f64,
-        /// Angle step of the energy-increment method, rad.
-        #[arg(long, default_value_t = 1e-4)]
-        dphi: f64,
-        /// End time, s (or the first end stop).
-        #[arg(long, default_value_t = 1.0)]
-        t_end: f64,
-        /// Ignore the scene's end stops.
-        #[arg(long)]
-        no_stops: bool,
-        /// Output grid, s (dense output by cubic Hermite interpolation; default: --dt).
-        #[arg(long)]
-        dt_out: Option<f64>,
+        #[command(flatten)]
+        sim: simulate::SimArgs,
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Csv)]
         format: Format,
@@ -113,17 +98,6 @@ enum Command {
         #[command(subcommand)]
         what: SynthCommand,
     },
-}
-
-/// Integration method.
-#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
-enum MethodArg {
-    /// The flipper paper's energy increments (steps of --dphi).
-    Energy,
-    /// Semi-implicit Euler.
-    Euler,
-    /// Classical Runge–Kutta 4.
-    Rk4,
 }
 
 #[derive(Subcommand, Debug)]

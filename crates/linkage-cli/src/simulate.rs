@@ -1,48 +1,144 @@
 //! `linkage simulate`: samples on a uniform time grid with every link's angle and
 //! speed and the energy terms; JSON adds the events and the run's cost.
 
-use linkage::dynamics::{Method, Sample, simulate};
-use linkage::{Kinematics, Solution};
+use clap::ValueEnum;
+use linkage::dynamics::{Method, Settings, Simulation, simulate};
+use linkage::{Kinematics, Mechanism};
 use serde_json::{Value, json};
 
 use crate::commands::{check_finite, json_text, load, to_csv};
 use crate::{Format, SceneArgs};
 
-/// Every moving link's (name, angle, omega) at a state of the run.
-fn link_states(
-    k: &mut Kinematics,
-    sol: &mut Solution,
-    s: &Sample,
-) -> Result<Vec<(String, f64, f64)>, String> {
-    k.solve_into(s.q, s.q_dot, sol)
-        .map_err(|e| format!("at t = {} s: {e}", s.t))?;
-    let m = k.mechanism();
-    Ok(m.moving_links()
-        .map(|l| {
-            (
-                m.links[l].name.clone(),
-                sol.links[l].angle_rad(),
-                sol.links[l].omega_rad_s,
-            )
-        })
-        .collect())
+/// Integration method.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum MethodArg {
+    /// The flipper paper's energy increments (steps of --dphi).
+    Energy,
+    /// Semi-implicit (symplectic) Euler, fixed --dt.
+    Euler,
+    /// Classical Runge–Kutta 4, fixed --dt.
+    Rk4,
+    /// Implicit midpoint, fixed --dt: A-stable, for stiff springs.
+    Implicit,
+    /// Adaptive Dormand–Prince 5(4), --rtol/--atol.
+    Dp5,
+    /// Adaptive Dormand–Prince 8(5,3), --rtol/--atol.
+    Dop853,
+}
+
+impl MethodArg {
+    /// The solver's method.
+    pub fn method(self) -> Method {
+        match self {
+            MethodArg::Energy => Method::EnergyIncrement,
+            MethodArg::Euler => Method::SemiImplicitEuler,
+            MethodArg::Rk4 => Method::Rk4,
+            MethodArg::Implicit => Method::ImplicitMidpoint,
+            MethodArg::Dp5 => Method::Dp5,
+            MethodArg::Dop853 => Method::Dop853,
+        }
+    }
+}
+
+/// Options of a dynamics run.
+#[derive(clap::Args, Debug, Clone)]
+pub struct SimArgs {
+    /// Integration method.
+    #[arg(long, value_enum, default_value_t = MethodArg::Dop853)]
+    pub method: MethodArg,
+    /// Time step of the fixed-step methods, s; for the adaptive ones the largest step
+    /// (default: none).
+    #[arg(long)]
+    pub dt: Option<f64>,
+    /// Angle step of the energy-increment method, rad.
+    #[arg(long, default_value_t = 1e-4)]
+    pub dphi: f64,
+    /// Relative tolerance of the adaptive methods.
+    #[arg(long, default_value_t = 1e-10)]
+    pub rtol: f64,
+    /// Absolute tolerance of the adaptive methods (rad, rad/s).
+    #[arg(long, default_value_t = 1e-12)]
+    pub atol: f64,
+    /// End time, s (or the first end stop).
+    #[arg(long, default_value_t = 1.0)]
+    pub t_end: f64,
+    /// Ignore the scene's end stops.
+    #[arg(long)]
+    pub no_stops: bool,
+    /// Output grid, s (the method's dense output).
+    #[arg(long, default_value_t = 1e-3)]
+    pub dt_out: f64,
+    /// Link whose angle is the coordinate at the start (default: the scene's driver).
+    #[arg(long)]
+    pub coordinate: Option<String>,
+    /// Keep the starting coordinate through its dead points (the run then fails
+    /// there instead of switching).
+    #[arg(long)]
+    pub no_switch: bool,
+}
+
+impl SimArgs {
+    /// The solver settings for `mech`.
+    pub fn settings(&self, mech: &Mechanism) -> Result<Settings, String> {
+        let method = self.method.method();
+        let mut s = Settings::new(method);
+        match method {
+            Method::EnergyIncrement => s.step = self.dphi,
+            _ => {
+                if let Some(dt) = self.dt {
+                    s.step = dt;
+                }
+            }
+        }
+        s.rtol = self.rtol;
+        s.atol = self.atol;
+        s.t_end = self.t_end;
+        s.use_stops = !self.no_stops;
+        s.output_dt = Some(self.dt_out);
+        s.switch_coordinates = !self.no_switch;
+        if let Some(name) = &self.coordinate {
+            let link = mech.link_index(name).ok_or_else(|| {
+                format!(
+                    "no link named `{name}` for --coordinate (links: {})",
+                    mech.moving_links()
+                        .map(|l| mech.links[l].name.as_str())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )
+            })?;
+            s.coordinate = Some(link);
+        }
+        Ok(s)
+    }
+}
+
+/// Every moving link's (name, angle, omega) at each sample, angles unwrapped along
+/// the run like `sweep`.
+fn link_rows(sim: &mut Simulation, mech: &Mechanism) -> Result<Vec<Vec<f64>>, String> {
+    let links: Vec<usize> = mech.moving_links().collect();
+    let mut rows: Vec<Vec<f64>> = Vec::with_capacity(sim.samples.len());
+    for s in sim.samples.clone() {
+        let pose = sim.pose(&s).map_err(|e| format!("at t = {} s: {e}", s.t))?;
+        let mut row = Vec::with_capacity(2 * links.len());
+        for (n, &l) in links.iter().enumerate() {
+            let theta = pose.links[l].angle_rad();
+            let theta = match rows.last() {
+                Some(p) => linkage::sweep::unwrap_near(theta, p[2 * n]),
+                None => theta,
+            };
+            row.extend([theta, pose.links[l].omega_rad_s]);
+        }
+        rows.push(row);
+    }
+    Ok(rows)
 }
 
 /// Runs the simulation and formats it.
-pub fn run(
-    args: &SceneArgs,
-    method: Method,
-    step: f64,
-    t_end: f64,
-    stops: bool,
-    dt_out: f64,
-    format: Format,
-) -> Result<String, String> {
-    let mut k = load(args)?;
-    let sim = simulate(&mut k, method, step, t_end, 0.0, stops).map_err(|e| e.to_string())?;
-    let grid = sim.resample(dt_out);
-    let mut sol = k.empty_solution();
+pub fn run(args: &SceneArgs, sim_args: &SimArgs, format: Format) -> Result<String, String> {
+    let k: Kinematics = load(args)?;
     let m = k.mechanism().clone();
+    let settings = sim_args.settings(&m)?;
+    let mut sim = simulate(&k, &settings).map_err(|e| e.to_string())?;
     let mut header = vec!["t".to_string(), "q".into(), "q_dot".into()];
     for l in m.moving_links() {
         header.push(format!("{}_theta", m.links[l].name));
@@ -57,19 +153,11 @@ pub fn run(
         ]
         .map(String::from),
     );
-    let mut rows = Vec::with_capacity(grid.len());
-    let mut previous: Option<Vec<f64>> = None;
-    for s in &grid {
+    let link_rows = link_rows(&mut sim, &m)?;
+    let mut rows = Vec::with_capacity(sim.samples.len());
+    for (s, links) in sim.samples.iter().zip(link_rows) {
         let mut row = vec![s.t, s.q, s.q_dot];
-        let links = link_states(&mut k, &mut sol, s)?;
-        for (n, (_, theta, omega)) in links.iter().enumerate() {
-            // Angles unwrapped along the run, like `sweep`.
-            let theta = match &previous {
-                Some(p) => linkage::sweep::unwrap_near(*theta, p[3 + 2 * n]),
-                None => *theta,
-            };
-            row.extend([theta, *omega]);
-        }
+        row.extend(links);
         row.extend([
             s.kinetic,
             s.potential,
@@ -77,42 +165,48 @@ pub fn run(
             s.energy_balance(),
         ]);
         check_finite(&row, "simulation")?;
-        previous = Some(row.clone());
         rows.push(row);
     }
     match format {
         Format::Csv => to_csv(&header, &rows),
         Format::Json => {
             let mut events = Vec::new();
-            for e in &sim.events {
-                let links: serde_json::Map<String, Value> =
-                    link_states(&mut k, &mut sol, &e.state)?
-                        .into_iter()
-                        .map(|(n, th, w)| (n, json!({"theta": th, "omega": w})))
-                        .collect();
-                events.push(
-                    json!({"name": e.name, "t": e.state.t, "q": e.state.q, "q_dot": e.state.q_dot,
-                    "stopped": e.stopped, "links": links}),
-                );
+            for e in sim.events.clone() {
+                let pose = sim.pose(&e.state).map_err(|err| err.to_string())?;
+                let links: serde_json::Map<String, Value> = m
+                    .moving_links()
+                    .map(|l| {
+                        (
+                            m.links[l].name.clone(),
+                            json!({"theta": pose.links[l].angle_rad(), "omega": pose.links[l].omega_rad_s}),
+                        )
+                    })
+                    .collect();
+                events.push(json!({
+                    "name": e.name, "t": e.state.t, "q": e.state.q, "q_dot": e.state.q_dot,
+                    "q_ddot": e.state.q_ddot, "stopped": e.stopped,
+                    "coordinate": m.links[e.state.coordinate_link].name, "links": links,
+                }));
             }
-            let e0 = sim.samples.first().map_or(0.0, Sample::energy_balance);
-            let drift = sim
-                .samples
-                .iter()
-                .map(|s| (s.energy_balance() - e0).abs())
-                .fold(0.0, f64::max);
             json_text(&json!({
                 "scene": m.name,
-                "method": format!("{:?}", sim.method),
-                "step": step,
+                "method": sim_args.method.method().label(),
+                "step": settings.step,
+                "rtol": settings.rtol,
+                "atol": settings.atol,
                 "columns": header,
                 "rows": rows,
                 "events": events,
                 "stats": {
                     "steps": sim.stats.steps,
+                    "rejected_steps": sim.stats.rejected_steps,
                     "rhs_evaluations": sim.stats.rhs_evaluations,
+                    "kinematic_solves": sim.stats.kinematic_solves,
                     "cpu_seconds": sim.stats.cpu_seconds,
-                    "max_energy_balance_error_j": drift,
+                    "estimated_error": sim.stats.max_error_estimate,
+                    "stiffness_per_s": sim.stats.stiffness_per_s,
+                    "max_energy_balance_error_j": sim.energy_drift(),
+                    "warnings": sim.stats.warnings,
                 },
             }))
         }

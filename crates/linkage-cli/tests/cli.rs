@@ -267,8 +267,16 @@ fn simulate_prints_a_uniform_grid_with_links_energy_and_events() {
     ]);
     assert!(ok, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).expect("json");
-    let event = &v["events"][0];
+    let events = v["events"].as_array().expect("events");
+    let event = events.last().expect("an event");
     assert_eq!(event["name"], "table end stop");
+    assert_eq!(event["stopped"], true);
+    // Link 1 nears its dead point at 34.3 deg before the stop at 35 deg: the run
+    // switches to link 3's angle on the way.
+    assert!(
+        events.iter().any(|e| e["name"] == "coordinate switch from link1 to link3"),
+        "{events:?}"
+    );
     assert!(event["links"]["table"]["theta"].is_f64() && event["links"]["link3"]["omega"].is_f64());
     assert!(v["stats"]["rhs_evaluations"].as_u64().expect("count") > 0);
     let (ok, _, err) = linkage(&["simulate", &scene("slider_crank.ron")]);

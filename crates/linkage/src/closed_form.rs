@@ -202,6 +202,16 @@ impl Group {
         }
     }
 
+    /// Switches the group to its other assembly branch (a PRP group has only one).
+    fn flip_branch(&mut self) {
+        match self {
+            Group::Rrr(g) => g.sign = -g.sign,
+            Group::Rrp(g) => g.sign = -g.sign,
+            Group::Rpr(g) => g.sign = -g.sign,
+            Group::Prp(_) => {}
+        }
+    }
+
     /// The group type in Assur notation.
     pub(crate) fn kind(&self) -> &'static str {
         match self {
@@ -509,6 +519,16 @@ impl ClosedForm {
     /// when it has none (then use [`crate::newton::Newton`]), or with
     /// [`LinkageError::SceneInvalid`] when a dyad's branch is missing or malformed.
     pub fn new(m: &Mechanism) -> Result<Self> {
+        Self::decompose(m, false)
+    }
+
+    /// As [`Self::new`], but a dyad without a branch in the scene gets a provisional
+    /// one (for [`Self::match_pose`], which then reads every branch off a pose).
+    pub(crate) fn new_without_branches(m: &Mechanism) -> Result<Self> {
+        Self::decompose(m, true)
+    }
+
+    fn decompose(m: &Mechanism, provisional_branches: bool) -> Result<Self> {
         let mut joints: Vec<JointRef> = (0..m.revolutes.len()).map(JointRef::Rev).collect();
         joints.extend((0..m.sliders.len()).map(JointRef::Pri));
         let mut used = vec![false; joints.len()];
@@ -549,7 +569,15 @@ impl ClosedForm {
                 let (ji_list, jj_list) = (to_known(i), to_known(j));
                 if ji_list.len() == 1
                     && jj_list.len() == 1
-                    && let Some(g) = Self::make_group(m, i, j, jij, ji_list[0], jj_list[0])?
+                    && let Some(g) = Self::make_group(
+                        m,
+                        i,
+                        j,
+                        jij,
+                        ji_list[0],
+                        jj_list[0],
+                        provisional_branches,
+                    )?
                 {
                     found = Some((g, [ji, ji_list[0].0, jj_list[0].0], i, j));
                     break 'search;
@@ -606,9 +634,20 @@ impl ClosedForm {
         jij: JointRef,
         ji: (usize, JointRef, usize),
         jj: (usize, JointRef, usize),
+        provisional_branches: bool,
     ) -> Result<Option<(Group, usize)>> {
         use JointRef::{Pri, Rev};
+        // A provisional branch is any valid one of the right kind; match_pose fixes it.
+        let provisional_rrr = Branch::Left(String::new(), String::new());
+        let provisional_slide = Branch::Along;
         let branch_of = |point: usize, describe: &str| -> Result<&Branch> {
+            if provisional_branches && m.branch_for(point).is_none() {
+                return Ok(if describe == "RRR" {
+                    &provisional_rrr
+                } else {
+                    &provisional_slide
+                });
+            }
             m.branch_for(point).ok_or_else(|| {
                 LinkageError::SceneInvalid(format!(
                     "the {describe} dyad with inner joint `{}` needs an assembly branch in `branches`",
@@ -627,6 +666,7 @@ impl ClosedForm {
                 let (pa, pc) = (m.revolutes[ra].point, m.revolutes[rc].point);
                 let names = |p: usize| m.points[p].name.clone();
                 let sign = match branch_of(mid, "RRR")? {
+                    Branch::Left(f, t) if f.is_empty() && t.is_empty() => 1.0,
                     Branch::Left(f, t) | Branch::Right(f, t) => {
                         let left = if (f, t) == (&names(pa), &names(pc)) {
                             1.0
@@ -767,6 +807,35 @@ impl ClosedForm {
     /// Number of links (ground included) this solver writes.
     pub fn link_count(&self) -> usize {
         self.link_count
+    }
+
+    /// Sets every group's branch to the one that reproduces `pose` (all links
+    /// assembled) at `input_rad`, group by group in solving order: a group's branch
+    /// decides its own links, given the groups before it.
+    pub(crate) fn match_pose(&mut self, input_rad: f64, pose: &[LinkMotion]) {
+        let mut links = vec![LinkMotion::default(); self.link_count];
+        for g in 0..self.groups.len() {
+            let (i, j) = self.groups[g].links();
+            let mut mismatch = |cf: &Self| -> f64 {
+                // A failure can only come from a later group (this one's links are
+                // placed all the same), so the result is not needed.
+                let _ = cf.solve_links(input_rad, 0.0, &mut links);
+                [i, j]
+                    .iter()
+                    .map(|&l| {
+                        (links[l].origin.position - pose[l].origin.position).norm()
+                            + (links[l].rotation.inverse() * pose[l].rotation)
+                                .angle()
+                                .abs()
+                    })
+                    .sum::<f64>()
+            };
+            let kept = mismatch(self);
+            self.groups[g].flip_branch();
+            if mismatch(self) >= kept {
+                self.groups[g].flip_branch();
+            }
+        }
     }
 
     /// Places ground and crank for input angle `input_rad` turning at `speed_rad_s`.

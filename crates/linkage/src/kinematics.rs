@@ -99,6 +99,65 @@ impl Kinematics {
         )
     }
 
+    /// The same chain driven by `link` instead, a link with a revolute joint to
+    /// ground, in the assembly of `pose` (a solved pose of this chain): every branch is
+    /// read off the pose. The new input is `link`'s angle. Used to integrate dynamics
+    /// through a dead point of the scene's input, where another link's angle is
+    /// regular.
+    ///
+    /// # Errors
+    /// [`LinkageError::InvalidParameter`] when `link` has no revolute joint to ground.
+    pub fn redriven(&self, link: usize, pose: &Solution) -> Result<Self> {
+        let m = &self.mech;
+        let pivot = m
+            .revolutes
+            .iter()
+            .position(|r| (r.a == link && r.b == m.ground) || (r.b == link && r.a == m.ground))
+            .filter(|_| link != m.ground)
+            .ok_or_else(|| LinkageError::InvalidParameter {
+                name: "coordinate link".into(),
+                value: link as f64,
+                valid: "a moving link with a revolute joint to ground".into(),
+            })?;
+        let mut mech = m.clone();
+        let input = pose.links[link].angle_rad();
+        mech.driver.link = link;
+        mech.driver.pivot = pivot;
+        mech.driver.start_rad = input;
+        mech.driver.speed_rad_s = 1.0;
+        // The scene's branches belong to the old decomposition; the new one reads its
+        // own off the pose.
+        mech.branches.clear();
+        let closed = match ClosedForm::new_without_branches(&mech) {
+            Ok(mut cf) => {
+                cf.match_pose(input, &pose.links);
+                Some(cf)
+            }
+            Err(LinkageError::NotDecomposable(_)) => None,
+            Err(e) => return Err(e),
+        };
+        let newton = match (&closed, self.path) {
+            (Some(_), PathKind::ClosedForm) => None,
+            _ => Some(Newton::new(
+                &mech,
+                &pose.links,
+                mech.solver.tolerance,
+                mech.solver.max_iterations,
+            )?),
+        };
+        Ok(Self {
+            scratch: vec![LinkMotion::default(); mech.links.len()],
+            path: if newton.is_some() {
+                PathKind::Newton
+            } else {
+                PathKind::ClosedForm
+            },
+            mech,
+            closed,
+            newton,
+        })
+    }
+
     /// The mechanism.
     pub fn mechanism(&self) -> &Mechanism {
         &self.mech

@@ -6,7 +6,7 @@
 mod common;
 
 use common::{kinematics, mechanism, scene_text};
-use linkage::dynamics::{ForceModel, Method, simulate};
+use linkage::dynamics::{ForceModel, Method, Settings, simulate};
 use linkage::scene::SolverPath;
 use linkage::{Kinematics, Mechanism};
 
@@ -14,6 +14,14 @@ fn reduced_at(k: &mut Kinematics, forces: &ForceModel, q: f64) -> linkage::dynam
     let mut s = k.empty_solution();
     k.solve_into(q, 1.0, &mut s).expect("assembles");
     forces.reduce(&s, 0.0)
+}
+
+/// Fixed-step settings: `step` (s, or rad for the energy method) to `t_end`.
+fn fixed(method: Method, step: f64, t_end: f64) -> Settings {
+    let mut s = Settings::new(method);
+    s.step = step;
+    s.t_end = t_end;
+    s
 }
 
 fn model(k: &mut Kinematics) -> ForceModel {
@@ -74,8 +82,8 @@ fn equivalent_inertia_gives_the_kinetic_energy() {
 
 #[test]
 fn flipper_run_matches_the_paper_and_stops_at_35_deg() {
-    let mut k = kinematics("gravity_flipper.ron", SolverPath::Auto);
-    let sim = simulate(&mut k, Method::Rk4, 1e-4, 2.0, 0.0, true).expect("run");
+    let k = kinematics("gravity_flipper.ron", SolverPath::Auto);
+    let sim = simulate(&k, &fixed(Method::Rk4, 1e-4, 2.0)).expect("run");
     let peak = sim
         .samples
         .iter()
@@ -115,8 +123,8 @@ fn flipper_run_matches_the_paper_and_stops_at_35_deg() {
 #[test]
 fn methods_converge_to_the_reference_run() {
     let stop_time = |method: Method, step: f64| {
-        let mut k = kinematics("gravity_flipper.ron", SolverPath::Auto);
-        let sim = simulate(&mut k, method, step, 2.0, 0.0, true).expect("run");
+        let k = kinematics("gravity_flipper.ron", SolverPath::Auto);
+        let sim = simulate(&k, &fixed(method, step, 2.0)).expect("run");
         sim.events.iter().find(|e| e.stopped).expect("stop").state.t
     };
     let reference = stop_time(Method::Rk4, 2.5e-5);
@@ -139,8 +147,8 @@ fn methods_converge_to_the_reference_run() {
 #[test]
 fn missing_or_invalid_mass_data_is_named() {
     let text = scene_text("gravity_flipper.ron").replace(", inertia: Some(0.012)", "");
-    let mut k = Kinematics::new(Mechanism::from_ron(&text).expect("valid kinematics")).expect("k");
-    let err = simulate(&mut k, Method::Rk4, 1e-3, 0.1, 0.0, true).expect_err("missing inertia");
+    let k = Kinematics::new(Mechanism::from_ron(&text).expect("valid kinematics")).expect("k");
+    let err = simulate(&k, &fixed(Method::Rk4, 1e-3, 0.1)).expect_err("missing inertia");
     assert!(
         err.to_string().contains("link `table` needs `inertia`"),
         "{err}"
@@ -155,7 +163,7 @@ fn missing_or_invalid_mass_data_is_named() {
     let text = scene_text("gravity_flipper.ron").replace("k_n_per_m: 1500.0", "k_n_per_m: 0.0");
     let err = Mechanism::from_ron(&text).expect_err("zero k");
     assert!(err.to_string().contains("must be finite and > 0"), "{err}");
-    let mut k = kinematics("gravity_flipper.ron", SolverPath::Auto);
-    let err = simulate(&mut k, Method::Rk4, f64::NAN, 0.1, 0.0, true).expect_err("NaN step");
+    let k = kinematics("gravity_flipper.ron", SolverPath::Auto);
+    let err = simulate(&k, &fixed(Method::Rk4, f64::NAN, 0.1)).expect_err("NaN step");
     assert!(err.to_string().contains("step = NaN is invalid"), "{err}");
 }

@@ -1,0 +1,154 @@
+//! The right-hand side of the reduced equation in the current integration coordinate,
+//! and the switch to another coordinate near a dead point of the current one.
+//!
+//! The state is y = (x, v, w): the coordinate (a link's angle), its rate, and the work
+//! done so far by non-conservative elements. Carrying w as a state integrates the
+//! energy balance to the method's own order instead of by a separate quadrature.
+
+use super::forces::{ForceModel, Reduced, unit_solution};
+use crate::error::{LinkageError, Result};
+use crate::kinematics::Kinematics;
+use crate::motion::Solution;
+
+/// State (x, v, w) in the current coordinate.
+pub(crate) type State = [f64; 3];
+
+/// A state with its time, derivative and reduction: what a step starts from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Point {
+    pub t: f64,
+    pub y: State,
+    /// dy/dt at y.
+    pub f: State,
+    pub reduced: Reduced,
+}
+
+/// A coordinate's velocity ratio above this (some other pivoted link turns this many
+/// times faster) means the coordinate nears a dead point: J grows as the square of
+/// the ratio, so the step size would collapse.
+const SWITCH_RATIO: f64 = 2.0;
+
+/// The reduced model in the current coordinate, with its cost counters.
+pub(crate) struct Rhs<'a> {
+    /// Kinematics driven by the current coordinate.
+    pub k: Kinematics,
+    pub forces: &'a ForceModel,
+    /// Unit-speed solution of the last kinematic solve.
+    pub sol: Solution,
+    /// Links that can serve as coordinate (revolute to ground).
+    candidates: Vec<usize>,
+    /// Coordinate of the position in `sol` (NaN before the first solve).
+    solved_at: f64,
+    /// Reductions for the integrator.
+    pub evaluations: usize,
+    /// All kinematic solves (reductions, events, output, Jacobians).
+    pub solves: usize,
+}
+
+impl<'a> Rhs<'a> {
+    pub fn new(k: Kinematics, forces: &'a ForceModel, allow_switch: bool) -> Self {
+        let m = k.mechanism();
+        let candidates = if allow_switch {
+            m.moving_links()
+                .filter(|&l| {
+                    m.revolutes
+                        .iter()
+                        .any(|r| (r.a == l && r.b == m.ground) || (r.b == l && r.a == m.ground))
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
+        Self {
+            sol: k.empty_solution(),
+            k,
+            forces,
+            candidates,
+            solved_at: f64::NAN,
+            evaluations: 0,
+            solves: 0,
+        }
+    }
+
+    /// The link whose angle is the current coordinate.
+    pub fn coordinate_link(&self) -> usize {
+        self.k.mechanism().driver.link
+    }
+
+    /// Coordinate of the position now in `self.sol` (NaN when none or failed).
+    pub fn solved_at(&self) -> f64 {
+        self.solved_at
+    }
+
+    /// Solves the position at coordinate `x` into `self.sol` (unit rate).
+    pub fn solve_position(&mut self, x: f64) -> Result<()> {
+        self.solves += 1;
+        self.solved_at = f64::NAN;
+        unit_solution(&mut self.k, x, &mut self.sol)?;
+        self.solved_at = x;
+        Ok(())
+    }
+
+    /// Reduction at the position already in `self.sol`, refusing a singular J.
+    pub fn reduce_here(&self, y: &State) -> Result<Reduced> {
+        let r = self.forces.reduce(&self.sol, y[1]);
+        if !(r.j > 0.0 && r.j.is_finite()) {
+            return Err(LinkageError::Singular {
+                input_deg: y[0].to_degrees(),
+                reason: format!(
+                    "equivalent inertia J = {:e}: the coordinate is singular here",
+                    r.j
+                ),
+            });
+        }
+        Ok(r)
+    }
+
+    /// One evaluation of dy/dt at `y` (one kinematic solve).
+    pub fn eval(&mut self, y: &State) -> Result<(State, Reduced)> {
+        self.evaluations += 1;
+        self.solve_position(y[0])?;
+        let r = self.reduce_here(y)?;
+        Ok((derivative(y, &r), r))
+    }
+
+    /// A [`Point`] at (t, y), one evaluation.
+    pub fn point(&mut self, t: f64, y: State) -> Result<Point> {
+        let (f, reduced) = self.eval(&y)?;
+        Ok(Point { t, y, f, reduced })
+    }
+
+    /// When another pivoted link turns more than [`SWITCH_RATIO`] times faster than
+    /// the coordinate at `p`, makes the fastest one the
+    /// coordinate and returns `p` expressed in it. Its angle is regular where the
+    /// current one has a dead point, so J stays bounded.
+    pub fn switch_if_needed(&mut self, p: &Point) -> Result<Option<Point>> {
+        if self.candidates.len() < 2 {
+            return Ok(None);
+        }
+        if self.solved_at != p.y[0] {
+            self.solve_position(p.y[0])?;
+        }
+        let fastest = self
+            .candidates
+            .iter()
+            .map(|&l| (l, self.sol.links[l].omega_rad_s.abs()))
+            .max_by(|a, b| a.1.total_cmp(&b.1));
+        let Some((link, ratio)) = fastest else {
+            return Ok(None);
+        };
+        if ratio <= SWITCH_RATIO || link == self.coordinate_link() {
+            return Ok(None);
+        }
+        let omega = self.sol.links[link].omega_rad_s;
+        let x = self.sol.links[link].angle_rad();
+        self.k = self.k.redriven(link, &self.sol)?;
+        let y = [x, omega * p.y[1], p.y[2]];
+        Ok(Some(self.point(p.t, y)?))
+    }
+}
+
+/// dy/dt = (v, q̈, non-conservative power).
+pub(crate) fn derivative(y: &State, r: &Reduced) -> State {
+    [y[1], r.acceleration(y[1]), (r.m_damping + r.m_other) * y[1]]
+}
