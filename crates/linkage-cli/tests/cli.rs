@@ -274,7 +274,9 @@ fn simulate_prints_a_uniform_grid_with_links_energy_and_events() {
     // Link 1 nears its dead point at 34.3 deg before the stop at 35 deg: the run
     // switches to link 3's angle on the way.
     assert!(
-        events.iter().any(|e| e["name"] == "coordinate switch from link1 to link3"),
+        events
+            .iter()
+            .any(|e| e["name"] == "coordinate switch from link1 to link3"),
         "{events:?}"
     );
     assert!(event["links"]["table"]["theta"].is_f64() && event["links"]["link3"]["omega"].is_f64());

@@ -24,8 +24,10 @@ pub(crate) fn rk4(rhs: &mut Rhs<'_>, a: &Point, h: f64) -> Result<Point> {
 }
 
 /// One energy increment of `dx` in the direction of motion (from rest: the direction
-/// the moment pushes): ½J₁v₁² = ½J₀v₀² + M₀Δx, Δt = 2Δx/(v₀ + v₁). `None` at a
-/// turning point, where the kinetic energy would go negative. One evaluation.
+/// the moment pushes): ½J₁v₁² = ½J₀v₀² + M₀Δx, Δt = 2Δx/(v₀ + v₁). Where the kinetic
+/// energy would go negative the motion turns: the step ends at the turning point
+/// ½J₀v₀² + M₀(x − x₀) = 0 with v = 0, and the next one goes back. `None` at rest in
+/// equilibrium (no moment). One evaluation.
 pub(crate) fn energy_increment(rhs: &mut Rhs<'_>, a: &Point, dx: f64) -> Result<Option<Point>> {
     let v0 = a.y[1];
     let direction = if v0 != 0.0 {
@@ -36,17 +38,21 @@ pub(crate) fn energy_increment(rhs: &mut Rhs<'_>, a: &Point, dx: f64) -> Result<
     if direction == 0.0 {
         return Ok(None);
     }
-    let dq = direction * dx;
-    let x = a.y[0] + dq;
+    let mut dq = direction * dx;
     // J at x does not depend on v; only the damping moment does, so one solve at x
     // serves the energy update and the end point.
     rhs.evaluations += 1;
-    rhs.solve_position(x)?;
-    let j1 = rhs.reduce_here(&[x, v0, 0.0])?.j;
-    let v2 = (a.reduced.j * v0 * v0 + 2.0 * a.reduced.moment() * dq) / j1;
+    rhs.solve_position(a.y[0] + dq)?;
+    let j1 = rhs.reduce_here(&[a.y[0] + dq, v0, 0.0])?.j;
+    let kinetic0 = a.reduced.j * v0 * v0;
+    let mut v2 = (kinetic0 + 2.0 * a.reduced.moment() * dq) / j1;
     if v2 < 0.0 {
-        return Ok(None);
+        // The turning point lies inside this increment (the moment opposes v₀ there).
+        dq = -kinetic0 / (2.0 * a.reduced.moment());
+        v2 = 0.0;
+        rhs.solve_position(a.y[0] + dq)?;
     }
+    let x = a.y[0] + dq;
     let v = direction * v2.sqrt();
     let t = a.t + 2.0 * dq / (v0 + v);
     let mut y = [x, v, a.y[2]];

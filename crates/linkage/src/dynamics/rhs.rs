@@ -28,6 +28,9 @@ pub(crate) struct Point {
 /// the ratio, so the step size would collapse.
 const SWITCH_RATIO: f64 = 2.0;
 
+/// Without switching, a velocity ratio above this is reported as a dead point.
+const DEAD_POINT_RATIO: f64 = 1e3;
+
 /// The reduced model in the current coordinate, with its cost counters.
 pub(crate) struct Rhs<'a> {
     /// Kinematics driven by the current coordinate.
@@ -37,6 +40,8 @@ pub(crate) struct Rhs<'a> {
     pub sol: Solution,
     /// Links that can serve as coordinate (revolute to ground).
     candidates: Vec<usize>,
+    /// Whether to switch coordinates near a dead point (else a dead point is an error).
+    allow_switch: bool,
     /// Coordinate of the position in `sol` (NaN before the first solve).
     solved_at: f64,
     /// Reductions for the integrator.
@@ -48,22 +53,20 @@ pub(crate) struct Rhs<'a> {
 impl<'a> Rhs<'a> {
     pub fn new(k: Kinematics, forces: &'a ForceModel, allow_switch: bool) -> Self {
         let m = k.mechanism();
-        let candidates = if allow_switch {
-            m.moving_links()
-                .filter(|&l| {
-                    m.revolutes
-                        .iter()
-                        .any(|r| (r.a == l && r.b == m.ground) || (r.b == l && r.a == m.ground))
-                })
-                .collect()
-        } else {
-            Vec::new()
-        };
+        let candidates = m
+            .moving_links()
+            .filter(|&l| {
+                m.revolutes
+                    .iter()
+                    .any(|r| (r.a == l && r.b == m.ground) || (r.b == l && r.a == m.ground))
+            })
+            .collect();
         Self {
             sol: k.empty_solution(),
             k,
             forces,
             candidates,
+            allow_switch,
             solved_at: f64::NAN,
             evaluations: 0,
             solves: 0,
@@ -138,6 +141,23 @@ impl<'a> Rhs<'a> {
             return Ok(None);
         };
         if ratio <= SWITCH_RATIO || link == self.coordinate_link() {
+            return Ok(None);
+        }
+        if !self.allow_switch {
+            // J has grown by the square of the ratio: the motion can only creep up to
+            // the dead point in this coordinate, so say so instead of stalling there.
+            if ratio > DEAD_POINT_RATIO {
+                let m = self.k.mechanism();
+                return Err(LinkageError::Singular {
+                    input_deg: p.y[0].to_degrees(),
+                    reason: format!(
+                        "`{}` is at a dead point of the coordinate `{}` ({}, turning {ratio:.0} times faster, is regular here); let the run switch coordinates",
+                        m.links[self.coordinate_link()].name,
+                        m.links[self.coordinate_link()].name,
+                        m.links[link].name
+                    ),
+                });
+            }
             return Ok(None);
         }
         let omega = self.sol.links[link].omega_rad_s;
