@@ -24,6 +24,7 @@ pub fn run(command: Command) -> Result<String, String> {
         Command::Report { scene } => report(&scene),
         Command::Synth { what } => synth(what),
         Command::Simulate { scene, sim, format } => crate::simulate::run(&scene, &sim, format),
+        Command::Tradeoff { scene, args } => crate::tradeoff::run(&scene, &args),
     }
 }
 
@@ -98,11 +99,19 @@ pub(crate) fn check_finite(values: &[f64], what: &str) -> Result<(), String> {
 }
 
 pub(crate) fn to_csv(header: &[String], rows: &[Vec<f64>]) -> Result<String, String> {
+    let text: Vec<Vec<String>> = rows
+        .iter()
+        .map(|r| r.iter().map(|v| format!("{v:e}")).collect())
+        .collect();
+    records_to_csv(header, &text)
+}
+
+/// CSV of text records (for tables that mix names and numbers).
+pub(crate) fn records_to_csv(header: &[String], rows: &[Vec<String>]) -> Result<String, String> {
     let mut w = csv::Writer::from_writer(Vec::new());
     w.write_record(header).map_err(|e| e.to_string())?;
     for r in rows {
-        w.write_record(r.iter().map(|v| format!("{v:e}")))
-            .map_err(|e| e.to_string())?;
+        w.write_record(r).map_err(|e| e.to_string())?;
     }
     String::from_utf8(w.into_inner().map_err(|e| e.to_string())?).map_err(|e| e.to_string())
 }

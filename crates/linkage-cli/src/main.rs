@@ -4,7 +4,9 @@
 //! non-zero exit status and a message naming the cause.
 
 mod commands;
+mod plot;
 mod simulate;
+mod tradeoff;
 
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -92,6 +94,14 @@ enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Csv)]
         format: Format,
+    },
+    /// The work-precision table: per method and tolerance or step, CPU time, RHS
+    /// evaluations and error against a DOP853 rtol-1e-13 reference (CSV; --png plots it).
+    Tradeoff {
+        #[command(flatten)]
+        scene: SceneArgs,
+        #[command(flatten)]
+        args: tradeoff::TradeoffArgs,
     },
     /// Dimensional synthesis.
     Synth {

@@ -284,3 +284,34 @@ fn simulate_prints_a_uniform_grid_with_links_energy_and_events() {
     let (ok, _, err) = linkage(&["simulate", &scene("slider_crank.ron")]);
     assert!(!ok && err.contains("no link has a mass"), "{err}");
 }
+
+#[test]
+fn tradeoff_writes_the_table_and_the_plot() {
+    let png = std::env::temp_dir().join(format!("linkage_tradeoff_{}.png", std::process::id()));
+    let (ok, out, err) = linkage(&[
+        "tradeoff",
+        &scene("gravity_flipper.ron"),
+        "--png",
+        png.to_str().expect("path"),
+    ]);
+    assert!(ok, "{err}");
+    let mut lines = out.lines();
+    assert_eq!(
+        lines.next(),
+        Some("method,setting,cpu_seconds,rhs_evaluations,steps,max_q_error_rad,event_time_error_s")
+    );
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    for method in ["energy", "euler", "implicit", "rk4", "dp5", "dop853"] {
+        let errors: Vec<f64> = rows
+            .iter()
+            .filter(|r| r[0] == method)
+            .map(|r| r[5].parse().expect("error"))
+            .collect();
+        assert!(errors.len() >= 5, "{method}");
+        // Tighter settings come later in each method's rows: the last beats the first.
+        assert!(errors.last() < errors.first(), "{method}: {errors:?}");
+    }
+    let bytes = std::fs::read(&png).expect("png written");
+    assert_eq!(&bytes[1..4], b"PNG");
+    let _ = std::fs::remove_file(png);
+}

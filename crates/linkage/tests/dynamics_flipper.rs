@@ -181,7 +181,19 @@ fn flipper_budget() {
     s.t_end = 2.0;
     let reference = linkage::dynamics::tradeoff::reference_run(&k, &s, 1e-3).expect("reference");
     let row = linkage::dynamics::tradeoff::measure(&k, &s, 1e-3, &reference).expect("run");
-    assert!(row.max_q_error <= 1e-9, "phi error {:e} rad", row.max_q_error);
-    assert!(row.rhs_evaluations <= 250, "{} evaluations", row.rhs_evaluations);
-    assert!(row.event_time_error <= 1e-9, "stop time error {:e} s", row.event_time_error);
+    assert!(
+        row.max_q_error <= 1e-9,
+        "phi error {:e} rad",
+        row.max_q_error
+    );
+    assert!(
+        row.rhs_evaluations <= 250,
+        "{} evaluations",
+        row.rhs_evaluations
+    );
+    assert!(
+        row.event_time_error <= 1e-9,
+        "stop time error {:e} s",
+        row.event_time_error
+    );
 }

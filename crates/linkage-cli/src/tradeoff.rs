@@ -1,0 +1,83 @@
+//! `linkage tradeoff`: the work–precision table (CSV on stdout) and its plot (PNG).
+
+use std::path::PathBuf;
+
+use linkage::dynamics::tradeoff::{default_plan, measure, plan_settings, reference_run};
+use linkage::dynamics::{Method, Settings};
+
+use crate::SceneArgs;
+use crate::commands::{load, records_to_csv};
+use crate::plot::{Series, work_precision_png};
+
+/// Options of `linkage tradeoff`.
+#[derive(clap::Args, Debug)]
+pub struct TradeoffArgs {
+    /// End time, s (or the first end stop).
+    #[arg(long, default_value_t = 2.0)]
+    pub t_end: f64,
+    /// Ignore the scene's end stops.
+    #[arg(long)]
+    pub no_stops: bool,
+    /// Grid on which the error against the reference is measured, s.
+    #[arg(long, default_value_t = 1e-3)]
+    pub grid: f64,
+    /// Also write the error-against-CPU-time plot here (PNG).
+    #[arg(long)]
+    pub png: Option<PathBuf>,
+}
+
+/// Runs every method of the default plan against the DOP853 rtol-1e-13 reference.
+pub fn run(scene: &SceneArgs, args: &TradeoffArgs) -> Result<String, String> {
+    let k = load(scene)?;
+    let mut base = Settings::new(Method::Dop853);
+    base.t_end = args.t_end;
+    base.use_stops = !args.no_stops;
+    base.validate().map_err(|e| e.to_string())?;
+    let reference = reference_run(&k, &base, args.grid).map_err(|e| e.to_string())?;
+    let header: Vec<String> = [
+        "method",
+        "setting",
+        "cpu_seconds",
+        "rhs_evaluations",
+        "steps",
+        "max_q_error_rad",
+        "event_time_error_s",
+    ]
+    .map(String::from)
+    .to_vec();
+    let mut rows = Vec::new();
+    let mut series = Vec::new();
+    for (method, settings) in default_plan() {
+        let mut points = Vec::new();
+        for setting in settings {
+            let s = plan_settings(&base, method, setting);
+            let row = measure(&k, &s, args.grid, &reference)
+                .map_err(|e| format!("{} at {setting:e}: {e}", method.label()))?;
+            points.push((row.cpu_seconds, row.max_q_error));
+            rows.push(vec![
+                method.label().to_string(),
+                format!("{setting:e}"),
+                format!("{:e}", row.cpu_seconds),
+                row.rhs_evaluations.to_string(),
+                row.steps.to_string(),
+                format!("{:e}", row.max_q_error),
+                format!("{:e}", row.event_time_error),
+            ]);
+        }
+        series.push(Series {
+            label: method.label().to_string(),
+            points,
+        });
+    }
+    if let Some(path) = &args.png {
+        let name = &k.mechanism().name;
+        work_precision_png(
+            path,
+            &format!("{name}: error against CPU time"),
+            "CPU seconds per run (best of several)",
+            "max |phi1 - phi1_ref|, rad",
+            &series,
+        )?;
+    }
+    records_to_csv(&header, &rows)
+}
