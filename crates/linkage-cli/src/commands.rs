@@ -25,6 +25,11 @@ pub fn run(command: Command) -> Result<String, String> {
         Command::Synth { what } => synth(what),
         Command::Simulate { scene, sim, format } => crate::simulate::run(&scene, &sim, format),
         Command::Tradeoff { scene, args } => crate::tradeoff::run(&scene, &args),
+        Command::Kinetostatics {
+            scene,
+            steps,
+            format,
+        } => crate::kinetostatics::run(&scene, steps, format),
     }
 }
 

@@ -4,6 +4,7 @@
 //! non-zero exit status and a message naming the cause.
 
 mod commands;
+mod kinetostatics;
 mod plot;
 mod simulate;
 mod tradeoff;
@@ -91,6 +92,18 @@ enum Command {
         scene: SceneArgs,
         #[command(flatten)]
         sim: simulate::SimArgs,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Csv)]
+        format: Format,
+    },
+    /// Input torque (Newton-Euler and virtual work), joint reactions and force
+    /// amplification over one input cycle at the scene's crank speed.
+    Kinetostatics {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// Number of positions.
+        #[arg(long, default_value_t = 360)]
+        steps: usize,
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Csv)]
         format: Format,

@@ -315,3 +315,25 @@ fn tradeoff_writes_the_table_and_the_plot() {
     assert_eq!(&bytes[1..4], b"PNG");
     let _ = std::fs::remove_file(png);
 }
+
+#[test]
+fn kinetostatics_prints_torques_reactions_and_amplification() {
+    let (ok, out, err) = linkage(&[
+        "kinetostatics",
+        &scene("die_cutter.ron"),
+        "--steps",
+        "72",
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    let columns = v["columns"].as_array().expect("columns");
+    assert_eq!(columns[1], "torque_n_m");
+    assert!(columns.iter().any(|c| c == "die_on_ground_couple"));
+    assert_eq!(columns.last().expect("last"), "amplification");
+    assert!(v["torque_agreement_relative"].as_f64().expect("number") < 1e-9);
+    assert_eq!(v["rows"].as_array().expect("rows").len(), 72);
+    let (ok, _, err) = linkage(&["kinetostatics", &scene("slider_crank.ron")]);
+    assert!(!ok && err.contains("models kinematics only"), "{err}");
+}

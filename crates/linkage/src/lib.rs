@@ -15,6 +15,7 @@ pub mod closed_form;
 pub mod dynamics;
 pub mod error;
 pub mod kinematics;
+pub mod kinetostatics;
 pub mod model;
 pub mod motion;
 pub mod newton;

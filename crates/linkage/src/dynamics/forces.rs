@@ -3,7 +3,7 @@
 use crate::error::{LinkageError, Result};
 use crate::kinematics::Kinematics;
 use crate::model::Mechanism;
-use crate::motion::{Solution, Vec2};
+use crate::motion::{Solution, Vec2, cross};
 use crate::scene::{DamperSpec, ForceWhen, FreeLength, Models};
 
 /// Mass data of one moving link, SI.
@@ -85,6 +85,23 @@ impl EnergyTerms {
     }
 }
 
+/// A load on one link: resultant force, its moment about the world origin, its power.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Load {
+    /// Resultant force, N.
+    pub force: Vec2,
+    /// Moment about the world origin (couples included), N·m.
+    pub moment: f64,
+    /// Power at the current motion, W.
+    pub power: f64,
+}
+
+/// Adds a couple `t` to a link turning at `omega`.
+fn couple(load: &mut Load, t: f64, omega: f64) {
+    load.moment += t;
+    load.power += t * omega;
+}
+
 /// The force elements a scene declares, resolved to indices and SI units.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ForceModel {
@@ -94,6 +111,8 @@ pub struct ForceModel {
     dampers: Vec<Damper>,
     point_forces: Vec<PointForce>,
     torques: Vec<(usize, f64)>,
+    /// The link each point is fixed on.
+    point_links: Vec<usize>,
 }
 
 fn missing(link: &str, field: &str) -> LinkageError {
@@ -193,6 +212,7 @@ impl ForceModel {
             dampers,
             point_forces,
             torques,
+            point_links: m.points.iter().map(|p| p.link).collect(),
         })
     }
 
@@ -282,6 +302,88 @@ impl ForceModel {
             }
         }
         e
+    }
+
+    /// Applied loads on every link at the motion `sol` (real speeds): per link the
+    /// resultant force, its moment about the world origin and its power. Ground's
+    /// entry is computed like any other and ignored by callers.
+    pub fn applied_loads(&self, sol: &Solution) -> Vec<Load> {
+        let mut loads = vec![Load::default(); sol.links.len()];
+        let push = |loads: &mut [Load], link: usize, at: &crate::motion::PointMotion, f: Vec2| {
+            let l = &mut loads[link];
+            l.force += f;
+            l.moment += cross(&at.position, &f);
+            l.power += f.dot(&at.velocity);
+        };
+        if let Some(g) = self.gravity {
+            for b in &self.bodies {
+                let at = sol.links[b.link].point(&b.centroid);
+                push(&mut loads, b.link, &at, g * b.mass_kg);
+            }
+        }
+        let link_of = |point: usize| self.point_links[point];
+        for s in &self.springs {
+            let (pa, pb) = (&sol.points[s.a], &sol.points[s.b]);
+            let d = pa.position - pb.position;
+            let len = d.norm();
+            if len > 0.0 {
+                let pull = d * (s.k * (len - s.free_length_m) / len);
+                push(&mut loads, link_of(s.a), pa, -pull);
+                push(&mut loads, link_of(s.b), pb, pull);
+            }
+        }
+        for d in &self.dampers {
+            match *d {
+                Damper::Linear { a, b, c } => {
+                    let (pa, pb) = (&sol.points[a], &sol.points[b]);
+                    let dd = pa.position - pb.position;
+                    let len = dd.norm();
+                    if len > 0.0 {
+                        let u = dd / len;
+                        let f = u * (c * u.dot(&(pa.velocity - pb.velocity)));
+                        push(&mut loads, link_of(a), pa, -f);
+                        push(&mut loads, link_of(b), pb, f);
+                    }
+                }
+                Damper::Rotational { a, b, c } => {
+                    let t = c * (sol.links[a].omega_rad_s - sol.links[b].omega_rad_s);
+                    couple(&mut loads[a], -t, sol.links[a].omega_rad_s);
+                    couple(&mut loads[b], t, sol.links[b].omega_rad_s);
+                }
+            }
+        }
+        for p in &self.point_forces {
+            let at = &sol.points[p.point];
+            let acts = match p.when {
+                ForceWhen::Always => true,
+                // Acts while the point moves against the force, as in `reduce`.
+                ForceWhen::WorkingStroke => p.force.dot(&at.velocity) < 0.0,
+            };
+            if acts {
+                push(&mut loads, link_of(p.point), at, p.force);
+            }
+        }
+        for &(l, t) in &self.torques {
+            couple(&mut loads[l], t, sol.links[l].omega_rad_s);
+        }
+        loads
+    }
+
+    /// Inertia loads m·a_G and the rate of angular momentum about the world origin
+    /// (I α + r_G × m a_G) per link, and the rate of kinetic energy of each link.
+    pub fn inertia_loads(&self, sol: &Solution) -> Vec<Load> {
+        let mut loads = vec![Load::default(); sol.links.len()];
+        for b in &self.bodies {
+            let l = &sol.links[b.link];
+            let g = l.point(&b.centroid);
+            let ma = g.acceleration * b.mass_kg;
+            loads[b.link] = Load {
+                force: ma,
+                moment: b.inertia_kg_m2 * l.alpha_rad_s2 + cross(&g.position, &ma),
+                power: ma.dot(&g.velocity) + b.inertia_kg_m2 * l.alpha_rad_s2 * l.omega_rad_s,
+            };
+        }
+        loads
     }
 
     /// True when the scene has no mass at all (nothing to integrate).

@@ -27,7 +27,7 @@ mod settings;
 mod tableaus;
 pub mod tradeoff;
 
-pub use forces::{EnergyTerms, ForceModel, Reduced};
+pub use forces::{EnergyTerms, ForceModel, Load, Reduced};
 pub use output::{RunStats, Sample, SimEvent, Simulation};
 pub use run::simulate;
 pub use settings::{Method, Settings};

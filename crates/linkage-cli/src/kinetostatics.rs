@@ -1,0 +1,78 @@
+//! `linkage kinetostatics`: input torque (Newton–Euler and virtual work), every joint
+//! reaction and the force amplification over one input cycle.
+
+use linkage::kinetostatics::Kinetostatics;
+use serde_json::{Value, json};
+
+use crate::Format;
+use crate::SceneArgs;
+use crate::commands::{json_text, load, records_to_csv};
+
+/// Runs the cycle and formats it; a singular amplification is an empty CSV field
+/// (JSON null), never infinity.
+pub fn run(args: &SceneArgs, steps: usize, format: Format) -> Result<String, String> {
+    if steps == 0 {
+        return Err("--steps must be at least 1".into());
+    }
+    let mut k = load(args)?;
+    let mut ks = Kinetostatics::new(&mut k).map_err(|e| e.to_string())?;
+    let start = k.mechanism().driver.start_rad;
+    let mut header: Vec<String> = ["input_rad", "torque_n_m", "torque_virtual_work_n_m"]
+        .map(String::from)
+        .to_vec();
+    let mut rows: Vec<Vec<Option<f64>>> = Vec::with_capacity(steps);
+    let mut worst = 0.0_f64;
+    let mut peak = 0.0_f64;
+    for i in 0..steps {
+        let input = start + std::f64::consts::TAU * i as f64 / steps as f64;
+        let s = ks.at(&mut k, input).map_err(|e| e.to_string())?;
+        if i == 0 {
+            for j in &s.joints {
+                header.push(format!("{}_fx", j.name));
+                header.push(format!("{}_fy", j.name));
+                if j.name.contains("_on_") {
+                    header.push(format!("{}_couple", j.name));
+                }
+            }
+            header.push("amplification".into());
+        }
+        let mut row = vec![
+            Some(input),
+            Some(s.torque_newton_euler),
+            Some(s.torque_virtual_work),
+        ];
+        for j in &s.joints {
+            row.extend([Some(j.force.0), Some(j.force.1)]);
+            if j.name.contains("_on_") {
+                row.push(Some(j.couple));
+            }
+        }
+        row.push(s.amplification);
+        if row.iter().flatten().any(|v| !v.is_finite()) {
+            return Err(format!("non-finite kinetostatics at input {input} rad"));
+        }
+        worst = worst.max((s.torque_newton_euler - s.torque_virtual_work).abs());
+        peak = peak.max(s.torque_newton_euler.abs());
+        rows.push(row);
+    }
+    match format {
+        Format::Csv => {
+            let text: Vec<Vec<String>> = rows
+                .iter()
+                .map(|r| {
+                    r.iter()
+                        .map(|v| v.map_or(String::new(), |v| format!("{v:e}")))
+                        .collect()
+                })
+                .collect();
+            records_to_csv(&header, &text)
+        }
+        Format::Json => json_text(&json!({
+            "scene": k.mechanism().name,
+            "columns": header,
+            "rows": rows.iter().map(|r| r.iter().map(|v| v.map_or(Value::Null, |v| json!(v))).collect::<Vec<_>>()).collect::<Vec<_>>(),
+            "max_torque_n_m": peak,
+            "torque_agreement_relative": if peak > 0.0 { worst / peak } else { 0.0 },
+        })),
+    }
+}
