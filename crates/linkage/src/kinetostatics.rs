@@ -81,9 +81,9 @@ impl Kinetostatics {
     /// Where the chain does not assemble, or where the reactions are indeterminate
     /// (the Newton–Euler system is singular: a dead point of the input).
     pub fn at(&mut self, k: &mut Kinematics, input_rad: f64) -> Result<KinetostaticState> {
-        let m = k.mechanism().clone();
-        let omega = m.driver.speed_rad_s;
+        let omega = k.mechanism().driver.speed_rad_s;
         k.solve_into(input_rad, omega, &mut self.sol)?;
+        let m = k.mechanism();
         let sol = &self.sol;
         let applied = self.forces.applied_loads(sol);
         let inertia = self.forces.inertia_loads(sol);
@@ -170,7 +170,7 @@ impl Kinetostatics {
             torque_newton_euler: x[n - 1],
             torque_virtual_work,
             joints,
-            amplification: amplification(&m, sol, omega),
+            amplification: amplification(m, sol, omega),
         })
     }
 }
@@ -179,17 +179,13 @@ impl Kinetostatics {
 /// its angle), `None` below 1e-9 of the chain's size per radian (a toggle).
 fn amplification(m: &crate::Mechanism, sol: &Solution, omega: f64) -> Option<f64> {
     let out = m.output;
-    let ratio = match m.sliders.iter().position(|s| s.slider == out) {
-        Some(i) => sol.slides[i].velocity_m_s / omega / m.size_m,
-        None => sol.links[out].omega_rad_s / omega,
+    // (output velocity ratio, the scale a toggle's ratio is small against)
+    let (ratio, scale) = match m.sliders.iter().position(|s| s.slider == out) {
+        Some(i) => (sol.slides[i].velocity_m_s / omega, m.size_m),
+        None => (sol.links[out].omega_rad_s / omega, 1.0),
     };
-    if ratio.abs() < 1e-9 || !ratio.is_finite() {
+    if ratio.abs() < 1e-9 * scale || !ratio.is_finite() {
         return None;
     }
-    let scale = if m.sliders.iter().any(|s| s.slider == out) {
-        m.size_m
-    } else {
-        1.0
-    };
-    Some(1.0 / (ratio.abs() * scale))
+    Some(1.0 / ratio.abs())
 }

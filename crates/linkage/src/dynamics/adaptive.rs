@@ -111,6 +111,23 @@ fn combine(y0: &State, h: f64, a: &[f64], k: &[State], n: usize) -> State {
     })
 }
 
+/// Evaluates the stages `range` in order, each at y0 + h Σ a_ij k_j over the stages
+/// before it (row i of `rows`).
+fn eval_stages<const N: usize>(
+    rhs: &mut Rhs<'_>,
+    a: &Point,
+    h: f64,
+    rows: &[[f64; N]],
+    range: std::ops::Range<usize>,
+    st: &mut Stages,
+) -> Result<()> {
+    for (i, row) in rows.iter().enumerate().take(range.end).skip(range.start) {
+        let y = combine(&a.y, h, row, &st.k, i);
+        st.k[i] = rhs.eval(&y)?.0;
+    }
+    Ok(())
+}
+
 /// One step of `pair` from `a` with size `h`. After a rejection growth is capped,
 /// as the error model has just been wrong.
 pub(crate) fn step(
@@ -167,10 +184,7 @@ fn dp5(
     st: &mut Stages,
 ) -> Result<(Point, f64)> {
     st.k[0] = a.f;
-    for (i, row) in DP5_A.iter().enumerate().skip(1) {
-        let y = combine(&a.y, h, row, &st.k, i);
-        st.k[i] = rhs.eval(&y)?.0;
-    }
+    eval_stages(rhs, a, h, &DP5_A, 1..7, st)?;
     let y1 = combine(&a.y, h, &DP5_A[6], &st.k, 6);
     // Stage 7 was evaluated at y1: its reduction is the end point's.
     let reduced = rhs.reduce_here(&y1)?;
@@ -192,10 +206,7 @@ fn dop853(
     st: &mut Stages,
 ) -> Result<(Point, f64)> {
     st.k[0] = a.f;
-    for (i, row) in DOP853_A.iter().enumerate().take(12).skip(1) {
-        let y = combine(&a.y, h, row, &st.k, i);
-        st.k[i] = rhs.eval(&y)?.0;
-    }
+    eval_stages(rhs, a, h, &DOP853_A, 1..12, st)?;
     let y1 = combine(&a.y, h, &DOP853_A[12], &st.k, 12);
     let (f1, reduced) = rhs.eval(&y1)?;
     st.k[12] = f1;
@@ -255,10 +266,7 @@ pub(crate) fn dense(
             5
         }
         Pair::Dop853 => {
-            for (s, row) in DOP853_A.iter().enumerate().skip(13) {
-                let y = combine(&a.y, h, row, &st.k, s);
-                st.k[s] = rhs.eval(&y)?.0;
-            }
+            eval_stages(rhs, a, h, &DOP853_A, 13..16, st)?;
             let d: [State; 4] =
                 std::array::from_fn(|row| combine(&[0.0; 3], h, &DOP853_D[row], &st.k, 16));
             for i in 0..3 {

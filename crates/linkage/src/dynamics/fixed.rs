@@ -58,8 +58,7 @@ pub(crate) fn energy_increment(rhs: &mut Rhs<'_>, a: &Point, dx: f64) -> Result<
     let mut y = [x, v, a.y[2]];
     let reduced = rhs.reduce_here(&y)?;
     // Non-conservative work by the trapezoid rule in x, the method's own order.
-    let moment = |r: &super::forces::Reduced| r.m_damping + r.m_other;
-    y[2] += 0.5 * (moment(&a.reduced) + moment(&reduced)) * dq;
+    y[2] += 0.5 * (a.reduced.m_nonconservative() + reduced.m_nonconservative()) * dq;
     let f = super::rhs::derivative(&y, &reduced);
     Ok(Some(Point { t, y, f, reduced }))
 }

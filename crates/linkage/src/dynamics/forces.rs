@@ -59,6 +59,11 @@ impl Reduced {
         self.m_conservative + self.m_damping + self.m_other
     }
 
+    /// The non-conservative part of M (dampers, torques, stroke forces), N·m.
+    pub fn m_nonconservative(&self) -> f64 {
+        self.m_damping + self.m_other
+    }
+
     /// q̈ from J q̈ + ½ J' q̇² = M.
     pub fn acceleration(&self, q_dot: f64) -> f64 {
         (self.moment() - 0.5 * self.dj_dq * q_dot * q_dot) / self.j

@@ -3,9 +3,8 @@
 //! y₁ = y₀ + h f((y₀ + y₁)/2). It is A-stable (no step-size limit from a stiff
 //! spring), symplectic and time-reversible (energy error bounded, no drift) and
 //! second order. The midpoint m = (y₀ + y₁)/2 solves m = y₀ + (h/2) f(m) by
-//! simplified Newton iterations on (x, v) with the Jacobian of f at y₀, taken by a
-//! finite difference in x (one kinematic solve) and in v (no solve: J does not depend
-//! on v). The work w follows explicitly from the converged midpoint.
+//! simplified Newton iterations on (x, v) with the Jacobian of f at y₀
+//! ([`Rhs::linearise`]). The work w follows explicitly from the converged midpoint.
 
 use super::rhs::{Point, Rhs, State};
 use crate::error::{LinkageError, Result};
@@ -16,14 +15,7 @@ const MAX_ITERATIONS: usize = 25;
 /// One implicit midpoint step from `a` over `h`.
 pub(crate) fn midpoint(rhs: &mut Rhs<'_>, a: &Point, h: f64) -> Result<Point> {
     let (x0, v0) = (a.y[0], a.y[1]);
-    // ∂q̈/∂x by a central-enough forward difference, ∂q̈/∂v from the reduction.
-    let dx = 1e-7 * (1.0 + x0.abs());
-    let (f_dx, _) = rhs.eval(&[x0 + dx, v0, a.y[2]])?;
-    let acc_x = (f_dx[1] - a.f[1]) / dx;
-    let dv = 1e-7 * (1.0 + v0.abs());
-    rhs.solve_position(x0)?;
-    let r_dv = rhs.reduce_here(&[x0, v0 + dv, a.y[2]])?;
-    let acc_v = (r_dv.acceleration(v0 + dv) - a.f[1]) / dv;
+    let (acc_x, acc_v) = rhs.linearise(a)?;
     // Iteration matrix I − (h/2) ∂f/∂y for (x, v), with ∂f/∂y = [[0, 1], [acc_x, acc_v]].
     let g = 0.5 * h;
     let (m11, m12, m21, m22) = (1.0, -g, -g * acc_x, 1.0 - g * acc_v);

@@ -78,11 +78,6 @@ impl<'a> Rhs<'a> {
         self.k.mechanism().driver.link
     }
 
-    /// Coordinate of the position now in `self.sol` (NaN when none or failed).
-    pub fn solved_at(&self) -> f64 {
-        self.solved_at
-    }
-
     /// Solves the position at coordinate `x` into `self.sol` (unit rate).
     pub fn solve_position(&mut self, x: f64) -> Result<()> {
         self.solves += 1;
@@ -90,6 +85,29 @@ impl<'a> Rhs<'a> {
         unit_solution(&mut self.k, x, &mut self.sol)?;
         self.solved_at = x;
         Ok(())
+    }
+
+    /// Makes `self.sol` hold the position at `x`, solving only if it does not yet.
+    pub fn ensure_position(&mut self, x: f64) -> Result<()> {
+        if self.solved_at != x {
+            self.solve_position(x)?;
+        }
+        Ok(())
+    }
+
+    /// The partial derivatives (∂q̈/∂x, ∂q̈/∂v) at `a`: ∂/∂x by a forward difference
+    /// (one evaluation), ∂/∂v from the reduction at `a`'s position (J does not depend
+    /// on v, so no solve). For the implicit rule's Newton matrix and the stiffness.
+    pub fn linearise(&mut self, a: &Point) -> Result<(f64, f64)> {
+        let (x0, v0) = (a.y[0], a.y[1]);
+        let dv = 1e-7 * (1.0 + v0.abs());
+        self.ensure_position(x0)?;
+        let r_dv = self.reduce_here(&[x0, v0 + dv, a.y[2]])?;
+        let acc_v = (r_dv.acceleration(v0 + dv) - a.f[1]) / dv;
+        let dx = 1e-7 * (1.0 + x0.abs());
+        let (f_dx, _) = self.eval(&[x0 + dx, v0, a.y[2]])?;
+        let acc_x = (f_dx[1] - a.f[1]) / dx;
+        Ok((acc_x, acc_v))
     }
 
     /// Reduction at the position already in `self.sol`, refusing a singular J.
@@ -129,9 +147,7 @@ impl<'a> Rhs<'a> {
         if self.candidates.len() < 2 {
             return Ok(None);
         }
-        if self.solved_at != p.y[0] {
-            self.solve_position(p.y[0])?;
-        }
+        self.ensure_position(p.y[0])?;
         let fastest = self
             .candidates
             .iter()
@@ -170,5 +186,5 @@ impl<'a> Rhs<'a> {
 
 /// dy/dt = (v, q̈, non-conservative power).
 pub(crate) fn derivative(y: &State, r: &Reduced) -> State {
-    [y[1], r.acceleration(y[1]), (r.m_damping + r.m_other) * y[1]]
+    [y[1], r.acceleration(y[1]), r.m_nonconservative() * y[1]]
 }

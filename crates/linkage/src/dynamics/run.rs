@@ -32,7 +32,7 @@ fn gap(rhs: &mut Rhs<'_>, x: f64, stop: &Stop) -> f64 {
     let angle = if stop.link == rhs.coordinate_link() {
         x
     } else {
-        if rhs.solved_at() != x && rhs.solve_position(x).is_err() {
+        if rhs.ensure_position(x).is_err() {
             return f64::NAN;
         }
         rhs.sol.links[stop.link].angle_rad()
@@ -49,9 +49,7 @@ struct Sampler {
 
 impl Sampler {
     fn sample(&mut self, rhs: &mut Rhs<'_>, t: f64, y: &State, segment: usize) -> Result<Sample> {
-        if rhs.solved_at() != y[0] {
-            rhs.solve_position(y[0])?;
-        }
+        rhs.ensure_position(y[0])?;
         let r = rhs.reduce_here(y)?;
         let e = rhs.forces.energy(&rhs.sol, r.j, y[1]);
         let d = &rhs.sol.links[self.driver];
@@ -80,15 +78,9 @@ impl Sampler {
 }
 
 /// |λ| of the stiffest mode of the linearised motion at `a`, from q̈ ≈ a_x δx + a_v δv
-/// (finite differences; one evaluation).
+/// (one evaluation).
 fn stiffness(rhs: &mut Rhs<'_>, a: &Point) -> Result<f64> {
-    let dx = 1e-6 * (1.0 + a.y[0].abs());
-    let (f, _) = rhs.eval(&[a.y[0] + dx, a.y[1], a.y[2]])?;
-    let acc_x = (f[1] - a.f[1]) / dx;
-    // ∂q̈/∂v at the neighbouring position already solved: close enough for a bound.
-    let dv = 1e-6 * (1.0 + a.y[1].abs());
-    let shifted = rhs.reduce_here(&[a.y[0] + dx, a.y[1] + dv, a.y[2]])?;
-    let acc_v = (shifted.acceleration(a.y[1] + dv) - f[1]) / dv;
+    let (acc_x, acc_v) = rhs.linearise(a)?;
     // Eigenvalues of [[0, 1], [acc_x, acc_v]]; complex ones have |λ|² = −acc_x.
     let disc = acc_v * acc_v + 4.0 * acc_x;
     Ok(if disc >= 0.0 {
@@ -108,14 +100,14 @@ fn stiffness(rhs: &mut Rhs<'_>, a: &Point) -> Result<f64> {
 pub fn simulate(k: &Kinematics, settings: &Settings) -> Result<Simulation> {
     settings.validate()?;
     let clock = Instant::now();
-    let m = k.mechanism().clone();
+    let m = k.mechanism();
     let mut base = k.clone();
     let start = {
         let mut s = base.empty_solution();
         base.solve_into(m.driver.start_rad, 1.0, &mut s)?;
         s
     };
-    let forces = ForceModel::new(&m, &start)?;
+    let forces = ForceModel::new(m, &start)?;
     if forces.is_massless() {
         return Err(LinkageError::SceneInvalid(
             "no link has a mass: there is nothing to integrate".into(),

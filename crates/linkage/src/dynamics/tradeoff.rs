@@ -66,18 +66,19 @@ pub fn measure(
     bare.output_dt = None;
     // Best of several runs, at least 20 ms in all, so that the clock's resolution and
     // one-off cache misses do not dominate.
-    let mut best = f64::INFINITY;
-    let (mut total, mut repeats, mut last) = (0.0, 0, None);
-    while repeats < 3 || (total < 0.02 && repeats < 10_000) {
+    let timed = || -> Result<(Simulation, f64)> {
         let clock = Instant::now();
         let r = simulate(k, &bare)?;
-        let dt = clock.elapsed().as_secs_f64();
+        Ok((r, clock.elapsed().as_secs_f64()))
+    };
+    let (bare_run, mut best) = timed()?;
+    let (mut total, mut repeats) = (best, 1);
+    while repeats < 3 || (total < 0.02 && repeats < 10_000) {
+        let (_, dt) = timed()?;
         best = best.min(dt);
         total += dt;
         repeats += 1;
-        last = Some(r);
     }
-    let bare_run = last.expect("at least one repeat ran");
     let event_time_error = match (run.events.last(), reference.events.last()) {
         (Some(a), Some(b)) => (a.state.t - b.state.t).abs(),
         _ => 0.0,
