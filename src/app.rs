@@ -1,32 +1,228 @@
-//! The App: a minimal window over the solver until the viewer issue lands.
+//! The App: the session (the mechanism and everything derived from it), the view
+//! settings, and the panels laid out around the GPU-drawn mechanism view.
 
 use eframe::egui;
 
-/// The Linkage Lab application state.
-pub struct LinkageApp {
-    frames_drawn: u64,
-    exit_after_frames: Option<u64>,
+use crate::render::build::{Layers, VectorScales};
+use crate::render::pipeline::{MechanismPipeline, SharedShapes};
+use crate::render::view::Camera;
+use crate::session::Session;
+use crate::ui;
+
+/// Scene opened at start when the URL names none.
+pub const DEFAULT_SCENE: &str = "die_cutter";
+
+/// Which plot the plot pane shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlotTab {
+    /// Output displacement, velocity and acceleration against crank angle.
+    Output,
+    /// Transmission angle against crank angle.
+    Transmission,
+    /// Input torque and force amplification (kinetostatic scenes).
+    Torque,
+    /// omega-phi, omega-t and phi-t of the dynamic run.
+    Motion,
+    /// J(q) and M(q) (dynamic scenes).
+    ReducedModel,
 }
 
-impl LinkageApp {
-    /// Creates the app; `exit_after_frames` closes the window after that many frames.
-    pub fn new(_cc: &eframe::CreationContext<'_>, exit_after_frames: Option<u64>) -> Self {
+/// Smoothed CPU cost of a frame's work, µs.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct FrameCost {
+    /// Solver: the pose, polygons and shapes of the frame.
+    pub solver_us: f64,
+    /// The whole `ui` call: solver, panels, plots and layout (not the GPU).
+    pub frame_us: f64,
+}
+
+impl FrameCost {
+    fn add(&mut self, solver_us: f64, frame_us: f64) {
+        // Exponential average over about 30 frames: steady enough to read.
+        let k = if self.frame_us == 0.0 {
+            1.0
+        } else {
+            1.0 / 30.0
+        };
+        self.solver_us += k * (solver_us - self.solver_us);
+        self.frame_us += k * (frame_us - self.frame_us);
+    }
+}
+
+/// Everything the panels read and change.
+pub struct AppState {
+    /// The mechanism being viewed.
+    pub session: Session,
+    /// The view camera.
+    pub camera: Camera,
+    /// Fit the view at the next frame (after opening a scene or on request).
+    pub fit_pending: bool,
+    /// Overlays on the mechanism.
+    pub layers: Layers,
+    /// Whether the animation runs.
+    pub playing: bool,
+    /// Animation speed, times real time.
+    pub speed: f64,
+    /// Plot pane tab.
+    pub plot_tab: PlotTab,
+    /// Vector scales of the last drawn frame.
+    pub scales: VectorScales,
+    /// Frame cost.
+    pub cost: FrameCost,
+    /// A line about the last file action (saved, exported, failed).
+    pub status: Option<String>,
+    /// File prompts and uploads.
+    pub files: ui::files::Files,
+    /// Show measured CPU times (off in snapshot tests, whose pixels must repeat).
+    pub show_timings: bool,
+}
+
+impl AppState {
+    /// State over `session`, paused, fitted at the first frame.
+    pub fn new(session: Session) -> Self {
         Self {
-            frames_drawn: 0,
-            exit_after_frames,
+            session,
+            camera: Camera::default(),
+            fit_pending: true,
+            layers: Layers::default(),
+            playing: false,
+            speed: 1.0,
+            plot_tab: PlotTab::Output,
+            scales: VectorScales::default(),
+            cost: FrameCost::default(),
+            status: None,
+            files: ui::files::Files::default(),
+            show_timings: true,
+        }
+    }
+
+    /// Replaces the session (a new scene), keeping the view settings.
+    pub fn open(&mut self, session: Session) {
+        self.session = session;
+        self.fit_pending = true;
+        self.playing = false;
+        if !ui::plots::tab_available(self.plot_tab, &self.session) {
+            self.plot_tab = PlotTab::Output;
         }
     }
 }
 
+/// The Linkage Lab application.
+pub struct LinkageApp {
+    /// The state the panels work on (public for UI tests).
+    pub state: AppState,
+    shapes: SharedShapes,
+    gpu: bool,
+    frames_drawn: u64,
+    exit_after_frames: Option<u64>,
+    #[cfg(target_arch = "wasm32")]
+    url: crate::web::UrlSync,
+}
+
+impl LinkageApp {
+    /// Creates the app over the default scene (on the web, the URL's scene);
+    /// `exit_after_frames` closes the window after that many frames.
+    pub fn new(cc: &eframe::CreationContext<'_>, exit_after_frames: Option<u64>) -> Self {
+        let gpu = match &cc.wgpu_render_state {
+            Some(rs) => {
+                MechanismPipeline::install(rs);
+                true
+            }
+            None => false,
+        };
+        let session = initial_session();
+        Self {
+            state: AppState::new(session),
+            shapes: SharedShapes::default(),
+            gpu,
+            frames_drawn: 0,
+            exit_after_frames,
+            #[cfg(target_arch = "wasm32")]
+            url: crate::web::UrlSync::default(),
+        }
+    }
+
+    /// Whether the wgpu renderer is installed (else the view says so).
+    pub fn has_gpu(&self) -> bool {
+        self.gpu
+    }
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn initial_session() -> Session {
+    open_or_explain(DEFAULT_SCENE)
+}
+
+#[cfg(target_arch = "wasm32")]
+fn initial_session() -> Session {
+    let st = crate::session::url_state::decode(&crate::web::fragment());
+    match crate::session::url_state::open(&st) {
+        Ok(s) => s,
+        Err(_) => open_or_explain(DEFAULT_SCENE),
+    }
+}
+
+/// Opens a shipped scene; the shipped scenes are tested to open, so failure is a
+/// broken build, which the first scene in the catalog stands in for.
+fn open_or_explain(key: &str) -> Session {
+    Session::open_builtin(key)
+        .or_else(|e| {
+            log::error!("{e}");
+            Session::open_builtin(crate::catalog::BUILTIN_SCENES[0].key)
+        })
+        .unwrap_or_else(|e| panic!("no shipped scene opens: {e}"))
+}
+
 impl eframe::App for LinkageApp {
-    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
-        ui.heading("Linkage Lab");
-        ui.label("Planar linkage simulator");
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        let started = web_time::Instant::now();
+        let dt = f64::from(ui.input(|i| i.stable_dt)).min(0.1);
+        let solver_started = web_time::Instant::now();
+        if self.state.playing {
+            self.state.session.advance(dt, self.state.speed);
+            ui.ctx().request_repaint();
+        }
+        let mut solver_us = solver_started.elapsed().as_secs_f64() * 1e6;
+
+        ui::scene_picker::top_bar(ui, &mut self.state, frame);
+        ui::report::strip(ui, &self.state);
+        egui::Panel::left("controls")
+            .default_size(290.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    ui::controls::panel(ui, &mut self.state);
+                    ui.separator();
+                    ui::accuracy::panel(ui, &mut self.state);
+                });
+            });
+        egui::Panel::right("polygons")
+            .default_size(360.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| ui::polygons::panel(ui, &self.state));
+            });
+        egui::Panel::bottom("plots")
+            .default_size(230.0)
+            .show(ui, |ui| ui::plots::panel(ui, &mut self.state));
+        egui::CentralPanel::default_margins().show(ui, |ui| {
+            solver_us += ui::viewport::show(ui, &mut self.state, &self.shapes, self.gpu);
+        });
+
+        self.state
+            .cost
+            .add(solver_us, started.elapsed().as_secs_f64() * 1e6);
+        #[cfg(target_arch = "wasm32")]
+        self.url.update(&self.state.session);
         self.frames_drawn += 1;
         if let Some(n) = self.exit_after_frames {
             // egui repaints only on input: a smoke run has to ask for every frame.
             ui.ctx().request_repaint();
             if self.frames_drawn >= n {
+                log::info!(
+                    "{} frames, mean CPU per frame {:.1} us (solver {:.1} us)",
+                    self.frames_drawn,
+                    self.state.cost.frame_us,
+                    self.state.cost.solver_us
+                );
                 ui.ctx().send_viewport_cmd(egui::ViewportCommand::Close);
             }
         }

@@ -4,6 +4,12 @@
 //! (wasm32, started by [`start_web`]).
 
 mod app;
+pub mod catalog;
+pub mod render;
+pub mod session;
+pub mod ui;
+#[cfg(target_arch = "wasm32")]
+mod web;
 
 pub use app::LinkageApp;
 

@@ -139,7 +139,16 @@ impl Output {
         }
     }
 
-    fn is_angle(&self) -> bool {
+    /// Second derivative at a solution (rad/s² or m/s²).
+    pub fn acceleration(&self, s: &Solution) -> f64 {
+        match self {
+            Self::Rocker { link, .. } => s.links[*link].alpha_rad_s2,
+            Self::Slide { slider, .. } => s.slides[*slider].acceleration_m_s2,
+        }
+    }
+
+    /// Whether the value is an angle (rad) rather than a displacement (m).
+    pub fn is_angle(&self) -> bool {
         matches!(self, Self::Rocker { .. })
     }
 }
@@ -514,6 +523,15 @@ fn transmission_lines(k: &Kinematics, g: usize, s: &Solution) -> Option<(Vec2, f
 
 fn acute(l1: &Vec2, l2: &Vec2) -> f64 {
     cross(l1, l2).abs().atan2(l1.dot(l2).abs())
+}
+
+/// Transmission angle at one solved position, rad in [0, π/2]: the smallest over the
+/// chain's dyads (the one that transmits worst), `None` for a chain without dyads.
+pub fn transmission_angle_at(k: &Kinematics, s: &Solution) -> Option<f64> {
+    (0..k.group_count())
+        .filter_map(|g| transmission_lines(k, g, s))
+        .map(|(l1, _, l2, _)| acute(&l1, &l2))
+        .min_by(f64::total_cmp)
 }
 
 /// Transmission angle extremes over the assembly ranges (root-finding on the

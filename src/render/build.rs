@@ -1,0 +1,382 @@
+//! Turns the session's current pose into the frame's shapes: ground and guides,
+//! fading coupler traces, links as bars and plates, slider blocks, coil springs, pins
+//! and the velocity and acceleration vectors. The list is cleared and refilled each
+//! frame, so after the first frames it no longer allocates.
+
+use glam::Vec2;
+
+use super::shape::{Kind, Shape};
+use super::view::Camera;
+use crate::session::Session;
+
+/// Colours, gamma-space RGBA.
+mod colour {
+    pub const LINK: [f32; 4] = [0.28, 0.47, 0.72, 1.0];
+    pub const PLATE: [f32; 4] = [0.36, 0.55, 0.78, 0.85];
+    pub const DRIVER: [f32; 4] = [0.82, 0.52, 0.18, 1.0];
+    pub const GROUND: [f32; 4] = [0.55, 0.55, 0.55, 1.0];
+    pub const PIN: [f32; 4] = [0.12, 0.12, 0.14, 1.0];
+    pub const MARK: [f32; 4] = [0.75, 0.2, 0.55, 1.0];
+    pub const BLOCK: [f32; 4] = [0.45, 0.62, 0.42, 1.0];
+    pub const SPRING: [f32; 4] = [0.78, 0.25, 0.2, 1.0];
+    pub const TRACE: [f32; 4] = [0.62, 0.38, 0.85, 1.0];
+    pub const VELOCITY: [f32; 4] = [0.1, 0.65, 0.25, 1.0];
+    pub const ACCELERATION: [f32; 4] = [0.9, 0.2, 0.15, 1.0];
+}
+
+/// What to draw besides the links.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Layers {
+    /// Velocity vectors at the joints.
+    pub velocities: bool,
+    /// Acceleration vectors at the joints.
+    pub accelerations: bool,
+    /// Coupler traces.
+    pub traces: bool,
+}
+
+impl Default for Layers {
+    fn default() -> Self {
+        Self {
+            velocities: true,
+            accelerations: false,
+            traces: true,
+        }
+    }
+}
+
+/// Scales of the drawn vectors, for the legend: metres of drawing per m/s and per m/s².
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct VectorScales {
+    /// Drawing metres per m/s (0 when nothing moves).
+    pub velocity: f64,
+    /// Drawing metres per m/s² (0 when nothing accelerates).
+    pub acceleration: f64,
+}
+
+/// Fills `out` with the shapes of the session's current pose.
+pub fn build(
+    out: &mut Vec<Shape>,
+    s: &Session,
+    cam: &Camera,
+    layers: Layers,
+    m_per_px: f64,
+) -> VectorScales {
+    out.clear();
+    let m = s.mechanism();
+    let pose = s.pose();
+    let size = m.size_m.max(1e-12);
+    let bar = (0.016 * size) as f32;
+    let pin = (0.024 * size) as f32;
+    let at = |p: usize| -> [f64; 2] {
+        let q = pose.points[p].position;
+        [q.x, q.y]
+    };
+    let mut push = |shape: Option<Shape>| out.extend(shape);
+
+    // Ground pivots: a support triangle on a hatched base.
+    for r in m
+        .revolutes
+        .iter()
+        .filter(|r| r.a == m.ground || r.b == m.ground)
+    {
+        let c = cam.local(at(r.point));
+        let base_y = c.y - 2.6 * pin;
+        let (l, rgt) = (
+            Vec2::new(c.x - 2.0 * pin, base_y),
+            Vec2::new(c.x + 2.0 * pin, base_y),
+        );
+        push(Shape::new(
+            Kind::Ground,
+            [c, l, rgt],
+            0.25 * bar,
+            colour::GROUND,
+            [1.4 * pin, 0.0],
+        ));
+        push(Shape::new(
+            Kind::Bar,
+            [c, l, c],
+            0.35 * bar,
+            colour::GROUND,
+            [0.0; 2],
+        ));
+        push(Shape::new(
+            Kind::Bar,
+            [c, rgt, c],
+            0.35 * bar,
+            colour::GROUND,
+            [0.0; 2],
+        ));
+    }
+
+    // Guides fixed to ground: two rails over the slider's travel, hatched outside.
+    for (i, sl) in m
+        .sliders
+        .iter()
+        .enumerate()
+        .filter(|(_, sl)| sl.guide == m.ground)
+    {
+        let dir = sl.direction(&pose.links);
+        let through = pose.links[sl.guide].world(&sl.through_local);
+        let name = &m.links[sl.slider].name;
+        let travel = s
+            .curves()
+            .outputs
+            .iter()
+            .find(|o| !o.is_angle && &o.name == name)
+            .map(|o| {
+                o.value
+                    .iter()
+                    .fold([f64::INFINITY, f64::NEG_INFINITY], |a, p| {
+                        [a[0].min(p[1]), a[1].max(p[1])]
+                    })
+            })
+            .filter(|t| t[0].is_finite())
+            .unwrap_or([pose.slides[i].displacement_m; 2]);
+        let margin = 4.0 * f64::from(pin);
+        let a = through + dir * (travel[0] - margin);
+        let b = through + dir * (travel[1] + margin);
+        let n = Vec2::new(-dir.y as f32, dir.x as f32);
+        let (a, b) = (cam.local([a.x, a.y]), cam.local([b.x, b.y]));
+        let off = n * 1.7 * pin;
+        push(Shape::new(
+            Kind::Line,
+            [a + off, b + off, a],
+            0.3 * bar,
+            colour::GROUND,
+            [0.0; 2],
+        ));
+        push(Shape::new(
+            Kind::Line,
+            [a - off, b - off, a],
+            0.3 * bar,
+            colour::GROUND,
+            [0.0; 2],
+        ));
+        push(Shape::new(
+            Kind::Ground,
+            [a, b - off, a - off],
+            0.0,
+            colour::GROUND,
+            [1.2 * pin, 0.0],
+        ));
+    }
+
+    if layers.traces {
+        push_traces(&mut push, s, cam, 0.22 * bar);
+    }
+
+    // Links: bars, plates for three or more joints (or an offset tool point).
+    for l in m.moving_links() {
+        let joints: Vec<usize> = m
+            .revolutes
+            .iter()
+            .filter(|r| r.a == l || r.b == l)
+            .map(|r| r.point)
+            .collect();
+        let colour = if l == m.driver.link {
+            colour::DRIVER
+        } else {
+            colour::LINK
+        };
+        let pts: Vec<Vec2> = joints.iter().map(|&p| cam.local(at(p))).collect();
+        let others: Vec<Vec2> = m.links[l]
+            .points
+            .iter()
+            .filter(|(p, _)| !joints.contains(p))
+            .map(|&(p, _)| cam.local(at(p)))
+            .collect();
+        match pts.as_slice() {
+            [a, b, c, ..] => push(Shape::new(
+                Kind::Plate,
+                [*a, *b, *c],
+                bar,
+                colour::PLATE,
+                [0.0; 2],
+            )),
+            [a, b] => {
+                let off_line = others
+                    .iter()
+                    .map(|p| (p, distance_to_line(*p, *a, *b)))
+                    .filter(|(_, d)| *d > 2.0 * bar)
+                    .max_by(|x, y| x.1.total_cmp(&y.1));
+                match off_line {
+                    Some((p, _)) => push(Shape::new(
+                        Kind::Plate,
+                        [*a, *b, *p],
+                        bar,
+                        colour::PLATE,
+                        [0.0; 2],
+                    )),
+                    None => push(Shape::new(Kind::Bar, [*a, *b, *a], bar, colour, [0.0; 2])),
+                }
+            }
+            [a] => {
+                if let Some(far) = others
+                    .iter()
+                    .max_by(|x, y| x.distance(*a).total_cmp(&y.distance(*a)))
+                {
+                    push(Shape::new(Kind::Bar, [*a, *far, *a], bar, colour, [0.0; 2]));
+                }
+            }
+            [] => {}
+        }
+    }
+
+    // Slider blocks, along their guide.
+    for sl in &m.sliders {
+        let c = cam.local(at(sl.point));
+        let d = sl.direction(&pose.links);
+        let axis = c + Vec2::new(d.x as f32, d.y as f32);
+        push(Shape::new(
+            Kind::Block,
+            [c, axis, c],
+            0.2 * bar,
+            colour::BLOCK,
+            [2.4 * pin, 1.5 * pin],
+        ));
+    }
+
+    // Springs: a coil with a fixed number of turns, so it visibly stretches.
+    for sp in &s.scene().forces.springs {
+        if let (Some(a), Some(b)) = (m.point_index(&sp.a), m.point_index(&sp.b)) {
+            let (a, b) = (cam.local(at(a)), cam.local(at(b)));
+            push(Shape::new(
+                Kind::Spring,
+                [a, b, a],
+                0.25 * bar,
+                colour::SPRING,
+                [9.0, 1.1 * pin],
+            ));
+        }
+    }
+
+    // Pins at the joints; marks at the other named points (centroids, tool points).
+    for r in &m.revolutes {
+        let c = cam.local(at(r.point));
+        push(Shape::new(Kind::Pin, [c, c, c], pin, colour::PIN, [0.0; 2]));
+    }
+    for (i, p) in m.points.iter().enumerate() {
+        let is_joint =
+            m.revolutes.iter().any(|r| r.point == i) || m.sliders.iter().any(|sl| sl.point == i);
+        if !is_joint && p.link != m.ground {
+            let c = cam.local(at(i));
+            push(Shape::new(
+                Kind::Pin,
+                [c, c, c],
+                0.45 * pin,
+                colour::MARK,
+                [0.0; 2],
+            ));
+        }
+    }
+
+    let mut scales = VectorScales::default();
+    let arrow_r = (1.4 * m_per_px) as f32;
+    let head = (9.0 * m_per_px) as f32;
+    let joint_points: Vec<usize> = joint_points(s);
+    for (on, colour, field, scale) in [
+        (layers.velocities, colour::VELOCITY, 0, &mut scales.velocity),
+        (
+            layers.accelerations,
+            colour::ACCELERATION,
+            1,
+            &mut scales.acceleration,
+        ),
+    ] {
+        let vec_of = |p: usize| {
+            let pm = &pose.points[p];
+            if field == 0 {
+                pm.velocity
+            } else {
+                pm.acceleration
+            }
+        };
+        let largest = joint_points
+            .iter()
+            .map(|&p| vec_of(p).norm())
+            .filter(|v| v.is_finite())
+            .fold(0.0, f64::max);
+        if !on || largest <= 0.0 {
+            continue;
+        }
+        // The largest vector is drawn a third of the mechanism long.
+        *scale = 0.33 * size / largest;
+        for &p in &joint_points {
+            let v = vec_of(p) * *scale;
+            if v.norm() < 2.0 * m_per_px {
+                continue;
+            }
+            let a = at(p);
+            let tip = [a[0] + v.x, a[1] + v.y];
+            push(Shape::new(
+                Kind::Arrow,
+                [cam.local(a), cam.local(tip), cam.local(a)],
+                arrow_r,
+                colour,
+                [head, 0.0],
+            ));
+        }
+    }
+    scales
+}
+
+/// Points that are joints (pins and slider points), each once.
+pub fn joint_points(s: &Session) -> Vec<usize> {
+    let m = s.mechanism();
+    let mut out: Vec<usize> = m
+        .revolutes
+        .iter()
+        .map(|r| r.point)
+        .chain(m.sliders.iter().map(|sl| sl.point))
+        .collect();
+    out.sort_unstable();
+    out.dedup();
+    out
+}
+
+fn push_traces(push: &mut impl FnMut(Option<Shape>), s: &Session, cam: &Camera, radius: f32) {
+    let curves = s.curves();
+    let n = curves.input_deg.len();
+    if n < 2 {
+        return;
+    }
+    let now = s.input_rad().to_degrees();
+    let first = curves.input_deg[0];
+    let span = curves.input_deg[n - 1] - first;
+    // Position of the current input along the sweep, in samples.
+    let here = if curves.full_rotation {
+        (now - first).rem_euclid(360.0) / 360.0 * n as f64
+    } else {
+        ((now - first) / span.max(1e-12)).clamp(0.0, 1.0) * (n - 1) as f64
+    };
+    for trace in &curves.traces {
+        for (i, w) in trace.path.windows(2).enumerate() {
+            let behind = if curves.full_rotation {
+                (here - i as f64).rem_euclid(n as f64) / n as f64
+            } else {
+                (here - i as f64).abs() / n as f64
+            };
+            // Recent path strong, older path fading to a faint line.
+            let alpha = (0.12 + 0.78 * (1.0 - behind)) as f32;
+            let mut c = colour::TRACE;
+            c[3] = alpha;
+            push(Shape::new(
+                Kind::Line,
+                [cam.local(w[0]), cam.local(w[1]), cam.local(w[0])],
+                radius,
+                c,
+                [0.0; 2],
+            ));
+        }
+    }
+}
+
+fn distance_to_line(p: Vec2, a: Vec2, b: Vec2) -> f32 {
+    let ab = b - a;
+    let len = ab.length();
+    if len <= 0.0 {
+        return p.distance(a);
+    }
+    (ab.perp_dot(p - a) / len).abs()
+}

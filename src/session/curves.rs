@@ -1,0 +1,249 @@
+//! Everything plotted against the crank angle, computed once per change of the
+//! mechanism (not per frame): output motion, transmission angle, coupler traces, and
+//! what the scene models beyond kinematics (input torque and force amplification;
+//! equivalent inertia J(q) and moment M(q)).
+
+use linkage::analysis::{Output, outputs, transmission_angle_at};
+use linkage::dynamics::ForceModel;
+use linkage::kinetostatics::Kinetostatics;
+use linkage::scene::Models;
+use linkage::sweep::{Sweep, sweep};
+use linkage::{Kinematics, Solution};
+
+/// Positions per cycle in the curves (one per degree of a full turn).
+pub const CURVE_STEPS: usize = 361;
+
+/// One output (rocker or slider) over the cycle.
+#[derive(Clone, Debug)]
+pub struct OutputCurve {
+    /// Link name.
+    pub name: String,
+    /// Whether it is a rocker angle (plotted in degrees) or a slider (metres).
+    pub is_angle: bool,
+    /// Value against input angle (deg): rocker deg or slider m.
+    pub value: Vec<[f64; 2]>,
+    /// Rate: deg/s or m/s.
+    pub rate: Vec<[f64; 2]>,
+    /// Second derivative: deg/s² or m/s².
+    pub acceleration: Vec<[f64; 2]>,
+}
+
+/// A named point's path over the cycle (a coupler curve).
+#[derive(Clone, Debug)]
+pub struct Trace {
+    /// Index of the point in the mechanism.
+    pub point: usize,
+    /// Positions in sweep order, m.
+    pub path: Vec<[f64; 2]>,
+}
+
+/// The curves of one mechanism.
+#[derive(Clone, Debug, Default)]
+pub struct Curves {
+    /// Input angles of the sweep, deg (unwrapped from the start angle).
+    pub input_deg: Vec<f64>,
+    /// Every rocker and slider.
+    pub outputs: Vec<OutputCurve>,
+    /// Transmission angle, deg, against input angle.
+    pub transmission_deg: Vec<[f64; 2]>,
+    /// Coupler traces of points on links not pinned to ground.
+    pub traces: Vec<Trace>,
+    /// Kinetostatic scenes: input torque, N·m.
+    pub torque_n_m: Vec<[f64; 2]>,
+    /// Kinetostatic scenes: force amplification (output force per N·m), absent at toggles.
+    pub amplification: Vec<[f64; 2]>,
+    /// Dynamic scenes: equivalent inertia J(q), kg·m².
+    pub inertia_kg_m2: Vec<[f64; 2]>,
+    /// Dynamic scenes: equivalent moment M(q) at rest, N·m.
+    pub moment_n_m: Vec<[f64; 2]>,
+    /// Bounding box of every pin over the cycle, m: [min x, min y, max x, max y].
+    pub bounds_m: [f64; 4],
+    /// Sweep range, rad.
+    pub range_rad: [f64; 2],
+    /// Whether the input turns fully.
+    pub full_rotation: bool,
+    /// Why a modelled curve is missing (e.g. a kinetostatic failure), if one is.
+    pub notes: Vec<String>,
+}
+
+impl Curves {
+    /// Sweeps `k` and derives every curve its scene models.
+    ///
+    /// # Errors
+    /// The sweep's own error (e.g. the start angle does not assemble).
+    pub fn compute(k: &mut Kinematics) -> linkage::Result<Self> {
+        let sw = sweep(k, CURVE_STEPS)?;
+        let full_rotation = {
+            let [a, b] = sw.range;
+            (b - a - std::f64::consts::TAU).abs() < 1e-9
+        };
+        let input_deg: Vec<f64> = sw
+            .solutions
+            .iter()
+            .map(|s| s.input_rad.to_degrees())
+            .collect();
+        let xy = |f: &dyn Fn(&Solution) -> f64| -> Vec<[f64; 2]> {
+            sw.solutions
+                .iter()
+                .zip(&input_deg)
+                .map(|(s, &x)| [x, f(s)])
+                .filter(|p| p[1].is_finite())
+                .collect()
+        };
+        let outputs = outputs(k)
+            .into_iter()
+            .map(|out| output_curve(&out, &sw, &xy))
+            .collect();
+        let transmission_deg =
+            xy(&|s| transmission_angle_at(k, s).map_or(f64::NAN, f64::to_degrees));
+        let mut curves = Self {
+            outputs,
+            transmission_deg,
+            traces: traces(k, &sw),
+            bounds_m: bounds(&sw),
+            range_rad: sw.range,
+            full_rotation,
+            input_deg,
+            ..Self::default()
+        };
+        let models = k.mechanism().models;
+        if models == Models::Kinetostatics {
+            curves.add_kinetostatics(k, &sw);
+        }
+        if models == Models::Dynamics {
+            curves.add_reduced_model(k, &sw);
+        }
+        Ok(curves)
+    }
+
+    fn add_kinetostatics(&mut self, k: &mut Kinematics, sw: &Sweep) {
+        let mut ks = match Kinetostatics::new(k) {
+            Ok(ks) => ks,
+            Err(e) => {
+                self.notes.push(format!("no kinetostatics: {e}"));
+                return;
+            }
+        };
+        for s in &sw.solutions {
+            let x = s.input_rad.to_degrees();
+            match ks.at(k, s.input_rad) {
+                Ok(state) => {
+                    if state.torque_virtual_work.is_finite() {
+                        self.torque_n_m.push([x, state.torque_virtual_work]);
+                    }
+                    if let Some(a) = state.amplification.filter(|a| a.is_finite()) {
+                        self.amplification.push([x, a]);
+                    }
+                }
+                Err(e) => {
+                    self.notes.push(format!("kinetostatics at {x:.1} deg: {e}"));
+                }
+            }
+        }
+    }
+
+    fn add_reduced_model(&mut self, k: &mut Kinematics, sw: &Sweep) {
+        let start = k.mechanism().driver.start_rad;
+        let model = match k
+            .solve(start)
+            .and_then(|s0| ForceModel::new(k.mechanism(), &s0))
+        {
+            Ok(m) => m,
+            Err(e) => {
+                self.notes.push(format!("no reduced model: {e}"));
+                return;
+            }
+        };
+        let mut unit = k.empty_solution();
+        for s in &sw.solutions {
+            // J and M per unit input speed: the sweep's own speed may be any value.
+            if k.solve_into(s.input_rad, 1.0, &mut unit).is_err() {
+                continue;
+            }
+            let r = model.reduce(&unit, 0.0);
+            let x = s.input_rad.to_degrees();
+            if r.j.is_finite() && r.moment().is_finite() {
+                self.inertia_kg_m2.push([x, r.j]);
+                self.moment_n_m.push([x, r.moment()]);
+            }
+        }
+    }
+}
+
+/// Samples a quantity of a solution over the sweep as (input deg, value) pairs.
+type Sampler<'a> = &'a dyn Fn(&dyn Fn(&Solution) -> f64) -> Vec<[f64; 2]>;
+
+fn output_curve(out: &Output, sw: &Sweep, xy: Sampler<'_>) -> OutputCurve {
+    let is_angle = out.is_angle();
+    let unit = if is_angle {
+        f64::to_degrees
+    } else {
+        std::convert::identity
+    };
+    // Rocker angles unwrapped along the sweep so the curve has no 360 deg jumps.
+    let value = match out {
+        Output::Rocker { link, .. } => sw
+            .solutions
+            .iter()
+            .zip(&sw.angles)
+            .map(|(s, row)| [s.input_rad.to_degrees(), row[*link].to_degrees()])
+            .collect(),
+        Output::Slide { .. } => xy(&|s| out.value(s)),
+    };
+    OutputCurve {
+        name: out.name().to_string(),
+        is_angle,
+        value,
+        rate: xy(&|s| unit(out.rate(s))),
+        acceleration: xy(&|s| unit(out.acceleration(s))),
+    }
+}
+
+/// Points on links that are not pinned to ground: their paths are coupler curves
+/// (points on cranks and rockers only trace circle arcs).
+fn traces(k: &Kinematics, sw: &Sweep) -> Vec<Trace> {
+    let m = k.mechanism();
+    let pinned_to_ground = |link: usize| {
+        link == m.ground
+            || m.revolutes
+                .iter()
+                .any(|r| (r.a == link && r.b == m.ground) || (r.b == link && r.a == m.ground))
+            || m.sliders
+                .iter()
+                .any(|s| s.slider == link && s.guide == m.ground)
+    };
+    m.points
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| !pinned_to_ground(p.link))
+        .map(|(i, _)| Trace {
+            point: i,
+            path: sw
+                .solutions
+                .iter()
+                .map(|s| [s.points[i].position.x, s.points[i].position.y])
+                .filter(|p| p[0].is_finite() && p[1].is_finite())
+                .collect(),
+        })
+        .collect()
+}
+
+fn bounds(sw: &Sweep) -> [f64; 4] {
+    let mut b = [
+        f64::INFINITY,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NEG_INFINITY,
+    ];
+    for p in sw.solutions.iter().flat_map(|s| &s.points) {
+        let (x, y) = (p.position.x, p.position.y);
+        if x.is_finite() && y.is_finite() {
+            b = [b[0].min(x), b[1].min(y), b[2].max(x), b[3].max(y)];
+        }
+    }
+    if b[0].is_finite() {
+        b
+    } else {
+        [-1.0, -1.0, 1.0, 1.0]
+    }
+}

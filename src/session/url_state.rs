@@ -1,0 +1,202 @@
+//! The viewer's state as a URL fragment (`#scene=die_cutter&input=42&len.AB=300`), so
+//! that a link reopens the same mechanism in the same pose. Only edits relative to the
+//! shipped scene are written; a scene opened from a file cannot travel in a URL.
+
+use super::{SceneSource, Session};
+
+/// The state a URL fragment carries.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct UrlState {
+    /// Built-in scene key.
+    pub scene: Option<String>,
+    /// Input angle, deg.
+    pub input_deg: Option<f64>,
+    /// Edited lengths by slider label, scene units.
+    pub lengths: Vec<(String, f64)>,
+    /// Edited spring constants by spring index, N/m.
+    pub springs: Vec<(usize, f64)>,
+    /// Edited masses by link name, kg.
+    pub masses: Vec<(String, f64)>,
+    /// Points whose branch is flipped relative to the scene.
+    pub flips: Vec<String>,
+}
+
+/// The fragment (without `#`) for the session's current state.
+pub fn encode(s: &Session) -> String {
+    let SceneSource::Builtin(key) = s.source() else {
+        return String::new();
+    };
+    let mut parts = vec![
+        format!("scene={}", escape(key)),
+        format!("input={:.3}", s.input_rad().to_degrees()),
+    ];
+    for p in s.lengths() {
+        if let (Some(now), Some(orig)) = (p.value(s.scene()), p.value(s.original()))
+            && (now - orig).abs() > 1e-12 * orig
+        {
+            parts.push(format!("len.{}={now}", escape(&p.label)));
+        }
+    }
+    for (i, (now, orig)) in s
+        .scene()
+        .forces
+        .springs
+        .iter()
+        .zip(&s.original().forces.springs)
+        .enumerate()
+    {
+        if now.k_n_per_m != orig.k_n_per_m {
+            parts.push(format!("k.{i}={}", now.k_n_per_m));
+        }
+    }
+    for (now, orig) in s.scene().links.iter().zip(&s.original().links) {
+        if let Some(m) = now.mass
+            && now.mass != orig.mass
+        {
+            parts.push(format!("m.{}={m}", escape(&now.name)));
+        }
+    }
+    let flips: Vec<String> = s
+        .branches()
+        .into_iter()
+        .filter(|(_, _, flipped)| *flipped)
+        .map(|(p, _, _)| escape(&p))
+        .collect();
+    if !flips.is_empty() {
+        parts.push(format!("flip={}", flips.join(",")));
+    }
+    parts.join("&")
+}
+
+/// Reads a fragment (with or without the leading `#`); unknown or malformed entries
+/// are skipped, since a URL is user input that must not stop the app from opening.
+pub fn decode(fragment: &str) -> UrlState {
+    let mut st = UrlState::default();
+    for pair in fragment.trim_start_matches('#').split('&') {
+        let Some((key, value)) = pair.split_once('=') else {
+            continue;
+        };
+        let (key, value) = (unescape(key), unescape(value));
+        let number = value.parse::<f64>().ok().filter(|v| v.is_finite());
+        if key == "scene" {
+            st.scene = Some(value);
+        } else if key == "input" {
+            st.input_deg = number;
+        } else if key == "flip" {
+            st.flips = value.split(',').map(unescape).collect();
+        } else if let (Some(label), Some(v)) = (key.strip_prefix("len."), number) {
+            st.lengths.push((label.to_string(), v));
+        } else if let (Some(i), Some(v)) = (key.strip_prefix("k."), number) {
+            if let Ok(i) = i.parse() {
+                st.springs.push((i, v));
+            }
+        } else if let (Some(link), Some(v)) = (key.strip_prefix("m."), number) {
+            st.masses.push((link.to_string(), v));
+        }
+    }
+    st
+}
+
+/// Opens the state's scene and applies its edits, in the order a user would make them.
+///
+/// # Errors
+/// No scene named, or an unknown one. Edits that fail leave the session's message
+/// set, as the same edit from a slider would.
+pub fn open(st: &UrlState) -> Result<Session, String> {
+    let key = st.scene.as_deref().ok_or("the URL names no scene")?;
+    let mut s = Session::open_builtin(key)?;
+    for point in &st.flips {
+        s.flip_branch(point);
+    }
+    for (label, v) in &st.lengths {
+        if let Some(i) = s.lengths().iter().position(|p| &p.label == label) {
+            s.set_length(i, *v);
+        }
+    }
+    for &(i, k) in &st.springs {
+        s.set_spring_k(i, k);
+    }
+    for (name, m) in &st.masses {
+        if let Some(i) = s.scene().links.iter().position(|l| &l.name == name) {
+            s.set_mass(i, *m);
+        }
+    }
+    if let Some(x) = st.input_deg {
+        s.set_input_deg(x);
+    }
+    Ok(s)
+}
+
+fn escape(s: &str) -> String {
+    s.bytes()
+        .map(|b| {
+            if b.is_ascii_alphanumeric() || b"-_.".contains(&b) {
+                (b as char).to_string()
+            } else {
+                format!("%{b:02X}")
+            }
+        })
+        .collect()
+}
+
+fn unescape(s: &str) -> String {
+    let bytes = s.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        let hex = bytes
+            .get(i + 1..i + 3)
+            .and_then(|h| std::str::from_utf8(h).ok())
+            .and_then(|h| u8::from_str_radix(h, 16).ok());
+        match (bytes[i], hex) {
+            (b'%', Some(b)) => {
+                out.push(b);
+                i += 3;
+            }
+            (b, _) => {
+                out.push(b);
+                i += 1;
+            }
+        }
+    }
+    String::from_utf8_lossy(&out).into_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn edited_state_round_trips_through_the_fragment() {
+        let mut s = Session::open_builtin("gravity_flipper").expect("opens");
+        let bc = s
+            .lengths()
+            .iter()
+            .position(|p| p.label == "BC")
+            .expect("BC");
+        s.set_length(bc, 0.21);
+        s.set_spring_k(0, 2000.0);
+        s.set_input_deg(50.0);
+        assert_eq!(s.message(), None);
+        let fragment = encode(&s);
+        let back = open(&decode(&fragment)).expect("reopens");
+        assert_eq!(back.scene(), s.scene());
+        assert!(
+            (back.input_rad() - s.input_rad()).abs() < 1e-4,
+            "{fragment}"
+        );
+    }
+
+    #[test]
+    fn malformed_fragments_are_skipped_not_fatal() {
+        let st = decode("#scene=slider_crank&input=abc&len.AB=NaN&junk&k.x=3&%zz=1");
+        assert_eq!(st.scene.as_deref(), Some("slider_crank"));
+        assert_eq!(st.input_deg, None);
+        assert!(st.lengths.is_empty() && st.springs.is_empty());
+        assert!(open(&st).is_ok());
+        match open(&decode("#scene=nope")) {
+            Err(e) => assert!(e.contains("nope"), "{e}"),
+            Ok(_) => panic!("an unknown scene opened"),
+        }
+    }
+}

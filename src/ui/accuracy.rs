@@ -1,0 +1,115 @@
+//! The accuracy panel: which solver path and tolerance, what a frame costs, and for
+//! dynamic scenes the integrator, its tolerance, its cost and its error estimate —
+//! the speed/accuracy trade, live.
+
+use eframe::egui;
+use linkage::PathKind;
+use linkage::dynamics::Method;
+
+use crate::app::AppState;
+use crate::session::dynamic_run::METHODS;
+
+/// The accuracy panel.
+pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
+    ui.heading("Accuracy and cost");
+    let k = st.session.kinematics();
+    let solver = &k.mechanism().solver;
+    match k.path() {
+        PathKind::ClosedForm => ui.label("solver: closed-form dyads (exact)"),
+        path => ui.label(format!(
+            "solver: {} (tolerance {:.0e}, at most {} iterations)",
+            path.label(),
+            solver.tolerance,
+            solver.max_iterations
+        )),
+    };
+    ui.label(format!(
+        "conditioning here: {:.3e} (0 at a dead point)",
+        st.session.pose().conditioning
+    ))
+    .on_hover_text("Smallest singular value ratio of the group Jacobians: how far from a dead point or toggle.");
+    if st.show_timings {
+        ui.label(format!(
+            "CPU per frame: {:.0} µs (pose, polygons and shapes {:.0} µs)",
+            st.cost.frame_us, st.cost.solver_us
+        ));
+    }
+
+    let Some(run) = st.session.dynamics() else {
+        ui.label(format!(
+            "{:?} scene: no dynamics computed",
+            st.session.models()
+        ));
+        return;
+    };
+    ui.separator();
+    ui.label("Dynamics (released from rest)");
+    let mut choice = st.session.integrator();
+    egui::ComboBox::from_label("integrator")
+        .selected_text(choice.method.label())
+        .show_ui(ui, |ui| {
+            for m in METHODS {
+                ui.selectable_value(&mut choice.method, m, m.label());
+            }
+        });
+    let changed = if choice.method.is_adaptive() {
+        ui.add(
+            egui::Slider::new(&mut choice.rtol, 1e-12..=1e-3)
+                .logarithmic(true)
+                .custom_formatter(|v, _| format!("{v:.0e}"))
+                .custom_formatter(|v, _| format!("{v:.0e}"))
+                .text("rtol"),
+        )
+        .changed()
+    } else {
+        let (range, label) = if choice.method == Method::EnergyIncrement {
+            (1e-4..=1e-1, "Δφ (rad)")
+        } else {
+            (1e-6..=1e-2, "Δt (s)")
+        };
+        choice.step = choice.step.clamp(*range.start(), *range.end());
+        ui.add(
+            egui::Slider::new(&mut choice.step, range)
+                .logarithmic(true)
+                .custom_formatter(|v, _| format!("{v:.1e}"))
+                .text(label),
+        )
+        .changed()
+    };
+    match run {
+        Ok(run) => {
+            let s = run.stats();
+            let cpu = if st.show_timings {
+                format!(", {:.2} ms CPU", s.cpu_seconds * 1e3)
+            } else {
+                String::new()
+            };
+            ui.label(format!(
+                "{} steps ({} rejected), {} RHS evaluations{cpu}",
+                s.steps, s.rejected_steps, s.rhs_evaluations
+            ));
+            ui.label(format!(
+                "error estimate {:.2e} (≤ 1: within tolerance), energy balance drift {:.2e} J",
+                s.max_error_estimate, run.energy_drift_j
+            ));
+            for w in &s.warnings {
+                ui.colored_label(ui.visuals().warn_fg_color, w);
+            }
+            for e in run.sim.events.iter().filter(|e| e.stopped) {
+                ui.label(format!(
+                    "{}: t = {:.4} s, φ = {:.3}°, ω = {:.4} rad/s",
+                    e.name,
+                    e.state.t,
+                    e.state.q.to_degrees(),
+                    e.state.q_dot
+                ));
+            }
+        }
+        Err(e) => {
+            ui.colored_label(ui.visuals().error_fg_color, e);
+        }
+    }
+    if changed || choice.method != st.session.integrator().method {
+        st.session.set_integrator(choice);
+    }
+}

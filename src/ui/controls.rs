@@ -1,0 +1,138 @@
+//! The control panel: play, speed, crank angle (or run time), one slider per link
+//! length, spring constants and masses where the scene has them, branch toggles.
+
+use eframe::egui;
+use linkage::scene::Models;
+
+use crate::app::AppState;
+use crate::session::params::{mass_range, spring_range};
+use crate::session::unit_label;
+
+/// Label of the crank-angle slider (UI tests find it by this).
+pub const CRANK_LABEL: &str = "crank angle (deg)";
+
+/// The control panel.
+pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
+    ui.heading("Controls");
+    ui.horizontal(|ui| {
+        let label = if st.playing { "Pause" } else { "Play" };
+        if ui.button(label).clicked() {
+            st.playing = !st.playing;
+        }
+        ui.add(
+            egui::Slider::new(&mut st.speed, 0.01..=4.0)
+                .logarithmic(true)
+                .text("speed ×"),
+        );
+    });
+
+    let [lo, hi] = st.session.input_range_deg();
+    let mut input = st.session.input_rad().to_degrees();
+    if st.session.input_range_deg() == [0.0, 360.0] {
+        input = input.rem_euclid(360.0);
+    }
+    let slider = egui::Slider::new(&mut input, lo..=hi).text(CRANK_LABEL);
+    // A full turn wraps, so dragging past 360 continues from 0.
+    if ui.add(slider).changed() {
+        st.playing = false;
+        st.session.set_input_deg(input);
+    }
+
+    if let Some(Ok(run)) = st.session.dynamics() {
+        let end = run.duration_s();
+        let mut t = st.session.time_s();
+        if ui
+            .add(egui::Slider::new(&mut t, 0.0..=end).text("run time (s)"))
+            .changed()
+        {
+            st.playing = false;
+            st.session.set_time_s(t);
+        }
+    }
+
+    if let Some(msg) = st.session.message() {
+        ui.colored_label(ui.visuals().warn_fg_color, msg);
+    }
+
+    ui.separator();
+    ui.label(format!("Link lengths ({})", unit_label(st.session.scene())));
+    let lengths: Vec<_> = st.session.lengths().to_vec();
+    for (i, p) in lengths.iter().enumerate() {
+        let Some(mut v) = p.value(st.session.scene()) else {
+            continue;
+        };
+        if ui
+            .add(egui::Slider::new(&mut v, p.range()).text(&p.label))
+            .changed()
+        {
+            st.session.set_length(i, v);
+        }
+    }
+
+    let springs: Vec<(usize, String, f64, f64)> = st
+        .session
+        .scene()
+        .forces
+        .springs
+        .iter()
+        .zip(&st.session.original().forces.springs)
+        .enumerate()
+        .map(|(i, (s, o))| {
+            (
+                i,
+                format!("k {}-{} (N/m)", s.a, s.b),
+                s.k_n_per_m,
+                o.k_n_per_m,
+            )
+        })
+        .collect();
+    if st.session.models() != Models::Kinematics && !springs.is_empty() {
+        ui.separator();
+        for (i, label, mut k, orig) in springs {
+            if ui
+                .add(egui::Slider::new(&mut k, spring_range(orig)).text(label))
+                .changed()
+            {
+                st.session.set_spring_k(i, k);
+            }
+        }
+    }
+
+    if st.session.models() == Models::Dynamics {
+        let masses: Vec<(usize, String, f64, f64)> = st
+            .session
+            .scene()
+            .links
+            .iter()
+            .zip(&st.session.original().links)
+            .enumerate()
+            .filter_map(|(i, (l, o))| Some((i, format!("mass {} (kg)", l.name), l.mass?, o.mass?)))
+            .collect();
+        if !masses.is_empty() {
+            ui.separator();
+            for (i, label, mut m, orig) in masses {
+                if ui
+                    .add(egui::Slider::new(&mut m, mass_range(orig)).text(label))
+                    .changed()
+                {
+                    st.session.set_mass(i, m);
+                }
+            }
+        }
+    }
+
+    let branches = st.session.branches();
+    if !branches.is_empty() {
+        ui.separator();
+        ui.label("Assembly branch");
+        for (point, words, flipped) in branches {
+            let mut on = flipped;
+            if ui
+                .checkbox(&mut on, format!("flip at {point} (now {words})"))
+                .changed()
+            {
+                st.session.flip_branch(&point);
+            }
+        }
+    }
+}

@@ -1,0 +1,10 @@
+//! The panels, one file each.
+
+pub mod accuracy;
+pub mod controls;
+pub mod files;
+pub mod plots;
+pub mod polygons;
+pub mod report;
+pub mod scene_picker;
+pub mod viewport;

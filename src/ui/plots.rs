@@ -1,0 +1,228 @@
+//! The plot pane (egui_plot): output motion and transmission angle against the crank
+//! angle, input torque and force amplification, and for dynamic scenes the run
+//! (ω–φ, ω–t, φ–t) and the reduced model J(q), M(q); each with a cursor at the
+//! current position.
+
+use eframe::egui;
+use egui_plot::{Line, Plot, PlotPoints, VLine};
+use linkage::scene::Models;
+
+use crate::app::{AppState, PlotTab};
+use crate::session::Session;
+
+/// Whether `tab` has anything to show for `s` (a slider appears only where its
+/// parameter exists; so does a plot).
+pub fn tab_available(tab: PlotTab, s: &Session) -> bool {
+    let c = s.curves();
+    match tab {
+        PlotTab::Output => !c.outputs.is_empty(),
+        PlotTab::Transmission => !c.transmission_deg.is_empty(),
+        PlotTab::Torque => s.models() == Models::Kinetostatics && !c.torque_n_m.is_empty(),
+        PlotTab::Motion => matches!(s.dynamics(), Some(Ok(_))),
+        PlotTab::ReducedModel => !c.inertia_kg_m2.is_empty(),
+    }
+}
+
+/// Input angle of the current pose on the curves' (unwrapped) axis, deg.
+fn cursor_deg(s: &Session) -> f64 {
+    let c = s.curves();
+    let now = s.input_rad().to_degrees();
+    match c.input_deg.first() {
+        Some(&first) if c.full_rotation => first + (now - first).rem_euclid(360.0),
+        _ => now,
+    }
+}
+
+/// The plot pane.
+pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
+    ui.horizontal(|ui| {
+        for (tab, label) in [
+            (PlotTab::Output, "Output s, v, a"),
+            (PlotTab::Transmission, "Transmission angle"),
+            (PlotTab::Torque, "Input torque, amplification"),
+            (PlotTab::Motion, "ω–φ, ω–t, φ–t"),
+            (PlotTab::ReducedModel, "J(q), M(q)"),
+        ] {
+            if tab_available(tab, &st.session) {
+                ui.selectable_value(&mut st.plot_tab, tab, label);
+            }
+        }
+    });
+    let s = &st.session;
+    let c = s.curves();
+    let x = cursor_deg(s);
+    let key = (s.scene().name.as_str(), s.generation());
+    let crank = "crank angle (deg)";
+    match st.plot_tab {
+        PlotTab::Output => {
+            // The scene's main output first: that is the one the papers plot.
+            let main = &s.mechanism().links[s.mechanism().output].name;
+            let Some(out) = c
+                .outputs
+                .iter()
+                .find(|o| &o.name == main)
+                .or(c.outputs.first())
+            else {
+                return;
+            };
+            let (u, v, a) = if out.is_angle {
+                ("deg", "deg/s", "deg/s²")
+            } else {
+                ("m", "m/s", "m/s²")
+            };
+            let plots = [
+                (format!("{} ({u})", out.name), &out.value),
+                (format!("{} rate ({v})", out.name), &out.rate),
+                (
+                    format!("{} acceleration ({a})", out.name),
+                    &out.acceleration,
+                ),
+            ];
+            row(
+                ui,
+                "output",
+                key,
+                &plots
+                    .iter()
+                    .map(|(l, d)| (l.as_str(), crank, d.as_slice(), Some(x)))
+                    .collect::<Vec<_>>(),
+            );
+        }
+        PlotTab::Transmission => {
+            row(
+                ui,
+                "transmission",
+                key,
+                &[(
+                    "transmission angle (deg)",
+                    crank,
+                    &c.transmission_deg,
+                    Some(x),
+                )],
+            );
+        }
+        PlotTab::Torque => {
+            let log_amp: Vec<[f64; 2]> = c
+                .amplification
+                .iter()
+                .filter(|p| p[1] > 0.0)
+                .map(|p| [p[0], p[1].log10()])
+                .collect();
+            row(
+                ui,
+                "torque",
+                key,
+                &[
+                    ("input torque (N·m)", crank, &c.torque_n_m, Some(x)),
+                    (
+                        "log10 force amplification (N per N·m)",
+                        crank,
+                        &log_amp,
+                        Some(x),
+                    ),
+                ],
+            );
+        }
+        PlotTab::Motion => {
+            if let Some(Ok(run)) = s.dynamics() {
+                let t = s.time_s();
+                row(
+                    ui,
+                    "motion",
+                    key,
+                    &[
+                        (
+                            "ω (rad/s)",
+                            "φ (deg)",
+                            &run.omega_phi,
+                            Some(s.input_rad().to_degrees()),
+                        ),
+                        ("ω (rad/s)", "t (s)", &run.omega_t, Some(t)),
+                        ("φ (deg)", "t (s)", &run.phi_t, Some(t)),
+                    ],
+                );
+            }
+        }
+        PlotTab::ReducedModel => {
+            row(
+                ui,
+                "reduced",
+                key,
+                &[
+                    ("J(q) (kg·m²)", "q (deg)", &c.inertia_kg_m2, Some(x)),
+                    ("M(q) at rest (N·m)", "q (deg)", &c.moment_n_m, Some(x)),
+                ],
+            );
+        }
+    }
+}
+
+/// One plot of a row: (y label, x label, data, cursor position on x).
+type PlotSpec<'a> = (&'a str, &'a str, &'a [[f64; 2]], Option<f64>);
+
+/// Plots side by side.
+fn row(ui: &mut egui::Ui, id: &str, generation: (&str, u64), plots: &[PlotSpec<'_>]) {
+    let height = ui.available_height().max(80.0);
+    ui.columns(plots.len(), |cols| {
+        for (i, (col, (y_label, x_label, data, cursor))) in cols.iter_mut().zip(plots).enumerate() {
+            let [lo, hi] = robust_range(data);
+            // Keyed on the mechanism, so that an edit re-fits the bounds.
+            Plot::new((id, i, generation))
+                .height(height)
+                .default_y_bounds(lo, hi)
+                .x_axis_label(*x_label)
+                .y_axis_label(*y_label)
+                .allow_scroll(false)
+                .show(col, |p| {
+                    p.line(Line::new(
+                        *y_label,
+                        data.iter().copied().collect::<PlotPoints<'_>>(),
+                    ));
+                    if let Some(x) = cursor.filter(|x| x.is_finite()) {
+                        p.vline(VLine::new("now", x));
+                    }
+                });
+        }
+    });
+}
+
+/// The y range that holds the middle 96 % of the values, padded by a tenth: near a
+/// dead point velocities and accelerations grow without bound, and fitting the plot
+/// to those spikes would flatten the rest of the cycle into a line.
+pub fn robust_range(data: &[[f64; 2]]) -> [f64; 2] {
+    let mut ys: Vec<f64> = data
+        .iter()
+        .map(|p| p[1])
+        .filter(|y| y.is_finite())
+        .collect();
+    if ys.is_empty() {
+        return [-1.0, 1.0];
+    }
+    ys.sort_by(f64::total_cmp);
+    let at = |q: f64| ys[((ys.len() - 1) as f64 * q).round() as usize];
+    let (lo, hi) = (at(0.02), at(0.98));
+    let pad = 0.1
+        * (hi - lo)
+            .max(1e-9 * hi.abs().max(lo.abs()))
+            .max(f64::MIN_POSITIVE);
+    [lo - pad, hi + pad]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn robust_range_ignores_dead_point_spikes() {
+        let mut data: Vec<[f64; 2]> = (0..100)
+            .map(|i| [f64::from(i), f64::from(i % 10)])
+            .collect();
+        data.push([100.0, 1e12]);
+        data.push([101.0, f64::NAN]);
+        let [lo, hi] = robust_range(&data);
+        assert!(lo < 0.0 && hi > 9.0 && hi < 11.0, "{lo} {hi}");
+        assert_eq!(robust_range(&[]), [-1.0, 1.0]);
+        let [lo, hi] = robust_range(&[[0.0, 5.0]]);
+        assert!(lo < 5.0 && hi > 5.0);
+    }
+}

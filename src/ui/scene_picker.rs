@@ -1,0 +1,70 @@
+//! The top bar: scene picker, file actions, view toggles.
+
+use std::sync::OnceLock;
+
+use eframe::egui;
+
+use crate::app::AppState;
+use crate::catalog::BUILTIN_SCENES;
+use crate::session::{SceneSource, Session};
+use crate::ui::files;
+
+/// Display names of the shipped scenes (their `name` field), read once.
+fn names() -> &'static [String] {
+    static NAMES: OnceLock<Vec<String>> = OnceLock::new();
+    NAMES.get_or_init(|| {
+        BUILTIN_SCENES
+            .iter()
+            .map(|b| {
+                linkage::SceneFile::parse(b.text).map_or_else(|_| b.key.to_string(), |s| s.name)
+            })
+            .collect()
+    })
+}
+
+/// The top bar.
+pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, _frame: &mut eframe::Frame) {
+    egui::Panel::top("scene_bar").show(ui, |ui| {
+        ui.horizontal_wrapped(|ui| {
+            ui.strong("Linkage Lab");
+            let current = match st.session.source() {
+                SceneSource::Builtin(key) => BUILTIN_SCENES
+                    .iter()
+                    .position(|b| b.key == key)
+                    .map_or_else(|| key.clone(), |i| names()[i].clone()),
+                SceneSource::File(name) => name.clone(),
+            };
+            let mut chosen = None;
+            egui::ComboBox::from_label("Scene")
+                .selected_text(current)
+                .width(300.0)
+                .show_ui(ui, |ui| {
+                    for (b, name) in BUILTIN_SCENES.iter().zip(names()) {
+                        if ui.selectable_label(false, name).clicked() {
+                            chosen = Some(b.key);
+                        }
+                    }
+                });
+            if let Some(key) = chosen {
+                match Session::open_builtin(key) {
+                    Ok(s) => st.open(s),
+                    Err(e) => st.status = Some(e),
+                }
+            }
+            files::buttons(ui, st);
+            if ui.button("Reset edits").clicked() {
+                st.session.reset();
+            }
+            if ui.button("Fit view").clicked() {
+                st.fit_pending = true;
+            }
+            ui.checkbox(&mut st.layers.velocities, "v vectors");
+            ui.checkbox(&mut st.layers.accelerations, "a vectors");
+            ui.checkbox(&mut st.layers.traces, "traces");
+            if let Some(status) = &st.status {
+                ui.label(status);
+            }
+        });
+    });
+    files::prompt_window(ui.ctx(), st);
+}

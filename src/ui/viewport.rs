@@ -1,0 +1,123 @@
+//! The mechanism view: pan (drag), zoom (wheel or pinch, about the pointer), fit on
+//! request; the GPU draws the shapes, egui adds the point labels, the vector legend
+//! and the message when an edit was refused.
+
+use eframe::egui::{self, Align2, FontId, Sense};
+use eframe::egui_wgpu;
+
+use crate::app::AppState;
+use crate::render::build::{build, joint_points};
+use crate::render::pipeline::{MechanismCallback, SharedShapes};
+
+/// Draws the view; returns the µs spent building its shapes.
+pub fn show(ui: &mut egui::Ui, st: &mut AppState, shapes: &SharedShapes, gpu: bool) -> f64 {
+    let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+    if st.fit_pending && rect.width() > 1.0 {
+        st.camera.fit(st.session.curves().bounds_m, rect);
+        st.fit_pending = false;
+    }
+    if response.dragged() {
+        st.camera.pan(response.drag_delta());
+    }
+    if response.double_clicked() {
+        st.fit_pending = true;
+    }
+    if response.hovered() {
+        let (zoom, scroll, pointer) = ui.input(|i| {
+            (
+                i.zoom_delta(),
+                i.smooth_scroll_delta.y,
+                i.pointer.hover_pos(),
+            )
+        });
+        let factor = f64::from(zoom) * (f64::from(scroll) / 400.0).exp();
+        if let Some(p) = pointer
+            && (factor - 1.0).abs() > 1e-6
+        {
+            st.camera.zoom_at(factor, p, rect);
+        }
+    }
+
+    let ppp = ui.ctx().pixels_per_point();
+    let view = st.camera.uniform(rect, ppp);
+    let started = web_time::Instant::now();
+    if let Ok(mut list) = shapes.lock() {
+        st.scales = build(
+            &mut list,
+            &st.session,
+            &st.camera,
+            st.layers,
+            f64::from(view.m_per_px),
+        );
+    }
+    let build_us = started.elapsed().as_secs_f64() * 1e6;
+
+    let painter = ui.painter_at(rect);
+    painter.rect_filled(rect, 0.0, egui::Color32::from_rgb(246, 246, 242));
+    if gpu {
+        painter.add(egui_wgpu::Callback::new_paint_callback(
+            rect,
+            MechanismCallback {
+                view,
+                shapes: shapes.clone(),
+            },
+        ));
+    } else {
+        painter.text(
+            rect.center(),
+            Align2::CENTER_CENTER,
+            "no wgpu renderer: the mechanism view needs a GPU or a CPU adapter",
+            FontId::proportional(14.0),
+            egui::Color32::DARK_RED,
+        );
+    }
+
+    // Point labels beside each joint.
+    let pose = st.session.pose();
+    let m = st.session.mechanism();
+    let font = FontId::proportional(13.0);
+    let offset = egui::vec2(8.0, -8.0);
+    for p in joint_points(&st.session) {
+        let q = pose.points[p].position;
+        if q.x.is_finite() && q.y.is_finite() {
+            let at = st.camera.to_screen([q.x, q.y], rect) + offset;
+            painter.text(
+                at,
+                Align2::LEFT_BOTTOM,
+                &m.points[p].name,
+                font.clone(),
+                egui::Color32::from_gray(30),
+            );
+        }
+    }
+
+    let small = FontId::proportional(12.0);
+    let mut legend = format!("crank {:.2}°", st.session.input_rad().to_degrees());
+    if let Some(Ok(_)) = st.session.dynamics() {
+        legend += &format!(", t = {:.3} s", st.session.time_s());
+    }
+    if st.layers.velocities && st.scales.velocity > 0.0 {
+        legend += &format!("\nv: 1 m/s drawn {:.4} m", st.scales.velocity);
+    }
+    if st.layers.accelerations && st.scales.acceleration > 0.0 {
+        legend += &format!("\na: 1 m/s² drawn {:.4} m", st.scales.acceleration);
+    }
+    legend += "\ndrag to pan, wheel to zoom, double-click to fit";
+    painter.text(
+        rect.left_top() + egui::vec2(8.0, 8.0),
+        Align2::LEFT_TOP,
+        legend,
+        small,
+        egui::Color32::from_gray(60),
+    );
+    if let Some(msg) = st.session.message() {
+        painter.text(
+            rect.left_bottom() + egui::vec2(8.0, -8.0),
+            Align2::LEFT_BOTTOM,
+            msg,
+            FontId::proportional(13.0),
+            egui::Color32::from_rgb(170, 40, 20),
+        );
+    }
+    build_us
+}

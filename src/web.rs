@@ -1,0 +1,98 @@
+//! Browser glue: the state in the URL fragment, file download (save, CSV) and upload
+//! (open a scene) through the page's DOM.
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use eframe::wasm_bindgen::{JsCast as _, JsValue, closure::Closure};
+
+use crate::session::{Session, url_state};
+
+/// The page's URL fragment (with its `#`), or empty.
+pub fn fragment() -> String {
+    web_sys::window()
+        .and_then(|w| w.location().hash().ok())
+        .unwrap_or_default()
+}
+
+/// Writes the session's state into the URL when it changes (replaceState: no history
+/// entry per slider step).
+#[derive(Default)]
+pub struct UrlSync {
+    last: String,
+}
+
+impl UrlSync {
+    /// Updates the URL if the state differs from the last one written.
+    pub fn update(&mut self, s: &Session) {
+        let now = url_state::encode(s);
+        if now == self.last || now.is_empty() {
+            return;
+        }
+        if let Some(history) = web_sys::window().and_then(|w| w.history().ok()) {
+            let _ = history.replace_state_with_url(&JsValue::NULL, "", Some(&format!("#{now}")));
+        }
+        self.last = now;
+    }
+}
+
+/// Offers `text` as a download named `file_name`.
+pub fn download(file_name: &str, mime: &str, text: &str) -> Result<(), String> {
+    let err = |e: JsValue| format!("download failed: {e:?}");
+    let document = web_sys::window()
+        .and_then(|w| w.document())
+        .ok_or("no document")?;
+    let parts = js_sys::Array::of1(&JsValue::from_str(text));
+    let options = web_sys::BlobPropertyBag::new();
+    options.set_type(mime);
+    let blob = web_sys::Blob::new_with_str_sequence_and_options(&parts, &options).map_err(err)?;
+    let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(err)?;
+    let a: web_sys::HtmlAnchorElement = document
+        .create_element("a")
+        .map_err(err)?
+        .dyn_into()
+        .map_err(|_| "not an anchor")?;
+    a.set_href(&url);
+    a.set_download(file_name);
+    a.click();
+    web_sys::Url::revoke_object_url(&url).map_err(err)?;
+    Ok(())
+}
+
+/// A file the user picked, read as text, waiting for the next frame to take it.
+pub type Upload = Rc<RefCell<Option<(String, String)>>>;
+
+/// Opens the browser's file picker; the chosen file's text lands in `slot`.
+pub fn pick_file(slot: &Upload) -> Result<(), String> {
+    let err = |e: JsValue| format!("file picker failed: {e:?}");
+    let document = web_sys::window()
+        .and_then(|w| w.document())
+        .ok_or("no document")?;
+    let input: web_sys::HtmlInputElement = document
+        .create_element("input")
+        .map_err(err)?
+        .dyn_into()
+        .map_err(|_| "not an input")?;
+    input.set_type("file");
+    input.set_accept(".ron,text/plain");
+    let slot = slot.clone();
+    let picked = input.clone();
+    let on_change = Closure::<dyn FnMut()>::new(move || {
+        let Some(file) = picked.files().and_then(|f| f.get(0)) else {
+            return;
+        };
+        let name = file.name();
+        let slot = slot.clone();
+        let promise = file.text();
+        wasm_bindgen_futures::spawn_local(async move {
+            if let Ok(text) = wasm_bindgen_futures::JsFuture::from(promise).await {
+                *slot.borrow_mut() = Some((name, text.as_string().unwrap_or_default()));
+            }
+        });
+    });
+    input.set_onchange(Some(on_change.as_ref().unchecked_ref()));
+    // The closure must outlive this call: the picker answers later, once.
+    on_change.forget();
+    input.click();
+    Ok(())
+}

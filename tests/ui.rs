@@ -1,0 +1,139 @@
+//! UI tests of the viewer (egui_kittest, headless, rendered through wgpu on a CPU
+//! adapter): every scene opens from the picker, the crank and length sliders move the
+//! solver state and the polygon data shown exactly as an independent solve computes,
+//! an unassemblable length is refused with its reason while the pose stays, and the
+//! main view's pixels match the committed snapshot.
+
+use eframe::egui;
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable as _;
+use linkage::polygon::polygons;
+use linkage::{Kinematics, Mechanism};
+use linkage_lab::LinkageApp;
+use linkage_lab::catalog::BUILTIN_SCENES;
+use linkage_lab::session::SceneSource;
+use linkage_lab::ui::controls::CRANK_LABEL;
+
+fn harness() -> Harness<'static, LinkageApp> {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1500.0, 950.0))
+        .wgpu()
+        .build_eframe(|cc| LinkageApp::new(cc, None));
+    h.state_mut().state.show_timings = false;
+    h.run();
+    h
+}
+
+/// Opens `key` by clicking the scene picker and the scene's name.
+fn open_scene(h: &mut Harness<'static, LinkageApp>, key: &str) {
+    let text = BUILTIN_SCENES
+        .iter()
+        .find(|b| b.key == key)
+        .expect("shipped")
+        .text;
+    let name = linkage::SceneFile::parse(text).expect("parses").name;
+    h.get_by_role_and_label(Role::ComboBox, "Scene").click();
+    h.run();
+    h.get_by_label(&name).click();
+    h.run();
+    assert_eq!(
+        h.state().state.session.source(),
+        &SceneSource::Builtin(key.into())
+    );
+}
+
+/// The scene as the app holds it, solved independently at `input_rad`.
+fn independent(
+    h: &Harness<'static, LinkageApp>,
+    input_rad: f64,
+) -> (Kinematics, linkage::Solution) {
+    let mech = Mechanism::from_scene(h.state().state.session.scene()).expect("valid");
+    let mut k = Kinematics::new(mech).expect("solvable");
+    let s = k.solve(input_rad).expect("assembles");
+    (k, s)
+}
+
+#[test]
+fn every_scene_opens_and_its_crank_slider_moves_pose_and_polygons() {
+    let mut h = harness();
+    for b in BUILTIN_SCENES {
+        open_scene(&mut h, b.key);
+        let [lo, hi] = h.state().state.session.input_range_deg();
+        let target = lo + 0.37 * (hi - lo);
+        let before = h.state().state.session.polygons().to_vec();
+        h.get_by_role_and_label(Role::Slider, CRANK_LABEL)
+            .set_value_accesskit(target);
+        h.run();
+        let session = &h.state().state.session;
+        assert_eq!(session.message(), None, "{}", b.key);
+        let x = session.input_rad();
+        assert!((x.to_degrees() - target).abs() < 1e-9, "{}: {x}", b.key);
+        let (k, s) = independent(&h, x);
+        let session = &h.state().state.session;
+        assert_eq!(session.pose().points, s.points, "{}", b.key);
+        assert_eq!(session.polygons(), polygons(&k, &s).as_slice(), "{}", b.key);
+        assert_ne!(
+            session.polygons(),
+            before.as_slice(),
+            "{}: polygons did not change",
+            b.key
+        );
+    }
+}
+
+#[test]
+fn a_length_slider_rebuilds_the_chain_and_its_polygons() {
+    let mut h = harness();
+    open_scene(&mut h, "slider_crank");
+    let before = h.state().state.session.polygons().to_vec();
+    h.get_by_role_and_label(Role::Slider, "AB")
+        .set_value_accesskit(60.0);
+    h.run();
+    let session = &h.state().state.session;
+    assert_eq!(session.message(), None);
+    assert!((session.lengths()[0].value(session.scene()).expect("AB") - 60.0).abs() < 1e-12);
+    let x = session.input_rad();
+    let (k, s) = independent(&h, x);
+    let session = &h.state().state.session;
+    assert_eq!(session.pose().points, s.points);
+    assert_eq!(session.polygons(), polygons(&k, &s).as_slice());
+    assert_ne!(session.polygons(), before.as_slice());
+    // The crank pin B sits 60 mm from A.
+    let b = s.points[k.mechanism().point_index("B").expect("B")].position;
+    assert!((b.norm() - 0.060).abs() < 1e-12, "{b}");
+}
+
+#[test]
+fn an_unassemblable_length_is_refused_with_its_reason_and_the_pose_stays() {
+    let mut h = harness();
+    open_scene(&mut h, "slider_crank");
+    h.get_by_role_and_label(Role::Slider, CRANK_LABEL)
+        .set_value_accesskit(90.0);
+    h.run();
+    let pose = h.state().state.session.pose().clone();
+    let scene = h.state().state.session.scene().clone();
+    // At 90 deg the crank pin is 50 mm off the guide: a 20 mm rod cannot reach it.
+    h.get_by_role_and_label(Role::Slider, "BC")
+        .set_value_accesskit(20.0);
+    h.run();
+    let session = &h.state().state.session;
+    let msg = session.message().expect("a message").to_string();
+    assert!(msg.contains("cannot assemble"), "{msg}");
+    // The limit found by bisection is the crank radius, 50 mm.
+    assert!(msg.contains("can go to 50.0000 mm"), "{msg}");
+    assert_eq!(session.pose(), &pose);
+    assert_eq!(session.scene(), &scene);
+    // And the message is on screen.
+    assert!(h.query_by_label_contains("cannot assemble").is_some());
+}
+
+#[test]
+fn main_view_snapshot() {
+    let mut h = harness();
+    open_scene(&mut h, "gravity_flipper");
+    h.get_by_role_and_label(Role::Slider, CRANK_LABEL)
+        .set_value_accesskit(50.0);
+    h.run();
+    h.snapshot("gravity_flipper_50deg");
+}
