@@ -1,8 +1,14 @@
 #!/usr/bin/env bash
-# Every check CI runs: formatting, clippy (native and wasm32), all tests, and the CLI
-# over every shipped scene. Run it from anywhere in the repository.
+# Every check CI runs: formatting, clippy (native and wasm32), all tests (the UI tests
+# render through wgpu on Mesa's CPU Vulkan driver), the CLI over every shipped scene,
+# a native smoke run of the window under Xvfb, and the web demo in headless Chromium.
+# Installs what it needs on a fresh Debian machine. Run it from anywhere in the
+# repository.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+
+echo "== dependencies"
+bash scripts/install_deps.sh
 
 echo "== cargo fmt --check"
 cargo fmt --all -- --check
@@ -23,3 +29,9 @@ for scene in assets/scenes/*.ron; do
     target/debug/linkage sweep "$scene" --steps 36 > /dev/null
     echo "ok $scene"
 done
+
+echo "== native smoke run (Xvfb)"
+bash scripts/smoke_native.sh
+
+echo "== web demo in headless Chromium"
+bash scripts/browser_test.sh

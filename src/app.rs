@@ -183,6 +183,10 @@ impl eframe::App for LinkageApp {
             ui.ctx().request_repaint();
         }
         let mut solver_us = solver_started.elapsed().as_secs_f64() * 1e6;
+        // Space plays and pauses, unless a text field has the keyboard.
+        if ui.input(|i| i.key_pressed(egui::Key::Space)) && !ui.ctx().egui_wants_keyboard_input() {
+            self.state.playing = !self.state.playing;
+        }
 
         ui::scene_picker::top_bar(ui, &mut self.state, frame);
         ui::report::strip(ui, &self.state);
@@ -213,15 +217,22 @@ impl eframe::App for LinkageApp {
         #[cfg(target_arch = "wasm32")]
         self.url.update(&self.state.session);
         self.frames_drawn += 1;
+        #[cfg(target_arch = "wasm32")]
+        if self.frames_drawn == 1 {
+            // The browser test reads this line to measure the time to first frame.
+            let now = web_sys::window()
+                .and_then(|w| w.performance())
+                .map_or(f64::NAN, |p| p.now());
+            log::info!("linkage-lab first frame at {now:.0} ms");
+        }
         if let Some(n) = self.exit_after_frames {
             // egui repaints only on input: a smoke run has to ask for every frame.
             ui.ctx().request_repaint();
-            if self.frames_drawn >= n {
-                log::info!(
+            if self.frames_drawn == n {
+                // Printed, not logged: the smoke run reads it without a logger.
+                println!(
                     "{} frames, mean CPU per frame {:.1} us (solver {:.1} us)",
-                    self.frames_drawn,
-                    self.state.cost.frame_us,
-                    self.state.cost.solver_us
+                    self.frames_drawn, self.state.cost.frame_us, self.state.cost.solver_us
                 );
                 ui.ctx().send_viewport_cmd(egui::ViewportCommand::Close);
             }

@@ -30,6 +30,8 @@ pub fn exit_after_frames_from_args(args: impl IntoIterator<Item = String>) -> Op
 #[cfg(target_arch = "wasm32")]
 pub fn start_web() {
     use eframe::wasm_bindgen::JsCast as _;
+    // Log lines go to the browser console (the browser test reads them).
+    let _ = eframe::WebLogger::init(log::LevelFilter::Info);
     wasm_bindgen_futures::spawn_local(async {
         let Some(document) = web_sys::window().and_then(|w| w.document()) else {
             log::error!("no document: Linkage Lab must run in a browser page");

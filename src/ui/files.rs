@@ -40,8 +40,11 @@ pub fn buttons(ui: &mut egui::Ui, st: &mut AppState) {
         }
     }
     #[cfg(target_arch = "wasm32")]
-    if let Some((name, text)) = st.files.upload.borrow_mut().take() {
-        open_text(st, name, &text);
+    {
+        let uploaded = st.files.upload.borrow_mut().take();
+        if let Some((name, text)) = uploaded {
+            open_text(st, name, &text);
+        }
     }
 }
 

@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Real-browser test of the web demo: builds it (scripts/build_web.sh), serves dist/ on
+# 127.0.0.1, and runs tests/browser/browser_test.mjs in Debian's headless Chromium via
+# playwright-core. Installs chromium and the npm packages if missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+if ! command -v chromium >/dev/null; then
+    sudo=""; [ "$(id -u)" = 0 ] || sudo="sudo"
+    $sudo apt-get update && $sudo apt-get install -y chromium
+fi
+(cd tests/browser && npm ci --no-audit --no-fund)
+bash scripts/build_web.sh
+ls -l dist/*.wasm
+gzip -9 -c dist/*.wasm | wc -c | awk '{printf "wasm gzipped: %.2f MB\n", $1/1e6}'
+
+port=8917
+python3 -m http.server "$port" --bind 127.0.0.1 --directory dist >/dev/null 2>&1 &
+server=$!
+trap 'kill $server' EXIT
+for _ in $(seq 50); do curl -sf "http://127.0.0.1:$port/" >/dev/null && break; sleep 0.2; done
+node tests/browser/browser_test.mjs "http://127.0.0.1:$port/"

@@ -1,0 +1,100 @@
+// Real-browser test of the web demo: Debian's Chromium, headless, driven by
+// playwright-core (no browser download). Checks: no console errors, a canvas that is
+// not blank, and that dragging the crank slider changes the picture. Measures time
+// to first frame (the app logs it) and frames per second while the mechanism plays.
+// Usage: node browser_test.mjs http://127.0.0.1:PORT/
+import { chromium } from 'playwright-core';
+import { PNG } from 'pngjs';
+
+const url = process.argv[2] ?? 'http://127.0.0.1:8917/';
+const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
+
+// Pixels that differ from the page background (#1b1b1b) or between two shots.
+function decode(buf) { return PNG.sync.read(buf); }
+function differing(a, b) {
+  let n = 0;
+  for (let i = 0; i < a.data.length; i += 4) {
+    const d = Math.abs(a.data[i] - b.data[i]) + Math.abs(a.data[i + 1] - b.data[i + 1]) + Math.abs(a.data[i + 2] - b.data[i + 2]);
+    if (d > 24) n++;
+  }
+  return n;
+}
+function nonBackground(img) {
+  let n = 0;
+  for (let i = 0; i < img.data.length; i += 4) {
+    if (Math.abs(img.data[i] - 0x1b) + Math.abs(img.data[i + 1] - 0x1b) + Math.abs(img.data[i + 2] - 0x1b) > 24) n++;
+  }
+  return n / (img.width * img.height);
+}
+
+const browser = await chromium.launch({
+  executablePath: '/usr/bin/chromium',
+  headless: true,
+  // WebGL2 through SwiftShader: headless WebGPU screenshots come out blank here.
+  args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+    '--disable-background-networking', '--disable-component-update', '--disable-sync',
+    '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+});
+const page = await browser.newPage({ viewport: { width: 1500, height: 950 }, deviceScaleFactor: 1 });
+const errors = [];
+let firstFrameMs = null;
+page.on('console', (m) => {
+  const text = m.text();
+  if (m.type() === 'error') errors.push(text);
+  const hit = /first frame at ([0-9.]+) ms/.exec(text);
+  if (hit) firstFrameMs = Number(hit[1]);
+});
+page.on('pageerror', (e) => errors.push(`pageerror: ${e.message}`));
+
+const t0 = Date.now();
+await page.goto(url, { waitUntil: 'load' });
+while (firstFrameMs === null && Date.now() - t0 < 60000) await page.waitForTimeout(100);
+if (firstFrameMs === null) fail('the app never drew a first frame');
+await page.waitForTimeout(1500);
+
+const canvas = page.locator('#linkage_canvas');
+const shotDir = process.env.SCREENSHOT_DIR;
+const shot = async (name) => {
+  const buf = await canvas.screenshot();
+  if (shotDir) (await import('node:fs')).writeFileSync(`${shotDir}/${name}.png`, buf);
+  return decode(buf);
+};
+const before = await shot('loaded');
+const coverage = nonBackground(before);
+if (coverage < 0.2) fail(`canvas looks blank: ${(coverage * 100).toFixed(1)} % drawn`);
+
+// Drag the crank-angle slider (second row of the control panel, at 1500x950 and one
+// pixel per point) in small steps.
+const y = 84, x0 = 14, x1 = 100;
+await page.mouse.move(x0, y);
+await page.waitForTimeout(50);
+await page.mouse.down();
+for (let x = x0; x <= x1; x += 5) {
+  await page.mouse.move(x, y);
+  await page.waitForTimeout(30);
+}
+await page.mouse.up();
+await page.waitForTimeout(800);
+const after = await shot('dragged');
+const changed = differing(before, after);
+if (changed < 2000) fail(`dragging the crank slider changed only ${changed} pixels`);
+
+// Frames per second while playing (Space toggles play), counted by the page's rAF.
+await page.mouse.click(700, 400); // focus the canvas, on the mechanism view
+await page.keyboard.press('Space');
+const fps = await page.evaluate(() => new Promise((resolve) => {
+  let n = 0; const start = performance.now();
+  const tick = () => { n++; if (performance.now() - start < 3000) requestAnimationFrame(tick); else resolve(n / ((performance.now() - start) / 1000)); };
+  requestAnimationFrame(tick);
+}));
+await page.keyboard.press('Space');
+const played = differing(after, await shot('played'));
+if (played < 2000) fail(`playing changed only ${played} pixels`);
+
+if (errors.length) fail(`console errors:\n  ${errors.join('\n  ')}`);
+console.log(JSON.stringify({
+  url, first_frame_ms: firstFrameMs, canvas_drawn_fraction: Number(coverage.toFixed(3)),
+  pixels_changed_by_slider_drag: changed, pixels_changed_by_play: played,
+  fps_playing: Number(fps.toFixed(1)), console_errors: errors.length,
+}));
+await browser.close();
