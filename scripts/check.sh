@@ -20,6 +20,8 @@ echo "== clippy (wasm32: the solver, the CLI and the app compile for the browser
 cargo clippy --workspace --target wasm32-unknown-unknown -- -D warnings
 
 echo "== tests"
+# winit and wgpu warn without a runtime dir; the UI tests need none, give them one.
+mkdir -m700 -p /tmp/xdg && export XDG_RUNTIME_DIR=/tmp/xdg
 cargo test --workspace
 
 echo "== CLI over every scene"
