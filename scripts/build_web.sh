@@ -15,10 +15,10 @@ if [ "$have" != "$want" ]; then
     cargo install wasm-bindgen-cli --version "$want"
 fi
 
-cargo build --release --target wasm32-unknown-unknown --bin linkage-lab
+cargo build --profile wasm-release --target wasm32-unknown-unknown --bin linkage-lab
 rm -rf dist && mkdir -p dist
 wasm-bindgen --target web --no-typescript --out-dir dist \
-    target/wasm32-unknown-unknown/release/linkage-lab.wasm
+    target/wasm32-unknown-unknown/wasm-release/linkage-lab.wasm
 sed -e 's|<link data-trunk rel="rust"[^>]*/>|<script type="module">import init from "./linkage-lab.js"; init();</script>|' \
     index.html > dist/index.html
 ls -l dist

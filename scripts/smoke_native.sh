@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Native smoke run: opens the desktop window under Xvfb (wgpu on Mesa's CPU Vulkan
-# driver), renders 120 frames, and must exit cleanly; prints the app's mean CPU time
+# driver), renders 120 frames with the animation playing, and must exit cleanly; prints the app's mean CPU time
 # per frame.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -8,5 +8,5 @@ mkdir -m700 -p /tmp/xdg && export XDG_RUNTIME_DIR=/tmp/xdg
 # Debug build: the tests already built it, so CI pays no extra compile.
 cargo build -q -p linkage-lab
 timeout 300 xvfb-run -a -s "-screen 0 1500x950x24" \
-    target/debug/linkage-lab --exit-after-frames 120
+    target/debug/linkage-lab --exit-after-frames 120 --play
 echo "native smoke run: ok"

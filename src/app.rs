@@ -120,9 +120,9 @@ pub struct LinkageApp {
 }
 
 impl LinkageApp {
-    /// Creates the app over the default scene (on the web, the URL's scene);
-    /// `exit_after_frames` closes the window after that many frames.
-    pub fn new(cc: &eframe::CreationContext<'_>, exit_after_frames: Option<u64>) -> Self {
+    /// Creates the app over the default scene (on the web, the URL's scene; on the
+    /// desktop, `start.scene`).
+    pub fn new(cc: &eframe::CreationContext<'_>, start: crate::StartOptions) -> Self {
         let gpu = match &cc.wgpu_render_state {
             Some(rs) => {
                 MechanismPipeline::install(rs);
@@ -130,13 +130,22 @@ impl LinkageApp {
             }
             None => false,
         };
-        let session = initial_session();
+        let session = match start.scene.as_deref().map(Session::open_builtin) {
+            Some(Ok(s)) => s,
+            Some(Err(e)) => {
+                log::error!("{e}; opening the default scene");
+                initial_session()
+            }
+            None => initial_session(),
+        };
+        let mut state = AppState::new(session);
+        state.playing = start.play;
         Self {
-            state: AppState::new(session),
+            state,
             shapes: SharedShapes::default(),
             gpu,
             frames_drawn: 0,
-            exit_after_frames,
+            exit_after_frames: start.exit_after_frames,
             #[cfg(target_arch = "wasm32")]
             url: crate::web::UrlSync::default(),
         }

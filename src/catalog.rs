@@ -35,3 +35,33 @@ pub const BUILTIN_SCENES: &[BuiltinScene] = &[
 pub fn builtin(key: &str) -> Option<&'static BuiltinScene> {
     BUILTIN_SCENES.iter().find(|s| s.key == key)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_catalog_lists_exactly_the_scene_files() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes");
+        let mut on_disk: Vec<String> = std::fs::read_dir(&dir)
+            .expect("assets/scenes")
+            .filter_map(|e| {
+                let name = e.ok()?.file_name().into_string().ok()?;
+                name.strip_suffix(".ron").map(str::to_string)
+            })
+            .collect();
+        let mut listed: Vec<String> = BUILTIN_SCENES.iter().map(|s| s.key.to_string()).collect();
+        on_disk.sort();
+        listed.sort();
+        assert_eq!(listed, on_disk);
+    }
+
+    #[test]
+    fn every_shipped_scene_opens_in_the_viewer() {
+        for s in BUILTIN_SCENES {
+            let session = crate::session::Session::open_builtin(s.key);
+            assert!(session.is_ok(), "{}: {:?}", s.key, session.err());
+        }
+        assert!(builtin("no_such_scene").is_none());
+    }
+}

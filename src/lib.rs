@@ -13,17 +13,36 @@ mod web;
 
 pub use app::LinkageApp;
 
-/// Reads `--exit-after-frames N` from the command line (for headless smoke runs).
-///
-/// Returns `None` when the flag is absent or its value is not a whole number.
-pub fn exit_after_frames_from_args(args: impl IntoIterator<Item = String>) -> Option<u64> {
-    let mut args = args.into_iter();
-    while let Some(arg) = args.next() {
-        if arg == "--exit-after-frames" {
-            return args.next().and_then(|n| n.parse().ok());
+/// How the desktop app starts (from its command line).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct StartOptions {
+    /// `--exit-after-frames N`: close after N frames and print the mean CPU time per
+    /// frame (headless smoke runs and measurements).
+    pub exit_after_frames: Option<u64>,
+    /// `--play`: start with the animation running.
+    pub play: bool,
+    /// `--scene KEY`: open this shipped scene instead of the default.
+    pub scene: Option<String>,
+}
+
+impl StartOptions {
+    /// Reads the options; unknown arguments and malformed values are ignored (the
+    /// window still opens).
+    pub fn from_args(args: impl IntoIterator<Item = String>) -> Self {
+        let mut out = Self::default();
+        let mut args = args.into_iter();
+        while let Some(arg) = args.next() {
+            match arg.as_str() {
+                "--exit-after-frames" => {
+                    out.exit_after_frames = args.next().and_then(|n| n.parse().ok());
+                }
+                "--play" => out.play = true,
+                "--scene" => out.scene = args.next(),
+                _ => {}
+            }
         }
+        out
     }
-    None
 }
 
 /// Starts the app on the page's `<canvas id="linkage_canvas">` (browser only).
@@ -48,7 +67,7 @@ pub fn start_web() {
             .start(
                 canvas,
                 eframe::WebOptions::default(),
-                Box::new(|cc| Ok(Box::new(LinkageApp::new(cc, None)))),
+                Box::new(|cc| Ok(Box::new(LinkageApp::new(cc, StartOptions::default())))),
             )
             .await;
         if let Err(err) = result {

@@ -10,16 +10,11 @@ fn main() -> eframe::Result {
             .with_inner_size([1100.0, 720.0]),
         ..Default::default()
     };
-    let exit_after_frames = linkage_lab::exit_after_frames_from_args(std::env::args());
+    let start = linkage_lab::StartOptions::from_args(std::env::args());
     eframe::run_native(
         "Linkage Lab",
         options,
-        Box::new(move |cc| {
-            Ok(Box::new(linkage_lab::LinkageApp::new(
-                cc,
-                exit_after_frames,
-            )))
-        }),
+        Box::new(move |cc| Ok(Box::new(linkage_lab::LinkageApp::new(cc, start)))),
     )
 }
 

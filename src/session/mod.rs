@@ -525,3 +525,56 @@ pub fn unit_label(scene: &SceneFile) -> &'static str {
         LengthUnit::Millimetre => "mm",
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_scene_computes_only_what_it_models() {
+        let kin = Session::open_builtin("slider_crank").expect("opens");
+        assert!(kin.dynamics().is_none());
+        assert!(kin.curves().torque_n_m.is_empty() && kin.curves().inertia_kg_m2.is_empty());
+
+        let ks = Session::open_builtin("die_cutter").expect("opens");
+        assert!(ks.dynamics().is_none());
+        assert!(ks.curves().torque_n_m.len() > 300, "torque over the cycle");
+        assert!(ks.curves().inertia_kg_m2.is_empty());
+
+        let dy = Session::open_builtin("gravity_flipper").expect("opens");
+        let run = dy.dynamics().expect("a run").as_ref().expect("runs");
+        // The CLI's DOP853 run reaches the end stop at t = 0.244660 s; rtol 1e-8 here.
+        assert!(
+            (run.duration_s() - 0.244660).abs() < 1e-5,
+            "{}",
+            run.duration_s()
+        );
+        assert!(!dy.curves().inertia_kg_m2.is_empty() && !dy.curves().moment_n_m.is_empty());
+    }
+
+    #[test]
+    fn non_finite_edits_leave_a_message_and_the_pose() {
+        let mut s = Session::open_builtin("quick_return").expect("opens");
+        let pose = s.pose().clone();
+        s.set_input_deg(f64::NAN);
+        assert!(s.message().expect("message").contains("not a number"));
+        s.set_length(0, f64::INFINITY);
+        assert!(s.message().expect("message").contains("positive length"));
+        s.set_spring_k(0, -1.0); // no spring: nothing to change, no panic
+        assert_eq!(s.pose(), &pose);
+    }
+
+    #[test]
+    fn playback_follows_the_run_and_loops() {
+        let mut s = Session::open_builtin("gravity_flipper").expect("opens");
+        let start = s.input_rad();
+        s.advance(0.1, 1.0);
+        assert!((s.time_s() - 0.1).abs() < 1e-12);
+        assert!(
+            s.input_rad() < start,
+            "the table falls: link 1 turns clockwise"
+        );
+        s.advance(10.0, 1.0);
+        assert_eq!(s.time_s(), 0.0, "loops after the end");
+    }
+}
