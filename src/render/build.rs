@@ -72,6 +72,8 @@ pub fn build(
         let q = pose.points[p].position;
         [q.x, q.y]
     };
+    let pos = |p: usize| cam.local(at(p));
+    let topo = s.topology();
     let mut push = |shape: Option<Shape>| out.extend(shape);
 
     // Ground pivots: a support triangle on a hatched base.
@@ -118,20 +120,12 @@ pub fn build(
     {
         let dir = sl.direction(&pose.links);
         let through = pose.links[sl.guide].world(&sl.through_local);
-        let name = &m.links[sl.slider].name;
         let travel = s
             .curves()
-            .outputs
-            .iter()
-            .find(|o| !o.is_angle && &o.name == name)
-            .map(|o| {
-                o.value
-                    .iter()
-                    .fold([f64::INFINITY, f64::NEG_INFINITY], |a, p| {
-                        [a[0].min(p[1]), a[1].max(p[1])]
-                    })
-            })
-            .filter(|t| t[0].is_finite())
+            .slide_travel_m
+            .get(i)
+            .copied()
+            .flatten()
             .unwrap_or([pose.slides[i].displacement_m; 2]);
         let margin = 4.0 * f64::from(pin);
         let a = through + dir * (travel[0] - margin);
@@ -168,55 +162,41 @@ pub fn build(
 
     // Links: bars, plates for three or more joints (or an offset tool point).
     for l in m.moving_links() {
-        let joints: Vec<usize> = m
-            .revolutes
-            .iter()
-            .filter(|r| r.a == l || r.b == l)
-            .map(|r| r.point)
-            .collect();
         let colour = if l == m.driver.link {
             colour::DRIVER
         } else {
             colour::LINK
         };
-        let pts: Vec<Vec2> = joints.iter().map(|&p| cam.local(at(p))).collect();
-        let others: Vec<Vec2> = m.links[l]
-            .points
-            .iter()
-            .filter(|(p, _)| !joints.contains(p))
-            .map(|&(p, _)| cam.local(at(p)))
-            .collect();
-        match pts.as_slice() {
-            [a, b, c, ..] => push(Shape::new(
+        let others = topo.link_others[l].iter().map(|&p| pos(p));
+        match topo.link_joints[l].as_slice() {
+            &[a, b, c, ..] => push(Shape::new(
                 Kind::Plate,
-                [*a, *b, *c],
+                [pos(a), pos(b), pos(c)],
                 bar,
                 colour::PLATE,
                 [0.0; 2],
             )),
-            [a, b] => {
+            &[a, b] => {
+                let (a, b) = (pos(a), pos(b));
                 let off_line = others
-                    .iter()
-                    .map(|p| (p, distance_to_line(*p, *a, *b)))
+                    .map(|p| (p, distance_to_line(p, a, b)))
                     .filter(|(_, d)| *d > 2.0 * bar)
                     .max_by(|x, y| x.1.total_cmp(&y.1));
                 match off_line {
                     Some((p, _)) => push(Shape::new(
                         Kind::Plate,
-                        [*a, *b, *p],
+                        [a, b, p],
                         bar,
                         colour::PLATE,
                         [0.0; 2],
                     )),
-                    None => push(Shape::new(Kind::Bar, [*a, *b, *a], bar, colour, [0.0; 2])),
+                    None => push(Shape::new(Kind::Bar, [a, b, a], bar, colour, [0.0; 2])),
                 }
             }
-            [a] => {
-                if let Some(far) = others
-                    .iter()
-                    .max_by(|x, y| x.distance(*a).total_cmp(&y.distance(*a)))
-                {
-                    push(Shape::new(Kind::Bar, [*a, *far, *a], bar, colour, [0.0; 2]));
+            &[a] => {
+                let a = pos(a);
+                if let Some(far) = others.max_by(|x, y| x.distance(a).total_cmp(&y.distance(a))) {
+                    push(Shape::new(Kind::Bar, [a, far, a], bar, colour, [0.0; 2]));
                 }
             }
             [] => {}
@@ -256,25 +236,21 @@ pub fn build(
         let c = cam.local(at(r.point));
         push(Shape::new(Kind::Pin, [c, c, c], pin, colour::PIN, [0.0; 2]));
     }
-    for (i, p) in m.points.iter().enumerate() {
-        let is_joint =
-            m.revolutes.iter().any(|r| r.point == i) || m.sliders.iter().any(|sl| sl.point == i);
-        if !is_joint && p.link != m.ground {
-            let c = cam.local(at(i));
-            push(Shape::new(
-                Kind::Pin,
-                [c, c, c],
-                0.45 * pin,
-                colour::MARK,
-                [0.0; 2],
-            ));
-        }
+    for &i in &topo.marks {
+        let c = pos(i);
+        push(Shape::new(
+            Kind::Pin,
+            [c, c, c],
+            0.45 * pin,
+            colour::MARK,
+            [0.0; 2],
+        ));
     }
 
     let mut scales = VectorScales::default();
     let arrow_r = (1.4 * m_per_px) as f32;
     let head = (9.0 * m_per_px) as f32;
-    let joint_points: Vec<usize> = joint_points(s);
+    let joint_points = &topo.joint_points;
     for (on, colour, field, scale) in [
         (layers.velocities, colour::VELOCITY, 0, &mut scales.velocity),
         (
@@ -302,7 +278,7 @@ pub fn build(
         }
         // The largest vector is drawn a third of the mechanism long.
         *scale = 0.33 * size / largest;
-        for &p in &joint_points {
+        for &p in joint_points {
             let v = vec_of(p) * *scale;
             if v.norm() < 2.0 * m_per_px {
                 continue;
@@ -319,20 +295,6 @@ pub fn build(
         }
     }
     scales
-}
-
-/// Points that are joints (pins and slider points), each once.
-pub fn joint_points(s: &Session) -> Vec<usize> {
-    let m = s.mechanism();
-    let mut out: Vec<usize> = m
-        .revolutes
-        .iter()
-        .map(|r| r.point)
-        .chain(m.sliders.iter().map(|sl| sl.point))
-        .collect();
-    out.sort_unstable();
-    out.dedup();
-    out
 }
 
 fn push_traces(push: &mut impl FnMut(Option<Shape>), s: &Session, cam: &Camera, radius: f32) {

@@ -56,6 +56,9 @@ pub struct Curves {
     pub inertia_kg_m2: Vec<[f64; 2]>,
     /// Dynamic scenes: equivalent moment M(q) at rest, N·m.
     pub moment_n_m: Vec<[f64; 2]>,
+    /// Per slider: the least and greatest displacement over the cycle, m (`None` if
+    /// no position gave a finite one).
+    pub slide_travel_m: Vec<Option<[f64; 2]>>,
     /// Bounding box of every pin over the cycle, m: [min x, min y, max x, max y].
     pub bounds_m: [f64; 4],
     /// Sweep range, rad.
@@ -100,6 +103,7 @@ impl Curves {
             outputs,
             transmission_deg,
             traces: traces(k, &sw),
+            slide_travel_m: slide_travel(k, &sw),
             bounds_m: bounds(&sw),
             range_rad: sw.range,
             full_rotation,
@@ -224,6 +228,22 @@ fn traces(k: &Kinematics, sw: &Sweep) -> Vec<Trace> {
                 .map(|s| [s.points[i].position.x, s.points[i].position.y])
                 .filter(|p| p[0].is_finite() && p[1].is_finite())
                 .collect(),
+        })
+        .collect()
+}
+
+fn slide_travel(k: &Kinematics, sw: &Sweep) -> Vec<Option<[f64; 2]>> {
+    (0..k.mechanism().sliders.len())
+        .map(|i| {
+            let t = sw
+                .solutions
+                .iter()
+                .map(|s| s.slides[i].displacement_m)
+                .filter(|d| d.is_finite())
+                .fold([f64::INFINITY, f64::NEG_INFINITY], |a, d| {
+                    [a[0].min(d), a[1].max(d)]
+                });
+            t[0].is_finite().then_some(t)
         })
         .collect()
 }

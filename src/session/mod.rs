@@ -6,6 +6,7 @@
 pub mod curves;
 pub mod dynamic_run;
 pub mod params;
+pub mod topology;
 pub mod url_state;
 
 use linkage::analysis::{Report, report};
@@ -18,6 +19,7 @@ use crate::catalog::builtin;
 use curves::Curves;
 use dynamic_run::{DynamicRun, IntegratorChoice};
 use params::{LengthParam, length_params};
+use topology::Topology;
 
 /// Bisection steps when searching the assembly limit of a length: 2^-40 of the
 /// interval is far below what a slider can set.
@@ -39,6 +41,7 @@ pub struct Session {
     scene: SceneFile,
     kin: Kinematics,
     pose: Solution,
+    topology: Topology,
     lengths: Vec<LengthParam>,
     report: Result<Report, String>,
     curves: Curves,
@@ -78,6 +81,7 @@ impl Session {
             scene,
             kin: built.kin,
             pose: built.pose,
+            topology: built.topology,
             lengths,
             report: built.report,
             curves: built.curves,
@@ -116,6 +120,11 @@ impl Session {
     /// The solver (for its path and tolerances).
     pub fn kinematics(&self) -> &Kinematics {
         &self.kin
+    }
+
+    /// Joints and links by index (fixed per mechanism).
+    pub fn topology(&self) -> &Topology {
+        &self.topology
     }
 
     /// The current pose: always a valid, solved one.
@@ -431,6 +440,7 @@ impl Session {
         self.scene = scene;
         self.kin = built.kin;
         self.pose = built.pose;
+        self.topology = built.topology;
         self.report = built.report;
         self.curves = built.curves;
         self.dynamics = built.dynamics;
@@ -475,6 +485,7 @@ impl Session {
 struct Built {
     kin: Kinematics,
     pose: Solution,
+    topology: Topology,
     report: Result<Report, String>,
     curves: Curves,
     dynamics: Option<Result<DynamicRun, String>>,
@@ -498,6 +509,7 @@ impl Built {
         let dynamics =
             (scene.models == Models::Dynamics).then(|| DynamicRun::compute(&kin, integrator));
         Ok(Self {
+            topology: Topology::of(kin.mechanism()),
             kin,
             pose,
             report,

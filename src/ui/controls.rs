@@ -28,7 +28,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
 
     let [lo, hi] = st.session.input_range_deg();
     let mut input = st.session.input_rad().to_degrees();
-    if st.session.input_range_deg() == [0.0, 360.0] {
+    if st.session.curves().full_rotation {
         input = input.rem_euclid(360.0);
     }
     let slider = egui::Slider::new(&mut input, lo..=hi).text(CRANK_LABEL);

@@ -7,7 +7,6 @@ use eframe::egui::{self, Color32, Pos2, Stroke, Vec2};
 use linkage::polygon::{Term, VectorEquation};
 
 use crate::app::AppState;
-use crate::render::build::joint_points;
 
 /// How a polygon segment is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -128,9 +127,10 @@ pub fn panel(ui: &mut egui::Ui, st: &AppState) {
     let s = &st.session;
     let pose = s.pose();
     let names = |f: &dyn Fn(usize) -> [f64; 2]| -> Vec<(String, [f64; 2])> {
-        joint_points(s)
-            .into_iter()
-            .map(|p| (s.mechanism().points[p].name.clone(), f(p)))
+        s.topology()
+            .joint_points
+            .iter()
+            .map(|&p| (s.mechanism().points[p].name.clone(), f(p)))
             .collect()
     };
     let v_abs = names(&|p| {

@@ -6,7 +6,7 @@ use eframe::egui::{self, Align2, FontId, Sense};
 use eframe::egui_wgpu;
 
 use crate::app::AppState;
-use crate::render::build::{build, joint_points};
+use crate::render::build::build;
 use crate::render::pipeline::{MechanismCallback, SharedShapes};
 
 /// Draws the view; returns the µs spent building its shapes.
@@ -77,7 +77,7 @@ pub fn show(ui: &mut egui::Ui, st: &mut AppState, shapes: &SharedShapes, gpu: bo
     let m = st.session.mechanism();
     let font = FontId::proportional(13.0);
     let offset = egui::vec2(8.0, -8.0);
-    for p in joint_points(&st.session) {
+    for &p in &st.session.topology().joint_points {
         let q = pose.points[p].position;
         if q.x.is_finite() && q.y.is_finite() {
             let at = st.camera.to_screen([q.x, q.y], rect) + offset;

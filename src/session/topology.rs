@@ -1,0 +1,61 @@
+//! Which points are joints and which joints each link carries. It depends only on the
+//! mechanism, so it is derived once per edit instead of in every frame's drawing.
+
+use linkage::Mechanism;
+
+/// The joint structure of one mechanism, by point and link index.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Topology {
+    /// Points that are joints (pins and slider points), each once, ascending.
+    pub joint_points: Vec<usize>,
+    /// Per link: the points of its revolute joints, in revolute order.
+    pub link_joints: Vec<Vec<usize>>,
+    /// Per link: its other points (tool points, centroids, spring anchors).
+    pub link_others: Vec<Vec<usize>>,
+    /// Points on moving links that are not joints: drawn as marks.
+    pub marks: Vec<usize>,
+}
+
+impl Topology {
+    /// The topology of `m`.
+    pub fn of(m: &Mechanism) -> Self {
+        let mut joint_points: Vec<usize> = m
+            .revolutes
+            .iter()
+            .map(|r| r.point)
+            .chain(m.sliders.iter().map(|sl| sl.point))
+            .collect();
+        joint_points.sort_unstable();
+        joint_points.dedup();
+        let link_joints: Vec<Vec<usize>> = (0..m.links.len())
+            .map(|l| {
+                m.revolutes
+                    .iter()
+                    .filter(|r| r.a == l || r.b == l)
+                    .map(|r| r.point)
+                    .collect()
+            })
+            .collect();
+        let link_others = m
+            .links
+            .iter()
+            .zip(&link_joints)
+            .map(|(link, joints)| {
+                link.points
+                    .iter()
+                    .map(|&(p, _)| p)
+                    .filter(|p| !joints.contains(p))
+                    .collect()
+            })
+            .collect();
+        let marks = (0..m.points.len())
+            .filter(|i| joint_points.binary_search(i).is_err() && m.points[*i].link != m.ground)
+            .collect();
+        Self {
+            joint_points,
+            link_joints,
+            link_others,
+            marks,
+        }
+    }
+}
