@@ -5,6 +5,8 @@
 
 mod app;
 pub mod catalog;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod file_dialog;
 pub mod render;
 pub mod session;
 pub mod ui;

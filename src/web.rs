@@ -62,8 +62,9 @@ pub fn download(file_name: &str, mime: &str, text: &str) -> Result<(), String> {
 /// A file the user picked, read as text, waiting for the next frame to take it.
 pub type Upload = Rc<RefCell<Option<(String, String)>>>;
 
-/// Opens the browser's file picker; the chosen file's text lands in `slot`.
-pub fn pick_file(slot: &Upload) -> Result<(), String> {
+/// Opens the browser's file picker; the chosen file's text lands in `slot`, and `ctx`
+/// is asked to repaint so that a paused app takes it at once.
+pub fn pick_file(slot: &Upload, ctx: &eframe::egui::Context) -> Result<(), String> {
     let err = |e: JsValue| format!("file picker failed: {e:?}");
     let document = web_sys::window()
         .and_then(|w| w.document())
@@ -76,6 +77,7 @@ pub fn pick_file(slot: &Upload) -> Result<(), String> {
     input.set_type("file");
     input.set_accept(".ron,text/plain");
     let slot = slot.clone();
+    let ctx = ctx.clone();
     let picked = input.clone();
     let on_change = Closure::<dyn FnMut()>::new(move || {
         let Some(file) = picked.files().and_then(|f| f.get(0)) else {
@@ -83,10 +85,12 @@ pub fn pick_file(slot: &Upload) -> Result<(), String> {
         };
         let name = file.name();
         let slot = slot.clone();
+        let ctx = ctx.clone();
         let promise = file.text();
         wasm_bindgen_futures::spawn_local(async move {
             if let Ok(text) = wasm_bindgen_futures::JsFuture::from(promise).await {
                 *slot.borrow_mut() = Some((name, text.as_string().unwrap_or_default()));
+                ctx.request_repaint();
             }
         });
     });

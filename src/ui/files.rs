@@ -1,6 +1,6 @@
-//! Open and save a scene file, export the sweep as CSV. On the desktop a path prompt
-//! reads and writes the file system; in the browser the file picker uploads and the
-//! browser downloads.
+//! Open and save a scene file, export the sweep as CSV. On the desktop the system's
+//! file dialog chooses the path (a typed path where no dialog can be shown); in the
+//! browser the file picker uploads and the browser downloads.
 
 use eframe::egui;
 
@@ -18,32 +18,115 @@ pub enum FileAction {
     ExportCsv,
 }
 
-/// File prompt state.
+impl FileAction {
+    /// The dialog's title.
+    pub fn title(self) -> &'static str {
+        match self {
+            Self::Open => "Open scene file",
+            Self::SaveScene => "Save scene file",
+            Self::ExportCsv => "Export sweep CSV",
+        }
+    }
+
+    /// The file type read or written, as (name, extension without the dot).
+    pub fn file_type(self) -> (&'static str, &'static str) {
+        match self {
+            Self::Open | Self::SaveScene => ("Linkage scene", "ron"),
+            Self::ExportCsv => ("CSV table", "csv"),
+        }
+    }
+}
+
+/// File dialog, prompt and upload state.
 #[derive(Default)]
 pub struct Files {
-    /// The open prompt (desktop): action and path typed so far.
+    /// The typed-path prompt (desktop, where no dialog can be shown): action and path.
     pub prompt: Option<(FileAction, String)>,
+    /// The desktop's file dialog.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub dialog: DesktopDialog,
     /// A file the browser's picker delivered, not yet opened.
     #[cfg(target_arch = "wasm32")]
     pub upload: crate::web::Upload,
 }
 
-/// The file buttons of the top bar.
-pub fn buttons(ui: &mut egui::Ui, st: &mut AppState) {
+/// The desktop's file dialog: who asks, and the answer on its way back (the dialog
+/// runs on its own thread so that the window keeps drawing).
+#[cfg(not(target_arch = "wasm32"))]
+pub struct DesktopDialog {
+    /// Asks the user for a path (the system dialog; tests put their own).
+    pub chooser: std::sync::Arc<dyn crate::file_dialog::PathChooser>,
+    /// The action whose dialog is open, if one is.
+    pub waiting: Option<FileAction>,
+    /// The folder of the last chosen file, where the next dialog starts.
+    pub last_dir: Option<std::path::PathBuf>,
+    send: std::sync::mpsc::Sender<(FileAction, crate::file_dialog::PathAnswer)>,
+    receive: std::sync::mpsc::Receiver<(FileAction, crate::file_dialog::PathAnswer)>,
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+impl Default for DesktopDialog {
+    fn default() -> Self {
+        let (send, receive) = std::sync::mpsc::channel();
+        Self {
+            chooser: std::sync::Arc::new(crate::file_dialog::SystemDialog),
+            waiting: None,
+            last_dir: None,
+            send,
+            receive,
+        }
+    }
+}
+
+/// The file buttons of the top bar; `frame` is the window a dialog stays above.
+pub fn buttons(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
     for (label, action) in [
         ("Open scene…", FileAction::Open),
         ("Save scene…", FileAction::SaveScene),
         ("Export CSV…", FileAction::ExportCsv),
     ] {
         if ui.button(label).clicked() {
-            start(st, action);
+            start(ui.ctx(), st, action, frame);
         }
     }
-    #[cfg(target_arch = "wasm32")]
-    {
-        let uploaded = st.files.upload.borrow_mut().take();
-        if let Some((name, text)) = uploaded {
-            open_text(st, name, &text);
+    take_answers(st);
+}
+
+/// Acts on a file the browser delivered.
+#[cfg(target_arch = "wasm32")]
+fn take_answers(st: &mut AppState) {
+    let uploaded = st.files.upload.borrow_mut().take();
+    if let Some((name, text)) = uploaded {
+        open_text(st, name, &text);
+    }
+}
+
+/// Acts on the desktop dialog's answer, once it has come.
+#[cfg(not(target_arch = "wasm32"))]
+fn take_answers(st: &mut AppState) {
+    use crate::file_dialog::PathAnswer;
+    while let Ok((action, answer)) = st.files.dialog.receive.try_recv() {
+        st.files.dialog.waiting = None;
+        match answer {
+            PathAnswer::Chosen(path) => {
+                let path = match action {
+                    FileAction::Open => path,
+                    FileAction::SaveScene | FileAction::ExportCsv => {
+                        crate::file_dialog::with_extension(path, action.file_type().1)
+                    }
+                };
+                st.files.dialog.last_dir = path.parent().map(std::path::Path::to_path_buf);
+                run(st, action, &path);
+            }
+            PathAnswer::Cancelled => st.status = Some("no file chosen".into()),
+            PathAnswer::Unavailable => {
+                st.status = Some(
+                    "no file dialog could be shown (it needs xdg-desktop-portal or zenity): \
+                     type the path instead"
+                        .into(),
+                );
+                st.files.prompt = Some((action, default_name(st, action)));
+            }
         }
     }
 }
@@ -73,21 +156,50 @@ pub fn open_text(st: &mut AppState, name: String, text: &str) {
     match Session::open_text(SceneSource::File(name.clone()), text) {
         Ok(s) => {
             st.open(s);
+            // Logged as well as shown: the browser test reads the console.
+            log::info!("opened {name}");
             st.status = Some(format!("opened {name}"));
         }
-        Err(e) => st.status = Some(format!("{name}: {e}")),
+        Err(e) => {
+            log::warn!("{name}: {e}");
+            st.status = Some(format!("{name}: {e}"));
+        }
     }
 }
 
+/// Opens the system's dialog for `action`; its answer comes back in a later frame.
 #[cfg(not(target_arch = "wasm32"))]
-fn start(st: &mut AppState, action: FileAction) {
-    st.files.prompt = Some((action, default_name(st, action)));
+fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, frame: &eframe::Frame) {
+    use crate::file_dialog::PathRequest;
+    if st.files.dialog.waiting.is_some() {
+        st.status = Some("a file dialog is already open".into());
+        return;
+    }
+    let request = PathRequest {
+        action,
+        suggested_name: default_name(st, action),
+        directory: st.files.dialog.last_dir.clone(),
+    };
+    let send = st.files.dialog.send.clone();
+    let ctx = ctx.clone();
+    st.files.dialog.waiting = Some(action);
+    st.status = Some(format!("{}: waiting for the file dialog", action.title()));
+    st.files.dialog.chooser.clone().choose(
+        request,
+        Some(frame),
+        Box::new(move |answer| {
+            // The receiver lives as long as the app; a closed app needs no answer.
+            let _ = send.send((action, answer));
+            ctx.request_repaint();
+        }),
+    );
+    take_answers(st);
 }
 
 #[cfg(target_arch = "wasm32")]
-fn start(st: &mut AppState, action: FileAction) {
+fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, _frame: &eframe::Frame) {
     let result = match action {
-        FileAction::Open => crate::web::pick_file(&st.files.upload),
+        FileAction::Open => crate::web::pick_file(&st.files.upload, ctx),
         FileAction::SaveScene | FileAction::ExportCsv => {
             let mime = if action == FileAction::ExportCsv {
                 "text/csv"
@@ -109,16 +221,12 @@ pub fn prompt_window(ctx: &egui::Context, st: &mut AppState) {
     let Some((action, mut path)) = st.files.prompt.take() else {
         return;
     };
-    let title = match action {
-        FileAction::Open => "Open scene file",
-        FileAction::SaveScene => "Save scene file",
-        FileAction::ExportCsv => "Export sweep CSV",
-    };
+    let title = action.title();
     let mut keep = true;
     let mut go = false;
     egui::Window::new(title).collapsible(false).show(ctx, |ui| {
-        ui.label("Path (relative to the working directory):");
-        let edit = ui.text_edit_singleline(&mut path);
+        let label = ui.label("Path (relative to the working directory):");
+        let edit = ui.text_edit_singleline(&mut path).labelled_by(label.id);
         if edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
             go = true;
         }
@@ -128,7 +236,7 @@ pub fn prompt_window(ctx: &egui::Context, st: &mut AppState) {
         });
     });
     if go {
-        run(st, action, &path);
+        run(st, action, std::path::Path::new(&path));
     } else if keep {
         st.files.prompt = Some((action, path));
     }
@@ -138,22 +246,23 @@ pub fn prompt_window(ctx: &egui::Context, st: &mut AppState) {
 pub fn prompt_window(_ctx: &egui::Context, _st: &mut AppState) {}
 
 #[cfg(not(target_arch = "wasm32"))]
-fn run(st: &mut AppState, action: FileAction, path: &str) {
-    let name = std::path::Path::new(path)
+fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {
+    let shown = path.display();
+    let name = path
         .file_name()
-        .map_or_else(|| path.to_string(), |n| n.to_string_lossy().into_owned());
+        .map_or_else(|| shown.to_string(), |n| n.to_string_lossy().into_owned());
     match action {
         FileAction::Open => match std::fs::read_to_string(path) {
             Ok(text) => open_text(st, name, &text),
-            Err(e) => st.status = Some(format!("cannot read {path}: {e}")),
+            Err(e) => st.status = Some(format!("cannot read {shown}: {e}")),
         },
         FileAction::SaveScene | FileAction::ExportCsv => {
             st.status = Some(
                 match contents(st, action)
                     .and_then(|t| std::fs::write(path, t).map_err(|e| e.to_string()))
                 {
-                    Ok(()) => format!("wrote {path}"),
-                    Err(e) => format!("cannot write {path}: {e}"),
+                    Ok(()) => format!("wrote {shown}"),
+                    Err(e) => format!("cannot write {shown}: {e}"),
                 },
             );
         }

@@ -23,10 +23,13 @@ fn names() -> &'static [String] {
 }
 
 /// The top bar.
-pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, _frame: &mut eframe::Frame) {
+pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
     egui::Panel::top("scene_bar").show(ui, |ui| {
         ui.horizontal_wrapped(|ui| {
             ui.strong("Linkage Lab");
+            // The file buttons come before the scene's name, whose width varies, so
+            // that they stay in place whichever scene is open.
+            files::buttons(ui, st, frame);
             let current = match st.session.source() {
                 SceneSource::Builtin(key) => BUILTIN_SCENES
                     .iter()
@@ -51,7 +54,6 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, _frame: &mut eframe::Frame)
                     Err(e) => st.status = Some(e),
                 }
             }
-            files::buttons(ui, st);
             if ui.button("Reset edits").clicked() {
                 st.session.reset();
             }

@@ -1,10 +1,13 @@
 // Real-browser test of the web demo: Debian's Chromium, headless, driven by
 // playwright-core (no browser download). Checks: no console errors, a canvas that is
-// not blank, and that dragging the crank slider changes the picture. Measures time
-// to first frame (the app logs it) and frames per second while the mechanism plays.
+// not blank, that dragging the crank slider changes the picture, that Save and Export
+// download the scene and the sweep CSV, and that Open uploads a scene file (the saved
+// one, then another scene, which changes the picture). Measures time to first frame
+// (the app logs it) and frames per second while the mechanism plays.
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
 import { chromium } from 'playwright-core';
 import { PNG } from 'pngjs';
+import { readFileSync } from 'node:fs';
 
 const url = process.argv[2] ?? 'http://127.0.0.1:8917/';
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
@@ -37,14 +40,19 @@ const browser = await chromium.launch({
 });
 const page = await browser.newPage({ viewport: { width: 1500, height: 950 }, deviceScaleFactor: 1 });
 const errors = [];
+const logged = [];
 let firstFrameMs = null;
 page.on('console', (m) => {
   const text = m.text();
+  logged.push(text);
   if (m.type() === 'error') errors.push(text);
   const hit = /first frame at ([0-9.]+) ms/.exec(text);
   if (hit) firstFrameMs = Number(hit[1]);
 });
 page.on('pageerror', (e) => errors.push(`pageerror: ${e.message}`));
+// Listening from the start makes Playwright intercept file choosers before any click:
+// a listener added together with the click can come too late for a quick app.
+page.on('filechooser', () => {});
 
 const t0 = Date.now();
 await page.goto(url, { waitUntil: 'load' });
@@ -95,10 +103,52 @@ for (let i = 0; i < 20 && played < 2000; i++) {
 await page.mouse.click(27, 61); // pause
 if (played < 2000) fail(`playing changed only ${played} pixels`);
 
+// The top bar's file buttons (centres at 1500x950, one pixel per point).
+const OPEN = [133, 12], SAVE = [235, 12], EXPORT = [336, 12];
+const download = async ([x, y]) => {
+  const [dl] = await Promise.all([page.waitForEvent('download', { timeout: 20000 }), page.mouse.click(x, y)]);
+  return { name: dl.suggestedFilename(), text: readFileSync(await dl.path(), 'utf8') };
+};
+const waitForLog = async (needle) => {
+  for (let i = 0; i < 100; i++) {
+    if (logged.some((t) => t.includes(needle))) return true;
+    await page.waitForTimeout(100);
+  }
+  return false;
+};
+const upload = async (name, text) => {
+  const [chooser] = await Promise.all([page.waitForEvent('filechooser', { timeout: 20000 }), page.mouse.click(...OPEN)]);
+  await chooser.setFiles({ name, mimeType: 'text/plain', buffer: Buffer.from(text) });
+  if (!(await waitForLog(`opened ${name}`))) fail(`uploading ${name} did not open it`);
+};
+
+const csv = await download(EXPORT);
+const csvRows = csv.text.trim().split('\n').length;
+if (csv.name !== 'die_cutter_sweep.csv') fail(`CSV download named ${csv.name}`);
+if (!csv.text.startsWith('input_rad,') || csvRows < 100) fail(`CSV download: ${csvRows} rows, starts ${csv.text.slice(0, 40)}`);
+const saved = await download(SAVE);
+if (saved.name !== 'die_cutter.ron') fail(`scene download named ${saved.name}`);
+if (!/\bname:/.test(saved.text)) fail(`scene download is no scene: ${saved.text.slice(0, 80)}`);
+
+// The saved scene opens again; then another shipped scene changes the picture.
+await upload('saved_cutter.ron', saved.text);
+await page.waitForTimeout(800);
+const cutter = await shot('reopened');
+const sliderCrank = readFileSync(new URL('../../assets/scenes/slider_crank.ron', import.meta.url), 'utf8');
+await upload('slider_crank.ron', sliderCrank);
+let reopened = 0;
+for (let i = 0; i < 20 && reopened < 2000; i++) {
+  await page.waitForTimeout(400);
+  reopened = differing(cutter, await shot('uploaded'));
+}
+if (reopened < 2000) fail(`opening slider_crank.ron changed only ${reopened} pixels`);
+
 if (errors.length) fail(`console errors:\n  ${errors.join('\n  ')}`);
 console.log(JSON.stringify({
   url, first_frame_ms: firstFrameMs, canvas_drawn_fraction: Number(coverage.toFixed(3)),
   pixels_changed_by_slider_drag: changed, pixels_changed_by_play: played,
-  fps_playing: Number(fps.toFixed(1)), console_errors: errors.length,
+  fps_playing: Number(fps.toFixed(1)), csv_download_rows: csvRows,
+  scene_download_bytes: saved.text.length, pixels_changed_by_upload: reopened,
+  console_errors: errors.length,
 }));
 await browser.close();

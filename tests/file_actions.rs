@@ -1,0 +1,196 @@
+//! The desktop's file actions driven through the top bar's buttons (egui_kittest),
+//! with the file dialog answered by the test: open reads the chosen scene, save writes
+//! a scene that opens again to the same mechanism, export writes the sweep CSV, a
+//! cancelled dialog changes nothing, and where no dialog can be shown a typed path
+//! does the same job.
+
+#![cfg(not(target_arch = "wasm32"))]
+
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex};
+
+use eframe::egui;
+use egui::accesskit::Role;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable as _;
+use linkage_lab::file_dialog::{ParentWindow, PathAnswer, PathChooser, PathRequest, Reply};
+use linkage_lab::session::SceneSource;
+use linkage_lab::ui::files::FileAction;
+use linkage_lab::{LinkageApp, StartOptions};
+
+/// A dialog that gives a fixed answer at once and remembers what it was asked.
+struct Scripted {
+    answer: PathAnswer,
+    asked: Mutex<Vec<PathRequest>>,
+}
+
+impl PathChooser for Scripted {
+    fn choose(&self, request: PathRequest, _parent: Option<&dyn ParentWindow>, reply: Reply) {
+        self.asked.lock().expect("not poisoned").push(request);
+        reply(self.answer.clone());
+    }
+}
+
+/// The app (no GPU needed: these tests read state and labels) with `answer` scripted.
+fn harness_answering(answer: PathAnswer) -> (Harness<'static, LinkageApp>, Arc<Scripted>) {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1500.0, 950.0))
+        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
+    let dialog = Arc::new(Scripted {
+        answer,
+        asked: Mutex::new(Vec::new()),
+    });
+    h.state_mut().state.files.dialog.chooser = dialog.clone();
+    h.state_mut().state.show_timings = false;
+    h.run();
+    (h, dialog)
+}
+
+fn click(h: &mut Harness<'static, LinkageApp>, label: &str) {
+    h.get_by_role_and_label(Role::Button, label).click();
+    h.run();
+}
+
+fn status(h: &Harness<'static, LinkageApp>) -> String {
+    h.state().state.status.clone().unwrap_or_default()
+}
+
+/// A fresh folder for one test's files.
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("linkage-lab-{test}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    dir
+}
+
+fn shipped(file: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("assets/scenes")
+        .join(file)
+}
+
+#[test]
+fn open_reads_the_scene_the_dialog_chose() {
+    let path = shipped("slider_crank.ron");
+    let (mut h, dialog) = harness_answering(PathAnswer::Chosen(path.clone()));
+    click(&mut h, "Open scene…");
+    let asked = dialog.asked.lock().expect("not poisoned").clone();
+    assert_eq!(asked.len(), 1);
+    assert_eq!(asked[0].action, FileAction::Open);
+    let st = &h.state().state;
+    assert_eq!(
+        st.session.source(),
+        &SceneSource::File("slider_crank.ron".into())
+    );
+    let text = std::fs::read_to_string(&path).expect("shipped scene");
+    let expected = linkage::SceneFile::parse(&text).expect("parses");
+    assert_eq!(st.session.scene(), &expected);
+    assert_eq!(status(&h), "opened slider_crank.ron");
+    assert!(h.query_by_label("opened slider_crank.ron").is_some());
+    // The next dialog starts where this file was.
+    assert_eq!(
+        h.state().state.files.dialog.last_dir.as_deref(),
+        path.parent(),
+        "last folder"
+    );
+}
+
+#[test]
+fn save_writes_a_scene_that_reopens_to_the_same_mechanism() {
+    let dir = scratch("save");
+    // The user typed a name without extension: the scene still lands in a .ron file.
+    let (mut h, dialog) = harness_answering(PathAnswer::Chosen(dir.join("my_cutter")));
+    let edited = {
+        let session = &mut h.state_mut().state.session;
+        let first = session.lengths()[0]
+            .value(session.scene())
+            .expect("a length");
+        session.set_length(0, 1.02 * first);
+        assert_eq!(session.message(), None, "a 2 % longer link assembles");
+        assert_ne!(session.scene(), session.original(), "edited");
+        session.scene().clone()
+    };
+    click(&mut h, "Save scene…");
+    let asked = dialog.asked.lock().expect("not poisoned").clone();
+    assert_eq!(asked[0].action, FileAction::SaveScene);
+    assert_eq!(asked[0].suggested_name, "die_cutter.ron");
+    let written = dir.join("my_cutter.ron");
+    assert_eq!(status(&h), format!("wrote {}", written.display()));
+    let text = std::fs::read_to_string(&written).expect("the scene was written");
+    assert_eq!(linkage::SceneFile::parse(&text).expect("parses"), edited);
+
+    // Opening the written file through the dialog gives the edited mechanism back.
+    let (mut h, _) = harness_answering(PathAnswer::Chosen(written));
+    click(&mut h, "Open scene…");
+    assert_eq!(h.state().state.session.scene(), &edited);
+    std::fs::remove_dir_all(dir).expect("clean up");
+}
+
+#[test]
+fn export_writes_the_sweep_csv() {
+    let dir = scratch("export");
+    let path = dir.join("sweep.csv");
+    let (mut h, dialog) = harness_answering(PathAnswer::Chosen(path.clone()));
+    click(&mut h, "Export CSV…");
+    let asked = dialog.asked.lock().expect("not poisoned").clone();
+    assert_eq!(asked[0].action, FileAction::ExportCsv);
+    assert_eq!(asked[0].suggested_name, "die_cutter_sweep.csv");
+    let text = std::fs::read_to_string(&path).expect("the CSV was written");
+    assert_eq!(
+        text,
+        h.state().state.session.sweep_csv().expect("sweeps"),
+        "file = the session's sweep"
+    );
+    assert!(text.starts_with("input_rad,"), "{}", &text[..40]);
+    std::fs::remove_dir_all(dir).expect("clean up");
+}
+
+#[test]
+fn a_cancelled_dialog_changes_nothing() {
+    let (mut h, _) = harness_answering(PathAnswer::Cancelled);
+    let before = h.state().state.session.scene().clone();
+    click(&mut h, "Open scene…");
+    assert_eq!(h.state().state.session.scene(), &before);
+    assert_eq!(status(&h), "no file chosen");
+    assert!(h.state().state.files.prompt.is_none());
+    assert!(h.state().state.files.dialog.waiting.is_none());
+}
+
+#[test]
+fn without_a_dialog_a_typed_path_opens_the_scene() {
+    let (mut h, _) = harness_answering(PathAnswer::Unavailable);
+    click(&mut h, "Open scene…");
+    let msg = status(&h);
+    assert!(msg.contains("xdg-desktop-portal or zenity"), "{msg}");
+    assert!(
+        h.query_by_label("Open scene file").is_some(),
+        "prompt window"
+    );
+    let path = shipped("quick_return.ron");
+    h.get_by_role(Role::TextInput)
+        .set_text_value_accesskit(path.to_str().expect("utf-8 path"));
+    h.run();
+    click(&mut h, "OK");
+    assert_eq!(
+        h.state().state.session.source(),
+        &SceneSource::File("quick_return.ron".into())
+    );
+    assert!(h.state().state.files.prompt.is_none());
+}
+
+#[test]
+fn an_unreadable_file_is_named_in_the_message_and_the_scene_stays() {
+    let dir = scratch("unreadable");
+    let broken = dir.join("broken.ron");
+    std::fs::write(&broken, "(name: \"half a scene\", links: [").expect("write");
+    let (mut h, _) = harness_answering(PathAnswer::Chosen(broken));
+    let before = h.state().state.session.scene().clone();
+    click(&mut h, "Open scene…");
+    let msg = status(&h);
+    assert!(msg.starts_with("broken.ron: "), "{msg}");
+    assert!(
+        msg.contains("line 1"),
+        "the parse error gives its place: {msg}"
+    );
+    assert_eq!(h.state().state.session.scene(), &before);
+    std::fs::remove_dir_all(dir).expect("clean up");
+}
