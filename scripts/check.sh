@@ -35,5 +35,8 @@ done
 echo "== native smoke run (Xvfb)"
 bash scripts/smoke_native.sh
 
+echo "== native file dialog (zenity under Xvfb)"
+bash scripts/smoke_file_dialog.sh
+
 echo "== web demo in headless Chromium"
 bash scripts/browser_test.sh

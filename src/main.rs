@@ -4,6 +4,12 @@
 
 #[cfg(not(target_arch = "wasm32"))]
 fn main() -> eframe::Result {
+    // The app's own messages (opened files, scenes that failed) at info, the
+    // libraries' only when they warn; RUST_LOG overrides.
+    env_logger::Builder::from_env(
+        env_logger::Env::default().default_filter_or("warn,linkage_lab=info"),
+    )
+    .init();
     let options = eframe::NativeOptions {
         viewport: eframe::egui::ViewportBuilder::default()
             .with_title("Linkage Lab")

@@ -73,9 +73,9 @@ fn fake_zenity(case: &str, answer: &str, status: i32, delay_s: f64) -> PathBuf {
 fn run_child(action: &str, path_dirs: &[&Path], keep_system_path: bool) -> String {
     let mut path: Vec<PathBuf> = path_dirs.iter().map(|d| d.to_path_buf()).collect();
     if keep_system_path {
-        // The system PATH, minus any folder with a real zenity in it.
+        // After the stand-in, which so shadows a real zenity (the script needs sleep).
         let system = std::env::var_os("PATH").unwrap_or_default();
-        path.extend(std::env::split_paths(&system).filter(|d| !d.join("zenity").exists()));
+        path.extend(std::env::split_paths(&system));
     }
     let out = Command::new(std::env::current_exe().expect("test binary"))
         .args(["dialog_in_child", "--exact", "--ignored", "--nocapture"])

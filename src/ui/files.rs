@@ -257,14 +257,14 @@ fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {
             Err(e) => st.status = Some(format!("cannot read {shown}: {e}")),
         },
         FileAction::SaveScene | FileAction::ExportCsv => {
-            st.status = Some(
-                match contents(st, action)
-                    .and_then(|t| std::fs::write(path, t).map_err(|e| e.to_string()))
-                {
-                    Ok(()) => format!("wrote {shown}"),
-                    Err(e) => format!("cannot write {shown}: {e}"),
-                },
-            );
+            let written = contents(st, action)
+                .and_then(|t| std::fs::write(path, t).map_err(|e| e.to_string()));
+            let message = match written {
+                Ok(()) => format!("wrote {shown}"),
+                Err(e) => format!("cannot write {shown}: {e}"),
+            };
+            log::info!("{message}");
+            st.status = Some(message);
         }
     }
 }
