@@ -68,27 +68,32 @@ impl PathChooser for SystemDialog {
         }
         // The future is made here, on the UI thread (macOS requires it), and awaited
         // on a helper thread so that the window keeps drawing while the dialog is open.
-        let answer = match request.action {
-            FileAction::Open => dialog.pick_file(),
+        let pending: PendingDialog = match request.action {
+            FileAction::Open => Box::pin(dialog.pick_file()),
             FileAction::SaveScene | FileAction::ExportCsv => {
-                let named = dialog.set_file_name(&request.suggested_name);
-                let save = named.save_file();
-                return spawn_waiting(Box::pin(save), reply);
+                Box::pin(dialog.set_file_name(&request.suggested_name).save_file())
             }
         };
-        spawn_waiting(Box::pin(answer), reply);
+        spawn_waiting(pending, reply);
     }
 }
 
+/// An open dialog's answer, to be awaited.
 type PendingDialog = std::pin::Pin<Box<dyn Future<Output = Option<rfd::FileHandle>> + Send>>;
 
+/// Awaits the dialog on a helper thread and replies from there.
 fn spawn_waiting(pending: PendingDialog, reply: Reply) {
     let asked = Instant::now();
     std::thread::spawn(move || {
-        let answer = match pollster::block_on(pending) {
-            Some(handle) => PathAnswer::Chosen(handle.path().into()),
-            None if asked.elapsed() < NO_DIALOG_WITHIN => PathAnswer::Unavailable,
-            None => PathAnswer::Cancelled,
+        // A panic in the dialog backend must still answer: the app waits for one
+        // answer before it opens another dialog.
+        let waited =
+            std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| pollster::block_on(pending)));
+        let answer = match waited {
+            Ok(Some(handle)) => PathAnswer::Chosen(handle.path().into()),
+            Ok(None) if asked.elapsed() < NO_DIALOG_WITHIN => PathAnswer::Unavailable,
+            Ok(None) => PathAnswer::Cancelled,
+            Err(_) => PathAnswer::Unavailable,
         };
         reply(answer);
     });
