@@ -14,9 +14,14 @@ bash scripts/build_web.sh
 ls -l dist/*.wasm
 gzip -9 -c dist/*.wasm | wc -c | awk '{printf "wasm gzipped: %.2f MB\n", $1/1e6}'
 
-port=8917
+# A free port, so that nothing else listening (another run, a demo server) answers.
+port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 python3 -m http.server "$port" --bind 127.0.0.1 --directory dist >/dev/null 2>&1 &
 server=$!
-trap 'kill $server' EXIT
+trap 'kill $server 2>/dev/null || true' EXIT
 for _ in $(seq 50); do curl -sf "http://127.0.0.1:$port/" >/dev/null && break; sleep 0.2; done
+if ! kill -0 "$server" 2>/dev/null; then
+    echo "the web server on 127.0.0.1:$port did not start" >&2
+    exit 1
+fi
 node tests/browser/browser_test.mjs "http://127.0.0.1:$port/"
