@@ -151,19 +151,21 @@ fn contents(st: &AppState, action: FileAction) -> Result<String, String> {
     }
 }
 
+/// Shows the outcome of a file action in the top bar and logs it: the browser test
+/// and the desktop smoke run read the log.
+fn report(st: &mut AppState, level: log::Level, message: String) {
+    log::log!(level, "{message}");
+    st.status = Some(message);
+}
+
 /// Opens scene text read from a file named `name`.
 pub fn open_text(st: &mut AppState, name: String, text: &str) {
     match Session::open_text(SceneSource::File(name.clone()), text) {
         Ok(s) => {
             st.open(s);
-            // Logged as well as shown: the browser test reads the console.
-            log::info!("opened {name}");
-            st.status = Some(format!("opened {name}"));
+            report(st, log::Level::Info, format!("opened {name}"));
         }
-        Err(e) => {
-            log::warn!("{name}: {e}");
-            st.status = Some(format!("{name}: {e}"));
-        }
+        Err(e) => report(st, log::Level::Warn, format!("{name}: {e}")),
     }
 }
 
@@ -193,7 +195,7 @@ fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, frame: &efr
             ctx.request_repaint();
         }),
     );
-    take_answers(st);
+    // A chooser that answers at once is taken by `buttons` right after this call.
 }
 
 #[cfg(target_arch = "wasm32")]
@@ -254,17 +256,15 @@ fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {
     match action {
         FileAction::Open => match std::fs::read_to_string(path) {
             Ok(text) => open_text(st, name, &text),
-            Err(e) => st.status = Some(format!("cannot read {shown}: {e}")),
+            Err(e) => report(st, log::Level::Warn, format!("cannot read {shown}: {e}")),
         },
         FileAction::SaveScene | FileAction::ExportCsv => {
             let written = contents(st, action)
                 .and_then(|t| std::fs::write(path, t).map_err(|e| e.to_string()));
-            let message = match written {
-                Ok(()) => format!("wrote {shown}"),
-                Err(e) => format!("cannot write {shown}: {e}"),
-            };
-            log::info!("{message}");
-            st.status = Some(message);
+            match written {
+                Ok(()) => report(st, log::Level::Info, format!("wrote {shown}")),
+                Err(e) => report(st, log::Level::Warn, format!("cannot write {shown}: {e}")),
+            }
         }
     }
 }
