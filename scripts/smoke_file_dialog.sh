@@ -19,16 +19,23 @@ drive() {
     sleep 2 # the first frames (wgpu on a CPU driver) before the button can be hit
     # "Open scene…" is the first button of the top bar: centre at (133, 12).
     xdotool mousemove --window "$win" 133 12 click 1
-    timeout 60 xdotool search --sync --class zenity >/dev/null
-    sleep 1
-    xdotool key ctrl+l
-    sleep 0.5
-    xdotool type --delay 20 "$scene"
-    sleep 0.5
-    xdotool key Return
-    for _ in $(seq 100); do
-        grep -q "opened quick_return.ron" "$log" && return 0
-        sleep 0.2
+    local dialog
+    dialog=$(timeout 60 xdotool search --sync --onlyvisible --class zenity | head -1)
+    # Without a window manager nothing gives the dialog the keyboard: focus it, and on
+    # a loaded machine (GTK still building the chooser) try again until it takes.
+    for _ in 1 2 3 4 5; do
+        xdotool windowfocus --sync "$dialog" 2>/dev/null || break
+        sleep 1
+        xdotool key ctrl+l
+        sleep 0.5
+        xdotool key ctrl+a
+        xdotool type --delay 20 "$scene"
+        sleep 0.5
+        xdotool key Return
+        for _ in $(seq 50); do
+            grep -q "opened quick_return.ron" "$log" && return 0
+            sleep 0.2
+        done
     done
     echo "the app did not open the scene chosen in the dialog; its log:" >&2
     cat "$log" >&2
