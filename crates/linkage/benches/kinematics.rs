@@ -6,6 +6,7 @@
 //! figure (the README and issue notes quote both).
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use linkage::lanes::LANES;
 use linkage::scene::SolverPath;
 use linkage::{Kinematics, Mechanism};
 
@@ -47,6 +48,25 @@ fn cycle(c: &mut Criterion) {
                     std::hint::black_box(checksum)
                 })
             });
+            if path == SolverPath::ClosedForm {
+                // The same cycle, LANES positions per call (Kinematics::solve_lanes).
+                let mut lanes = k.empty_lane_solution();
+                group.bench_function(format!("{name}/closed_form_lanes"), |b| {
+                    b.iter(|| {
+                        let mut checksum = 0.0;
+                        for i in (0..POSITIONS).step_by(LANES) {
+                            let x = std::array::from_fn(|l| {
+                                std::f64::consts::TAU * (i + l) as f64 / POSITIONS as f64
+                            });
+                            if k.solve_lanes(x, w, &mut lanes).is_ok() {
+                                let last = &lanes.points[lanes.points.len() - 1];
+                                checksum += last.acceleration.x.0.to_array().iter().sum::<f64>();
+                            }
+                        }
+                        std::hint::black_box(checksum)
+                    })
+                });
+            }
         }
     }
     group.finish();

@@ -5,12 +5,17 @@
 //! Every group ends in one 2×2 linear system `x1·c1 + x2·c2 = rhs` for velocities
 //! and the same matrix for accelerations, so the Coriolis term of a slider riding a
 //! moving guide appears as an explicit right-hand-side term.
+//!
+//! The group solvers are generic over the number type ([`Real`]): `f64` solves one
+//! position, [`crate::lanes::Lanes`] several at once in SIMD lanes. Their tests are
+//! lane masks: a group fails if it fails in any lane.
 
-use nalgebra::UnitComplex;
+use nalgebra::{SimdBool, UnitComplex, Vector2};
 
 use crate::error::{LinkageError, Result};
+use crate::lanes::{Real, splat, splat_vec};
 use crate::model::{Mechanism, Prismatic};
-use crate::motion::{LinkMotion, PointMotion, Solution, Vec2, cross, perp};
+use crate::motion::{LinkMotion, PointMotion, SlideMotion, Vec2, cross, perp};
 use crate::scene::Branch;
 
 /// A pin: a point fixed on a link, given in that link's coordinates.
@@ -18,12 +23,21 @@ use crate::scene::Branch;
 pub(crate) struct Pin {
     pub link: usize,
     pub local: Vec2,
+    /// The link is ground: the pin stands still at `local` (no rotation to apply).
+    pub on_ground: bool,
 }
 
 impl Pin {
-    #[inline]
-    fn motion(&self, links: &[LinkMotion]) -> PointMotion {
-        links[self.link].point(&self.local)
+    #[inline(always)]
+    fn motion<T: Real>(&self, links: &[LinkMotion<T>]) -> PointMotion<T> {
+        if self.on_ground {
+            PointMotion {
+                position: splat_vec(&self.local),
+                ..Default::default()
+            }
+        } else {
+            links[self.link].point(&self.local)
+        }
     }
 }
 
@@ -117,37 +131,67 @@ pub(crate) enum Failure {
 
 /// Result of one group: the assembly margin (> 0 assembles) and the conditioning.
 #[derive(Clone, Copy, Debug)]
-struct GroupOk {
-    margin: f64,
-    conditioning: f64,
+struct GroupOk<T> {
+    margin: T,
+    conditioning: T,
+}
+
+/// The smallest lane of `x`, a NaN lane counting as -1 (it closes nothing).
+#[inline(always)]
+fn worst_lane<T: Real>(x: T) -> f64 {
+    (0..T::LANES)
+        .map(|k| x.extract(k))
+        .fold(f64::INFINITY, |w, v| {
+            if v.is_nan() {
+                -1.0_f64.min(w)
+            } else {
+                w.min(v)
+            }
+        })
+}
+
+/// Fails with `CannotAssemble` unless every lane's margin is above the slack
+/// (a NaN margin fails too).
+#[inline(always)]
+fn check_margin<T: Real>(margin: T, group: usize) -> std::result::Result<(), Failure> {
+    if margin.simd_ge(splat(-TANGENT_SLACK)).all() {
+        Ok(())
+    } else {
+        Err(Failure::CannotAssemble {
+            group,
+            margin: worst_lane(margin),
+        })
+    }
 }
 
 /// The 2×2 system `x1·c1 + x2·c2 = rhs` of one group, factored once and solved for
 /// the velocity and the acceleration right-hand sides (one division in all).
-struct Pair {
-    c1: Vec2,
-    c2: Vec2,
-    inv_det: f64,
+struct Pair<T: Real> {
+    c1: Vector2<T>,
+    c2: Vector2<T>,
+    inv_det: T,
 }
 
-impl Pair {
-    /// Fails with `Singular` when the columns are parallel (|sin| below 1e-14).
-    #[inline]
-    fn new(c1: Vec2, c2: Vec2, group: usize) -> std::result::Result<Self, Failure> {
+impl<T: Real> Pair<T> {
+    /// Fails with `Singular` when the columns are parallel (|sin| below 1e-14) in
+    /// any lane.
+    #[inline(always)]
+    fn new(c1: Vector2<T>, c2: Vector2<T>, group: usize) -> std::result::Result<Self, Failure> {
         let det = cross(&c1, &c2);
         // Compared squared: no square roots on the hot path.
-        if det * det <= 1e-28 * c1.norm_squared() * c2.norm_squared() {
+        let floor = splat::<T>(1e-28) * c1.norm_squared() * c2.norm_squared();
+        if !(det * det).simd_gt(floor).all() {
             return Err(Failure::Singular { group });
         }
         Ok(Self {
             c1,
             c2,
-            inv_det: 1.0 / det,
+            inv_det: T::one() / det,
         })
     }
 
-    #[inline]
-    fn solve(&self, rhs: &Vec2) -> (f64, f64) {
+    #[inline(always)]
+    fn solve(&self, rhs: &Vector2<T>) -> (T, T) {
         (
             cross(rhs, &self.c2) * self.inv_det,
             cross(&self.c1, rhs) * self.inv_det,
@@ -155,21 +199,16 @@ impl Pair {
     }
 }
 
-/// `solve` for a one-off system.
-#[inline]
-fn solve2(
-    c1: &Vec2,
-    c2: &Vec2,
-    rhs: &Vec2,
-    group: usize,
-) -> std::result::Result<(f64, f64), Failure> {
-    Ok(Pair::new(*c1, *c2, group)?.solve(rhs))
+/// The rotation whose x-axis is the unit vector `unit`.
+#[inline(always)]
+fn direction<T: Real>(unit: &Vector2<T>) -> UnitComplex<T> {
+    UnitComplex::from_cos_sin_unchecked(unit.x, unit.y)
 }
 
-/// The rotation whose x-axis is the unit vector `unit`.
-#[inline]
-fn direction(unit: &Vec2) -> UnitComplex<f64> {
-    UnitComplex::from_cos_sin_unchecked(unit.x, unit.y)
+/// `r` in every lane.
+#[inline(always)]
+fn splat_rotation<T: Real>(r: &UnitComplex<f64>) -> UnitComplex<T> {
+    UnitComplex::from_cos_sin_unchecked(splat(r.re), splat(r.im))
 }
 
 /// Margins between 0 and this are treated as exact tangency (rounding), not failure.
@@ -178,12 +217,13 @@ const TANGENT_SLACK: f64 = 1e-12;
 impl Group {
     /// Solves the group from the already-known links. With `motion == false` only
     /// positions are computed (used for the assembly margin, also at singular points).
-    fn solve(
+    #[inline(always)]
+    fn solve<T: Real>(
         &self,
-        links: &mut [LinkMotion],
+        links: &mut [LinkMotion<T>],
         motion: bool,
         group: usize,
-    ) -> std::result::Result<GroupOk, Failure> {
+    ) -> std::result::Result<GroupOk<T>, Failure> {
         match self {
             Group::Rrr(g) => g.solve(links, motion, group),
             Group::Rrp(g) => g.solve(links, motion, group),
@@ -224,40 +264,41 @@ impl Group {
 }
 
 impl Rrr {
-    fn solve(
+    #[inline(always)]
+    fn solve<T: Real>(
         &self,
-        links: &mut [LinkMotion],
+        links: &mut [LinkMotion<T>],
         motion: bool,
         group: usize,
-    ) -> std::result::Result<GroupOk, Failure> {
+    ) -> std::result::Result<GroupOk<T>, Failure> {
         let pa = self.a.motion(links);
         let pc = self.c.motion(links);
         let d = pc.position - pa.position;
         let dist2 = d.norm_squared();
         let (l1, l2) = (self.len_i, self.len_j);
-        if dist2 == 0.0 {
+        if !dist2.simd_gt(T::zero()).all() {
+            // Coincident end pins: the dyad is free to turn about them (equal
+            // lengths) or cannot close at all.
             let margin = -((l1 - l2) / l1).abs();
             if margin < 0.0 {
                 return Err(Failure::CannotAssemble { group, margin });
             }
             return Err(Failure::Singular { group });
         }
-        let inv_dist = 1.0 / dist2.sqrt();
-        let along = (l1 * l1 - l2 * l2 + dist2) * (0.5 * inv_dist);
-        let ratio = along * self.inv_len_i;
-        let margin = 1.0 - ratio * ratio;
-        if margin < -TANGENT_SLACK {
-            return Err(Failure::CannotAssemble { group, margin });
-        }
-        let h = l1 * margin.max(0.0).sqrt();
+        let inv_dist = T::one() / dist2.simd_sqrt();
+        let along = (splat::<T>(l1 * l1 - l2 * l2) + dist2) * (splat::<T>(0.5) * inv_dist);
+        let ratio = along * splat(self.inv_len_i);
+        let margin = T::one() - ratio * ratio;
+        check_margin(margin, group)?;
+        let h = splat::<T>(l1) * margin.simd_max(T::zero()).simd_sqrt();
         let dhat = d * inv_dist;
-        let b = pa.position + dhat * along + perp(&dhat) * (self.sign * h);
+        let b = pa.position + dhat * along + perp(&dhat) * (splat::<T>(self.sign) * h);
         let r1 = b - pa.position;
         let r2 = b - pc.position;
-        let rot_i = direction(&(r1 * self.inv_len_i)) * self.dir_i_inv;
-        let rot_j = direction(&(r2 * self.inv_len_j)) * self.dir_j_inv;
-        let conditioning = (cross(&r1, &r2) * self.inv_len_i * self.inv_len_j).abs();
-        let (mut wi, mut wj, mut ai, mut aj) = (0.0, 0.0, 0.0, 0.0);
+        let rot_i = direction(&(r1 * splat::<T>(self.inv_len_i))) * splat_rotation(&self.dir_i_inv);
+        let rot_j = direction(&(r2 * splat::<T>(self.inv_len_j))) * splat_rotation(&self.dir_j_inv);
+        let conditioning = (cross(&r1, &r2) * splat(self.inv_len_i * self.inv_len_j)).simd_abs();
+        let (mut wi, mut wj, mut ai, mut aj) = (T::zero(), T::zero(), T::zero(), T::zero());
         if motion {
             let pair = Pair::new(perp(&r1), -perp(&r2), group)?;
             (wi, wj) = pair.solve(&(pc.velocity - pa.velocity));
@@ -274,68 +315,71 @@ impl Rrr {
 }
 
 /// World data of a guide line: direction, the point of the line, the slider's rotation.
-struct GuideLine {
-    u: Vec2,
-    through: Vec2,
-    slider_rotation: UnitComplex<f64>,
+struct GuideLine<T: Real> {
+    u: Vector2<T>,
+    through: Vector2<T>,
+    slider_rotation: UnitComplex<T>,
 }
 
-fn guide_line(slide: &Prismatic, links: &[LinkMotion]) -> GuideLine {
+#[inline(always)]
+fn guide_line<T: Real>(slide: &Prismatic, links: &[LinkMotion<T>]) -> GuideLine<T> {
     let g = &links[slide.guide];
     GuideLine {
-        u: g.rotation * slide.direction_local,
+        u: g.rotation * splat_vec(&slide.direction_local),
         through: g.world(&slide.through_local),
-        slider_rotation: g.rotation * slide.relative,
+        slider_rotation: g.rotation * splat_rotation(&slide.relative),
     }
 }
 
 /// Motion of a point riding a guide: the guide's coincident material point plus the
 /// sliding velocity, plus the Coriolis term `2 ω_guide × v_rel`.
-#[inline]
-fn riding_point(
-    on_guide: &PointMotion,
-    u: &Vec2,
-    omega_guide: f64,
-    s_dot: f64,
-    s_ddot: f64,
-) -> PointMotion {
+#[inline(always)]
+fn riding_point<T: Real>(
+    on_guide: &PointMotion<T>,
+    u: &Vector2<T>,
+    omega_guide: T,
+    s_dot: T,
+    s_ddot: T,
+) -> PointMotion<T> {
     PointMotion {
         position: on_guide.position,
         velocity: on_guide.velocity + u * s_dot,
-        acceleration: on_guide.acceleration + perp(u) * (2.0 * omega_guide * s_dot) + u * s_ddot,
+        acceleration: on_guide.acceleration
+            + perp(u) * (splat::<T>(2.0) * omega_guide * s_dot)
+            + u * s_ddot,
     }
 }
 
 impl Rrp {
-    fn solve(
+    #[inline(always)]
+    fn solve<T: Real>(
         &self,
-        links: &mut [LinkMotion],
+        links: &mut [LinkMotion<T>],
         motion: bool,
         group: usize,
-    ) -> std::result::Result<GroupOk, Failure> {
+    ) -> std::result::Result<GroupOk<T>, Failure> {
         let pa = self.a.motion(links);
         let line = guide_line(&self.slide, links);
         let u = line.u;
-        let b0 = line.through + line.slider_rotation * (self.mid_on_j - self.slide.slider_local);
+        let b0 = line.through
+            + line.slider_rotation * splat_vec(&(self.mid_on_j - self.slide.slider_local));
         let w = b0 - pa.position;
         let l1 = self.len_i;
-        let off = cross(&w, &u) * self.inv_len_i;
-        let margin = 1.0 - off * off;
-        if margin < -TANGENT_SLACK {
-            return Err(Failure::CannotAssemble { group, margin });
-        }
-        let s = -w.dot(&u) + self.sign * l1 * margin.max(0.0).sqrt();
+        let off = cross(&w, &u) * splat(self.inv_len_i);
+        let margin = T::one() - off * off;
+        check_margin(margin, group)?;
+        let s = -w.dot(&u) + splat::<T>(self.sign * l1) * margin.simd_max(T::zero()).simd_sqrt();
         let b = b0 + u * s;
         let r1 = b - pa.position;
-        let rot_i = direction(&(r1 * self.inv_len_i)) * self.dir_i_inv;
-        let conditioning = (r1.dot(&u) * self.inv_len_i).abs();
+        let rot_i = direction(&(r1 * splat::<T>(self.inv_len_i))) * splat_rotation(&self.dir_i_inv);
+        let conditioning = (r1.dot(&u) * splat(self.inv_len_i)).simd_abs();
         let guide = links[self.slide.guide];
         let on_guide = guide.material_point_at(&b);
-        let (mut wi, mut ai, mut sd, mut sdd) = (0.0, 0.0, 0.0, 0.0);
+        let (mut wi, mut ai, mut sd, mut sdd) = (T::zero(), T::zero(), T::zero(), T::zero());
         if motion {
             let pair = Pair::new(perp(&r1), -u, group)?;
             (wi, sd) = pair.solve(&(on_guide.velocity - pa.velocity));
-            let rhs = on_guide.acceleration + perp(&u) * (2.0 * guide.omega_rad_s * sd)
+            let rhs = on_guide.acceleration + perp(&u) * (splat::<T>(2.0) * guide.omega_rad_s * sd)
                 - pa.acceleration
                 + r1 * (wi * wi);
             (ai, sdd) = pair.solve(&rhs);
@@ -357,42 +401,45 @@ impl Rrp {
 }
 
 impl Rpr {
-    fn solve(
+    #[inline(always)]
+    fn solve<T: Real>(
         &self,
-        links: &mut [LinkMotion],
+        links: &mut [LinkMotion<T>],
         motion: bool,
         group: usize,
-    ) -> std::result::Result<GroupOk, Failure> {
+    ) -> std::result::Result<GroupOk<T>, Failure> {
         let ps = self.s.motion(links);
         let pg = self.g.motion(links);
         let d = pg.position - ps.position;
         let dist = d.norm();
-        let ratio = if dist > 0.0 {
-            self.offset / dist
-        } else {
-            f64::INFINITY
-        };
-        let margin = 1.0 - ratio * ratio;
-        if margin.is_nan() || margin < -TANGENT_SLACK {
-            let margin = if margin.is_finite() { margin } else { -1.0 };
-            return Err(Failure::CannotAssemble { group, margin });
+        if !dist.simd_gt(T::zero()).all() {
+            // The pins coincide: no line through both, the guide's direction is free.
+            return Err(Failure::CannotAssemble {
+                group,
+                margin: -1.0,
+            });
         }
+        let ratio = splat::<T>(self.offset) / dist;
+        let margin = T::one() - ratio * ratio;
+        check_margin(margin, group)?;
         let dhat = d / dist;
         // Along (+1) puts the slider pin ahead of the guide pin: (S - G)·U > 0.
-        let cos_phi = -self.sign * margin.max(0.0).sqrt();
+        let cos_phi = splat::<T>(-self.sign) * margin.simd_max(T::zero()).simd_sqrt();
         let u = dhat * cos_phi + perp(&dhat) * (-ratio);
-        let rot_guide = UnitComplex::from_cos_sin_unchecked(u.x, u.y) * self.dir_u.inverse();
-        let rot_slider = rot_guide * self.relative;
+        let rot_guide =
+            UnitComplex::from_cos_sin_unchecked(u.x, u.y) * splat_rotation(&self.dir_u.inverse());
+        let rot_slider = rot_guide * splat_rotation(&self.relative);
         let r = ps.position - pg.position;
-        let conditioning = (r.dot(&u) / dist).abs();
+        let conditioning = (r.dot(&u) / dist).simd_abs();
         let (w, al) = if motion {
             let c1 = perp(&r);
             let pair = Pair::new(c1, u, group)?;
             let (w, sd) = pair.solve(&(ps.velocity - pg.velocity));
-            let rhs = ps.acceleration - pg.acceleration + r * (w * w) - perp(&u) * (2.0 * w * sd);
+            let rhs = ps.acceleration - pg.acceleration + r * (w * w)
+                - perp(&u) * (splat::<T>(2.0) * w * sd);
             (w, pair.solve(&rhs).0)
         } else {
-            (0.0, 0.0)
+            (T::zero(), T::zero())
         };
         links[self.guide] = LinkMotion::from_pin(rot_guide, w, al, &self.g_on_guide, &pg);
         links[self.slider] = LinkMotion::from_pin(rot_slider, w, al, &self.s_on_slider, &ps);
@@ -404,30 +451,35 @@ impl Rpr {
 }
 
 impl Prp {
-    fn solve(
+    #[inline(always)]
+    fn solve<T: Real>(
         &self,
-        links: &mut [LinkMotion],
+        links: &mut [LinkMotion<T>],
         motion: bool,
         group: usize,
-    ) -> std::result::Result<GroupOk, Failure> {
+    ) -> std::result::Result<GroupOk<T>, Failure> {
         let li = guide_line(&self.slide_i, links);
         let lj = guide_line(&self.slide_j, links);
-        let b_i0 = li.through + li.slider_rotation * (self.mid_on_i - self.slide_i.slider_local);
-        let b_j0 = lj.through + lj.slider_rotation * (self.mid_on_j - self.slide_j.slider_local);
-        let conditioning = cross(&li.u, &lj.u).abs();
-        let (s_i, _) = solve2(&li.u, &(-lj.u), &(b_j0 - b_i0), group)?;
+        let b_i0 = li.through
+            + li.slider_rotation * splat_vec(&(self.mid_on_i - self.slide_i.slider_local));
+        let b_j0 = lj.through
+            + lj.slider_rotation * splat_vec(&(self.mid_on_j - self.slide_j.slider_local));
+        let conditioning = cross(&li.u, &lj.u).simd_abs();
+        let pair = Pair::new(li.u, -lj.u, group)?;
+        let (s_i, _) = pair.solve(&(b_j0 - b_i0));
         let b = b_i0 + li.u * s_i;
         let gi = links[self.slide_i.guide];
         let gj = links[self.slide_j.guide];
         let on_i = gi.material_point_at(&b);
         let on_j = gj.material_point_at(&b);
-        let (mut sd_i, mut sd_j, mut sdd_i, mut sdd_j) = (0.0, 0.0, 0.0, 0.0);
+        let (mut sd_i, mut sd_j, mut sdd_i, mut sdd_j) =
+            (T::zero(), T::zero(), T::zero(), T::zero());
         if motion {
-            let pair = Pair::new(li.u, -lj.u, group)?;
             (sd_i, sd_j) = pair.solve(&(on_j.velocity - on_i.velocity));
-            let rhs = on_j.acceleration + perp(&lj.u) * (2.0 * gj.omega_rad_s * sd_j)
+            let two = splat::<T>(2.0);
+            let rhs = on_j.acceleration + perp(&lj.u) * (two * gj.omega_rad_s * sd_j)
                 - on_i.acceleration
-                - perp(&li.u) * (2.0 * gi.omega_rad_s * sd_i);
+                - perp(&li.u) * (two * gi.omega_rad_s * sd_i);
             (sdd_i, sdd_j) = pair.solve(&rhs);
         }
         let pb_i = riding_point(&on_i, &li.u, gi.omega_rad_s, sd_i, sdd_i);
@@ -447,7 +499,7 @@ impl Prp {
             &pb_j,
         );
         Ok(GroupOk {
-            margin: 1.0,
+            margin: T::one(),
             conditioning,
         })
     }
@@ -491,6 +543,7 @@ fn rev_pin(m: &Mechanism, r: usize, known: usize, unknown: usize) -> (Pin, Vec2)
         Pin {
             link: known,
             local: rev_local(m, r, known),
+            on_ground: known == m.ground,
         },
         rev_local(m, r, unknown),
     )
@@ -839,34 +892,37 @@ impl ClosedForm {
     }
 
     /// Places ground and crank for input angle `input_rad` turning at `speed_rad_s`.
-    #[inline]
-    fn place_driver(&self, links: &mut [LinkMotion], input_rad: f64, speed_rad_s: f64) {
+    #[inline(always)]
+    fn place_driver<T: Real>(&self, links: &mut [LinkMotion<T>], input_rad: T, speed_rad_s: f64) {
         links[self.ground] = LinkMotion::default();
         let pivot = PointMotion {
-            position: self.driver_pivot_world,
+            position: splat_vec(&self.driver_pivot_world),
             ..Default::default()
         };
+        let (sin, cos) = input_rad.simd_sin_cos();
         links[self.driver_link] = LinkMotion::from_pin(
-            UnitComplex::new(input_rad),
-            speed_rad_s,
-            0.0,
+            UnitComplex::from_cos_sin_unchecked(cos, sin),
+            splat(speed_rad_s),
+            T::zero(),
             &self.driver_on_link,
             &pivot,
         );
     }
 
-    /// Solves all links at one input; `out.links` must have `link_count` entries.
-    /// Points and slides are not filled here (see [`crate::Kinematics`]).
-    pub(crate) fn solve_links(
+    /// Solves all links at one input (`T = f64`) or at one input per lane;
+    /// `links` must have `link_count` entries. Returns the conditioning (per lane).
+    /// Points and slides are not filled here (see [`finish_solution`]).
+    #[inline(always)]
+    pub(crate) fn solve_links<T: Real>(
         &self,
-        input_rad: f64,
+        input_rad: T,
         speed_rad_s: f64,
-        links: &mut [LinkMotion],
-    ) -> std::result::Result<f64, Failure> {
+        links: &mut [LinkMotion<T>],
+    ) -> std::result::Result<T, Failure> {
         self.place_driver(links, input_rad, speed_rad_s);
-        let mut conditioning: f64 = 1.0;
+        let mut conditioning = T::one();
         for (k, g) in self.groups.iter().enumerate() {
-            conditioning = conditioning.min(g.solve(links, true, k)?.conditioning);
+            conditioning = conditioning.simd_min(g.solve(links, true, k)?.conditioning);
         }
         Ok(conditioning)
     }
@@ -903,20 +959,26 @@ impl ClosedForm {
     }
 }
 
-/// Fills points and slides of a solution from its links.
-pub(crate) fn finish_solution(m: &Mechanism, sol: &mut Solution) {
-    for (out, p) in sol.points.iter_mut().zip(&m.points) {
+/// Fills the motion of every named point and every prismatic joint from the links'.
+#[inline(always)]
+pub(crate) fn finish_solution<T: Real>(
+    m: &Mechanism,
+    links: &[LinkMotion<T>],
+    points: &mut [PointMotion<T>],
+    slides: &mut [SlideMotion<T>],
+) {
+    for (out, p) in points.iter_mut().zip(&m.points) {
         *out = if p.link == m.ground {
             // Ground is the world frame: no rotation, no motion.
             PointMotion {
-                position: p.local,
+                position: splat_vec(&p.local),
                 ..Default::default()
             }
         } else {
-            sol.links[p.link].point(&p.local)
+            links[p.link].point(&p.local)
         };
     }
-    for (out, s) in sol.slides.iter_mut().zip(&m.sliders) {
-        *out = s.motion(&sol.links);
+    for (out, s) in slides.iter_mut().zip(&m.sliders) {
+        *out = s.motion(links);
     }
 }

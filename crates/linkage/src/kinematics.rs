@@ -3,6 +3,7 @@
 
 use crate::closed_form::{ClosedForm, Failure, finish_solution};
 use crate::error::{LinkageError, Result};
+use crate::lanes::{LANES, LaneSolution, Lanes};
 use crate::model::Mechanism;
 use crate::motion::{LinkMotion, Solution};
 use crate::newton::Newton;
@@ -248,7 +249,55 @@ impl Kinematics {
         out.input_rad = input_rad;
         out.input_speed_rad_s = speed_rad_s;
         out.conditioning = conditioning;
-        finish_solution(&self.mech, out);
+        finish_solution(&self.mech, &out.links, &mut out.points, &mut out.slides);
+        Ok(())
+    }
+
+    /// A lane solution buffer of the right sizes.
+    pub fn empty_lane_solution(&self) -> LaneSolution {
+        LaneSolution {
+            links: vec![Default::default(); self.mech.links.len()],
+            points: vec![Default::default(); self.mech.points.len()],
+            slides: vec![Default::default(); self.mech.sliders.len()],
+            ..Default::default()
+        }
+    }
+
+    /// Solves [`LANES`] inputs at once, turning at `speed_rad_s`, into `out`: lane `k`
+    /// holds input `inputs[k]`. On the closed-form path all lanes go through the
+    /// dyads together in SIMD lanes, which is how a cycle is solved fastest; the
+    /// Newton path follows its branch by continuation, so it solves lane by lane.
+    ///
+    /// # Errors
+    /// The error of the first input (in lane order) that [`Self::solve_into`] would
+    /// refuse, with the same message.
+    pub fn solve_lanes(
+        &mut self,
+        inputs: [f64; LANES],
+        speed_rad_s: f64,
+        out: &mut LaneSolution,
+    ) -> Result<()> {
+        if out.links.len() != self.mech.links.len() {
+            *out = self.empty_lane_solution();
+        }
+        let finite = speed_rad_s.is_finite() && inputs.iter().all(|x| x.is_finite());
+        if let (PathKind::ClosedForm, Some(cf), true) = (self.path, &self.closed, finite)
+            && let Ok(conditioning) =
+                cf.solve_links(Lanes::from(inputs), speed_rad_s, &mut out.links)
+        {
+            out.inputs = inputs;
+            out.input_speed_rad_s = speed_rad_s;
+            out.conditioning = conditioning.0.to_array();
+            finish_solution(&self.mech, &out.links, &mut out.points, &mut out.slides);
+            return Ok(());
+        }
+        // Newton, or a lane that fails: one at a time, so that the error names the
+        // input and its cause exactly as a single solve does.
+        let mut one = self.empty_solution();
+        for (k, x) in inputs.into_iter().enumerate() {
+            self.solve_into(x, speed_rad_s, &mut one)?;
+            out.set_lane(k, &one);
+        }
         Ok(())
     }
 

@@ -16,6 +16,7 @@ pub mod dynamics;
 pub mod error;
 pub mod kinematics;
 pub mod kinetostatics;
+pub mod lanes;
 pub mod model;
 pub mod motion;
 pub mod newton;

@@ -1,8 +1,9 @@
 //! The validated mechanism: SI units, indices instead of names, joints made explicit.
 
-use nalgebra::UnitComplex;
+use nalgebra::{UnitComplex, Vector2};
 
 use crate::error::{LinkageError, Result};
+use crate::lanes::{Real, splat, splat_vec};
 use crate::motion::{LinkMotion, SlideMotion, Vec2, perp};
 use crate::scene::{Branch, ForcesSpec, FreeLength, Models, SceneFile, SolverSpec, Speed};
 
@@ -82,20 +83,21 @@ pub struct Prismatic {
 
 impl Prismatic {
     /// World direction of the guide line.
-    pub fn direction(&self, links: &[LinkMotion]) -> Vec2 {
-        links[self.guide].rotation * self.direction_local
+    pub fn direction<T: Real>(&self, links: &[LinkMotion<T>]) -> Vector2<T> {
+        links[self.guide].rotation * splat_vec(&self.direction_local)
     }
 
     /// Displacement of the slider point along the guide from `through`, with its
     /// first and second time derivatives (relative to the guide, Coriolis removed).
-    pub fn motion(&self, links: &[LinkMotion]) -> SlideMotion {
+    pub fn motion<T: Real>(&self, links: &[LinkMotion<T>]) -> SlideMotion<T> {
         let guide = &links[self.guide];
         let u = self.direction(links);
         let p = links[self.slider].point(&self.slider_local);
         let on_guide = guide.material_point_at(&p.position);
         let v_rel = p.velocity - on_guide.velocity;
-        let a_rel =
-            p.acceleration - on_guide.acceleration - perp(&v_rel) * (2.0 * guide.omega_rad_s);
+        let a_rel = p.acceleration
+            - on_guide.acceleration
+            - perp(&v_rel) * (splat::<T>(2.0) * guide.omega_rad_s);
         SlideMotion {
             displacement_m: (p.position - guide.world(&self.through_local)).dot(&u),
             velocity_m_s: v_rel.dot(&u),

@@ -5,6 +5,7 @@
 use crate::analysis::{AssemblyRanges, assembly_ranges_of, describe_ranges};
 use crate::error::{LinkageError, Result};
 use crate::kinematics::Kinematics;
+use crate::lanes::LANES;
 use crate::model::Mechanism;
 use crate::motion::Solution;
 
@@ -60,24 +61,32 @@ pub fn sweep(k: &mut Kinematics, steps: usize) -> Result<Sweep> {
     let mut solutions = Vec::with_capacity(steps);
     let mut angles: Vec<Vec<f64>> = Vec::with_capacity(steps);
     let mut near_singular = Vec::new();
-    for i in 0..steps {
-        let x = a + (b - a) * i as f64 / divisions as f64;
-        let mut s = k.empty_solution();
-        k.solve_into(x, speed, &mut s)?;
-        if s.conditioning < NEAR_SINGULAR {
-            near_singular.push(x);
+    let mut lanes = k.empty_lane_solution();
+    // LANES inputs per call: the closed form solves them together in SIMD lanes.
+    // The last call repeats its final input to fill the lanes.
+    for first in (0..steps).step_by(LANES) {
+        let inputs = std::array::from_fn(|l| {
+            a + (b - a) * (first + l).min(steps - 1) as f64 / divisions as f64
+        });
+        k.solve_lanes(inputs, speed, &mut lanes)?;
+        for lane in 0..LANES.min(steps - first) {
+            let mut s = k.empty_solution();
+            lanes.lane_into(lane, &mut s);
+            if s.conditioning < NEAR_SINGULAR {
+                near_singular.push(s.input_rad);
+            }
+            let row: Vec<f64> = match angles.last() {
+                None => s.links.iter().map(|l| l.angle_rad()).collect(),
+                Some(prev) => s
+                    .links
+                    .iter()
+                    .zip(prev)
+                    .map(|(l, p)| unwrap_near(l.angle_rad(), *p))
+                    .collect(),
+            };
+            angles.push(row);
+            solutions.push(s);
         }
-        let row: Vec<f64> = match angles.last() {
-            None => s.links.iter().map(|l| l.angle_rad()).collect(),
-            Some(prev) => s
-                .links
-                .iter()
-                .zip(prev)
-                .map(|(l, p)| unwrap_near(l.angle_rad(), *p))
-                .collect(),
-        };
-        angles.push(row);
-        solutions.push(s);
     }
     Ok(Sweep {
         solutions,
