@@ -50,10 +50,66 @@ enum Cut {
     Prismatic(Prismatic),
 }
 
+/// The rotation of one revolute tree joint with the angle it was made for. Newton
+/// moves a joint angle by small steps (predictor, corrections), so the next
+/// rotation is this one turned by the step through a short series, not a new sine
+/// and cosine (those were most of the solver's cost). The input joint is always
+/// rotated exactly, since nothing corrects its rotation's round-off.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct JointTurn {
+    angle: f64,
+    rotation: UnitComplex<f64>,
+}
+
+/// Largest step taken by the series of [`small_turn`], rad (its first omitted
+/// terms are below 1e-20 there).
+const SMALL_TURN: f64 = 1.0 / 16.0;
+
+/// `exp(i·step)` for |step| ≤ [`SMALL_TURN`], by the Taylor series of sine and cosine.
+#[inline]
+fn small_turn(step: f64) -> UnitComplex<f64> {
+    let s2 = step * step;
+    let sin = step
+        * (1.0 - s2 / 6.0 * (1.0 - s2 / 20.0 * (1.0 - s2 / 42.0 * (1.0 - s2 / 72.0 * (1.0 - s2 / 110.0)))));
+    let cos = 1.0
+        - s2 / 2.0
+            * (1.0
+                - s2 / 12.0
+                    * (1.0 - s2 / 30.0 * (1.0 - s2 / 56.0 * (1.0 - s2 / 90.0 * (1.0 - s2 / 132.0)))));
+    UnitComplex::from_cos_sin_unchecked(cos, sin)
+}
+
+impl JointTurn {
+    /// A turn with no cached angle: the first request computes it exactly.
+    const UNSET: Self = Self {
+        angle: f64::NAN,
+        rotation: UnitComplex::new_unchecked(nalgebra::Complex { re: 1.0, im: 0.0 }),
+    };
+
+    /// The rotation by `angle`; `exact` forces a fresh sine and cosine.
+    #[inline]
+    fn to(&mut self, angle: f64, exact: bool) -> UnitComplex<f64> {
+        if angle != self.angle {
+            let step = angle - self.angle;
+            self.rotation = if !exact && step.abs() <= SMALL_TURN {
+                let mut turned = self.rotation * small_turn(step);
+                turned.renormalize_fast();
+                turned
+            } else {
+                UnitComplex::new(angle)
+            };
+            self.angle = angle;
+        }
+        self.rotation
+    }
+}
+
 /// Newton–Raphson position solver with velocity and acceleration from the Jacobian.
 #[derive(Clone, Debug)]
 pub struct Newton {
     tree: Vec<TreeJoint>,
+    /// Rotation of each tree joint (unused for prismatic ones), see [`JointTurn`].
+    turns: Vec<JointTurn>,
     cuts: Vec<Cut>,
     ground: usize,
     tolerance: f64,
@@ -212,6 +268,7 @@ impl Newton {
         }
         let cuts_len = cuts.len();
         let mut solver = Self {
+            turns: vec![JointTurn::UNSET; tree.len()],
             tree,
             cuts,
             ground: m.ground,
@@ -291,7 +348,7 @@ impl Newton {
                     on_child,
                 } => {
                     let j = parent.world(on_parent);
-                    child.rotation = parent.rotation * UnitComplex::new(q);
+                    child.rotation = parent.rotation * self.turns[k].to(q, k == 0);
                     child.origin.position = j - child.rotation * on_child;
                     t.contact = j;
                 }
