@@ -23,6 +23,7 @@ pub mod newton;
 pub mod polygon;
 mod roots_util;
 pub mod scene;
+mod small_lu;
 pub mod sweep;
 pub mod synthesis;
 

@@ -14,6 +14,7 @@ use nalgebra::{DMatrix, DVector, UnitComplex};
 use crate::error::{LinkageError, Result};
 use crate::model::{Mechanism, Prismatic};
 use crate::motion::{LinkMotion, PointMotion, Vec2, cross, perp};
+use crate::small_lu::SmallLu;
 
 #[derive(Clone, Debug, PartialEq)]
 enum TreeKind {
@@ -70,12 +71,15 @@ const SMALL_TURN: f64 = 1.0 / 16.0;
 fn small_turn(step: f64) -> UnitComplex<f64> {
     let s2 = step * step;
     let sin = step
-        * (1.0 - s2 / 6.0 * (1.0 - s2 / 20.0 * (1.0 - s2 / 42.0 * (1.0 - s2 / 72.0 * (1.0 - s2 / 110.0)))));
+        * (1.0
+            - s2 / 6.0
+                * (1.0 - s2 / 20.0 * (1.0 - s2 / 42.0 * (1.0 - s2 / 72.0 * (1.0 - s2 / 110.0)))));
     let cos = 1.0
         - s2 / 2.0
             * (1.0
                 - s2 / 12.0
-                    * (1.0 - s2 / 30.0 * (1.0 - s2 / 56.0 * (1.0 - s2 / 90.0 * (1.0 - s2 / 132.0)))));
+                    * (1.0
+                        - s2 / 30.0 * (1.0 - s2 / 56.0 * (1.0 - s2 / 90.0 * (1.0 - s2 / 132.0)))));
     UnitComplex::from_cos_sin_unchecked(cos, sin)
 }
 
@@ -110,6 +114,9 @@ pub struct Newton {
     tree: Vec<TreeJoint>,
     /// Rotation of each tree joint (unused for prismatic ones), see [`JointTurn`].
     turns: Vec<JointTurn>,
+    /// `moved_by[link * tree.len() + k]`: tree joint `k` lies on the path from ground
+    /// to `link`, so a rate of `k` moves `link`.
+    moved_by: Vec<bool>,
     cuts: Vec<Cut>,
     ground: usize,
     tolerance: f64,
@@ -128,7 +135,7 @@ pub struct Newton {
     conditioning: f64,
     jac: DMatrix<f64>,
     /// LU of the Jacobian at the last converged pose, reused by chord iterations.
-    lu: Option<nalgebra::linalg::LU<f64, nalgebra::Dyn, nalgebra::Dyn>>,
+    lu: SmallLu,
     rhs: DVector<f64>,
     rates: Vec<f64>,
     /// Reused buffers: Jacobian column / bias, residual, saved state, predictor step.
@@ -267,8 +274,17 @@ impl Newton {
             )));
         }
         let cuts_len = cuts.len();
+        // The tree is built breadth first, so a parent's path is known before its child's.
+        let mut moved_by = vec![false; n * tree.len()];
+        for (k, t) in tree.iter().enumerate() {
+            for j in 0..tree.len() {
+                moved_by[t.child * tree.len() + j] = moved_by[t.parent * tree.len() + j];
+            }
+            moved_by[t.child * tree.len() + k] = true;
+        }
         let mut solver = Self {
             turns: vec![JointTurn::UNSET; tree.len()],
+            moved_by,
             tree,
             cuts,
             ground: m.ground,
@@ -282,7 +298,7 @@ impl Newton {
             det_sign: 0.0,
             conditioning: 1.0,
             jac: DMatrix::zeros(unknowns, unknowns),
-            lu: None,
+            lu: SmallLu::default(),
             rhs: DVector::zeros(unknowns),
             rates: vec![0.0; 2 * unknowns.max(1)],
             col_buf: vec![0.0; 2 * cuts_len],
@@ -330,7 +346,7 @@ impl Newton {
         }
         self.dq.fill(0.0);
         self.ddq.fill(0.0);
-        self.lu = None;
+        self.lu.invalidate();
         self.last_input = Some(input_rad);
     }
 
@@ -495,23 +511,62 @@ impl Newton {
         }
     }
 
+    /// Velocity of the material point at `p` of `link`, and the link's angular
+    /// velocity, for a unit rate of tree joint `k` with every other coordinate still:
+    /// a turn about the joint or a slide along its guide, if `k` carries the link.
+    #[inline]
+    fn unit_rate(&self, k: usize, link: usize, p: &Vec2) -> (Vec2, f64) {
+        if !self.moved_by[link * self.tree.len() + k] {
+            return (Vec2::zeros(), 0.0);
+        }
+        let t = &self.tree[k];
+        match &t.kind {
+            TreeKind::Revolute { .. } => (perp(&(p - t.contact)), 1.0),
+            TreeKind::Prismatic {
+                parent_is_guide, ..
+            } => (t.u * if *parent_is_guide { 1.0 } else { -1.0 }, 0.0),
+        }
+    }
+
     /// Jacobian of the cut residuals at the current positions (columns: unknowns) and,
-    /// in `self.rates`, the driver's column.
-    fn build_jacobian(&mut self, links: &mut [LinkMotion]) {
-        let n = self.q.len();
-        let mut col = std::mem::take(&mut self.col_buf);
-        for k in 0..=n {
-            self.motion_pass(links, |i| if i == k { 1.0 } else { 0.0 }, |_| 0.0);
-            self.cut_rates(links, false, &mut col);
-            if k == 0 {
-                self.rates[..col.len()].copy_from_slice(&col);
-            } else {
-                for (r, v) in col.iter().enumerate() {
-                    self.jac[(r, k - 1)] = *v;
+    /// in `self.rates`, the driver's column. Each column is the cut joints' relative
+    /// velocity for a unit rate of one tree joint, written directly from the joint
+    /// points (what a velocity pass with that one rate would give, without the pass).
+    fn build_jacobian(&mut self, links: &[LinkMotion]) {
+        for (c, cut) in self.cuts.iter().enumerate() {
+            for k in 0..self.tree.len() {
+                let (r0, r1) = match cut {
+                    Cut::Revolute {
+                        a,
+                        a_local,
+                        b,
+                        b_local,
+                    } => {
+                        let (pa, pb) = (links[*a].world(a_local), links[*b].world(b_local));
+                        let d = self.unit_rate(k, *a, &pa).0 - self.unit_rate(k, *b, &pb).0;
+                        (d.x, d.y)
+                    }
+                    Cut::Prismatic(s) => {
+                        let (sl, g) = (&links[s.slider], &links[s.guide]);
+                        let u = g.rotation * s.direction_local;
+                        let (p, q) = (sl.world(&s.slider_local), g.world(&s.through_local));
+                        let (vp, w_slider) = self.unit_rate(k, s.slider, &p);
+                        let (vq, w_guide) = self.unit_rate(k, s.guide, &q);
+                        (
+                            cross(&(perp(&u) * w_guide), &(p - q)) + cross(&u, &(vp - vq)),
+                            w_slider - w_guide,
+                        )
+                    }
+                };
+                if k == 0 {
+                    self.rates[2 * c] = r0;
+                    self.rates[2 * c + 1] = r1;
+                } else {
+                    self.jac[(2 * c, k - 1)] = r0;
+                    self.jac[(2 * c + 1, k - 1)] = r1;
                 }
             }
         }
-        self.col_buf = col;
     }
 
     /// Solves at `input_rad` with input speed `speed_rad_s` (constant), writing every
@@ -570,7 +625,7 @@ impl Newton {
                 self.ddq.copy_from(&self.saved.2);
                 self.det_sign = saved_sign;
                 // The factorization belongs to the failed pose: start the retry fresh.
-                self.lu = None;
+                self.lu.invalidate();
                 h *= 0.5;
                 if h.abs() < 1e-7 {
                     return Err(match ok {
@@ -620,7 +675,7 @@ impl Newton {
     /// than one, a fresh Jacobian is factored and iterations are Newton's again.
     fn iterate(&mut self, input: f64, links: &mut [LinkMotion], res: &mut [f64]) -> Result<()> {
         let mut previous = f64::INFINITY;
-        let mut fresh = self.lu.is_none();
+        let mut fresh = !self.lu.is_valid();
         for iter in 0..=self.max_iterations {
             self.position_pass(input, links);
             let worst = self.residual(links, res);
@@ -648,11 +703,11 @@ impl Newton {
                 });
             }
             if !fresh && (slow || iter >= 3) {
-                self.lu = None;
+                self.lu.invalidate();
                 // Judge divergence from here on by true Newton steps only.
                 previous = f64::INFINITY;
             }
-            if self.lu.is_none() {
+            if !self.lu.is_valid() {
                 self.refactor(links);
                 fresh = true;
             }
@@ -701,23 +756,21 @@ impl Newton {
     /// Builds and factors the Jacobian at the current positions.
     fn refactor(&mut self, links: &mut [LinkMotion]) {
         self.build_jacobian(links);
-        self.lu = Some(self.jac.clone().lu());
+        self.lu.factor(&self.jac);
     }
 
     /// Solves `J Δ = −res` into `self.rhs` with the held factorization; false if singular.
     fn newton_step(&mut self, res: &[f64]) -> bool {
         self.rhs.iter_mut().zip(res).for_each(|(r, v)| *r = -v);
-        self.lu
-            .as_ref()
-            .is_some_and(|lu| lu.solve_mut(&mut self.rhs))
+        self.lu.solve_mut(&mut self.rhs)
     }
 
     /// Computes dq/d(input) and d²q/d(input)² at the converged pose.
     fn update_derivatives(&mut self, links: &mut [LinkMotion]) -> Result<()> {
         let n = self.q.len();
         self.build_jacobian(links);
-        let lu = self.jac.clone().lu();
-        let det = lu.determinant();
+        self.lu.factor(&self.jac);
+        let det = self.lu.determinant();
         self.det_sign = det.signum();
         let norms: f64 = self.jac.column_iter().map(|c| c.norm()).product();
         self.conditioning = if norms > 0.0 {
@@ -728,7 +781,7 @@ impl Newton {
         for r in 0..n {
             self.rhs[r] = -self.rates[r];
         }
-        if !lu.solve_mut(&mut self.rhs) {
+        if !self.lu.solve_mut(&mut self.rhs) {
             return Err(LinkageError::Singular {
                 input_deg: self.last_input.unwrap_or(0.0).to_degrees(),
                 reason: "the loop-closure Jacobian is singular: a dead point of this input".into(),
@@ -744,9 +797,8 @@ impl Newton {
         self.cut_rates(links, true, &mut bias);
         self.rhs.iter_mut().zip(&bias).for_each(|(r, b)| *r = -b);
         self.col_buf = bias;
-        lu.solve_mut(&mut self.rhs);
+        self.lu.solve_mut(&mut self.rhs);
         self.ddq.copy_from(&self.rhs);
-        self.lu = Some(lu);
         Ok(())
     }
 }
