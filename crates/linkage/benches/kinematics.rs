@@ -59,7 +59,7 @@ fn cycle(c: &mut Criterion) {
                                 std::f64::consts::TAU * (i + l) as f64 / POSITIONS as f64
                             });
                             if k.solve_lanes(x, w, &mut lanes).is_ok() {
-                                let last = &lanes.points[lanes.points.len() - 1];
+                                let last = &lanes.points()[lanes.points().len() - 1];
                                 checksum += last.acceleration.x.0.to_array().iter().sum::<f64>();
                             }
                         }

@@ -19,7 +19,7 @@ fn main() {
             for i in (0..3600).step_by(LANES) {
                 let x = std::array::from_fn(|l| std::f64::consts::TAU * (i + l) as f64 / 3600.0);
                 if k.solve_lanes(x, 4.7, &mut lanes).is_ok() {
-                    acc += lanes.points[3].acceleration.x.0.to_array()[0];
+                    acc += lanes.points()[3].acceleration.x.0.to_array()[0];
                 }
             }
         } else {

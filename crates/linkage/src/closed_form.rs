@@ -891,10 +891,9 @@ impl ClosedForm {
         }
     }
 
-    /// Places ground and crank for input angle `input_rad` turning at `speed_rad_s`.
+    /// Places the crank for input angle `input_rad` turning at `speed_rad_s`.
     #[inline(always)]
     fn place_driver<T: Real>(&self, links: &mut [LinkMotion<T>], input_rad: T, speed_rad_s: f64) {
-        links[self.ground] = LinkMotion::default();
         let pivot = PointMotion {
             position: splat_vec(&self.driver_pivot_world),
             ..Default::default()
@@ -910,8 +909,11 @@ impl ClosedForm {
     }
 
     /// Solves all links at one input (`T = f64`) or at one input per lane;
-    /// `links` must have `link_count` entries. Returns the conditioning (per lane).
-    /// Points and slides are not filled here (see [`finish_solution`]).
+    /// `links` must have `link_count` entries with the ground's at rest (its
+    /// default), as in every buffer this crate makes: the ground is never written
+    /// here (for lanes that store was 6 % of a four-bar's time). Returns the
+    /// conditioning (per lane). Points and slides are not filled here (see
+    /// [`finish_solution`]).
     #[inline(always)]
     pub(crate) fn solve_links<T: Real>(
         &self,
@@ -930,6 +932,7 @@ impl ClosedForm {
     /// Smallest assembly margin over the groups at this input (> 0: assembles,
     /// < 0: the first group that fails and by how much), with the group index.
     pub(crate) fn margin(&self, input_rad: f64, links: &mut [LinkMotion]) -> (f64, usize) {
+        links[self.ground] = LinkMotion::default();
         self.place_driver(links, input_rad, 0.0);
         let mut worst = (f64::INFINITY, 0);
         for (k, g) in self.groups.iter().enumerate() {
@@ -946,6 +949,7 @@ impl ClosedForm {
     /// Velocity-system conditioning of each group at the current positions
     /// (|sin| of the angle between its two unknown directions).
     pub(crate) fn group_conditioning(&self, input_rad: f64, links: &mut [LinkMotion]) -> Vec<f64> {
+        links[self.ground] = LinkMotion::default();
         self.place_driver(links, input_rad, 0.0);
         self.groups
             .iter()

@@ -218,6 +218,8 @@ impl Kinematics {
         if out.links.len() != self.mech.links.len() {
             *out = self.empty_solution();
         }
+        // `out` is the caller's: make sure its ground is at rest, as the solvers expect.
+        out.links[self.mech.ground] = LinkMotion::default();
         let conditioning = match (self.path, &self.closed, &mut self.newton) {
             (PathKind::ClosedForm, Some(cf), _) => cf
                 .solve_links(input_rad, speed_rad_s, &mut out.links)
@@ -259,6 +261,7 @@ impl Kinematics {
             links: vec![Default::default(); self.mech.links.len()],
             points: vec![Default::default(); self.mech.points.len()],
             slides: vec![Default::default(); self.mech.sliders.len()],
+            ground: self.mech.ground,
             ..Default::default()
         }
     }
@@ -277,7 +280,7 @@ impl Kinematics {
         speed_rad_s: f64,
         out: &mut LaneSolution,
     ) -> Result<()> {
-        if out.links.len() != self.mech.links.len() {
+        if out.links.len() != self.mech.links.len() || out.ground != self.mech.ground {
             *out = self.empty_lane_solution();
         }
         let finite = speed_rad_s.is_finite() && inputs.iter().all(|x| x.is_finite());

@@ -72,17 +72,33 @@ pub struct LaneSolution {
     pub inputs: [f64; LANES],
     /// Input angular speed, rad/s (the same in every lane).
     pub input_speed_rad_s: f64,
-    /// Motion of every link, indexed like `Mechanism::links`.
-    pub links: Vec<LinkMotion<Lanes>>,
-    /// Motion of every named point, indexed like `Mechanism::points`.
-    pub points: Vec<PointMotion<Lanes>>,
-    /// Relative motion of every prismatic joint, indexed like `Mechanism::sliders`.
-    pub slides: Vec<SlideMotion<Lanes>>,
+    /// Motion of every link (private: the solver keeps the ground's at rest and
+    /// does not rewrite it).
+    pub(crate) links: Vec<LinkMotion<Lanes>>,
+    pub(crate) points: Vec<PointMotion<Lanes>>,
+    pub(crate) slides: Vec<SlideMotion<Lanes>>,
+    /// Index of the ground link these buffers were made for.
+    pub(crate) ground: usize,
     /// Conditioning of each lane (see [`Solution::conditioning`]).
     pub conditioning: [f64; LANES],
 }
 
 impl LaneSolution {
+    /// Motion of every link, indexed like `Mechanism::links` (ground included).
+    pub fn links(&self) -> &[LinkMotion<Lanes>] {
+        &self.links
+    }
+
+    /// Motion of every named point, indexed like `Mechanism::points`.
+    pub fn points(&self) -> &[PointMotion<Lanes>] {
+        &self.points
+    }
+
+    /// Relative motion of every prismatic joint, indexed like `Mechanism::sliders`.
+    pub fn slides(&self) -> &[SlideMotion<Lanes>] {
+        &self.slides
+    }
+
     /// Lane `k` as a one-position [`Solution`], written into `out` (no allocation
     /// when `out` already has the right sizes).
     pub fn lane_into(&self, k: usize, out: &mut Solution) {
