@@ -898,7 +898,7 @@ impl ClosedForm {
             position: splat_vec(&self.driver_pivot_world),
             ..Default::default()
         };
-        let (sin, cos) = input_rad.simd_sin_cos();
+        let (sin, cos) = input_rad.sin_cos_of();
         links[self.driver_link] = LinkMotion::from_pin(
             UnitComplex::from_cos_sin_unchecked(cos, sin),
             splat(speed_rad_s),
