@@ -12,7 +12,8 @@ use nalgebra::{DMatrix, DVector};
 #[derive(Clone, Debug, Default, PartialEq)]
 pub(crate) struct SmallLu {
     n: usize,
-    /// Row-major `L` (below the diagonal) and `U` (on and above it).
+    /// Column-major like nalgebra: `L` below the diagonal, `U` on and above it;
+    /// entry (row r, column c) at `r + c·n`.
     lu: Vec<f64>,
     /// At step `k`, row `k` was swapped with row `pivots[k]`.
     pivots: Vec<usize>,
@@ -27,35 +28,37 @@ impl SmallLu {
         let n = a.nrows();
         self.n = n;
         self.lu.clear();
-        self.lu
-            .extend((0..n * n).map(|index| a[(index / n, index % n)]));
+        self.lu.extend_from_slice(a.as_slice());
         self.pivots.clear();
         self.permutation_sign = 1.0;
+        let lu = &mut self.lu[..];
         for k in 0..n {
-            let pivot = (k..n)
-                .max_by(|&i, &j| {
-                    self.lu[i * n + k]
-                        .abs()
-                        .total_cmp(&self.lu[j * n + k].abs())
-                })
-                .unwrap_or(k);
+            let column = &lu[k * n..(k + 1) * n];
+            let mut pivot = k;
+            for r in k + 1..n {
+                if column[r].abs() > column[pivot].abs() {
+                    pivot = r;
+                }
+            }
             self.pivots.push(pivot);
             if pivot != k {
                 for c in 0..n {
-                    self.lu.swap(k * n + c, pivot * n + c);
+                    lu.swap(k + c * n, pivot + c * n);
                 }
                 self.permutation_sign = -self.permutation_sign;
             }
-            let diagonal = self.lu[k * n + k];
+            let diagonal = lu[k + k * n];
             if diagonal == 0.0 {
                 // Singular: the column below is all zero, nothing to eliminate.
                 continue;
             }
             for r in k + 1..n {
-                let factor = self.lu[r * n + k] / diagonal;
-                self.lu[r * n + k] = factor;
-                for c in k + 1..n {
-                    self.lu[r * n + c] -= factor * self.lu[k * n + c];
+                lu[r + k * n] /= diagonal;
+            }
+            for c in k + 1..n {
+                let upper = lu[k + c * n];
+                for r in k + 1..n {
+                    lu[r + c * n] -= lu[r + k * n] * upper;
                 }
             }
         }
@@ -75,7 +78,7 @@ impl SmallLu {
     /// Determinant of the factored matrix.
     pub(crate) fn determinant(&self) -> f64 {
         (0..self.n)
-            .map(|k| self.lu[k * self.n + k])
+            .map(|k| self.lu[k + k * self.n])
             .product::<f64>()
             * self.permutation_sign
     }
@@ -84,19 +87,27 @@ impl SmallLu {
     /// is held or `A` is singular.
     pub(crate) fn solve_mut(&self, b: &mut DVector<f64>) -> bool {
         let n = self.n;
-        if !self.valid || b.len() != n || (0..n).any(|k| self.lu[k * n + k] == 0.0) {
+        let lu = &self.lu[..];
+        let b = b.as_mut_slice();
+        if !self.valid || b.len() != n || (0..n).any(|k| lu[k + k * n] == 0.0) {
             return false;
         }
         for (k, &p) in self.pivots.iter().enumerate() {
-            b.swap_rows(k, p);
+            b.swap(k, p);
         }
-        for r in 1..n {
-            let sum: f64 = (0..r).map(|c| self.lu[r * n + c] * b[c]).sum();
-            b[r] -= sum;
+        // Forward, then back substitution, column by column.
+        for c in 0..n {
+            let x = b[c];
+            for r in c + 1..n {
+                b[r] -= lu[r + c * n] * x;
+            }
         }
-        for r in (0..n).rev() {
-            let sum: f64 = (r + 1..n).map(|c| self.lu[r * n + c] * b[c]).sum();
-            b[r] = (b[r] - sum) / self.lu[r * n + r];
+        for c in (0..n).rev() {
+            b[c] /= lu[c + c * n];
+            let x = b[c];
+            for r in 0..c {
+                b[r] -= lu[r + c * n] * x;
+            }
         }
         true
     }
