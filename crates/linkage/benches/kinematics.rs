@@ -3,7 +3,10 @@
 //! paper-cup feed's four-bar) and the die cutter's six-bar, on both solver paths.
 //!
 //! Criterion reports the time for one cycle; divide by 3600 for the per-position
-//! figure (the README and issue notes quote both).
+//! figure (the README and issue notes quote both). The closed form runs twice: one
+//! input per call (`solve_into`) and four per call in SIMD lanes (`solve_lanes`,
+//! how sweeps solve a cycle); Newton follows its branch from one input to the next,
+//! so it solves one per call.
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use linkage::lanes::LANES;

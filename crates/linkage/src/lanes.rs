@@ -74,7 +74,7 @@ fn lanes_sin_cos(x: Lanes) -> (Lanes, Lanes) {
                         + z * (splat::<Lanes>(-2.505_076_025_340_686_3e-8)
                             + z * splat::<Lanes>(1.589_690_995_211_55e-10))))));
     let poly = z
-        * (splat::<Lanes>(4.166_666_666_666_660_2e-2)
+        * (splat::<Lanes>(4.166_666_666_666_66e-2)
             + z * (splat::<Lanes>(-1.388_888_888_887_411e-3)
                 + z * (splat::<Lanes>(2.480_158_728_947_673e-5)
                     + z * (splat::<Lanes>(-2.755_731_435_139_066_3e-7)

@@ -3,7 +3,8 @@
 //! Mechanisms come from scene files ([`scene`]) and are validated into a
 //! [`Mechanism`]. [`Kinematics`] solves any input angle by one of two paths that
 //! agree to round-off: closed-form Assur dyads ([`closed_form`]) and Newton–Raphson
-//! on the loop-closure constraints ([`newton`]). [`analysis`] finds assembly ranges,
+//! on the loop-closure constraints ([`newton`]). The closed form also solves four
+//! inputs at once in SIMD lanes ([`lanes`]). [`analysis`] finds assembly ranges,
 //! limit positions, strokes, time ratio, Grashof class, transmission angle and
 //! toggles; [`polygon`] gives the velocity and acceleration polygon terms;
 //! [`synthesis`] designs crank-rockers from swing and time ratio.
