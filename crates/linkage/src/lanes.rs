@@ -245,7 +245,7 @@ mod tests {
             inputs.extend([edge, edge.next_up(), edge.next_down()]);
         }
         inputs.extend([1e-300, -0.0, 123_456.789, 2e6, -3.5e9, 1e300]);
-        while inputs.len() % LANES != 0 {
+        while !inputs.len().is_multiple_of(LANES) {
             inputs.push(0.5);
         }
         let mut worst: f64 = 0.0;
