@@ -80,15 +80,16 @@ fn lanes_sin_cos(x: Lanes) -> (Lanes, Lanes) {
                     + z * (splat::<Lanes>(-2.755_731_435_139_066_3e-7)
                         + z * (splat::<Lanes>(2.087_572_321_298_175e-9)
                             + z * splat::<Lanes>(-1.135_964_755_778_819_5e-11))))));
+    let (one, two) = (splat::<Lanes>(1.0), splat::<Lanes>(2.0));
     let half_z = z * splat(0.5);
-    let w = splat::<Lanes>(1.0) - half_z;
-    let cos_r = w + (((splat::<Lanes>(1.0) - w) - half_z) + z * poly);
+    let w = one - half_z;
+    let cos_r = w + (((one - w) - half_z) + z * poly);
     // Quadrant n mod 4 as -2..=2 (n minus the nearest multiple of 4).
     let q = n - ((n * splat(0.25) + magic) - magic) * splat(4.0);
-    let (one, two) = (splat::<Lanes>(1.0), splat::<Lanes>(2.0));
+    let half_turn = q.simd_abs().simd_eq(two);
     let odd = q.simd_abs().simd_eq(one);
-    let sin_negative = q.simd_abs().simd_eq(two) | q.simd_eq(-one);
-    let cos_negative = q.simd_abs().simd_eq(two) | q.simd_eq(one);
+    let sin_negative = half_turn | q.simd_eq(-one);
+    let cos_negative = half_turn | q.simd_eq(one);
     let sin = sin_r.select(!odd, cos_r);
     let cos = cos_r.select(!odd, sin_r);
     (

@@ -4,7 +4,8 @@
 //! the unknowns are the tree joints' relative coordinates (joint angle or slide),
 //! and every joint left out of the tree closes a loop with two equations. Jacobian
 //! columns are the cut joints' relative velocities for a unit rate of one tree
-//! coordinate, so one forward velocity pass per column gives them exactly. Velocity
+//! coordinate: a turn about that joint or a slide along it, of every link it
+//! carries, written directly from the joint points. Velocity
 //! solves `J q̇ = -j_in ω_in`; acceleration solves `J q̈ = -b` where `b` is the
 //! cut joints' relative acceleration with zero coordinate accelerations (the
 //! quadratic-velocity term, Coriolis included).
@@ -143,7 +144,7 @@ pub struct Newton {
     lu: SmallLu,
     rhs: DVector<f64>,
     rates: Vec<f64>,
-    /// Reused buffers: Jacobian column / bias, residual, saved state, predictor step.
+    /// Reused buffers: acceleration bias, residual, saved state, predictor step.
     col_buf: Vec<f64>,
     res_buf: Vec<f64>,
     saved: (DVector<f64>, DVector<f64>, DVector<f64>),
@@ -474,8 +475,9 @@ impl Newton {
         worst
     }
 
-    /// First (`second == false`) or second time derivative of the cut residuals.
-    fn cut_rates(&self, links: &[LinkMotion], second: bool, out: &mut [f64]) {
+    /// Second time derivative of the cut residuals (the acceleration bias `b` when the
+    /// coordinates' second derivatives are zero).
+    fn cut_accelerations(&self, links: &[LinkMotion], out: &mut [f64]) {
         for (c, cut) in self.cuts.iter().enumerate() {
             let (r0, r1) = match cut {
                 Cut::Revolute {
@@ -485,11 +487,7 @@ impl Newton {
                     b_local,
                 } => {
                     let (pa, pb) = (links[*a].point(a_local), links[*b].point(b_local));
-                    let d = if second {
-                        pa.acceleration - pb.acceleration
-                    } else {
-                        pa.velocity - pb.velocity
-                    };
+                    let d = pa.acceleration - pb.acceleration;
                     (d.x, d.y)
                 }
                 Cut::Prismatic(s) => {
@@ -499,20 +497,12 @@ impl Newton {
                     let d = p.position - q.position;
                     let dd = p.velocity - q.velocity;
                     let u_dot = perp(&u) * g.omega_rad_s;
-                    if second {
-                        let u_ddot =
-                            perp(&u) * g.alpha_rad_s2 - u * (g.omega_rad_s * g.omega_rad_s);
-                        let ddd = p.acceleration - q.acceleration;
-                        (
-                            cross(&u_ddot, &d) + 2.0 * cross(&u_dot, &dd) + cross(&u, &ddd),
-                            sl.alpha_rad_s2 - g.alpha_rad_s2,
-                        )
-                    } else {
-                        (
-                            cross(&u_dot, &d) + cross(&u, &dd),
-                            sl.omega_rad_s - g.omega_rad_s,
-                        )
-                    }
+                    let u_ddot = perp(&u) * g.alpha_rad_s2 - u * (g.omega_rad_s * g.omega_rad_s);
+                    let ddd = p.acceleration - q.acceleration;
+                    (
+                        cross(&u_ddot, &d) + 2.0 * cross(&u_dot, &dd) + cross(&u, &ddd),
+                        sl.alpha_rad_s2 - g.alpha_rad_s2,
+                    )
                 }
             };
             out[2 * c] = r0;
@@ -543,29 +533,36 @@ impl Newton {
     /// points (what a velocity pass with that one rate would give, without the pass).
     fn build_jacobian(&mut self, links: &[LinkMotion]) {
         for (c, cut) in self.cuts.iter().enumerate() {
+            // The cut's points and guide direction are the same for every column.
+            let (first, second, guide_dir) = match cut {
+                Cut::Revolute {
+                    a,
+                    a_local,
+                    b,
+                    b_local,
+                } => (
+                    (*a, links[*a].world(a_local)),
+                    (*b, links[*b].world(b_local)),
+                    None,
+                ),
+                Cut::Prismatic(s) => (
+                    (s.slider, links[s.slider].world(&s.slider_local)),
+                    (s.guide, links[s.guide].world(&s.through_local)),
+                    Some(links[s.guide].rotation * s.direction_local),
+                ),
+            };
             for k in 0..self.tree.len() {
-                let (r0, r1) = match cut {
-                    Cut::Revolute {
-                        a,
-                        a_local,
-                        b,
-                        b_local,
-                    } => {
-                        let (pa, pb) = (links[*a].world(a_local), links[*b].world(b_local));
-                        let d = self.unit_rate(k, *a, &pa).0 - self.unit_rate(k, *b, &pb).0;
-                        (d.x, d.y)
-                    }
-                    Cut::Prismatic(s) => {
-                        let (sl, g) = (&links[s.slider], &links[s.guide]);
-                        let u = g.rotation * s.direction_local;
-                        let (p, q) = (sl.world(&s.slider_local), g.world(&s.through_local));
-                        let (vp, w_slider) = self.unit_rate(k, s.slider, &p);
-                        let (vq, w_guide) = self.unit_rate(k, s.guide, &q);
-                        (
-                            cross(&(perp(&u) * w_guide), &(p - q)) + cross(&u, &(vp - vq)),
-                            w_slider - w_guide,
-                        )
-                    }
+                let (v_first, w_first) = self.unit_rate(k, first.0, &first.1);
+                let (v_second, w_second) = self.unit_rate(k, second.0, &second.1);
+                let (r0, r1) = match guide_dir {
+                    None => (v_first.x - v_second.x, v_first.y - v_second.y),
+                    // Slider point on the guide line: d/dt cross(u, p - q), and the
+                    // slider's turn relative to the guide.
+                    Some(u) => (
+                        cross(&(perp(&u) * w_second), &(first.1 - second.1))
+                            + cross(&u, &(v_first - v_second)),
+                        w_first - w_second,
+                    ),
                 };
                 if k == 0 {
                     self.rates[2 * c] = r0;
@@ -815,7 +812,7 @@ impl Newton {
             |_| 0.0,
         );
         let mut bias = std::mem::take(&mut self.col_buf);
-        self.cut_rates(links, true, &mut bias);
+        self.cut_accelerations(links, &mut bias);
         self.rhs.iter_mut().zip(&bias).for_each(|(r, b)| *r = -b);
         self.col_buf = bias;
         self.lu.solve_mut(&mut self.rhs);
