@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{SCENES, cycle, kinematics, wrap};
+use common::{SCENES, cycle, kinematics, motion_scales, wrap};
 use linkage::scene::SolverPath;
 use linkage::{Kinematics, Solution};
 
@@ -99,18 +99,8 @@ fn closed_form_and_newton_agree_to_1e12() {
             let (a, b) = (solve(&mut cf, x), solve(&mut nw, x));
             let amplification = 1.0 / a.conditioning.min(1.0).powi(2);
             let mut here: f64 = 0.0;
-            // Scales: the largest value in this position, at least size·ω and size·ω².
+            let (vmax, amax) = motion_scales(&a, size);
             let w = a.input_speed_rad_s.abs();
-            let vmax = a
-                .points
-                .iter()
-                .map(|p| p.velocity.amax())
-                .fold(size * w, f64::max);
-            let amax = a
-                .points
-                .iter()
-                .map(|p| p.acceleration.amax())
-                .fold(size * w * w, f64::max);
             for (p, q) in a.points.iter().zip(&b.points) {
                 here = here
                     .max((p.position - q.position).amax() / size)

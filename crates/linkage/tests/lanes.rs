@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{SCENES, cycle, kinematics};
+use common::{SCENES, cycle, kinematics, motion_scales};
 use linkage::lanes::{LANES, LaneSolution};
 use linkage::scene::SolverPath;
 use linkage::{Kinematics, Mechanism, Solution};
@@ -31,17 +31,7 @@ const CROSSED_SLIDERS: &str = r#"Scene(
 fn lane_difference(lanes: &LaneSolution, k: usize, one: &Solution, size: f64) -> f64 {
     let mut lane = Solution::default();
     lanes.lane_into(k, &mut lane);
-    let w = one.input_speed_rad_s.abs();
-    let vmax = one
-        .points
-        .iter()
-        .map(|p| p.velocity.amax())
-        .fold(size * w, f64::max);
-    let amax = one
-        .points
-        .iter()
-        .map(|p| p.acceleration.amax())
-        .fold(size * w * w, f64::max);
+    let (vmax, amax) = motion_scales(one, size);
     let mut worst: f64 = (lane.input_rad - one.input_rad).abs();
     for (p, q) in lane.points.iter().zip(&one.points) {
         worst = worst

@@ -44,3 +44,20 @@ pub fn wrap(a: f64) -> f64 {
     let t = std::f64::consts::TAU;
     a - (a / t).round() * t
 }
+
+/// Velocity and acceleration scales of one position: the largest point velocity and
+/// acceleration component, at least size·ω and size·ω².
+pub fn motion_scales(s: &linkage::Solution, size: f64) -> (f64, f64) {
+    let w = s.input_speed_rad_s.abs();
+    let vmax = s
+        .points
+        .iter()
+        .map(|p| p.velocity.amax())
+        .fold(size * w, f64::max);
+    let amax = s
+        .points
+        .iter()
+        .map(|p| p.acceleration.amax())
+        .fold(size * w * w, f64::max);
+    (vmax, amax)
+}
