@@ -4,7 +4,9 @@
 //! answer the dialog themselves.
 
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
+use std::time::Duration;
+
+use web_time::Instant;
 
 use raw_window_handle::{HasDisplayHandle, HasWindowHandle};
 

@@ -27,6 +27,7 @@ pub mod scene;
 mod small_lu;
 pub mod sweep;
 pub mod synthesis;
+mod unique_map;
 
 pub use error::{LinkageError, Result};
 pub use kinematics::{Kinematics, PathKind};

@@ -172,6 +172,29 @@ fn finite(name: &str, v: f64) -> Result<f64> {
     }
 }
 
+/// Largest angle a scene may give, rad (about 3200 turns). A double holds angles up to
+/// here to 4e-12 rad; far beyond it the reduction to one turn, which every sine and
+/// cosine does, loses the angle itself (at 1e16 deg one unit in the last place is
+/// over a turn, and a sweep from there is no longer monotonic).
+pub const MAX_ANGLE_RAD: f64 = 2.0e4;
+
+/// A scene angle `v` in the scene's unit (`rad_per_unit` radians each), in radians.
+fn scene_angle(name: &str, v: f64, rad_per_unit: f64) -> Result<f64> {
+    let rad = finite(name, v)? * rad_per_unit;
+    if rad.abs() <= MAX_ANGLE_RAD {
+        Ok(rad)
+    } else {
+        let limit = MAX_ANGLE_RAD / rad_per_unit;
+        Err(LinkageError::InvalidParameter {
+            name: name.to_string(),
+            value: v,
+            valid: format!(
+                "must lie within ±{limit:.6} (the scene's angle unit; about 3200 turns), beyond which a double cannot hold the angle to 1e-11 rad: give it within one turn"
+            ),
+        })
+    }
+}
+
 fn positive(name: &str, v: f64) -> Result<f64> {
     if v.is_finite() && v > 0.0 {
         Ok(v)
@@ -348,8 +371,8 @@ impl Mechanism {
             }
             let (point, slider_local) = point_on(slider, &s.point, &ctx)?;
             let (_, through_local) = point_on(guide, &s.through, &ctx)?;
-            let angle = finite(&format!("{ctx}.angle"), s.angle)? * ang;
-            let rel = finite(&format!("{ctx}.relative_angle"), s.relative_angle)? * ang;
+            let angle = scene_angle(&format!("{ctx}.angle"), s.angle, ang)?;
+            let rel = scene_angle(&format!("{ctx}.relative_angle"), s.relative_angle, ang)?;
             sliders.push(Prismatic {
                 name: format!("{}/{}", s.slider, s.guide),
                 slider,
@@ -396,7 +419,7 @@ impl Mechanism {
             link: driver_link,
             pivot,
             speed_rad_s,
-            start_rad: finite("driver.start", d.start)? * ang,
+            start_rad: scene_angle("driver.start", d.start, ang)?,
         };
 
         let mut branches = Vec::new();
@@ -427,7 +450,7 @@ impl Mechanism {
             let li = link_of(name, "guess")?;
             guess[li] = Some((
                 v2(&format!("guess.{name}"), (x, y))?,
-                finite("guess angle", a)? * ang,
+                scene_angle("guess angle", a, ang)?,
             ));
         }
 
@@ -552,7 +575,7 @@ fn convert_forces(
     }
     for s in &mut out.stops {
         has_link(&s.link, "stop")?;
-        s.angle = finite("stop angle", s.angle)? * ang;
+        s.angle = scene_angle("stop angle", s.angle, ang)?;
     }
     if let Some((gx, gy)) = out.gravity {
         finite("gravity x", gx)?;

@@ -64,6 +64,7 @@ impl AngleUnit {
 
 /// One rigid link.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct LinkSpec {
     /// Unique name (CSV columns use it).
     pub name: String,
@@ -71,6 +72,7 @@ pub struct LinkSpec {
     #[serde(default)]
     pub ground: bool,
     /// Named points in link coordinates.
+    #[serde(deserialize_with = "crate::unique_map::deserialize")]
     pub points: IndexMap<String, (f64, f64)>,
     /// Mass, kg (dynamics only).
     #[serde(default)]
@@ -86,6 +88,7 @@ pub struct LinkSpec {
 /// A prismatic joint: `point` of link `slider` stays on the line of link `guide`
 /// through `through` at `angle`, and the slider turns with the guide.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SliderSpec {
     /// The sliding link.
     pub slider: String,
@@ -113,6 +116,7 @@ pub enum Speed {
 
 /// The driver: the input link's absolute angle is the input coordinate.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct DriverSpec {
     /// Link whose x-axis angle is the input; it must share a point with ground.
     pub link: String,
@@ -159,6 +163,7 @@ pub enum FreeLength {
 
 /// A linear spring between two named points.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SpringSpec {
     /// First end point.
     pub a: String,
@@ -172,6 +177,7 @@ pub struct SpringSpec {
 
 /// A viscous damper.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub enum DamperSpec {
     /// Between two named points, N·s/m.
     Linear {
@@ -205,6 +211,7 @@ pub enum ForceWhen {
 
 /// A constant force at a named point.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct PointForceSpec {
     /// Where it acts.
     pub point: String,
@@ -217,6 +224,7 @@ pub struct PointForceSpec {
 
 /// A constant torque on a link, N·m (counter-clockwise positive).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct TorqueSpec {
     /// Link it acts on.
     pub link: String,
@@ -236,6 +244,7 @@ pub enum StopAction {
 
 /// An end stop: an event when a link reaches an angle.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct StopSpec {
     /// Event name.
     pub name: String,
@@ -250,6 +259,7 @@ pub struct StopSpec {
 
 /// Forces a scene declares; only scenes whose `models` needs them use them.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct ForcesSpec {
     /// Gravity vector, m/s².
     #[serde(default)]
@@ -285,6 +295,7 @@ pub enum SolverPath {
 
 /// Solver settings in a scene.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct SolverSpec {
     /// Preferred path.
     #[serde(default)]
@@ -317,7 +328,7 @@ impl Default for SolverSpec {
 
 /// A whole scene file (written `Scene( ... )` in RON).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(rename = "Scene")]
+#[serde(rename = "Scene", deny_unknown_fields)]
 pub struct SceneFile {
     /// Title shown to the user.
     pub name: String,
@@ -343,13 +354,13 @@ pub struct SceneFile {
     /// The input.
     pub driver: DriverSpec,
     /// Assembly branch per dyad, keyed by the dyad's inner joint point.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::unique_map::deserialize")]
     pub branches: IndexMap<String, Branch>,
     /// The main output link (for the time ratio); the last link when absent.
     #[serde(default)]
     pub output: Option<String>,
     /// Starting guesses `(x, y, angle)` per link for chains only Newton can solve.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "crate::unique_map::deserialize")]
     pub guess: IndexMap<String, (f64, f64, f64)>,
     /// Force elements.
     #[serde(default)]
@@ -360,7 +371,8 @@ pub struct SceneFile {
 }
 
 impl SceneFile {
-    /// Parses scene text; syntax errors carry line and column.
+    /// Parses scene text. Syntax errors, unknown fields (with the fields allowed there)
+    /// and keys given twice carry line and column.
     pub fn parse(text: &str) -> Result<Self> {
         ron::Options::default()
             .from_str(text)

@@ -30,4 +30,4 @@ pub mod tradeoff;
 pub use forces::{EnergyTerms, ForceModel, Load, Reduced};
 pub use output::{RunStats, Sample, SimEvent, Simulation};
 pub use run::simulate;
-pub use settings::{Method, Settings};
+pub use settings::{MAX_OUTPUT_SAMPLES, MAX_STEPS, Method, Settings};

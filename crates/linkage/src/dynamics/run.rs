@@ -2,7 +2,7 @@
 //! output, samples on the output grid, and the coordinate switch near dead points.
 
 use std::f64::consts::TAU;
-use std::time::Instant;
+use web_time::Instant;
 
 use super::adaptive::{self, Attempt, Controller, Pair, Stages, Tolerance};
 use super::dense::Dense;
@@ -11,7 +11,7 @@ use super::forces::ForceModel;
 use super::implicit;
 use super::output::{RunStats, Sample, SimEvent, Simulation};
 use super::rhs::{Point, Rhs, State};
-use super::settings::{Method, Settings};
+use super::settings::{MAX_STEPS, Method, Settings};
 use crate::error::{LinkageError, Result};
 use crate::kinematics::Kinematics;
 use crate::roots_util::refine;
@@ -88,6 +88,30 @@ fn stiffness(rhs: &mut Rhs<'_>, a: &Point) -> Result<f64> {
     } else {
         (-acc_x).sqrt()
     })
+}
+
+/// The error of a run that spent [`MAX_STEPS`]: where it got to, and what to change.
+fn budget_spent(stats: &RunStats, t: f64, settings: &Settings) -> LinkageError {
+    let stiff = settings
+        .method
+        .stability_limit()
+        .map(|limit| limit / stats.stiffness_per_s)
+        .filter(|h_limit| t / (stats.steps.max(1) as f64) < 2.0 * h_limit);
+    let advice = match stiff {
+        Some(h_limit) => format!(
+            "the motion is stiff (|λ| = {:.4e} 1/s; {} is stable only below h = {h_limit:.3e} s): use --method implicit",
+            stats.stiffness_per_s,
+            settings.method.label()
+        ),
+        None => "loosen rtol/atol or take a larger step".to_string(),
+    };
+    LinkageError::InvalidParameter {
+        name: "t_end".into(),
+        value: settings.t_end,
+        valid: format!(
+            "the run took {MAX_STEPS} steps (the most one run may take) and reached only t = {t:.6e} s: {advice}"
+        ),
+    }
 }
 
 /// Integrates the scene of `k` as `settings` say: from its start position (the
@@ -192,6 +216,9 @@ pub fn simulate(k: &Kinematics, settings: &Settings) -> Result<Simulation> {
     let mut stages = Stages::default();
     let mut controller = Controller::default();
     'run: while a.t < settings.t_end {
+        if stats.steps + stats.rejected_steps >= MAX_STEPS {
+            return Err(budget_spent(&stats, a.t, settings));
+        }
         // One accepted step a -> b, with its dense output made on demand.
         let b = match (method, pair) {
             (_, Some(p)) => loop {
@@ -269,14 +296,17 @@ pub fn simulate(k: &Kinematics, settings: &Settings) -> Result<Simulation> {
                 hit = Some((t_hit, i));
             }
         }
-        let t_until = hit.map_or(b.t, |(t, _)| t);
+        // A stop ends the run at the hit; a reported event leaves the rest of the step
+        // to sample from this step's dense output, like any other.
+        let stop_hit = hit.filter(|&(_, i)| stops[i].stops);
+        let t_until = stop_hit.map_or(b.t, |(t, _)| t);
         if let Some(dt) = settings.output_dt {
             while let Some(t_out) = next_output.filter(|&t| t <= t_until) {
                 let d = make_dense(&mut rhs, &mut dense)?;
                 samples.push(sampler.sample(&mut rhs, t_out, &d.eval(t_out), segment)?);
                 next_output = Some(t_out + dt).filter(|&t| t <= settings.t_end);
             }
-        } else if hit.is_none() {
+        } else if stop_hit.is_none() {
             samples.push(sampler.sample(&mut rhs, b.t, &b.y, segment)?);
         }
         if let Some((t_hit, i)) = hit {

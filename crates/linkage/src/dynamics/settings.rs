@@ -69,6 +69,14 @@ impl Method {
     }
 }
 
+/// Most steps one run may take. Every run ends: a tolerance far below round-off, a
+/// step far below the motion's time scale or a stiff spring under an explicit method
+/// would otherwise run for hours. A million DOP853 steps is about a second here.
+pub const MAX_STEPS: usize = 1_000_000;
+
+/// Most output samples one run may hold (`t_end / output_dt`), about 100 MB.
+pub const MAX_OUTPUT_SAMPLES: f64 = 1e6;
+
 /// How to run a simulation.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Settings {
@@ -155,10 +163,35 @@ impl Settings {
         if !self.q_dot0.is_finite() {
             return invalid("initial speed", self.q_dot0, "must be finite");
         }
-        if let Some(dt) = self.output_dt
-            && !(dt > 0.0 && dt.is_finite())
-        {
-            return invalid("output dt", dt, "must be finite and > 0 s");
+        if let Some(dt) = self.output_dt {
+            if !(dt > 0.0 && dt.is_finite()) {
+                return invalid("output dt", dt, "must be finite and > 0 s");
+            }
+            if self.t_end / dt > MAX_OUTPUT_SAMPLES {
+                let least = self.t_end / MAX_OUTPUT_SAMPLES;
+                return invalid(
+                    "output dt",
+                    dt,
+                    &format!(
+                        "gives {:.3e} samples over t_end = {} s; at most {MAX_OUTPUT_SAMPLES:.0e}: make it at least {least:.3e} s",
+                        self.t_end / dt,
+                        self.t_end
+                    ),
+                );
+            }
+        }
+        let fixed_time_step = !self.method.is_adaptive() && self.method != Method::EnergyIncrement;
+        if fixed_time_step && self.t_end / self.step > MAX_STEPS as f64 {
+            let least = self.t_end / MAX_STEPS as f64;
+            return invalid(
+                "step",
+                self.step,
+                &format!(
+                    "takes {:.3e} steps to t_end = {} s; at most {MAX_STEPS}: make it at least {least:.3e} s or shorten the run",
+                    self.t_end / self.step,
+                    self.t_end
+                ),
+            );
         }
         Ok(())
     }

@@ -2,7 +2,7 @@
 //! the right-hand-side evaluations and the error against a reference run at the
 //! tightest tolerance.
 
-use std::time::Instant;
+use web_time::Instant;
 
 use serde::Serialize;
 
