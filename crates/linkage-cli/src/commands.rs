@@ -1,4 +1,7 @@
-//! The commands: each returns its whole output as text, or an error message.
+//! The commands: each writes its output as it goes (a sweep row by row), or fails with
+//! a message; a failed write is kept apart so that a closed pipe ends quietly.
+
+use std::io::Write;
 
 use linkage::scene::{Branch, SolverPath};
 use linkage::sweep::{csv_header, csv_row};
@@ -8,14 +11,56 @@ use serde_json::{Value, json};
 
 use crate::{Command, Format, PathArg, SceneArgs, SynthCommand};
 
-/// Runs one command.
-pub fn run(command: Command) -> Result<String, String> {
-    match command {
+/// Why a command did not finish.
+#[derive(Debug)]
+pub enum Failure {
+    /// The command's own error, as shown to the user.
+    Message(String),
+    /// Writing the output failed (a closed pipe, a full disk).
+    Output(std::io::Error),
+}
+
+impl From<String> for Failure {
+    fn from(message: String) -> Self {
+        Self::Message(message)
+    }
+}
+
+impl From<linkage::LinkageError> for Failure {
+    fn from(e: linkage::LinkageError) -> Self {
+        Self::Message(e.to_string())
+    }
+}
+
+impl From<std::io::Error> for Failure {
+    fn from(e: std::io::Error) -> Self {
+        Self::Output(e)
+    }
+}
+
+impl From<csv::Error> for Failure {
+    fn from(e: csv::Error) -> Self {
+        match e.into_kind() {
+            csv::ErrorKind::Io(io) => Self::Output(io),
+            other => Self::Message(format!("cannot write CSV: {other:?}")),
+        }
+    }
+}
+
+/// Most rows `sweep` writes as CSV (streamed: memory stays flat) and as JSON (held
+/// whole: about 1 kB a row).
+pub const MAX_CSV_STEPS: usize = 100_000_000;
+/// See [`MAX_CSV_STEPS`].
+pub const MAX_JSON_STEPS: usize = 100_000;
+
+/// Runs one command, writing its output to `out`.
+pub fn run(command: Command, out: &mut dyn Write) -> Result<(), Failure> {
+    let text = match command {
         Command::Sweep {
             scene,
             steps,
             format,
-        } => sweep(&scene, steps, format),
+        } => return sweep(&scene, steps, format, out),
         Command::At {
             scene,
             input_deg,
@@ -30,7 +75,9 @@ pub fn run(command: Command) -> Result<String, String> {
             steps,
             format,
         } => crate::kinetostatics::run(&scene, steps, format),
-    }
+    }?;
+    out.write_all(text.as_bytes())?;
+    Ok(())
 }
 
 pub(crate) fn load(args: &SceneArgs) -> Result<Kinematics, String> {
@@ -127,8 +174,26 @@ pub(crate) fn json_text(v: &Value) -> Result<String, String> {
         .map_err(|e| e.to_string())
 }
 
-fn sweep(args: &SceneArgs, steps: usize, format: Format) -> Result<String, String> {
+fn sweep(
+    args: &SceneArgs,
+    steps: usize,
+    format: Format,
+    out: &mut dyn Write,
+) -> Result<(), Failure> {
+    let most = match format {
+        Format::Csv => MAX_CSV_STEPS,
+        Format::Json => MAX_JSON_STEPS,
+    };
+    if steps > most {
+        return Err(Failure::Message(format!(
+            "--steps {steps} is too many for {} output: at most {most}",
+            if format == Format::Csv { "CSV" } else { "JSON" }
+        )));
+    }
     let mut k = load(args)?;
+    if format == Format::Csv {
+        return sweep_csv(&mut k, steps, out);
+    }
     let sw = linkage::sweep::sweep(&mut k, steps).map_err(|e| e.to_string())?;
     let m = k.mechanism();
     let header = csv_header(m);
@@ -141,15 +206,8 @@ fn sweep(args: &SceneArgs, steps: usize, format: Format) -> Result<String, Strin
     for r in &rows {
         check_finite(r, "sweep")?;
     }
-    for x in &sw.near_singular {
-        eprintln!(
-            "warning: near a dead point/tangency at input {:.4} deg (velocities lose digits)",
-            x.to_degrees()
-        );
-    }
-    match format {
-        Format::Csv => to_csv(&header, &rows),
-        Format::Json => json_text(&json!({
+    warn_near_singular(&sw.near_singular);
+    let text = json_text(&json!({
             "scene": m.name,
             "solver_path": k.path().label(),
             "input_speed_rad_s": m.driver.speed_rad_s,
@@ -157,7 +215,36 @@ fn sweep(args: &SceneArgs, steps: usize, format: Format) -> Result<String, Strin
             "near_singular_inputs_rad": sw.near_singular,
             "columns": header,
             "rows": rows,
-        })),
+    }))?;
+    out.write_all(text.as_bytes())?;
+    Ok(())
+}
+
+/// The sweep as CSV, each row written as soon as it is solved.
+fn sweep_csv(k: &mut Kinematics, steps: usize, out: &mut dyn Write) -> Result<(), Failure> {
+    let header = csv_header(k.mechanism());
+    let mut w = csv::Writer::from_writer(out);
+    w.write_record(&header)?;
+    let mut cells: Vec<String> = Vec::with_capacity(header.len());
+    let info = linkage::sweep::sweep_each(k, steps, |m, s, angles| -> Result<(), Failure> {
+        let row = csv_row(m, s, angles);
+        check_finite(&row, "sweep")?;
+        cells.clear();
+        cells.extend(row.iter().map(|v| format!("{v:e}")));
+        w.write_record(&cells)?;
+        Ok(())
+    })?;
+    w.flush()?;
+    warn_near_singular(&info.near_singular);
+    Ok(())
+}
+
+fn warn_near_singular(inputs_rad: &[f64]) {
+    for x in inputs_rad {
+        eprintln!(
+            "warning: near a dead point/tangency at input {:.4} deg (velocities lose digits)",
+            x.to_degrees()
+        );
     }
 }
 

@@ -9,6 +9,7 @@ mod plot;
 mod simulate;
 mod tradeoff;
 
+use std::io::{ErrorKind, Write};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -52,7 +53,7 @@ struct SceneArgs {
     #[arg(long, value_enum, default_value_t = PathArg::Auto)]
     path: PathArg,
     /// Input speed in rad/s for velocities (default: the scene's crank speed).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     speed_rad_s: Option<f64>,
 }
 
@@ -74,7 +75,7 @@ enum Command {
         #[command(flatten)]
         scene: SceneArgs,
         /// Input (crank) angle in degrees.
-        #[arg(long, allow_negative_numbers = true)]
+        #[arg(long, allow_hyphen_values = true)]
         input_deg: f64,
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Json)]
@@ -128,22 +129,22 @@ enum SynthCommand {
     /// Crank-rocker from rocker length, swing and time ratio K (JSON; --scene-out writes a scene).
     CrankRocker {
         /// Rocker length CD, m.
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         rocker: f64,
         /// Rocker swing, degrees.
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         swing_deg: f64,
         /// Time ratio K (> 1).
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true)]
         k: f64,
         /// Angle of the first rocker limit position about D, degrees.
-        #[arg(long, default_value_t = 45.0, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 45.0, allow_hyphen_values = true)]
         rocker_start_deg: f64,
         /// The free choice: A's angle on the synthesis circle (default: best transmission angle).
-        #[arg(long, allow_negative_numbers = true)]
+        #[arg(long, allow_hyphen_values = true)]
         arc_deg: Option<f64>,
         /// Which mirror circle A lies on when --arc-deg is given (+1 or -1).
-        #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
+        #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
         side: i8,
         /// Write the four-bar as a scene file here.
         #[arg(long)]
@@ -152,31 +153,36 @@ enum SynthCommand {
     /// The die cutter's toggle six-bar from stroke H, K and CD = CE = L (scene RON on stdout).
     DieCutter {
         /// Stroke H, mm.
-        #[arg(long, default_value_t = 50.0)]
+        #[arg(long, allow_hyphen_values = true, default_value_t = 50.0)]
         stroke_mm: f64,
         /// Time ratio K.
-        #[arg(long, default_value_t = 1.3)]
+        #[arg(long, allow_hyphen_values = true, default_value_t = 1.3)]
         k: f64,
         /// CD = CE = L, mm.
-        #[arg(long, default_value_t = 600.0)]
+        #[arg(long, allow_hyphen_values = true, default_value_t = 600.0)]
         link_mm: f64,
         /// Crank speed, rpm.
-        #[arg(long, default_value_t = 50.0)]
+        #[arg(long, allow_hyphen_values = true, default_value_t = 50.0)]
         rpm: f64,
         /// Build the "as printed" variant with these AB and BC (mm) instead.
-        #[arg(long, num_args = 2, value_names = ["AB_MM", "BC_MM"])]
+        #[arg(long, allow_hyphen_values = true, num_args = 2, value_names = ["AB_MM", "BC_MM"])]
         as_printed: Option<Vec<f64>>,
     },
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    match commands::run(cli.command) {
-        Ok(text) => {
-            print!("{text}");
-            ExitCode::SUCCESS
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    let result = commands::run(cli.command, &mut out).and_then(|()| Ok(out.flush()?));
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        // A reader that closed the pipe (`| head`) has all it wanted: not an error.
+        Err(commands::Failure::Output(e)) if e.kind() == ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(commands::Failure::Output(e)) => {
+            eprintln!("error: cannot write the output: {e}");
+            ExitCode::FAILURE
         }
-        Err(message) => {
+        Err(commands::Failure::Message(message)) => {
             eprintln!("error: {message}");
             ExitCode::FAILURE
         }

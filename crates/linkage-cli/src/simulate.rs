@@ -48,25 +48,25 @@ pub struct SimArgs {
     pub method: MethodArg,
     /// Time step of the fixed-step methods, s; for the adaptive ones the largest step
     /// (default: none).
-    #[arg(long)]
+    #[arg(long, allow_hyphen_values = true)]
     pub dt: Option<f64>,
     /// Angle step of the energy-increment method, rad.
-    #[arg(long, default_value_t = 1e-4)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-4)]
     pub dphi: f64,
     /// Relative tolerance of the adaptive methods.
-    #[arg(long, default_value_t = 1e-10)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-10)]
     pub rtol: f64,
     /// Absolute tolerance of the adaptive methods (rad, rad/s).
-    #[arg(long, default_value_t = 1e-12)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-12)]
     pub atol: f64,
     /// End time, s (or the first end stop).
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
     pub t_end: f64,
     /// Ignore the scene's end stops.
     #[arg(long)]
     pub no_stops: bool,
     /// Output grid, s (the method's dense output).
-    #[arg(long, default_value_t = 1e-3)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-3)]
     pub dt_out: f64,
     /// Link whose angle is the coordinate at the start (default: the scene's driver).
     #[arg(long)]

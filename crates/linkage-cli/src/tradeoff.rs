@@ -13,13 +13,13 @@ use crate::plot::{Series, work_precision_png};
 #[derive(clap::Args, Debug)]
 pub struct TradeoffArgs {
     /// End time, s (or the first end stop).
-    #[arg(long, default_value_t = 2.0)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 2.0)]
     pub t_end: f64,
     /// Ignore the scene's end stops.
     #[arg(long)]
     pub no_stops: bool,
     /// Grid on which the error against the reference is measured, s.
-    #[arg(long, default_value_t = 1e-3)]
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-3)]
     pub grid: f64,
     /// Also write the error-against-CPU-time plot here (PNG).
     #[arg(long)]

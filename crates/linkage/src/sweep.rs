@@ -45,23 +45,71 @@ pub fn sweep_range(k: &Kinematics) -> Result<([f64; 2], bool)> {
     Ok(([a + hair, b - hair], false))
 }
 
+/// Most positions [`sweep`] holds in memory (about 1 kB each for a six-bar).
+pub const MAX_SWEEP_STEPS: usize = 1_000_000;
+
+/// What [`sweep_each`] found besides the positions it handed out.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepInfo {
+    /// Inputs (rad) where the conditioning fell below [`NEAR_SINGULAR`].
+    pub near_singular: Vec<f64>,
+    /// The range swept, rad.
+    pub range: [f64; 2],
+}
+
 /// Solves `steps` positions over [`sweep_range`] at the scene's input speed (a full
 /// turn excludes its end, which repeats the start).
+///
+/// # Errors
+/// Fewer than 2 or more than [`MAX_SWEEP_STEPS`] steps, or the solver's error.
 pub fn sweep(k: &mut Kinematics, steps: usize) -> Result<Sweep> {
+    if steps > MAX_SWEEP_STEPS {
+        return Err(LinkageError::InvalidParameter {
+            name: "steps".into(),
+            value: steps as f64,
+            valid: format!("must be at most {MAX_SWEEP_STEPS} (held in memory)"),
+        });
+    }
+    let mut solutions = Vec::with_capacity(steps);
+    let mut angles: Vec<Vec<f64>> = Vec::with_capacity(steps);
+    let info = sweep_each(k, steps, |_, s, a| -> Result<()> {
+        solutions.push(s.clone());
+        angles.push(a.to_vec());
+        Ok(())
+    })?;
+    Ok(Sweep {
+        solutions,
+        angles,
+        near_singular: info.near_singular,
+        range: info.range,
+    })
+}
+
+/// Like [`sweep`], but hands each position to `visit` (with the link angles
+/// unwrapped along the sweep) instead of keeping it: memory stays flat for any count.
+///
+/// # Errors
+/// Fewer than 2 steps, the solver's error, or the first error of `visit`.
+pub fn sweep_each<E: From<LinkageError>>(
+    k: &mut Kinematics,
+    steps: usize,
+    mut visit: impl FnMut(&Mechanism, &Solution, &[f64]) -> std::result::Result<(), E>,
+) -> std::result::Result<SweepInfo, E> {
     if steps < 2 {
         return Err(LinkageError::InvalidParameter {
             name: "steps".into(),
             value: steps as f64,
             valid: "must be at least 2".into(),
-        });
+        }
+        .into());
     }
     let ([a, b], full) = sweep_range(k)?;
     let speed = k.mechanism().driver.speed_rad_s;
     let divisions = if full { steps } else { steps - 1 };
-    let mut solutions = Vec::with_capacity(steps);
-    let mut angles: Vec<Vec<f64>> = Vec::with_capacity(steps);
     let mut near_singular = Vec::new();
     let mut lanes = k.empty_lane_solution();
+    let mut s = k.empty_solution();
+    let mut angles: Vec<f64> = Vec::new();
     // LANES inputs per call: the closed form solves them together in SIMD lanes.
     // The last call repeats its final input to fill the lanes.
     for first in (0..steps).step_by(LANES) {
@@ -70,27 +118,21 @@ pub fn sweep(k: &mut Kinematics, steps: usize) -> Result<Sweep> {
         });
         k.solve_lanes(inputs, speed, &mut lanes)?;
         for lane in 0..LANES.min(steps - first) {
-            let mut s = k.empty_solution();
             lanes.lane_into(lane, &mut s);
             if s.conditioning < NEAR_SINGULAR {
                 near_singular.push(s.input_rad);
             }
-            let row: Vec<f64> = match angles.last() {
-                None => s.links.iter().map(|l| l.angle_rad()).collect(),
-                Some(prev) => s
-                    .links
-                    .iter()
-                    .zip(prev)
-                    .map(|(l, p)| unwrap_near(l.angle_rad(), *p))
-                    .collect(),
-            };
-            angles.push(row);
-            solutions.push(s);
+            if first == 0 && lane == 0 {
+                angles.extend(s.links.iter().map(|l| l.angle_rad()));
+            } else {
+                for (prev, l) in angles.iter_mut().zip(&s.links) {
+                    *prev = unwrap_near(l.angle_rad(), *prev);
+                }
+            }
+            visit(k.mechanism(), &s, &angles)?;
         }
     }
-    Ok(Sweep {
-        solutions,
-        angles,
+    Ok(SweepInfo {
         near_singular,
         range: [a, b],
     })

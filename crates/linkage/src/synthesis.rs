@@ -229,10 +229,25 @@ pub fn die_cutter_far_angle(spec: &DieCutterSpec) -> Result<f64> {
     Ok(s.asin())
 }
 
+/// The written scene must load again: a crank speed that is not a finite number
+/// would give a scene file that no reader accepts.
+fn check_crank_speed(spec: &DieCutterSpec) -> Result<()> {
+    if spec.crank_rpm.is_finite() {
+        Ok(())
+    } else {
+        Err(LinkageError::InvalidParameter {
+            name: "crank speed (rpm)".into(),
+            value: spec.crank_rpm,
+            valid: "must be a finite number".into(),
+        })
+    }
+}
+
 /// Synthesizes the toggle six-bar: rocker CD swings from φ30 to 90° (C on DE at the
 /// top, the toggle), crank-rocker ABCD from the swing and K, CE = CD, slider E on a
 /// vertical guide through D. Returns the scene (mm) and the four-bar design.
 pub fn die_cutter(spec: &DieCutterSpec) -> Result<(SceneFile, CrankRocker)> {
+    check_crank_speed(spec)?;
     let phi30 = die_cutter_far_angle(spec)?;
     let design = crank_rocker(
         spec.link_m,
@@ -273,6 +288,7 @@ pub fn die_cutter_as_printed(
     coupler_m: f64,
     spec: &DieCutterSpec,
 ) -> Result<(SceneFile, CrankRocker)> {
+    check_crank_speed(spec)?;
     let theta = std::f64::consts::PI * (spec.k - 1.0) / (spec.k + 1.0);
     let (near, far) = (coupler_m - crank_m, coupler_m + crank_m);
     let chord = (near * near + far * far - 2.0 * near * far * theta.cos()).sqrt();
