@@ -19,7 +19,8 @@ cargo build --profile wasm-release --target wasm32-unknown-unknown --bin linkage
 rm -rf dist && mkdir -p dist
 wasm-bindgen --target web --no-typescript --out-dir dist \
     target/wasm32-unknown-unknown/wasm-release/linkage-lab.wasm
-sed -e 's|<link data-trunk rel="rust"[^>]*/>|<script type="module">import init from "./linkage-lab.js"; init();</script>|' \
+# window.wasmBindings, as trunk names it: the browser test reads the app's controls there.
+sed -e 's|<link data-trunk rel="rust"[^>]*/>|<script type="module">import init, * as bindings from "./linkage-lab.js"; window.wasmBindings = bindings; init();</script>|' \
     index.html > dist/index.html
 ls -l dist
 

@@ -75,6 +75,8 @@ pub struct AppState {
     pub files: ui::files::Files,
     /// Show measured CPU times (off in snapshot tests, whose pixels must repeat).
     pub show_timings: bool,
+    /// Where this frame's controls are (tests drive the app through it).
+    pub controls: ui::control_map::ControlMap,
 }
 
 impl AppState {
@@ -93,6 +95,7 @@ impl AppState {
             status: None,
             files: ui::files::Files::default(),
             show_timings: true,
+            controls: ui::control_map::ControlMap::default(),
         }
     }
 
@@ -185,6 +188,7 @@ fn open_or_explain(key: &str) -> Session {
 impl eframe::App for LinkageApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         let started = web_time::Instant::now();
+        self.state.controls.clear();
         let dt = f64::from(ui.input(|i| i.stable_dt)).min(0.1);
         let solver_started = web_time::Instant::now();
         if self.state.playing {
@@ -224,7 +228,10 @@ impl eframe::App for LinkageApp {
             .cost
             .add(solver_us, started.elapsed().as_secs_f64() * 1e6);
         #[cfg(target_arch = "wasm32")]
-        self.url.update(&self.state.session);
+        {
+            self.url.update(&self.state.session);
+            crate::web::publish_controls(&self.state);
+        }
         self.frames_drawn += 1;
         #[cfg(target_arch = "wasm32")]
         if self.frames_drawn == 1 {

@@ -13,6 +13,13 @@ pub mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;
 
+/// The controls on screen and the session's state as JSON, for the browser test
+/// (exported to the page by the binary as `linkage_lab_controls`).
+#[cfg(target_arch = "wasm32")]
+pub fn controls_json() -> String {
+    web::controls_json()
+}
+
 pub use app::LinkageApp;
 
 /// How the desktop app starts (from its command line).

@@ -28,3 +28,11 @@ fn main() -> eframe::Result {
 fn main() {
     linkage_lab::start_web();
 }
+
+/// The browser test's hook: where each control is and the session's state, as JSON
+/// (`window.wasmBindings.linkage_lab_controls()`).
+#[cfg(target_arch = "wasm32")]
+#[wasm_bindgen::prelude::wasm_bindgen]
+pub fn linkage_lab_controls() -> String {
+    linkage_lab::controls_json()
+}

@@ -8,6 +8,43 @@ use eframe::wasm_bindgen::{JsCast as _, JsValue, closure::Closure};
 
 use crate::session::{Session, url_state};
 
+thread_local! {
+    /// The last frame's controls and state as JSON (the page's test hook reads it).
+    static CONTROLS: RefCell<String> = const { RefCell::new(String::new()) };
+}
+
+/// What the page's test hook returns: the controls on screen and the session's state.
+#[derive(serde::Serialize)]
+struct Published<'a> {
+    controls: &'a crate::ui::control_map::ControlMap,
+    /// What the last edit could not do (a refusal), if anything.
+    message: Option<&'a str>,
+    /// Current input angle, deg.
+    input_deg: f64,
+    /// Whether the pose holds only finite numbers.
+    pose_finite: bool,
+}
+
+/// Keeps this frame's controls for [`controls_json`].
+pub fn publish_controls(st: &crate::app::AppState) {
+    let pose = st.session.pose();
+    let published = Published {
+        controls: &st.controls,
+        message: st.session.message(),
+        input_deg: st.session.input_rad().to_degrees(),
+        pose_finite: pose.points.iter().all(|p| {
+            p.position.x.is_finite() && p.position.y.is_finite() && p.velocity.x.is_finite()
+        }),
+    };
+    let json = serde_json::to_string(&published).unwrap_or_default();
+    CONTROLS.with(|c| *c.borrow_mut() = json);
+}
+
+/// The last frame's controls and state as JSON.
+pub fn controls_json() -> String {
+    CONTROLS.with(|c| c.borrow().clone())
+}
+
 /// The page's URL fragment (with its `#`), or empty.
 pub fn fragment() -> String {
     web_sys::window()

@@ -8,6 +8,7 @@ use linkage::dynamics::Method;
 
 use crate::app::AppState;
 use crate::session::dynamic_run::METHODS;
+use crate::ui::control_map::ControlKind;
 
 /// The accuracy panel.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
@@ -45,22 +46,22 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     ui.separator();
     ui.label("Dynamics (released from rest)");
     let mut choice = st.session.integrator();
-    egui::ComboBox::from_label("integrator")
+    let menu = egui::ComboBox::from_label("integrator")
         .selected_text(choice.method.label())
         .show_ui(ui, |ui| {
             for m in METHODS {
                 ui.selectable_value(&mut choice.method, m, m.label());
             }
         });
-    let changed = if choice.method.is_adaptive() {
+    st.controls
+        .note(ui, ControlKind::Integrator, "integrator", &menu.response);
+    let tolerance = if choice.method.is_adaptive() {
         ui.add(
             egui::Slider::new(&mut choice.rtol, 1e-12..=1e-3)
                 .logarithmic(true)
                 .custom_formatter(|v, _| format!("{v:.0e}"))
-                .custom_formatter(|v, _| format!("{v:.0e}"))
                 .text("rtol"),
         )
-        .changed()
     } else {
         let (range, label) = if choice.method == Method::EnergyIncrement {
             (1e-4..=1e-1, "Δφ (rad)")
@@ -74,8 +75,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
                 .custom_formatter(|v, _| format!("{v:.1e}"))
                 .text(label),
         )
-        .changed()
     };
+    st.controls
+        .note(ui, ControlKind::Tolerance, "tolerance", &tolerance);
+    let changed = tolerance.changed();
     match run {
         Ok(run) => {
             let s = run.stats();

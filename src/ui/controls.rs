@@ -7,6 +7,7 @@ use linkage::scene::Models;
 use crate::app::AppState;
 use crate::session::params::{mass_range, spring_range};
 use crate::session::unit_label;
+use crate::ui::control_map::ControlKind;
 
 /// Label of the crank-angle slider (UI tests find it by this).
 pub const CRANK_LABEL: &str = "crank angle (deg)";
@@ -16,7 +17,9 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     ui.heading("Controls");
     ui.horizontal(|ui| {
         let label = if st.playing { "Pause" } else { "Play" };
-        if ui.button(label).clicked() {
+        let play = ui.button(label);
+        st.controls.note(ui, ControlKind::Play, label, &play);
+        if play.clicked() {
             st.playing = !st.playing;
         }
         ui.add(
@@ -33,7 +36,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     }
     let slider = egui::Slider::new(&mut input, lo..=hi).text(CRANK_LABEL);
     // A full turn wraps, so dragging past 360 continues from 0.
-    if ui.add(slider).changed() {
+    let crank = ui.add(slider);
+    st.controls
+        .note(ui, ControlKind::Crank, CRANK_LABEL, &crank);
+    if crank.changed() {
         st.playing = false;
         st.session.set_input_deg(input);
     }
@@ -41,10 +47,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     if let Some(Ok(run)) = st.session.dynamics() {
         let end = run.duration_s();
         let mut t = st.session.time_s();
-        if ui
-            .add(egui::Slider::new(&mut t, 0.0..=end).text("run time (s)"))
-            .changed()
-        {
+        let r = ui.add(egui::Slider::new(&mut t, 0.0..=end).text("run time (s)"));
+        st.controls
+            .note(ui, ControlKind::RunTime, "run time (s)", &r);
+        if r.changed() {
             st.playing = false;
             st.session.set_time_s(t);
         }
@@ -61,10 +67,9 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         let Some(mut v) = p.value(st.session.scene()) else {
             continue;
         };
-        if ui
-            .add(egui::Slider::new(&mut v, p.range()).text(&p.label))
-            .changed()
-        {
+        let r = ui.add(egui::Slider::new(&mut v, p.range()).text(&p.label));
+        st.controls.note(ui, ControlKind::Length, &p.label, &r);
+        if r.changed() {
             st.session.set_length(i, v);
         }
     }
@@ -89,10 +94,9 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     if st.session.models() != Models::Kinematics && !springs.is_empty() {
         ui.separator();
         for (i, label, mut k, orig) in springs {
-            if ui
-                .add(egui::Slider::new(&mut k, spring_range(orig)).text(label))
-                .changed()
-            {
+            let r = ui.add(egui::Slider::new(&mut k, spring_range(orig)).text(&label));
+            st.controls.note(ui, ControlKind::Spring, &label, &r);
+            if r.changed() {
                 st.session.set_spring_k(i, k);
             }
         }
@@ -111,10 +115,9 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         if !masses.is_empty() {
             ui.separator();
             for (i, label, mut m, orig) in masses {
-                if ui
-                    .add(egui::Slider::new(&mut m, mass_range(orig)).text(label))
-                    .changed()
-                {
+                let r = ui.add(egui::Slider::new(&mut m, mass_range(orig)).text(&label));
+                st.controls.note(ui, ControlKind::Mass, &label, &r);
+                if r.changed() {
                     st.session.set_mass(i, m);
                 }
             }
@@ -127,10 +130,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         ui.label("Assembly branch");
         for (point, words, flipped) in branches {
             let mut on = flipped;
-            if ui
-                .checkbox(&mut on, format!("flip at {point} (now {words})"))
-                .changed()
-            {
+            let label = format!("flip at {point} (now {words})");
+            let r = ui.checkbox(&mut on, &label);
+            st.controls.note(ui, ControlKind::Branch, &label, &r);
+            if r.changed() {
                 st.session.flip_branch(&point);
             }
         }

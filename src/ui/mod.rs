@@ -1,6 +1,7 @@
 //! The panels, one file each.
 
 pub mod accuracy;
+pub mod control_map;
 pub mod controls;
 pub mod files;
 pub mod plots;

@@ -7,6 +7,7 @@ use eframe::egui;
 use crate::app::AppState;
 use crate::catalog::BUILTIN_SCENES;
 use crate::session::{SceneSource, Session};
+use crate::ui::control_map::ControlKind;
 use crate::ui::files;
 
 /// Display names of the shipped scenes (their `name` field), read once.
@@ -38,16 +39,25 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
                 SceneSource::File(name) => name.clone(),
             };
             let mut chosen = None;
-            egui::ComboBox::from_label("Scene")
+            let mut items = Vec::new();
+            let picker = egui::ComboBox::from_label("Scene")
                 .selected_text(current)
                 .width(300.0)
                 .show_ui(ui, |ui| {
                     for (b, name) in BUILTIN_SCENES.iter().zip(names()) {
-                        if ui.selectable_label(false, name).clicked() {
+                        let r = ui.selectable_label(false, name);
+                        items.push((name, r.rect, ui.clip_rect().contains_rect(r.rect)));
+                        if r.clicked() {
                             chosen = Some(b.key);
                         }
                     }
                 });
+            st.controls
+                .note(ui, ControlKind::ScenePicker, "Scene", &picker.response);
+            for (name, rect, visible) in items {
+                st.controls
+                    .note_rect(ControlKind::SceneItem, name, rect, visible);
+            }
             if let Some(key) = chosen {
                 match Session::open_builtin(key) {
                     Ok(s) => st.open(s),
