@@ -25,3 +25,5 @@ if ! kill -0 "$server" 2>/dev/null; then
     exit 1
 fi
 node tests/browser/browser_test.mjs "http://127.0.0.1:$port/"
+# Every scene file, through the picker and a URL fragment, every kind of control.
+node tests/browser/every_scene.mjs "http://127.0.0.1:$port/"

@@ -2,6 +2,9 @@
 //! that a link reopens the same mechanism in the same pose. Only edits relative to the
 //! shipped scene are written; a scene opened from a file cannot travel in a URL.
 
+use linkage::dynamics::Method;
+
+use super::dynamic_run::IntegratorChoice;
 use super::{SceneSource, Session};
 
 /// The state a URL fragment carries.
@@ -19,6 +22,8 @@ pub struct UrlState {
     pub masses: Vec<(String, f64)>,
     /// Points whose branch is flipped relative to the scene.
     pub flips: Vec<String>,
+    /// The dynamic run's integrator, where it differs from the default.
+    pub integrator: Option<IntegratorChoice>,
 }
 
 /// The fragment (without `#`) for the session's current state.
@@ -65,6 +70,15 @@ pub fn encode(s: &Session) -> String {
     if !flips.is_empty() {
         parts.push(format!("flip={}", flips.join(",")));
     }
+    let choice = s.integrator();
+    if choice != IntegratorChoice::default() {
+        parts.push(format!("int={}", choice.method.label()));
+        if choice.method.is_adaptive() {
+            parts.push(format!("rtol={:e}", choice.rtol));
+        } else {
+            parts.push(format!("step={:e}", choice.step));
+        }
+    }
     parts.join("&")
 }
 
@@ -84,6 +98,19 @@ pub fn decode(fragment: &str) -> UrlState {
             st.input_deg = number;
         } else if key == "flip" {
             st.flips = value.split(',').map(unescape).collect();
+        } else if key == "int" {
+            if let Some(method) = Method::ALL.into_iter().find(|m| m.label() == value) {
+                st.integrator
+                    .get_or_insert_with(IntegratorChoice::default)
+                    .method = method;
+            }
+        } else if let (Some(v), "rtol" | "step") = (number.filter(|v| *v > 0.0), key.as_str()) {
+            let choice = st.integrator.get_or_insert_with(IntegratorChoice::default);
+            if key == "rtol" {
+                choice.rtol = v;
+            } else {
+                choice.step = v;
+            }
         } else if let (Some(label), Some(v)) = (key.strip_prefix("len."), number) {
             st.lengths.push((label.to_string(), v));
         } else if let (Some(i), Some(v)) = (key.strip_prefix("k."), number) {
@@ -120,6 +147,9 @@ pub fn open(st: &UrlState) -> Result<Session, String> {
         if let Some(i) = s.scene().links.iter().position(|l| &l.name == name) {
             s.set_mass(i, *m);
         }
+    }
+    if let Some(choice) = st.integrator {
+        s.set_integrator(choice);
     }
     if let Some(x) = st.input_deg {
         s.set_input_deg(x);
@@ -177,10 +207,16 @@ mod tests {
         s.set_length(bc, 0.21);
         s.set_spring_k(0, 2000.0);
         s.set_input_deg(50.0);
+        s.set_integrator(IntegratorChoice {
+            method: Method::Rk4,
+            step: 2e-4,
+            ..IntegratorChoice::default()
+        });
         assert_eq!(s.message(), None);
         let fragment = encode(&s);
         let back = open(&decode(&fragment)).expect("reopens");
         assert_eq!(back.scene(), s.scene());
+        assert_eq!(back.integrator(), s.integrator(), "{fragment}");
         assert!(
             (back.input_rad() - s.input_rad()).abs() < 1e-4,
             "{fragment}"

@@ -46,15 +46,21 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     ui.separator();
     ui.label("Dynamics (released from rest)");
     let mut choice = st.session.integrator();
+    let mut items = Vec::new();
     let menu = egui::ComboBox::from_label("integrator")
         .selected_text(choice.method.label())
         .show_ui(ui, |ui| {
             for m in METHODS {
-                ui.selectable_value(&mut choice.method, m, m.label());
+                let r = ui.selectable_value(&mut choice.method, m, m.label());
+                items.push((m.label(), r.rect, ui.clip_rect().contains_rect(r.rect)));
             }
         });
     st.controls
         .note(ui, ControlKind::Integrator, "integrator", &menu.response);
+    for (label, rect, visible) in items {
+        st.controls
+            .note_rect(ControlKind::IntegratorItem, label, rect, visible);
+    }
     let tolerance = if choice.method.is_adaptive() {
         ui.add(
             egui::Slider::new(&mut choice.rtol, 1e-12..=1e-3)

@@ -25,6 +25,8 @@ pub enum ControlKind {
     Branch,
     /// The integrator menu.
     Integrator,
+    /// One method in the open integrator menu.
+    IntegratorItem,
     /// The integrator's tolerance or step.
     Tolerance,
     /// The scene picker.

@@ -1,0 +1,188 @@
+// Every scene file in assets/scenes (read from the directory, not listed here), in
+// real headless Chromium, as a user meets it: opened through the scene picker and
+// through a URL fragment; for each: no console error or panic, the canvas drawn,
+// Play for a second changes the picture, and every kind of control the scene offers
+// is moved with the mouse (crank, a length, a spring constant, a mass, the
+// integrator, its tolerance, a branch flip). The URL after those edits, opened in a
+// new page, must reopen the same state. Each edit's time, from the input event to
+// the frame that shows it, is measured with performance.now().
+// The app says where its controls are: window.wasmBindings.linkage_lab_controls().
+// Usage: node every_scene.mjs http://127.0.0.1:PORT/
+import { chromium } from 'playwright-core';
+import { PNG } from 'pngjs';
+import { readdirSync, readFileSync } from 'node:fs';
+
+const base = (process.argv[2] ?? 'http://127.0.0.1:8917/').replace(/#.*$/, '');
+const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
+
+const sceneDir = new URL('../../assets/scenes/', import.meta.url);
+const scenes = readdirSync(sceneDir).filter((f) => f.endsWith('.ron')).sort().map((file) => {
+  const text = readFileSync(new URL(file, sceneDir), 'utf8');
+  const name = /\bname:\s*"([^"]*)"/.exec(text)?.[1];
+  return { file, key: file.replace(/\.ron$/, ''), name };
+});
+if (scenes.length < 6) fail(`only ${scenes.length} scene files found`);
+
+function differing(a, b) {
+  let n = 0;
+  for (let i = 0; i < a.data.length; i += 4) {
+    const d = Math.abs(a.data[i] - b.data[i]) + Math.abs(a.data[i + 1] - b.data[i + 1]) + Math.abs(a.data[i + 2] - b.data[i + 2]);
+    if (d > 24) n++;
+  }
+  return n;
+}
+function drawnFraction(img) {
+  let n = 0;
+  for (let i = 0; i < img.data.length; i += 4) {
+    if (Math.abs(img.data[i] - 0x1b) + Math.abs(img.data[i + 1] - 0x1b) + Math.abs(img.data[i + 2] - 0x1b) > 24) n++;
+  }
+  return n / (img.width * img.height);
+}
+
+const browser = await chromium.launch({
+  executablePath: '/usr/bin/chromium',
+  headless: true,
+  args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+    '--disable-background-networking', '--disable-component-update', '--disable-sync',
+    '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+});
+
+/** A page with its console watched; resolves once the app has drawn its first frame. */
+async function openPage(url) {
+  const page = await browser.newPage({ viewport: { width: 1500, height: 950 }, deviceScaleFactor: 1 });
+  const errors = [];
+  let drawn = false;
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+    if (m.text().includes('first frame at')) drawn = true;
+  });
+  page.on('pageerror', (e) => errors.push(`pageerror: ${e.message}`));
+  await page.goto(url, { waitUntil: 'load' });
+  for (let i = 0; i < 600 && !drawn && !errors.length; i++) await page.waitForTimeout(100);
+  if (!drawn) errors.push(`no first frame at ${url}`);
+  await page.waitForTimeout(500);
+  return { page, errors };
+}
+
+const state = async (page) => JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+const shot = async (page) => PNG.sync.read(await page.locator('#linkage_canvas').screenshot());
+const hash = (page) => page.evaluate(() => location.hash);
+const centre = (c, fx = 0.5) => [c.rect[0] + fx * (c.rect[2] - c.rect[0]), 0.5 * (c.rect[1] + c.rect[3])];
+
+/** The first control of `kind` (and label, if given), scrolled into view. */
+async function find(page, kind, label) {
+  for (let i = 0; i < 30; i++) {
+    const c = (await state(page)).controls.entries.find((e) => e.kind === kind && (label === undefined || e.label === label));
+    if (!c || c.visible) return c;
+    // Scroll the control panel towards it.
+    await page.mouse.move(120, 500);
+    await page.mouse.wheel(0, c.rect[1] > 500 ? 150 : -150);
+    await page.waitForTimeout(150);
+  }
+  return undefined;
+}
+
+/** Clicks at (x, y) and returns the ms from the click to the next frame drawn after it. */
+async function timedClick(page, [x, y]) {
+  await page.evaluate(() => { window.__edit = performance.now(); window.__shown = null; requestAnimationFrame(() => requestAnimationFrame(() => { window.__shown = performance.now(); })); });
+  await page.mouse.click(x, y);
+  for (let i = 0; i < 200; i++) {
+    const ms = await page.evaluate(() => (window.__shown === null ? null : window.__shown - window.__edit));
+    if (ms !== null) return ms;
+    await page.waitForTimeout(10);
+  }
+  return NaN;
+}
+
+const SLIDERS = ['Crank', 'Length', 'Spring', 'Mass', 'Tolerance'];
+const results = [];
+for (const scene of scenes) {
+  for (const route of ['picker', 'fragment']) {
+    const what = `${scene.file} via ${route}`;
+    const { page, errors } = await openPage(route === 'fragment' ? `${base}#scene=${scene.key}` : base);
+    if (route === 'picker') {
+      const picker = await find(page, 'ScenePicker');
+      if (!picker) { fail(`${what}: no scene picker`); await page.close(); continue; }
+      await page.mouse.click(...centre(picker));
+      await page.waitForTimeout(300);
+      const item = await find(page, 'SceneItem', scene.name);
+      if (!item) { fail(`${what}: "${scene.name}" is not in the picker`); await page.close(); continue; }
+      await page.mouse.click(...centre(item));
+      await page.waitForTimeout(800);
+    }
+    if (!(await hash(page)).startsWith(`#scene=${scene.key}&`)) fail(`${what}: the URL says ${await hash(page)}`);
+    const opened = await shot(page);
+    const drawn = drawnFraction(opened);
+    if (drawn < 0.2) fail(`${what}: canvas ${(drawn * 100).toFixed(1)} % drawn`);
+
+    // Play for a second.
+    const play = await find(page, 'Play');
+    await page.mouse.click(...centre(play));
+    await page.waitForTimeout(1000);
+    let played = 0;
+    for (let i = 0; i < 10 && played < 2000; i++) {
+      played = differing(opened, await shot(page));
+      if (played < 2000) await page.waitForTimeout(300);
+    }
+    await page.mouse.click(...centre(await find(page, 'Play')));
+    if (played < 2000) fail(`${what}: playing changed only ${played} pixels`);
+    await page.waitForTimeout(300);
+
+    // Every kind of control present, moved with the mouse.
+    const kinds = new Set((await state(page)).controls.entries.map((e) => e.kind));
+    const moved = {};
+    for (const kind of SLIDERS.filter((k) => kinds.has(k))) {
+      const c = await find(page, kind);
+      const urlBefore = await hash(page);
+      const picBefore = await shot(page);
+      // A click on an egui slider's rail sets the value there (the rail is the
+      // widget's left part, 100 points wide by default).
+      const ms = await timedClick(page, [c.rect[0] + 23, centre(c)[1]]);
+      await page.waitForTimeout(300);
+      const after = await state(page);
+      const changed = (await hash(page)) !== urlBefore || differing(picBefore, await shot(page)) > 200;
+      if (!changed && !after.message) fail(`${what}: moving ${kind} "${c.label}" changed nothing`);
+      if (!after.pose_finite) fail(`${what}: non-finite pose after ${kind}`);
+      moved[kind] = { ms: Number(ms.toFixed(1)), refused: Boolean(after.message) };
+    }
+    if (kinds.has('Branch')) {
+      const c = await find(page, 'Branch');
+      const urlBefore = await hash(page);
+      const ms = await timedClick(page, centre(c, 0.1));
+      await page.waitForTimeout(300);
+      const after = await state(page);
+      if ((await hash(page)) === urlBefore && !after.message) fail(`${what}: the branch flip changed nothing`);
+      moved.Branch = { ms: Number(ms.toFixed(1)), refused: Boolean(after.message) };
+    }
+    if (kinds.has('Integrator')) {
+      const picBefore = await shot(page);
+      await page.mouse.click(...centre(await find(page, 'Integrator')));
+      await page.waitForTimeout(300);
+      const rk4 = await find(page, 'IntegratorItem', 'rk4');
+      if (!rk4) fail(`${what}: no rk4 in the integrator menu`);
+      else {
+        const ms = await timedClick(page, centre(rk4));
+        await page.waitForTimeout(500);
+        if (differing(picBefore, await shot(page)) < 50) fail(`${what}: choosing rk4 changed nothing on screen`);
+        moved.Integrator = { ms: Number(ms.toFixed(1)), refused: false };
+      }
+    }
+    for (const k of ['Crank', 'Length']) if (!moved[k]) fail(`${what}: no ${k} control`);
+
+    // The URL after the edits reopens the same state.
+    const url = page.url();
+    const here = await state(page);
+    const again = await openPage(url);
+    const there = await state(again.page);
+    if ((await hash(again.page)) !== (await hash(page))) fail(`${what}: reopened as ${await hash(again.page)}, not ${await hash(page)}`);
+    if (Math.abs(there.input_deg - here.input_deg) > 1e-3) fail(`${what}: reopened at ${there.input_deg} deg, not ${here.input_deg}`);
+    errors.push(...again.errors);
+    await again.page.close();
+
+    if (errors.length) fail(`${what}: console errors:\n  ${errors.join('\n  ')}`);
+    results.push({ scene: scene.key, route, drawn: Number(drawn.toFixed(3)), played, edits: moved });
+    await page.close();
+  }
+}
+await browser.close();
+console.log(JSON.stringify({ scenes: scenes.length, results }, null, 1));
