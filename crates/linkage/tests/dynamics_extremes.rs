@@ -216,6 +216,8 @@ fn ten_thousand_periods_keep_the_energy_within_stated_bounds() {
         s.t_end = t_end;
         s.use_stops = false;
         s.output_dt = Some(1.0);
+        // A deliberate long run: Euler at 1e-3 s takes 1.07e6 steps, past the default.
+        s.max_steps = 2_000_000;
         let sim = simulate(&k, &s).unwrap_or_else(|e| panic!("{method:?}: {e}"));
         assert!(
             (sim.samples.last().expect("samples").t - t_end).abs() < 1e-6,

@@ -11,7 +11,7 @@ use super::forces::ForceModel;
 use super::implicit;
 use super::output::{RunStats, Sample, SimEvent, Simulation};
 use super::rhs::{Point, Rhs, State};
-use super::settings::{MAX_STEPS, Method, Settings};
+use super::settings::{Method, Settings};
 use crate::error::{LinkageError, Result};
 use crate::kinematics::Kinematics;
 use crate::roots_util::refine;
@@ -90,7 +90,7 @@ fn stiffness(rhs: &mut Rhs<'_>, a: &Point) -> Result<f64> {
     })
 }
 
-/// The error of a run that spent [`MAX_STEPS`]: where it got to, and what to change.
+/// The error of a run that spent its step budget: where it got to, and what to change.
 fn budget_spent(stats: &RunStats, t: f64, settings: &Settings) -> LinkageError {
     let stiff = settings
         .method
@@ -109,7 +109,8 @@ fn budget_spent(stats: &RunStats, t: f64, settings: &Settings) -> LinkageError {
         name: "t_end".into(),
         value: settings.t_end,
         valid: format!(
-            "the run took {MAX_STEPS} steps (the most one run may take) and reached only t = {t:.6e} s: {advice}"
+            "the run took {} steps (the most this run may take) and reached only t = {t:.6e} s: {advice}",
+            settings.max_steps
         ),
     }
 }
@@ -216,7 +217,7 @@ pub fn simulate(k: &Kinematics, settings: &Settings) -> Result<Simulation> {
     let mut stages = Stages::default();
     let mut controller = Controller::default();
     'run: while a.t < settings.t_end {
-        if stats.steps + stats.rejected_steps >= MAX_STEPS {
+        if stats.steps + stats.rejected_steps >= settings.max_steps {
             return Err(budget_spent(&stats, a.t, settings));
         }
         // One accepted step a -> b, with its dense output made on demand.

@@ -101,6 +101,8 @@ pub struct Settings {
     pub coordinate: Option<usize>,
     /// Whether to switch to a regular coordinate near a dead point of the current one.
     pub switch_coordinates: bool,
+    /// Most steps the run may take ([`MAX_STEPS`] by default): every run ends.
+    pub max_steps: usize,
 }
 
 impl Settings {
@@ -124,6 +126,7 @@ impl Settings {
             output_dt: None,
             coordinate: None,
             switch_coordinates: true,
+            max_steps: MAX_STEPS,
         }
     }
 
@@ -181,15 +184,16 @@ impl Settings {
             }
         }
         let fixed_time_step = !self.method.is_adaptive() && self.method != Method::EnergyIncrement;
-        if fixed_time_step && self.t_end / self.step > MAX_STEPS as f64 {
-            let least = self.t_end / MAX_STEPS as f64;
+        if fixed_time_step && self.t_end / self.step > self.max_steps as f64 {
+            let least = self.t_end / self.max_steps as f64;
             return invalid(
                 "step",
                 self.step,
                 &format!(
-                    "takes {:.3e} steps to t_end = {} s; at most {MAX_STEPS}: make it at least {least:.3e} s or shorten the run",
+                    "takes {:.3e} steps to t_end = {} s; at most {}: make it at least {least:.3e} s or shorten the run",
                     self.t_end / self.step,
-                    self.t_end
+                    self.t_end,
+                    self.max_steps
                 ),
             );
         }
