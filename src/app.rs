@@ -49,6 +49,26 @@ impl FrameCost {
     }
 }
 
+/// CPU time of the frames in which an edit landed: what a user dragging a slider
+/// waits for (the frame's `ui` call: the edit, the panels and plots; not the GPU).
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct EditTiming {
+    /// Frames that carried at least one edit.
+    pub frames: u64,
+    /// The last such frame, ms.
+    pub last_ms: f64,
+    /// The slowest such frame, ms.
+    pub max_ms: f64,
+}
+
+impl EditTiming {
+    fn add(&mut self, ms: f64) {
+        self.frames += 1;
+        self.last_ms = ms;
+        self.max_ms = self.max_ms.max(ms);
+    }
+}
+
 /// Everything the panels read and change.
 pub struct AppState {
     /// The mechanism being viewed.
@@ -77,6 +97,8 @@ pub struct AppState {
     pub show_timings: bool,
     /// Where this frame's controls are (tests drive the app through it).
     pub controls: ui::control_map::ControlMap,
+    /// How long the frames that carried an edit took.
+    pub edit_timing: EditTiming,
 }
 
 impl AppState {
@@ -96,6 +118,7 @@ impl AppState {
             files: ui::files::Files::default(),
             show_timings: true,
             controls: ui::control_map::ControlMap::default(),
+            edit_timing: EditTiming::default(),
         }
     }
 
@@ -188,9 +211,14 @@ fn open_or_explain(key: &str) -> Session {
 impl eframe::App for LinkageApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         let started = web_time::Instant::now();
+        let edits_before = self.state.session.edit_count();
         self.state.controls.clear();
         let dt = f64::from(ui.input(|i| i.stable_dt)).min(0.1);
         let solver_started = web_time::Instant::now();
+        if self.state.session.poll_run() {
+            // The run is being computed off the frame: look again next frame.
+            ui.ctx().request_repaint();
+        }
         if self.state.playing {
             self.state.session.advance(dt, self.state.speed);
             ui.ctx().request_repaint();
@@ -224,9 +252,11 @@ impl eframe::App for LinkageApp {
             solver_us += ui::viewport::show(ui, &mut self.state, &self.shapes, self.gpu);
         });
 
-        self.state
-            .cost
-            .add(solver_us, started.elapsed().as_secs_f64() * 1e6);
+        let frame_us = started.elapsed().as_secs_f64() * 1e6;
+        self.state.cost.add(solver_us, frame_us);
+        if self.state.session.edit_count() > edits_before {
+            self.state.edit_timing.add(frame_us * 1e-3);
+        }
         #[cfg(target_arch = "wasm32")]
         {
             self.url.update(&self.state.session);

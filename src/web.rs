@@ -18,7 +18,11 @@ thread_local! {
 struct Published<'a> {
     controls: &'a crate::ui::control_map::ControlMap,
     /// What the last edit could not do (a refusal), if anything.
-    message: Option<&'a str>,
+    message: Option<String>,
+    /// CPU time of the frames that carried an edit (performance.now() in the browser).
+    edit_timing: crate::app::EditTiming,
+    /// Whether a dynamic run is still being computed.
+    run_pending: bool,
     /// Current input angle, deg.
     input_deg: f64,
     /// Whether the pose holds only finite numbers.
@@ -31,6 +35,8 @@ pub fn publish_controls(st: &crate::app::AppState) {
     let published = Published {
         controls: &st.controls,
         message: st.session.message(),
+        edit_timing: st.edit_timing,
+        run_pending: st.session.run_progress().is_some(),
         input_deg: st.session.input_rad().to_degrees(),
         pose_finite: pose.points.iter().all(|p| {
             p.position.x.is_finite() && p.position.y.is_finite() && p.velocity.x.is_finite()

@@ -21,8 +21,16 @@ fn harness() -> Harness<'static, LinkageApp> {
         .wgpu()
         .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
     h.state_mut().state.show_timings = false;
-    h.run();
+    settle(&mut h);
     h
+}
+
+/// Runs frames until the app is idle, waiting for a dynamic run being computed off
+/// the frame, as a user waits for it to appear.
+fn settle(h: &mut Harness<'static, LinkageApp>) {
+    h.run();
+    h.state_mut().state.session.wait_for_run();
+    h.run();
 }
 
 /// The display name of every scene file in `assets/scenes`.
@@ -45,9 +53,9 @@ fn shipped_scene_names() -> Vec<(PathBuf, String)> {
 
 fn open_by_picker(h: &mut Harness<'static, LinkageApp>, name: &str) {
     h.get_by_role_and_label(Role::ComboBox, "Scene").click();
-    h.run();
+    settle(h);
     h.get_by_label(name).click();
-    h.run();
+    settle(h);
 }
 
 /// Everything the user sees is finite: pose, polygon tables, plotted curves.
@@ -67,18 +75,23 @@ fn assert_all_finite(s: &Session, what: &str) {
             );
         }
     }
-    let c = s.curves();
+    let (c, m) = (s.curves(), s.model_curves());
+    let run = match s.dynamics() {
+        Some(Ok(run)) => vec![&run.omega_phi, &run.omega_t, &run.phi_t],
+        _ => Vec::new(),
+    };
     let series = c
         .outputs
         .iter()
         .flat_map(|o| [&o.value, &o.rate, &o.acceleration])
         .chain([
             &c.transmission_deg,
-            &c.torque_n_m,
-            &c.amplification,
-            &c.inertia_kg_m2,
-            &c.moment_n_m,
-        ]);
+            &m.torque_n_m,
+            &m.amplification,
+            &m.inertia_kg_m2,
+            &m.moment_n_m,
+        ])
+        .chain(run);
     for points in series {
         assert!(
             points.iter().flatten().all(|x| x.is_finite()),
@@ -146,7 +159,7 @@ fn drive_slider(h: &mut Harness<'static, LinkageApp>, scene: &str, label: &str, 
         let before = h.state().state.session.pose().clone();
         h.get_by_role_and_label(Role::Slider, label)
             .set_value_accesskit(value);
-        h.run();
+        settle(h);
         assert_took_or_refused(
             h,
             &before,
@@ -197,7 +210,7 @@ fn every_scene_every_control_to_its_extremes_and_back() {
                 // The label says which branch is current: find the toggle by its point.
                 let point = label.split(" (now").next().expect("label").to_string();
                 h.get_by_label_contains(&point).click();
-                h.run();
+                settle(&mut h);
                 assert_took_or_refused(&h, &before, &format!("{scene}: {point}"), &mut tally);
             }
         }
@@ -211,9 +224,9 @@ fn every_scene_every_control_to_its_extremes_and_back() {
             for method in linkage_lab::session::dynamic_run::METHODS {
                 h.get_by_role_and_label(Role::ComboBox, "integrator")
                     .click();
-                h.run();
+                settle(&mut h);
                 h.get_by_label(method.label()).click();
-                h.run();
+                settle(&mut h);
                 assert_eq!(
                     h.state().state.session.integrator().method,
                     method,

@@ -37,6 +37,9 @@ fn open_scene(h: &mut Harness<'static, LinkageApp>, key: &str) {
     h.run();
     h.get_by_label(&name).click();
     h.run();
+    // A dynamic scene's run is computed off the frame: wait for it, as a user would.
+    h.state_mut().state.session.wait_for_run();
+    h.run();
     assert_eq!(
         h.state().state.session.source(),
         &SceneSource::Builtin(key.into())

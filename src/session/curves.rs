@@ -1,7 +1,8 @@
 //! Everything plotted against the crank angle, computed once per change of the
-//! mechanism (not per frame): output motion, transmission angle, coupler traces, and
-//! what the scene models beyond kinematics (input torque and force amplification;
-//! equivalent inertia J(q) and moment M(q)).
+//! mechanism (not per frame): output motion, transmission angle and coupler traces
+//! with the edit (they are always on screen), and what the scene models beyond
+//! kinematics (input torque and force amplification; equivalent inertia J(q) and
+//! moment M(q)) only when its plot is shown ([`ModelCurves`]).
 
 use linkage::analysis::{Output, outputs, transmission_angle_at};
 use linkage::dynamics::ForceModel;
@@ -48,14 +49,6 @@ pub struct Curves {
     pub transmission_deg: Vec<[f64; 2]>,
     /// Coupler traces of points on links not pinned to ground.
     pub traces: Vec<Trace>,
-    /// Kinetostatic scenes: input torque, N·m.
-    pub torque_n_m: Vec<[f64; 2]>,
-    /// Kinetostatic scenes: force amplification (output force per N·m), absent at toggles.
-    pub amplification: Vec<[f64; 2]>,
-    /// Dynamic scenes: equivalent inertia J(q), kg·m².
-    pub inertia_kg_m2: Vec<[f64; 2]>,
-    /// Dynamic scenes: equivalent moment M(q) at rest, N·m.
-    pub moment_n_m: Vec<[f64; 2]>,
     /// Per slider: the least and greatest displacement over the cycle, m (`None` if
     /// no position gave a finite one).
     pub slide_travel_m: Vec<Option<[f64; 2]>>,
@@ -65,12 +58,10 @@ pub struct Curves {
     pub range_rad: [f64; 2],
     /// Whether the input turns fully.
     pub full_rotation: bool,
-    /// Why a modelled curve is missing (e.g. a kinetostatic failure), if one is.
-    pub notes: Vec<String>,
 }
 
 impl Curves {
-    /// Sweeps `k` and derives every curve its scene models.
+    /// Sweeps `k` and derives the kinematic curves.
     ///
     /// # Errors
     /// The sweep's own error (e.g. the start angle does not assemble).
@@ -99,7 +90,7 @@ impl Curves {
             .collect();
         let transmission_deg =
             xy(&|s| transmission_angle_at(k, s).map_or(f64::NAN, f64::to_degrees));
-        let mut curves = Self {
+        Ok(Self {
             outputs,
             transmission_deg,
             traces: traces(k, &sw),
@@ -108,19 +99,41 @@ impl Curves {
             range_rad: sw.range,
             full_rotation,
             input_deg,
-            ..Self::default()
-        };
-        let models = k.mechanism().models;
-        if models == Models::Kinetostatics {
-            curves.add_kinetostatics(k, &sw);
+        })
+    }
+}
+
+/// The curves of what a scene models beyond kinematics, over the input angles of its
+/// [`Curves`].
+#[derive(Clone, Debug, Default)]
+pub struct ModelCurves {
+    /// Kinetostatic scenes: input torque, N·m.
+    pub torque_n_m: Vec<[f64; 2]>,
+    /// Kinetostatic scenes: force amplification (output force per N·m), absent at toggles.
+    pub amplification: Vec<[f64; 2]>,
+    /// Dynamic scenes: equivalent inertia J(q), kg·m².
+    pub inertia_kg_m2: Vec<[f64; 2]>,
+    /// Dynamic scenes: equivalent moment M(q) at rest, N·m.
+    pub moment_n_m: Vec<[f64; 2]>,
+    /// Why a modelled curve is missing (e.g. a kinetostatic failure), if one is.
+    pub notes: Vec<String>,
+}
+
+impl ModelCurves {
+    /// The curves the scene of `k` models, at the input angles `input_deg`.
+    pub fn compute(k: &Kinematics, input_deg: &[f64]) -> Self {
+        let mut k = k.clone();
+        let inputs: Vec<f64> = input_deg.iter().map(|d| d.to_radians()).collect();
+        let mut curves = Self::default();
+        match k.mechanism().models {
+            Models::Kinetostatics => curves.add_kinetostatics(&mut k, &inputs),
+            Models::Dynamics => curves.add_reduced_model(&mut k, &inputs),
+            Models::Kinematics => {}
         }
-        if models == Models::Dynamics {
-            curves.add_reduced_model(k, &sw);
-        }
-        Ok(curves)
+        curves
     }
 
-    fn add_kinetostatics(&mut self, k: &mut Kinematics, sw: &Sweep) {
+    fn add_kinetostatics(&mut self, k: &mut Kinematics, inputs: &[f64]) {
         let mut ks = match Kinetostatics::new(k) {
             Ok(ks) => ks,
             Err(e) => {
@@ -128,9 +141,9 @@ impl Curves {
                 return;
             }
         };
-        for s in &sw.solutions {
-            let x = s.input_rad.to_degrees();
-            match ks.at(k, s.input_rad) {
+        for &input in inputs {
+            let x = input.to_degrees();
+            match ks.at(k, input) {
                 Ok(state) => {
                     if state.torque_virtual_work.is_finite() {
                         self.torque_n_m.push([x, state.torque_virtual_work]);
@@ -146,7 +159,7 @@ impl Curves {
         }
     }
 
-    fn add_reduced_model(&mut self, k: &mut Kinematics, sw: &Sweep) {
+    fn add_reduced_model(&mut self, k: &mut Kinematics, inputs: &[f64]) {
         let start = k.mechanism().driver.start_rad;
         let model = match k
             .solve(start)
@@ -159,13 +172,13 @@ impl Curves {
             }
         };
         let mut unit = k.empty_solution();
-        for s in &sw.solutions {
-            // J and M per unit input speed: the sweep's own speed may be any value.
-            if k.solve_into(s.input_rad, 1.0, &mut unit).is_err() {
+        for &input in inputs {
+            // J and M per unit input speed.
+            if k.solve_into(input, 1.0, &mut unit).is_err() {
                 continue;
             }
             let r = model.reduce(&unit, 0.0);
-            let x = s.input_rad.to_degrees();
+            let x = input.to_degrees();
             if r.j.is_finite() && r.moment().is_finite() {
                 self.inertia_kg_m2.push([x, r.j]);
                 self.moment_n_m.push([x, r.moment()]);

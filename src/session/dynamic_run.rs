@@ -41,6 +41,20 @@ pub const METHODS: [Method; 6] = [
     Method::EnergyIncrement,
 ];
 
+/// The solver settings of a choice: the app's run length and output grid.
+pub fn settings_for(choice: IntegratorChoice) -> Settings {
+    let mut settings = Settings::new(choice.method);
+    if choice.method.is_adaptive() {
+        settings.rtol = choice.rtol;
+        settings.atol = choice.rtol * 1e-2;
+    } else {
+        settings.step = choice.step;
+    }
+    settings.t_end = RUN_TIME_S;
+    settings.output_dt = Some(OUTPUT_DT_S);
+    settings
+}
+
 /// A finished run with its plot data.
 pub struct DynamicRun {
     /// The settings used.
@@ -58,21 +72,17 @@ pub struct DynamicRun {
 }
 
 impl DynamicRun {
-    /// Runs the scene of `k` from rest at its start angle.
+    /// Runs the scene of `k` from rest at its start angle, to the end (blocking).
     ///
     /// # Errors
     /// The run's own error, as text (e.g. a fixed step beyond the stability limit).
     pub fn compute(k: &Kinematics, choice: IntegratorChoice) -> Result<Self, String> {
-        let mut settings = Settings::new(choice.method);
-        if choice.method.is_adaptive() {
-            settings.rtol = choice.rtol;
-            settings.atol = choice.rtol * 1e-2;
-        } else {
-            settings.step = choice.step;
-        }
-        settings.t_end = RUN_TIME_S;
-        settings.output_dt = Some(OUTPUT_DT_S);
-        let sim = simulate(k, &settings).map_err(|e| e.to_string())?;
+        let sim = simulate(k, &settings_for(choice)).map_err(|e| e.to_string())?;
+        Ok(Self::from_simulation(choice, sim))
+    }
+
+    /// The plot data of a finished run.
+    pub fn from_simulation(choice: IntegratorChoice, sim: Simulation) -> Self {
         let samples = &sim.samples;
         let finite = |p: &[f64; 2]| p[0].is_finite() && p[1].is_finite();
         let omega_phi = samples
@@ -91,14 +101,14 @@ impl DynamicRun {
             .filter(finite)
             .collect();
         let energy_drift_j = sim.energy_drift();
-        Ok(Self {
+        Self {
             choice,
             sim,
             omega_phi,
             omega_t,
             phi_t,
             energy_drift_j,
-        })
+        }
     }
 
     /// Duration of the run, s.

@@ -5,9 +5,14 @@
 
 pub mod curves;
 pub mod dynamic_run;
+pub mod limit;
+pub mod notice;
 pub mod params;
+pub mod run_job;
 pub mod topology;
 pub mod url_state;
+
+use std::cell::OnceCell;
 
 use linkage::analysis::{Report, report};
 use linkage::polygon::{VectorEquation, polygons};
@@ -16,14 +21,16 @@ use linkage::sweep::{csv_header, csv_row, sweep};
 use linkage::{Kinematics, Mechanism, SceneFile, Solution};
 
 use crate::catalog::builtin;
-use curves::Curves;
+use curves::{Curves, ModelCurves};
 use dynamic_run::{DynamicRun, IntegratorChoice};
+use notice::Notice;
 use params::{LengthParam, length_params};
+use run_job::RunJob;
 use topology::Topology;
 
-/// Bisection steps when searching the assembly limit of a length: 2^-40 of the
-/// interval is far below what a slider can set.
-const LIMIT_BISECTIONS: usize = 40;
+/// A frame's share of a dynamic run computed on the UI thread (the browser), ms: the
+/// rest of the frame draws in well under the other 11 ms of a 60 Hz frame.
+pub const RUN_SLICE_MS: f64 = 5.0;
 
 /// Where the scene came from.
 #[derive(Clone, Debug, PartialEq)]
@@ -43,18 +50,26 @@ pub struct Session {
     pose: Solution,
     topology: Topology,
     lengths: Vec<LengthParam>,
-    report: Result<Report, String>,
+    /// The report, made when first shown.
+    report: OnceCell<Result<Report, String>>,
     curves: Curves,
+    /// Torque or J(q), M(q) curves, made when first shown.
+    model_curves: OnceCell<ModelCurves>,
     polygons: Vec<VectorEquation>,
+    /// The finished dynamic run (dynamic scenes, once computed).
     dynamics: Option<Result<DynamicRun, String>>,
+    /// The dynamic run being computed off the frame.
+    job: Option<RunJob>,
     integrator: IntegratorChoice,
-    message: Option<String>,
+    message: Option<Notice>,
     /// Playback time of the dynamic run, s.
     time_s: f64,
     /// +1 or −1: the direction of play over a limited input range (it rocks).
     play_direction: f64,
     /// Counts rebuilds: views that cache per mechanism (plot bounds) key on it.
     generation: u64,
+    /// Counts edits asked for, taken or refused (the app times the frames they land in).
+    edits: u64,
 }
 
 impl Session {
@@ -73,7 +88,7 @@ impl Session {
     /// The parse error with line and column, or why the mechanism does not assemble.
     pub fn open_text(source: SceneSource, text: &str) -> Result<Self, String> {
         let scene = SceneFile::parse(text).map_err(|e| e.to_string())?;
-        let built = Built::new(&scene, None, IntegratorChoice::default())?;
+        let built = Built::new(&scene, None)?;
         let lengths = length_params(&scene);
         let mut session = Self {
             source,
@@ -83,17 +98,21 @@ impl Session {
             pose: built.pose,
             topology: built.topology,
             lengths,
-            report: built.report,
+            report: OnceCell::new(),
             curves: built.curves,
+            model_curves: OnceCell::new(),
             polygons: Vec::new(),
-            dynamics: built.dynamics,
+            dynamics: None,
+            job: None,
             integrator: IntegratorChoice::default(),
             message: None,
             time_s: 0.0,
             play_direction: 1.0,
             generation: 0,
+            edits: 0,
         };
         session.refresh_polygons();
+        session.start_run();
         Ok(session)
     }
 
@@ -137,9 +156,18 @@ impl Session {
         self.pose.input_rad
     }
 
-    /// The report (Grashof, K, strokes, limits, transmission angle) or why it failed.
+    /// The report (Grashof, K, strokes, limits, transmission angle) or why it failed;
+    /// computed the first time it is asked for after an edit.
     pub fn report(&self) -> &Result<Report, String> {
-        &self.report
+        self.report
+            .get_or_init(|| report(&mut self.kin.clone()).map_err(|e| e.to_string()))
+    }
+
+    /// The curves of what the scene models beyond kinematics (input torque; J(q) and
+    /// M(q)); computed the first time they are asked for after an edit.
+    pub fn model_curves(&self) -> &ModelCurves {
+        self.model_curves
+            .get_or_init(|| ModelCurves::compute(&self.kin, &self.curves.input_deg))
     }
 
     /// The curves over the cycle.
@@ -157,9 +185,45 @@ impl Session {
         &self.lengths
     }
 
-    /// The dynamic run: `None` for scenes that model no dynamics.
+    /// The dynamic run: `None` for scenes that model no dynamics, and while the run is
+    /// being computed ([`Session::run_progress`]).
     pub fn dynamics(&self) -> Option<&Result<DynamicRun, String>> {
         self.dynamics.as_ref()
+    }
+
+    /// While the dynamic run is being computed: the simulated time reached and the
+    /// run's end time, s.
+    pub fn run_progress(&self) -> Option<[f64; 2]> {
+        self.job.as_ref().map(|j| [j.progress_s(), j.end_s()])
+    }
+
+    /// Advances the dynamic run being computed (a slice of at most [`RUN_SLICE_MS`]
+    /// where it runs on this thread) and takes its result when it is done. Returns
+    /// whether a run is still being computed (the caller asks for another frame).
+    pub fn poll_run(&mut self) -> bool {
+        let Some(job) = &mut self.job else {
+            return false;
+        };
+        if let Some(result) = job.poll(RUN_SLICE_MS) {
+            self.finish_run(result);
+        }
+        self.job.is_some()
+    }
+
+    /// Waits until the dynamic run being computed is done (tests, exports).
+    pub fn wait_for_run(&mut self) {
+        if let Some(job) = self.job.take() {
+            self.finish_run(job.wait());
+        }
+    }
+
+    /// Computes the dynamic run on this thread, sliced as in the browser, instead of
+    /// on a worker thread.
+    pub fn run_sliced(&mut self) {
+        if self.scene.models == Models::Dynamics {
+            self.job = Some(RunJob::start_sliced(&self.kin, self.integrator));
+            self.dynamics = None;
+        }
     }
 
     /// The integrator settings of the dynamic run.
@@ -177,9 +241,20 @@ impl Session {
         self.generation
     }
 
-    /// What the last edit could not do, and why.
-    pub fn message(&self) -> Option<&str> {
-        self.message.as_deref()
+    /// How many edits were asked for (lengths, springs, masses, branches, integrator,
+    /// reset), taken or refused.
+    pub fn edit_count(&self) -> u64 {
+        self.edits
+    }
+
+    /// What the last edit could not do, and why, in words (made here, when shown).
+    pub fn message(&self) -> Option<String> {
+        self.message.as_ref().map(Notice::to_string)
+    }
+
+    /// What the last edit could not do, as data.
+    pub fn notice(&self) -> Option<&Notice> {
+        self.message.as_ref()
     }
 
     /// What the scene models.
@@ -202,9 +277,9 @@ impl Session {
     /// On failure the pose stays and the message says why, with the reachable range.
     pub fn set_input_deg(&mut self, input_deg: f64) {
         if !input_deg.is_finite() {
-            self.message = Some(format!(
+            self.message = Some(Notice::Text(format!(
                 "input angle {input_deg} is not a number; the pose is unchanged"
-            ));
+            )));
             return;
         }
         let x = if self.curves.full_rotation {
@@ -219,7 +294,7 @@ impl Session {
                 self.message = None;
                 self.refresh_polygons();
             }
-            Err(e) => self.message = Some(e.to_string()),
+            Err(e) => self.message = Some(Notice::Text(e.to_string())),
         }
     }
 
@@ -276,39 +351,42 @@ impl Session {
     /// Sets length `index` to `value` (scene units).
     ///
     /// If the chain cannot assemble at the current input with it, nothing changes and
-    /// the message names the cause and the limit found by bisection.
+    /// the notice names the cause and the limit, found on the closure margin.
     pub fn set_length(&mut self, index: usize, value: f64) {
+        self.edits += 1;
         let Some(param) = self.lengths.get(index).cloned() else {
             return;
         };
         let mut scene = self.scene.clone();
         if let Err(e) = param.apply(&mut scene, value) {
-            self.message = Some(e);
+            self.message = Some(Notice::Text(e));
             return;
         }
-        if let Err(why) = self.rebuild(scene) {
-            let limit = self.length_limit(&param, value);
-            let unit = unit_label(&self.scene);
-            let at = self.input_rad().to_degrees();
-            self.message = Some(match limit {
-                Some(l) => format!(
-                    "{} = {value:.4} {unit} cannot assemble at input {at:.2} deg: {why}. At this input {} can go to {l:.4} {unit}; the last valid pose stays.",
-                    param.label, param.label
-                ),
-                None => format!(
-                    "{} = {value:.4} {unit}: {why}; the last valid pose stays.",
-                    param.label
-                ),
-            });
-        }
+        let input = self.input_rad();
+        let why = match limit::try_assemble(&scene, input) {
+            Ok(built) => return self.accept(scene, built),
+            Err(why) => why,
+        };
+        let good = param.value(&self.scene);
+        let limit =
+            good.and_then(|good| limit::length_limit(&self.scene, &param, good, value, input));
+        self.message = Some(Notice::LengthRefused {
+            label: param.label.clone(),
+            value,
+            unit: unit_label(&self.scene),
+            input_deg: input.to_degrees(),
+            why,
+            limit,
+        });
     }
 
     /// Sets the constant of spring `index`, N/m.
     pub fn set_spring_k(&mut self, index: usize, k_n_per_m: f64) {
+        self.edits += 1;
         if !(k_n_per_m.is_finite() && k_n_per_m >= 0.0) {
-            self.message = Some(format!(
+            self.message = Some(Notice::Text(format!(
                 "spring constant {k_n_per_m} N/m is invalid: it must be finite and >= 0"
-            ));
+            )));
             return;
         }
         let mut scene = self.scene.clone();
@@ -317,16 +395,17 @@ impl Session {
         };
         spring.k_n_per_m = k_n_per_m;
         if let Err(why) = self.rebuild(scene) {
-            self.message = Some(why);
+            self.message = Some(Notice::Text(why));
         }
     }
 
     /// Sets the mass of link `index`, kg.
     pub fn set_mass(&mut self, index: usize, mass_kg: f64) {
+        self.edits += 1;
         if !(mass_kg.is_finite() && mass_kg > 0.0) {
-            self.message = Some(format!(
+            self.message = Some(Notice::Text(format!(
                 "mass {mass_kg} kg is invalid: it must be finite and > 0"
-            ));
+            )));
             return;
         }
         let mut scene = self.scene.clone();
@@ -341,7 +420,7 @@ impl Session {
         }
         link.mass = Some(mass_kg);
         if let Err(why) = self.rebuild(scene) {
-            self.message = Some(why);
+            self.message = Some(Notice::Text(why));
         }
     }
 
@@ -365,6 +444,7 @@ impl Session {
 
     /// Flips the assembly branch of the dyad at `point`.
     pub fn flip_branch(&mut self, point: &str) {
+        self.edits += 1;
         let m = self.mechanism();
         let Some(b) = m
             .branches
@@ -377,25 +457,26 @@ impl Session {
         let mut scene = self.scene.clone();
         scene.branches.insert(point.to_string(), b);
         if let Err(why) = self.rebuild(scene) {
-            self.message = Some(format!("flipping the branch at {point}: {why}"));
+            self.message = Some(Notice::Text(format!(
+                "flipping the branch at {point}: {why}"
+            )));
         }
     }
 
     /// Changes the integrator of the dynamic run and runs it again.
     pub fn set_integrator(&mut self, choice: IntegratorChoice) {
+        self.edits += 1;
         self.integrator = choice;
-        if self.scene.models == Models::Dynamics {
-            self.dynamics = Some(DynamicRun::compute(&self.kin, choice));
-            self.generation += 1;
-            self.time_s = self.time_s.min(self.dynamics_duration());
-        }
+        self.start_run();
+        self.time_s = 0.0;
     }
 
     /// Puts back the scene as opened.
     pub fn reset(&mut self) {
+        self.edits += 1;
         let scene = self.original.clone();
         if let Err(why) = self.rebuild(scene) {
-            self.message = Some(why);
+            self.message = Some(Notice::Text(why));
         }
     }
 
@@ -426,54 +507,44 @@ impl Session {
         Ok(out)
     }
 
-    fn dynamics_duration(&self) -> f64 {
-        match &self.dynamics {
-            Some(Ok(run)) => run.duration_s(),
-            _ => 0.0,
-        }
+    /// Starts computing the dynamic run of a dynamic scene off the frame; the
+    /// previous run, finished or not, is dropped.
+    fn start_run(&mut self) {
+        self.dynamics = None;
+        self.job = (self.scene.models == Models::Dynamics)
+            .then(|| RunJob::start(&self.kin, self.integrator));
+    }
+
+    fn finish_run(&mut self, result: Result<DynamicRun, String>) {
+        self.job = None;
+        self.dynamics = Some(result);
+        self.generation += 1;
+        self.time_s = 0.0;
     }
 
     /// Rebuilds everything from `scene` at the current input; on failure nothing
     /// changes.
     fn rebuild(&mut self, scene: SceneFile) -> Result<(), String> {
-        let built = Built::new(&scene, Some(self.input_rad()), self.integrator)?;
+        let built = Built::new(&scene, Some(self.input_rad()))?;
+        self.accept(scene, built);
+        Ok(())
+    }
+
+    /// Makes `scene`, built as `built`, the current one: what is on screen now, the
+    /// rest when shown, the dynamic run off the frame.
+    fn accept(&mut self, scene: SceneFile, built: Built) {
         self.scene = scene;
         self.kin = built.kin;
         self.pose = built.pose;
         self.topology = built.topology;
-        self.report = built.report;
+        self.report = OnceCell::new();
         self.curves = built.curves;
-        self.dynamics = built.dynamics;
+        self.model_curves = OnceCell::new();
         self.time_s = 0.0;
         self.message = None;
         self.generation += 1;
         self.refresh_polygons();
-        Ok(())
-    }
-
-    /// The length closest to `bad` (between the current, valid length and `bad`) at
-    /// which the chain still assembles at the current input.
-    fn length_limit(&self, param: &LengthParam, bad: f64) -> Option<f64> {
-        let mut good = param.value(&self.scene)?;
-        let mut bad = bad;
-        let input = self.input_rad();
-        let assembles = |len: f64| {
-            let mut s = self.scene.clone();
-            param.apply(&mut s, len).is_ok()
-                && Mechanism::from_scene(&s)
-                    .and_then(Kinematics::new)
-                    .and_then(|mut k| k.solve(input))
-                    .is_ok()
-        };
-        for _ in 0..LIMIT_BISECTIONS {
-            let mid = 0.5 * (good + bad);
-            if assembles(mid) {
-                good = mid;
-            } else {
-                bad = mid;
-            }
-        }
-        Some(good)
+        self.start_run();
     }
 
     fn refresh_polygons(&mut self) {
@@ -481,40 +552,33 @@ impl Session {
     }
 }
 
-/// A mechanism built from a scene with everything derived from it.
-struct Built {
+/// A mechanism built from a scene with what an edit shows at once: the pose and the
+/// curves (the report, the modelled curves and the dynamic run follow when shown).
+pub(crate) struct Built {
     kin: Kinematics,
     pose: Solution,
     topology: Topology,
-    report: Result<Report, String>,
     curves: Curves,
-    dynamics: Option<Result<DynamicRun, String>>,
 }
 
 impl Built {
     /// Builds at `input` (or the scene's start angle).
-    fn new(
-        scene: &SceneFile,
-        input: Option<f64>,
-        integrator: IntegratorChoice,
-    ) -> Result<Self, String> {
+    pub(crate) fn new(scene: &SceneFile, input: Option<f64>) -> Result<Self, String> {
         let mech = Mechanism::from_scene(scene).map_err(|e| e.to_string())?;
-        let mut kin = Kinematics::new(mech).map_err(|e| e.to_string())?;
+        let kin = Kinematics::new(mech).map_err(|e| e.to_string())?;
         let start = kin.mechanism().driver.start_rad;
-        let pose = kin
-            .solve(input.unwrap_or(start))
-            .map_err(|e| e.to_string())?;
-        let curves = Curves::compute(&mut kin).map_err(|e| e.to_string())?;
-        let report = report(&mut kin).map_err(|e| e.to_string());
-        let dynamics =
-            (scene.models == Models::Dynamics).then(|| DynamicRun::compute(&kin, integrator));
+        Self::at(kin, input.unwrap_or(start)).map_err(|e| e.to_string())
+    }
+
+    /// Solves `kin` at `input` and sweeps it.
+    pub(crate) fn at(mut kin: Kinematics, input: f64) -> linkage::Result<Self> {
+        let pose = kin.solve(input)?;
+        let curves = Curves::compute(&mut kin)?;
         Ok(Self {
             topology: Topology::of(kin.mechanism()),
             kin,
             pose,
-            report,
             curves,
-            dynamics,
         })
     }
 }
@@ -546,14 +610,19 @@ mod tests {
     fn each_scene_computes_only_what_it_models() {
         let kin = Session::open_builtin("slider_crank").expect("opens");
         assert!(kin.dynamics().is_none());
-        assert!(kin.curves().torque_n_m.is_empty() && kin.curves().inertia_kg_m2.is_empty());
+        let none = kin.model_curves();
+        assert!(none.torque_n_m.is_empty() && none.inertia_kg_m2.is_empty());
 
         let ks = Session::open_builtin("die_cutter").expect("opens");
-        assert!(ks.dynamics().is_none());
-        assert!(ks.curves().torque_n_m.len() > 300, "torque over the cycle");
-        assert!(ks.curves().inertia_kg_m2.is_empty());
+        assert!(ks.dynamics().is_none() && ks.run_progress().is_none());
+        assert!(
+            ks.model_curves().torque_n_m.len() > 300,
+            "torque over the cycle"
+        );
+        assert!(ks.model_curves().inertia_kg_m2.is_empty());
 
-        let dy = Session::open_builtin("gravity_flipper").expect("opens");
+        let mut dy = Session::open_builtin("gravity_flipper").expect("opens");
+        dy.wait_for_run();
         let run = dy.dynamics().expect("a run").as_ref().expect("runs");
         // The CLI's DOP853 run reaches the end stop at t = 0.244660 s; rtol 1e-8 here.
         assert!(
@@ -561,7 +630,8 @@ mod tests {
             "{}",
             run.duration_s()
         );
-        assert!(!dy.curves().inertia_kg_m2.is_empty() && !dy.curves().moment_n_m.is_empty());
+        let reduced = dy.model_curves();
+        assert!(!reduced.inertia_kg_m2.is_empty() && !reduced.moment_n_m.is_empty());
     }
 
     #[test]
@@ -577,8 +647,91 @@ mod tests {
     }
 
     #[test]
+    fn an_edit_shows_at_once_and_the_run_follows_off_the_frame() {
+        let mut s = Session::open_builtin("gravity_flipper").expect("opens");
+        s.wait_for_run();
+        let first = s
+            .dynamics()
+            .expect("a run")
+            .as_ref()
+            .expect("runs")
+            .duration_s();
+        s.set_mass(1, 2.0 * s.scene().links[1].mass.expect("a mass"));
+        assert!(s.message().is_none(), "{:?}", s.message());
+        // The pose and curves are new at once; the run is being computed.
+        assert!(s.dynamics().is_none() && s.run_progress().is_some());
+        s.wait_for_run();
+        let second = s
+            .dynamics()
+            .expect("a run")
+            .as_ref()
+            .expect("runs")
+            .duration_s();
+        assert!(s.run_progress().is_none());
+        assert!((first - second).abs() > 1e-6, "{first} vs {second}");
+    }
+
+    #[test]
+    fn a_run_sliced_over_frames_is_the_run_computed_at_once() {
+        let mut whole = Session::open_builtin("gravity_flipper").expect("opens");
+        whole.wait_for_run();
+        let mut sliced = Session::open_builtin("gravity_flipper").expect("opens");
+        sliced.run_sliced();
+        let mut frames = 0;
+        while sliced.poll_run() {
+            frames += 1;
+            assert!(frames < 100_000, "the run ends");
+        }
+        let a = &whole.dynamics().expect("run").as_ref().expect("ok").sim;
+        let b = &sliced.dynamics().expect("run").as_ref().expect("ok").sim;
+        assert_eq!(a.samples, b.samples, "the same steps and samples");
+        assert_eq!(a.stats.steps, b.stats.steps);
+    }
+
+    #[test]
+    fn a_refused_length_names_its_limit_found_on_the_margin() {
+        let mut checked = 0;
+        for b in crate::catalog::BUILTIN_SCENES {
+            let mut s = Session::open_builtin(b.key).expect("opens");
+            for i in 0..s.lengths().len() {
+                let v = s.lengths()[i].value(s.scene()).expect("a length");
+                for factor in [0.01, 100.0] {
+                    let pose = s.pose().clone();
+                    s.set_length(i, factor * v);
+                    let Some(Notice::LengthRefused {
+                        limit: Some(limit), ..
+                    }) = s.notice().cloned()
+                    else {
+                        s.set_length(i, v);
+                        continue;
+                    };
+                    let what = format!("{} length {i} x{factor}", b.key);
+                    assert_eq!(s.pose(), &pose, "{what}: the last valid pose stays");
+                    assert!(
+                        limit > v.min(factor * v) && limit < v.max(factor * v),
+                        "{what}"
+                    );
+                    // The limit assembles and a hair beyond it does not.
+                    let beyond = limit + (factor * v - limit) * 1e-6;
+                    s.set_length(i, beyond);
+                    assert!(
+                        s.message().is_some(),
+                        "{what}: just past {limit} is refused"
+                    );
+                    s.set_length(i, limit);
+                    assert!(s.message().is_none(), "{what}: {:?}", s.message());
+                    s.set_length(i, v);
+                    checked += 1;
+                }
+            }
+        }
+        assert!(checked >= 3, "{checked} refusals checked");
+    }
+
+    #[test]
     fn playback_follows_the_run_and_loops() {
         let mut s = Session::open_builtin("gravity_flipper").expect("opens");
+        s.wait_for_run();
         let start = s.input_rad();
         s.advance(0.1, 1.0);
         assert!((s.time_s() - 0.1).abs() < 1e-12);

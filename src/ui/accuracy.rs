@@ -5,6 +5,7 @@
 use eframe::egui;
 use linkage::PathKind;
 use linkage::dynamics::Method;
+use linkage::scene::Models;
 
 use crate::app::AppState;
 use crate::session::dynamic_run::METHODS;
@@ -36,13 +37,13 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         ));
     }
 
-    let Some(run) = st.session.dynamics() else {
+    if st.session.models() != Models::Dynamics {
         ui.label(format!(
             "{:?} scene: no dynamics computed",
             st.session.models()
         ));
         return;
-    };
+    }
     ui.separator();
     ui.label("Dynamics (released from rest)");
     let mut choice = st.session.integrator();
@@ -85,8 +86,14 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     st.controls
         .note(ui, ControlKind::Tolerance, "tolerance", &tolerance);
     let changed = tolerance.changed();
-    match run {
-        Ok(run) => {
+    match st.session.dynamics() {
+        None => {
+            let [t, end] = st.session.run_progress().unwrap_or([0.0, 0.0]);
+            ui.label(format!(
+                "computing the run: t = {t:.3} s of at most {end:.1} s"
+            ));
+        }
+        Some(Ok(run)) => {
             let s = run.stats();
             let cpu = if st.show_timings {
                 format!(", {:.2} ms CPU", s.cpu_seconds * 1e3)
@@ -114,7 +121,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
                 ));
             }
         }
-        Err(e) => {
+        Some(Err(e)) => {
             ui.colored_label(ui.visuals().error_fg_color, e);
         }
     }

@@ -17,9 +17,10 @@ pub fn tab_available(tab: PlotTab, s: &Session) -> bool {
     match tab {
         PlotTab::Output => !c.outputs.is_empty(),
         PlotTab::Transmission => !c.transmission_deg.is_empty(),
-        PlotTab::Torque => s.models() == Models::Kinetostatics && !c.torque_n_m.is_empty(),
+        // What the scene models: its curves are computed only when the tab is shown.
+        PlotTab::Torque => s.models() == Models::Kinetostatics,
         PlotTab::Motion => matches!(s.dynamics(), Some(Ok(_))),
-        PlotTab::ReducedModel => !c.inertia_kg_m2.is_empty(),
+        PlotTab::ReducedModel => s.models() == Models::Dynamics,
     }
 }
 
@@ -102,6 +103,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             );
         }
         PlotTab::Torque => {
+            let c = s.model_curves();
             let log_amp: Vec<[f64; 2]> = c
                 .amplification
                 .iter()
@@ -144,6 +146,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             }
         }
         PlotTab::ReducedModel => {
+            let c = s.model_curves();
             row(
                 ui,
                 "reduced",

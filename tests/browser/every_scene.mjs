@@ -162,18 +162,27 @@ for (const scene of scenes) {
     // Every kind of control present, moved with the mouse.
     const kinds = new Set((await state(page)).controls.entries.map((e) => e.kind));
     const moved = {};
-    for (const kind of SLIDERS.filter((k) => kinds.has(k))) {
+    // A click on an egui slider's rail sets the value there (the rail is the widget's
+    // left part, 100 points wide by default). Lengths are also pulled to the rail's
+    // far end, where some chains no longer assemble (a refused edit).
+    const moves = SLIDERS.filter((k) => kinds.has(k)).map((k) => [k, k, 23]);
+    if (kinds.has('Length')) moves.push(['Length', 'Length at max', 98]);
+    for (const [kind, name, at] of moves) {
       const c = await find(page, kind);
       const urlBefore = await hash(page);
       const picBefore = await shot(page);
-      // A click on an egui slider's rail sets the value there (the rail is the
-      // widget's left part, 100 points wide by default).
-      const ms = await timedClick(page, [c.rect[0] + 23, centre(c)[1]]);
+      const timedBefore = (await state(page)).edit_timing.frames;
+      const ms = await timedClick(page, [c.rect[0] + at, centre(c)[1]]);
       const after = kind === 'Tolerance' ? (await page.waitForTimeout(800), await state(page)) : await settle(page, urlBefore);
       const changed = (await hash(page)) !== urlBefore || differing(picBefore, await shot(page)) > 200;
-      if (!changed && !after.message) fail(`${what}: moving ${kind} "${c.label}" changed nothing`);
-      if (!after.pose_finite) fail(`${what}: non-finite pose after ${kind}`);
-      moved[kind] = { click_to_frame_ms: Number(ms.toFixed(1)), refused: Boolean(after.message) };
+      if (!changed && !after.message) fail(`${what}: moving ${name} "${c.label}" changed nothing`);
+      if (!after.pose_finite) fail(`${what}: non-finite pose after ${name}`);
+      if (after.edit_timing.frames <= timedBefore) fail(`${what}: no frame carried the ${name} edit`);
+      moved[name] = {
+        edit_frame_ms: Number(after.edit_timing.last_ms.toFixed(2)),
+        click_to_frame_ms: Number(ms.toFixed(1)),
+        refused: Boolean(after.message),
+      };
     }
     if (kinds.has('Branch')) {
       const c = await find(page, 'Branch');
@@ -181,7 +190,7 @@ for (const scene of scenes) {
       const ms = await timedClick(page, centre(c, 0.1));
       const after = await settle(page, urlBefore);
       if ((await hash(page)) === urlBefore && !after.message) fail(`${what}: the branch flip "${c.label}" at ${c.rect} changed nothing (${urlBefore})`);
-      moved.Branch = { click_to_frame_ms: Number(ms.toFixed(1)), refused: Boolean(after.message) };
+      moved.Branch = { edit_frame_ms: Number(after.edit_timing.last_ms.toFixed(2)), click_to_frame_ms: Number(ms.toFixed(1)), refused: Boolean(after.message) };
     }
     if (kinds.has('Integrator')) {
       const picBefore = await shot(page);
@@ -193,7 +202,7 @@ for (const scene of scenes) {
         const ms = await timedClick(page, centre(rk4));
         await page.waitForTimeout(500);
         if (differing(picBefore, await shot(page)) < 50) fail(`${what}: choosing rk4 changed nothing on screen`);
-        moved.Integrator = { click_to_frame_ms: Number(ms.toFixed(1)), refused: false };
+        moved.Integrator = { edit_frame_ms: Number((await state(page)).edit_timing.last_ms.toFixed(2)), click_to_frame_ms: Number(ms.toFixed(1)), refused: false };
       }
     }
     for (const k of ['Crank', 'Length']) if (!moved[k]) fail(`${what}: no ${k} control`);
@@ -215,3 +224,15 @@ for (const scene of scenes) {
 }
 await browser.close();
 console.log(JSON.stringify({ scenes: scenes.length, results }, null, 1));
+
+// The CPU time of the frame that carried each edit (the app's own performance.now()
+// figure: the edit, the panels and plots), slowest per scene, valid and refused.
+console.log('edit frame CPU, ms (slowest over both routes): scene | valid | refused');
+for (const scene of scenes) {
+  const edits = results.filter((r) => r.scene === scene.key).flatMap((r) => Object.values(r.edits));
+  const worst = (refused) => {
+    const ms = edits.filter((e) => e.refused === refused).map((e) => e.edit_frame_ms);
+    return ms.length ? Math.max(...ms).toFixed(2) : '-';
+  };
+  console.log(`${scene.key} | ${worst(false)} | ${worst(true)}`);
+}

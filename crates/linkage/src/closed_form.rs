@@ -212,7 +212,7 @@ fn splat_rotation<T: Real>(r: &UnitComplex<f64>) -> UnitComplex<T> {
 }
 
 /// Margins between 0 and this are treated as exact tangency (rounding), not failure.
-const TANGENT_SLACK: f64 = 1e-12;
+pub(crate) const TANGENT_SLACK: f64 = 1e-12;
 
 impl Group {
     /// Solves the group from the already-known links. With `motion == false` only

@@ -310,6 +310,21 @@ impl Kinematics {
         Some(cf.margin(input_rad, &mut self.scratch).0)
     }
 
+    /// The group that closes worst at `input_rad`, closed form only: what a length
+    /// edit needs to know whether the chain still assembles, without solving it or
+    /// wording an error.
+    pub fn closure(&mut self, input_rad: f64) -> Option<Closure> {
+        let cf = self.closed.as_ref()?;
+        let (margin, group) = cf.margin(input_rad, &mut self.scratch);
+        Some(Closure {
+            margin,
+            group,
+            // Within the tangency slack a group closes, collinear (a solve there is
+            // refused as singular, but the chain is not coming apart).
+            assembles: margin >= -crate::closed_form::TANGENT_SLACK,
+        })
+    }
+
     /// Per-group velocity conditioning at `input_rad`, with the groups' names.
     pub fn group_conditioning(&mut self, input_rad: f64) -> Vec<(String, f64)> {
         let Some(cf) = &self.closed else {
@@ -368,4 +383,16 @@ impl Kinematics {
             },
         }
     }
+}
+
+/// How well the worst group of a closed-form chain closes at one input.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Closure {
+    /// Its assembly margin (dimensionless; > 0 closes, < 0 how far from closing).
+    pub margin: f64,
+    /// The group, as [`Kinematics::group_name`] names it.
+    pub group: usize,
+    /// Whether the chain closes (the margin is above the solver's tangency slack; at a
+    /// margin of about zero the pose is singular).
+    pub assembles: bool,
 }

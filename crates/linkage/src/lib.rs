@@ -30,7 +30,7 @@ pub mod synthesis;
 mod unique_map;
 
 pub use error::{LinkageError, Result};
-pub use kinematics::{Kinematics, PathKind};
+pub use kinematics::{Closure, Kinematics, PathKind};
 pub use model::Mechanism;
 pub use motion::{LinkMotion, PointMotion, SlideMotion, Solution, Vec2};
 pub use scene::SceneFile;

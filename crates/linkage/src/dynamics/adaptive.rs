@@ -114,7 +114,7 @@ fn combine(y0: &State, h: f64, a: &[f64], k: &[State], n: usize) -> State {
 /// Evaluates the stages `range` in order, each at y0 + h Σ a_ij k_j over the stages
 /// before it (row i of `rows`).
 fn eval_stages<const N: usize>(
-    rhs: &mut Rhs<'_>,
+    rhs: &mut Rhs,
     a: &Point,
     h: f64,
     rows: &[[f64; N]],
@@ -131,7 +131,7 @@ fn eval_stages<const N: usize>(
 /// One step of `pair` from `a` with size `h`. After a rejection growth is capped,
 /// as the error model has just been wrong.
 pub(crate) fn step(
-    rhs: &mut Rhs<'_>,
+    rhs: &mut Rhs,
     pair: Pair,
     tol: &Tolerance,
     a: &Point,
@@ -176,13 +176,7 @@ pub(crate) fn step(
     }
 }
 
-fn dp5(
-    rhs: &mut Rhs<'_>,
-    tol: &Tolerance,
-    a: &Point,
-    h: f64,
-    st: &mut Stages,
-) -> Result<(Point, f64)> {
+fn dp5(rhs: &mut Rhs, tol: &Tolerance, a: &Point, h: f64, st: &mut Stages) -> Result<(Point, f64)> {
     st.k[0] = a.f;
     eval_stages(rhs, a, h, &DP5_A, 1..7, st)?;
     let y1 = combine(&a.y, h, &DP5_A[6], &st.k, 6);
@@ -199,7 +193,7 @@ fn dp5(
 }
 
 fn dop853(
-    rhs: &mut Rhs<'_>,
+    rhs: &mut Rhs,
     tol: &Tolerance,
     a: &Point,
     h: f64,
@@ -247,7 +241,7 @@ fn dop853(
 /// The dense output of the step just accepted from `a` to `b` (DOP853: three more
 /// evaluations; DP5: none).
 pub(crate) fn dense(
-    rhs: &mut Rhs<'_>,
+    rhs: &mut Rhs,
     pair: Pair,
     a: &Point,
     b: &Point,
@@ -297,7 +291,7 @@ pub(crate) fn dense(
 /// A first step size from the start's scale and curvature (Hairer's rule, one
 /// evaluation), so that the caller need not guess one.
 pub(crate) fn initial_step(
-    rhs: &mut Rhs<'_>,
+    rhs: &mut Rhs,
     pair: Pair,
     tol: &Tolerance,
     a: &Point,

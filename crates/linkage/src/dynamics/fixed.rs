@@ -6,14 +6,14 @@ use super::rhs::{Point, Rhs, State};
 use crate::error::Result;
 
 /// One semi-implicit (symplectic) Euler step: v first, then x with the new v.
-pub(crate) fn euler(rhs: &mut Rhs<'_>, a: &Point, h: f64) -> Result<Point> {
+pub(crate) fn euler(rhs: &mut Rhs, a: &Point, h: f64) -> Result<Point> {
     let v = a.y[1] + h * a.f[1];
     let y = [a.y[0] + h * v, v, a.y[2] + h * a.f[2]];
     rhs.point(a.t + h, y)
 }
 
 /// One classical RK4 step: three new stages and the end point.
-pub(crate) fn rk4(rhs: &mut Rhs<'_>, a: &Point, h: f64) -> Result<Point> {
+pub(crate) fn rk4(rhs: &mut Rhs, a: &Point, h: f64) -> Result<Point> {
     let at = |k: &State, c: f64| -> State { std::array::from_fn(|i| a.y[i] + c * h * k[i]) };
     let k1 = a.f;
     let k2 = rhs.eval(&at(&k1, 0.5))?.0;
@@ -28,7 +28,7 @@ pub(crate) fn rk4(rhs: &mut Rhs<'_>, a: &Point, h: f64) -> Result<Point> {
 /// energy would go negative the motion turns: the step ends at the turning point
 /// ½J₀v₀² + M₀(x − x₀) = 0 with v = 0, and the next one goes back. `None` at rest in
 /// equilibrium (no moment). One evaluation.
-pub(crate) fn energy_increment(rhs: &mut Rhs<'_>, a: &Point, dx: f64) -> Result<Option<Point>> {
+pub(crate) fn energy_increment(rhs: &mut Rhs, a: &Point, dx: f64) -> Result<Option<Point>> {
     let v0 = a.y[1];
     let direction = if v0 != 0.0 {
         v0.signum()

@@ -13,7 +13,7 @@ use crate::error::{LinkageError, Result};
 const MAX_ITERATIONS: usize = 25;
 
 /// One implicit midpoint step from `a` over `h`.
-pub(crate) fn midpoint(rhs: &mut Rhs<'_>, a: &Point, h: f64) -> Result<Point> {
+pub(crate) fn midpoint(rhs: &mut Rhs, a: &Point, h: f64) -> Result<Point> {
     let (x0, v0) = (a.y[0], a.y[1]);
     let (acc_x, acc_v) = rhs.linearise(a)?;
     // Iteration matrix I − (h/2) ∂f/∂y for (x, v), with ∂f/∂y = [[0, 1], [acc_x, acc_v]].

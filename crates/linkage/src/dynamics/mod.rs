@@ -29,5 +29,5 @@ pub mod tradeoff;
 
 pub use forces::{EnergyTerms, ForceModel, Load, Reduced};
 pub use output::{RunStats, Sample, SimEvent, Simulation};
-pub use run::simulate;
+pub use run::{Run, simulate};
 pub use settings::{MAX_OUTPUT_SAMPLES, MAX_STEPS, Method, Settings};

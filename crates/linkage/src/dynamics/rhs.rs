@@ -32,10 +32,10 @@ const SWITCH_RATIO: f64 = 2.0;
 const DEAD_POINT_RATIO: f64 = 1e3;
 
 /// The reduced model in the current coordinate, with its cost counters.
-pub(crate) struct Rhs<'a> {
+pub(crate) struct Rhs {
     /// Kinematics driven by the current coordinate.
     pub k: Kinematics,
-    pub forces: &'a ForceModel,
+    pub forces: ForceModel,
     /// Unit-speed solution of the last kinematic solve.
     pub sol: Solution,
     /// Links that can serve as coordinate (revolute to ground).
@@ -50,8 +50,8 @@ pub(crate) struct Rhs<'a> {
     pub solves: usize,
 }
 
-impl<'a> Rhs<'a> {
-    pub fn new(k: Kinematics, forces: &'a ForceModel, allow_switch: bool) -> Self {
+impl Rhs {
+    pub fn new(k: Kinematics, forces: ForceModel, allow_switch: bool) -> Self {
         let m = k.mechanism();
         let candidates = m
             .moving_links()

@@ -28,7 +28,7 @@ struct Stop {
 
 /// Signed angle of the stop's link past its stop angle at coordinate `x`, wrapped to
 /// (−π, π]; NaN where the chain does not assemble.
-fn gap(rhs: &mut Rhs<'_>, x: f64, stop: &Stop) -> f64 {
+fn gap(rhs: &mut Rhs, x: f64, stop: &Stop) -> f64 {
     let angle = if stop.link == rhs.coordinate_link() {
         x
     } else {
@@ -48,7 +48,7 @@ struct Sampler {
 }
 
 impl Sampler {
-    fn sample(&mut self, rhs: &mut Rhs<'_>, t: f64, y: &State, segment: usize) -> Result<Sample> {
+    fn sample(&mut self, rhs: &mut Rhs, t: f64, y: &State, segment: usize) -> Result<Sample> {
         rhs.ensure_position(y[0])?;
         let r = rhs.reduce_here(y)?;
         let e = rhs.forces.energy(&rhs.sol, r.j, y[1]);
@@ -79,7 +79,7 @@ impl Sampler {
 
 /// |λ| of the stiffest mode of the linearised motion at `a`, from q̈ ≈ a_x δx + a_v δv
 /// (one evaluation).
-fn stiffness(rhs: &mut Rhs<'_>, a: &Point) -> Result<f64> {
+fn stiffness(rhs: &mut Rhs, a: &Point) -> Result<f64> {
     let (acc_x, acc_v) = rhs.linearise(a)?;
     // Eigenvalues of [[0, 1], [acc_x, acc_v]]; complex ones have |λ|² = −acc_x.
     let disc = acc_v * acc_v + 4.0 * acc_x;
@@ -123,253 +123,439 @@ fn budget_spent(stats: &RunStats, t: f64, settings: &Settings) -> LinkageError {
 /// explicit step beyond the method's stability limit, a step-size collapse of an
 /// adaptive method, or a kinematic failure the method cannot step around.
 pub fn simulate(k: &Kinematics, settings: &Settings) -> Result<Simulation> {
-    settings.validate()?;
-    let clock = Instant::now();
-    let m = k.mechanism();
-    let mut base = k.clone();
-    let start = {
-        let mut s = base.empty_solution();
-        base.solve_into(m.driver.start_rad, 1.0, &mut s)?;
-        s
-    };
-    let forces = ForceModel::new(m, &start)?;
-    if forces.is_massless() {
-        return Err(LinkageError::SceneInvalid(
-            "no link has a mass: there is nothing to integrate".into(),
-        ));
-    }
-    let (kin, x0, v0) = match settings.coordinate {
-        Some(link) if link != m.driver.link => {
-            let redriven = base.redriven(link, &start)?;
-            let omega = start.links[link].omega_rad_s;
-            (
-                redriven,
-                start.links[link].angle_rad(),
-                omega * settings.q_dot0,
-            )
+    let mut run = Run::start(k, settings)?;
+    while !run.advance(usize::MAX)? {}
+    Ok(run.finish())
+}
+
+/// A run in progress, advanced a slice of steps at a time, so that a caller without
+/// threads (the browser) can spread it over frames. Slicing does not change the
+/// result: the steps, events and samples are those of one [`simulate`] call.
+pub struct Run {
+    settings: Settings,
+    rhs: Rhs,
+    segments: Vec<Kinematics>,
+    /// The state at the end of the last accepted step.
+    a: Point,
+    stats: RunStats,
+    stops: Vec<Stop>,
+    /// Signed gap of each stop at `a`.
+    gaps: Vec<f64>,
+    sampler: Sampler,
+    samples: Vec<Sample>,
+    events: Vec<SimEvent>,
+    next_output: Option<f64>,
+    pair: Option<Pair>,
+    tol: Tolerance,
+    max_step: f64,
+    /// The next step size to try.
+    h: f64,
+    stages: Stages,
+    controller: Controller,
+    finished: bool,
+    /// CPU time spent in this run so far, s.
+    cpu_s: f64,
+}
+
+impl Run {
+    /// Validates `settings` and sets the run up at its start state (the first sample).
+    ///
+    /// # Errors
+    /// As [`simulate`], for what can be known before the first step.
+    pub fn start(k: &Kinematics, settings: &Settings) -> Result<Self> {
+        settings.validate()?;
+        let clock = Instant::now();
+        let m = k.mechanism();
+        let mut base = k.clone();
+        let start = {
+            let mut s = base.empty_solution();
+            base.solve_into(m.driver.start_rad, 1.0, &mut s)?;
+            s
+        };
+        let forces = ForceModel::new(m, &start)?;
+        if forces.is_massless() {
+            return Err(LinkageError::SceneInvalid(
+                "no link has a mass: there is nothing to integrate".into(),
+            ));
         }
-        _ => (base, m.driver.start_rad, settings.q_dot0),
-    };
-    let mut rhs = Rhs::new(kin, &forces, settings.switch_coordinates);
-    let mut segments = vec![rhs.k.clone()];
-    let mut a = rhs.point(0.0, [x0, v0, 0.0])?;
-    let mut stats = RunStats {
-        stiffness_per_s: stiffness(&mut rhs, &a)?,
-        ..Default::default()
-    };
-    let method = settings.method;
-    if let Some(limit) = method.stability_limit() {
-        let h_limit = limit / stats.stiffness_per_s;
-        if !method.is_adaptive() && settings.step > h_limit {
-            return Err(LinkageError::InvalidParameter {
-                name: "step".into(),
-                value: settings.step,
-                valid: format!(
-                    "below {h_limit:.3e} s, the stability limit of {} for the stiffest mode here (|λ| = {:.4e} 1/s, h|λ| < {limit:.3}); or use --method implicit, which has no limit",
+        let (kin, x0, v0) = match settings.coordinate {
+            Some(link) if link != m.driver.link => {
+                let redriven = base.redriven(link, &start)?;
+                let omega = start.links[link].omega_rad_s;
+                (
+                    redriven,
+                    start.links[link].angle_rad(),
+                    omega * settings.q_dot0,
+                )
+            }
+            _ => (base, m.driver.start_rad, settings.q_dot0),
+        };
+        let stops = resolved_stops(k, settings);
+        let mut rhs = Rhs::new(kin, forces, settings.switch_coordinates);
+        let segments = vec![rhs.k.clone()];
+        let a = rhs.point(0.0, [x0, v0, 0.0])?;
+        let stats = RunStats {
+            stiffness_per_s: stiffness(&mut rhs, &a)?,
+            ..Default::default()
+        };
+        check_stability(settings, stats.stiffness_per_s)?;
+        let mut sampler = Sampler {
+            driver: m.driver.link,
+            last_q: None,
+        };
+        let samples = vec![sampler.sample(&mut rhs, 0.0, &a.y, 0)?];
+        let gaps = stops.iter().map(|s| gap(&mut rhs, a.y[0], s)).collect();
+        let pair = match settings.method {
+            Method::Dp5 => Some(Pair::Dp5),
+            Method::Dop853 => Some(Pair::Dop853),
+            _ => None,
+        };
+        let tol = Tolerance {
+            rtol: settings.rtol,
+            atol: settings.atol,
+        };
+        let max_step = if settings.step > 0.0 {
+            settings.step
+        } else {
+            f64::INFINITY
+        };
+        let h = match pair {
+            Some(p) => adaptive::initial_step(&mut rhs, p, &tol, &a, settings.t_end).min(max_step),
+            None => settings.step,
+        };
+        Ok(Self {
+            settings: settings.clone(),
+            rhs,
+            segments,
+            a,
+            stats,
+            stops,
+            gaps,
+            sampler,
+            samples,
+            events: Vec::new(),
+            next_output: settings.output_dt,
+            pair,
+            tol,
+            max_step,
+            h,
+            stages: Stages::default(),
+            controller: Controller::default(),
+            finished: false,
+            cpu_s: clock.elapsed().as_secs_f64(),
+        })
+    }
+
+    /// Takes up to `max_steps` more steps (accepted or rejected); returns whether the
+    /// run is finished (it reached `t_end`, an end stop, or rest in equilibrium).
+    ///
+    /// # Errors
+    /// As [`simulate`]; after an error the run cannot go on.
+    pub fn advance(&mut self, max_steps: usize) -> Result<bool> {
+        let clock = Instant::now();
+        let mut taken = 0;
+        let result = loop {
+            if self.finished || self.a.t >= self.settings.t_end {
+                self.finished = true;
+                break Ok(true);
+            }
+            if taken >= max_steps {
+                break Ok(false);
+            }
+            let before = self.stats.steps + self.stats.rejected_steps;
+            if let Err(e) = self.step() {
+                self.finished = true;
+                break Err(e);
+            }
+            taken += (self.stats.steps + self.stats.rejected_steps - before).max(1);
+        };
+        self.cpu_s += clock.elapsed().as_secs_f64();
+        result
+    }
+
+    /// Time reached, s.
+    pub fn time_s(&self) -> f64 {
+        self.a.t
+    }
+
+    /// The settings of the run.
+    pub fn settings(&self) -> &Settings {
+        &self.settings
+    }
+
+    /// The samples so far.
+    pub fn samples(&self) -> &[Sample] {
+        &self.samples
+    }
+
+    /// Ends the run where it got to (normally after [`Run::advance`] returned `true`),
+    /// with its cost and warnings.
+    pub fn finish(mut self) -> Simulation {
+        let method = self.settings.method;
+        if let Some(limit) = method.stability_limit().filter(|_| method.is_adaptive()) {
+            // An adaptive method stays stable by itself, but when its mean step sits
+            // near the stability limit it is the stiffness, not the accuracy, that
+            // sets the cost.
+            let h_limit = limit / self.stats.stiffness_per_s;
+            let t_run = self.samples.last().map_or(0.0, |s| s.t);
+            let mean_step = t_run / self.stats.steps.max(1) as f64;
+            if mean_step > 0.5 * h_limit {
+                self.stats.warnings.push(format!(
+                    "stiff: the mean step {mean_step:.3e} s of {} is set by its stability limit {h_limit:.3e} s (stiffest mode |λ| = {:.4e} 1/s at the start), not by rtol; --method implicit has no such limit",
                     method.label(),
-                    stats.stiffness_per_s
-                ),
-            });
+                    self.stats.stiffness_per_s
+                ));
+            }
+        }
+        self.stats.rhs_evaluations = self.rhs.evaluations;
+        self.stats.kinematic_solves = self.rhs.solves;
+        self.stats.cpu_seconds = self.cpu_s;
+        Simulation {
+            method,
+            samples: self.samples,
+            events: self.events,
+            stats: self.stats,
+            segments: self.segments,
         }
     }
-    let stops: Vec<Stop> = if settings.use_stops {
-        m.forces
-            .stops
-            .iter()
-            .filter_map(|s| {
-                m.link_index(&s.link).map(|link| Stop {
-                    name: s.name.clone(),
-                    link,
-                    angle: s.angle,
-                    stops: s.action == StopAction::Stop,
-                })
-            })
-            .collect()
-    } else {
-        Vec::new()
-    };
-    let mut sampler = Sampler {
-        driver: m.driver.link,
-        last_q: None,
-    };
-    let mut samples = vec![sampler.sample(&mut rhs, 0.0, &a.y, 0)?];
-    let mut events = Vec::new();
-    let mut next_output = settings.output_dt;
-    let mut gaps: Vec<f64> = stops.iter().map(|s| gap(&mut rhs, a.y[0], s)).collect();
-    let pair = match method {
-        Method::Dp5 => Some(Pair::Dp5),
-        Method::Dop853 => Some(Pair::Dop853),
-        _ => None,
-    };
-    let tol = Tolerance {
-        rtol: settings.rtol,
-        atol: settings.atol,
-    };
-    let max_step = if settings.step > 0.0 {
-        settings.step
-    } else {
-        f64::INFINITY
-    };
-    let mut h = match pair {
-        Some(p) => adaptive::initial_step(&mut rhs, p, &tol, &a, settings.t_end).min(max_step),
-        None => settings.step,
-    };
-    let mut stages = Stages::default();
-    let mut controller = Controller::default();
-    'run: while a.t < settings.t_end {
-        if stats.steps + stats.rejected_steps >= settings.max_steps {
-            return Err(budget_spent(&stats, a.t, settings));
+
+    /// One accepted step a -> b with its events, samples and coordinate switch.
+    fn step(&mut self) -> Result<()> {
+        if self.stats.steps + self.stats.rejected_steps >= self.settings.max_steps {
+            return Err(budget_spent(&self.stats, self.a.t, &self.settings));
         }
-        // One accepted step a -> b, with its dense output made on demand.
-        let b = match (method, pair) {
+        let Some(b) = self.accepted_step()? else {
+            return Ok(()); // at rest: the run is finished
+        };
+        self.stats.steps += 1;
+        let segment = self.segments.len() - 1;
+        let mut dense = DenseCache::new(self.pair, self.a);
+        let hit = self.first_stop_crossed(&b, &mut dense)?;
+        // A stop ends the run at the hit; a reported event leaves the rest of the step
+        // to sample from this step's dense output, like any other.
+        let stop_hit = hit.filter(|&(_, i)| self.stops[i].stops);
+        let t_until = stop_hit.map_or(b.t, |(t, _)| t);
+        if let Some(dt) = self.settings.output_dt {
+            while let Some(t_out) = self.next_output.filter(|&t| t <= t_until) {
+                let y = dense.get(&mut self.rhs, &b, &mut self.stages)?.eval(t_out);
+                let s = self.sampler.sample(&mut self.rhs, t_out, &y, segment)?;
+                self.samples.push(s);
+                self.next_output = Some(t_out + dt).filter(|&t| t <= self.settings.t_end);
+            }
+        } else if stop_hit.is_none() {
+            let s = self.sampler.sample(&mut self.rhs, b.t, &b.y, segment)?;
+            self.samples.push(s);
+        }
+        if let Some((t_hit, i)) = hit {
+            let y = dense.get(&mut self.rhs, &b, &mut self.stages)?.eval(t_hit);
+            let state = self.sampler.sample(&mut self.rhs, t_hit, &y, segment)?;
+            let stops = self.stops[i].stops;
+            self.events.push(SimEvent {
+                name: self.stops[i].name.clone(),
+                state,
+                stopped: stops,
+            });
+            if stops {
+                self.samples.push(state);
+                self.finished = true;
+                return Ok(());
+            }
+        }
+        if self.settings.output_dt.is_some() && b.t >= self.settings.t_end {
+            let last = self.samples.last().map_or(0.0, |s| s.t);
+            if last < b.t {
+                let s = self.sampler.sample(&mut self.rhs, b.t, &b.y, segment)?;
+                self.samples.push(s);
+            }
+        }
+        self.a = b;
+        self.switch_coordinate_if_needed()
+    }
+
+    /// The next accepted step of the method, or `None` where the energy method finds
+    /// the chain at rest in equilibrium (recorded as the stopping event).
+    fn accepted_step(&mut self) -> Result<Option<Point>> {
+        let (a, t_end, rhs) = (self.a, self.settings.t_end, &mut self.rhs);
+        let h = self.h;
+        Ok(Some(match (self.settings.method, self.pair) {
             (_, Some(p)) => loop {
-                let h_try = h.min(settings.t_end - a.t).min(max_step);
-                match adaptive::step(&mut rhs, p, &tol, &a, h_try, &mut controller, &mut stages) {
+                let h_try = self.h.min(t_end - a.t).min(self.max_step);
+                let attempt = adaptive::step(
+                    rhs,
+                    p,
+                    &self.tol,
+                    &a,
+                    h_try,
+                    &mut self.controller,
+                    &mut self.stages,
+                );
+                match attempt {
                     Attempt::Accepted { end, error, h_next } => {
-                        stats.max_error_estimate = stats.max_error_estimate.max(error);
-                        h = h_next;
+                        self.stats.max_error_estimate = self.stats.max_error_estimate.max(error);
+                        self.h = h_next;
                         break end;
                     }
                     Attempt::Rejected { h_next } => {
-                        stats.rejected_steps += 1;
-                        h = h_next;
-                        if h < 1e-12 * (1.0 + a.t.abs()) {
-                            return Err(LinkageError::Singular {
-                                input_deg: a.y[0].to_degrees(),
-                                reason: format!(
-                                    "the step size collapsed at t = {:.9} s (rtol {}, atol {}): the motion is not smooth or not assemblable here",
-                                    a.t, settings.rtol, settings.atol
-                                ),
-                            });
+                        self.stats.rejected_steps += 1;
+                        self.h = h_next;
+                        if self.h < 1e-12 * (1.0 + a.t.abs()) {
+                            return Err(step_collapsed(&a, &self.settings));
                         }
                     }
                 }
             },
-            (Method::EnergyIncrement, None) => match fixed::energy_increment(&mut rhs, &a, h)? {
+            (Method::EnergyIncrement, None) => match fixed::energy_increment(rhs, &a, h)? {
                 Some(b) => b,
                 None => {
-                    let state = sampler.sample(&mut rhs, a.t, &a.y, segments.len() - 1)?;
-                    events.push(SimEvent {
+                    let segment = self.segments.len() - 1;
+                    let state = self.sampler.sample(rhs, a.t, &a.y, segment)?;
+                    self.events.push(SimEvent {
                         name: "at rest in equilibrium".into(),
                         state,
                         stopped: true,
                     });
-                    break 'run;
+                    self.finished = true;
+                    return Ok(None);
                 }
             },
-            (Method::SemiImplicitEuler, None) => {
-                fixed::euler(&mut rhs, &a, h.min(settings.t_end - a.t))?
-            }
-            (Method::ImplicitMidpoint, None) => {
-                implicit::midpoint(&mut rhs, &a, h.min(settings.t_end - a.t))?
-            }
-            (_, None) => fixed::rk4(&mut rhs, &a, h.min(settings.t_end - a.t))?,
-        };
-        stats.steps += 1;
-        let segment = segments.len() - 1;
-        let mut dense: Option<Dense> = None;
-        let mut make_dense = |rhs: &mut Rhs<'_>, dense: &mut Option<Dense>| -> Result<Dense> {
-            if let Some(d) = dense {
-                return Ok(d.clone());
-            }
-            let d = match pair {
-                Some(p) => adaptive::dense(rhs, p, &a, &b, &mut stages)?,
-                None => Dense::Hermite { a, b },
-            };
-            *dense = Some(d.clone());
-            Ok(d)
-        };
-        // The first stop crossed in this step, if any.
+            (Method::SemiImplicitEuler, None) => fixed::euler(rhs, &a, h.min(t_end - a.t))?,
+            (Method::ImplicitMidpoint, None) => implicit::midpoint(rhs, &a, h.min(t_end - a.t))?,
+            (_, None) => fixed::rk4(rhs, &a, h.min(t_end - a.t))?,
+        }))
+    }
+
+    /// The first stop crossed in the step a -> `b`, located on the dense output: its
+    /// time and index. Updates the stops' gaps to `b`.
+    fn first_stop_crossed(
+        &mut self,
+        b: &Point,
+        dense: &mut DenseCache,
+    ) -> Result<Option<(f64, usize)>> {
         let mut hit: Option<(f64, usize)> = None;
-        for (i, stop) in stops.iter().enumerate() {
-            let gb = gap(&mut rhs, b.y[0], stop);
-            let ga = gaps[i];
-            gaps[i] = gb;
+        for (i, stop) in self.stops.iter().enumerate() {
+            let gb = gap(&mut self.rhs, b.y[0], stop);
+            let ga = self.gaps[i];
+            self.gaps[i] = gb;
             if !(ga.is_finite() && gb.is_finite() && ga != 0.0)
                 || ga.signum() == gb.signum()
                 || (ga - gb).abs() >= 1.0
             {
                 continue;
             }
-            let d = make_dense(&mut rhs, &mut dense)?;
-            let t_hit = refine(a.t, b.t, |t| gap(&mut rhs, d.eval(t)[0], stop)).unwrap_or(b.t);
+            let d = dense.get(&mut self.rhs, b, &mut self.stages)?;
+            let rhs = &mut self.rhs;
+            let t_hit = refine(self.a.t, b.t, |t| gap(rhs, d.eval(t)[0], stop)).unwrap_or(b.t);
             if hit.is_none_or(|(t, _)| t_hit < t) {
                 hit = Some((t_hit, i));
             }
         }
-        // A stop ends the run at the hit; a reported event leaves the rest of the step
-        // to sample from this step's dense output, like any other.
-        let stop_hit = hit.filter(|&(_, i)| stops[i].stops);
-        let t_until = stop_hit.map_or(b.t, |(t, _)| t);
-        if let Some(dt) = settings.output_dt {
-            while let Some(t_out) = next_output.filter(|&t| t <= t_until) {
-                let d = make_dense(&mut rhs, &mut dense)?;
-                samples.push(sampler.sample(&mut rhs, t_out, &d.eval(t_out), segment)?);
-                next_output = Some(t_out + dt).filter(|&t| t <= settings.t_end);
-            }
-        } else if stop_hit.is_none() {
-            samples.push(sampler.sample(&mut rhs, b.t, &b.y, segment)?);
-        }
-        if let Some((t_hit, i)) = hit {
-            let d = make_dense(&mut rhs, &mut dense)?;
-            let state = sampler.sample(&mut rhs, t_hit, &d.eval(t_hit), segment)?;
-            events.push(SimEvent {
-                name: stops[i].name.clone(),
-                state,
-                stopped: stops[i].stops,
-            });
-            if stops[i].stops {
-                samples.push(state);
-                break 'run;
-            }
-        }
-        if settings.output_dt.is_some() && b.t >= settings.t_end {
-            let last = samples.last().map_or(0.0, |s| s.t);
-            if last < b.t {
-                samples.push(sampler.sample(&mut rhs, b.t, &b.y, segment)?);
-            }
-        }
-        a = b;
-        let from = rhs.coordinate_link();
-        if let Some(switched) = rhs.switch_if_needed(&a)? {
-            segments.push(rhs.k.clone());
-            let state = sampler.sample(&mut rhs, switched.t, &switched.y, segments.len() - 1)?;
-            events.push(SimEvent {
-                name: format!(
-                    "coordinate switch from {} to {}",
-                    m.links[from].name,
-                    m.links[rhs.coordinate_link()].name
-                ),
-                state,
-                stopped: false,
-            });
-            a = switched;
-            // The step size carries over: it is a time scale of the motion, which does
-            // not depend on the coordinate that describes it.
+        Ok(hit)
+    }
+
+    /// Near a dead point of the coordinate, continues in a regular one (an event).
+    fn switch_coordinate_if_needed(&mut self) -> Result<()> {
+        let from = self.rhs.coordinate_link();
+        let Some(switched) = self.rhs.switch_if_needed(&self.a)? else {
+            return Ok(());
+        };
+        self.segments.push(self.rhs.k.clone());
+        let segment = self.segments.len() - 1;
+        let state = self
+            .sampler
+            .sample(&mut self.rhs, switched.t, &switched.y, segment)?;
+        let links = &self.rhs.k.mechanism().links;
+        self.events.push(SimEvent {
+            name: format!(
+                "coordinate switch from {} to {}",
+                links[from].name,
+                links[self.rhs.coordinate_link()].name
+            ),
+            state,
+            stopped: false,
+        });
+        // The step size carries over: it is a time scale of the motion, which does not
+        // depend on the coordinate that describes it.
+        self.a = switched;
+        Ok(())
+    }
+}
+
+/// The dense output of the current step, made on first use.
+struct DenseCache {
+    pair: Option<Pair>,
+    a: Point,
+    dense: Option<Dense>,
+}
+
+impl DenseCache {
+    fn new(pair: Option<Pair>, a: Point) -> Self {
+        Self {
+            pair,
+            a,
+            dense: None,
         }
     }
-    if let Some(limit) = method.stability_limit().filter(|_| method.is_adaptive()) {
-        // An adaptive method stays stable by itself, but when its mean step sits near
-        // the stability limit it is the stiffness, not the accuracy, that sets the cost.
-        let h_limit = limit / stats.stiffness_per_s;
-        let t_run = samples.last().map_or(0.0, |s| s.t);
-        let mean_step = t_run / stats.steps.max(1) as f64;
-        if mean_step > 0.5 * h_limit {
-            stats.warnings.push(format!(
-                "stiff: the mean step {mean_step:.3e} s of {} is set by its stability limit {h_limit:.3e} s (stiffest mode |λ| = {:.4e} 1/s at the start), not by rtol; --method implicit has no such limit",
-                method.label(),
-                stats.stiffness_per_s
-            ));
+
+    fn get(&mut self, rhs: &mut Rhs, b: &Point, stages: &mut Stages) -> Result<Dense> {
+        if let Some(d) = &self.dense {
+            return Ok(d.clone());
         }
+        let d = match self.pair {
+            Some(p) => adaptive::dense(rhs, p, &self.a, b, stages)?,
+            None => Dense::Hermite { a: self.a, b: *b },
+        };
+        self.dense = Some(d.clone());
+        Ok(d)
     }
-    stats.rhs_evaluations = rhs.evaluations;
-    stats.kinematic_solves = rhs.solves;
-    stats.cpu_seconds = clock.elapsed().as_secs_f64();
-    Ok(Simulation {
-        method,
-        samples,
-        events,
-        stats,
-        segments,
+}
+
+/// The scene's end stops resolved to links (none when the settings ignore them).
+fn resolved_stops(k: &Kinematics, settings: &Settings) -> Vec<Stop> {
+    if !settings.use_stops {
+        return Vec::new();
+    }
+    let m = k.mechanism();
+    m.forces
+        .stops
+        .iter()
+        .filter_map(|s| {
+            m.link_index(&s.link).map(|link| Stop {
+                name: s.name.clone(),
+                link,
+                angle: s.angle,
+                stops: s.action == StopAction::Stop,
+            })
+        })
+        .collect()
+}
+
+/// Refuses a fixed explicit step beyond the method's stability limit.
+fn check_stability(settings: &Settings, stiffness_per_s: f64) -> Result<()> {
+    let method = settings.method;
+    let Some(limit) = method.stability_limit() else {
+        return Ok(());
+    };
+    let h_limit = limit / stiffness_per_s;
+    if method.is_adaptive() || settings.step <= h_limit {
+        return Ok(());
+    }
+    Err(LinkageError::InvalidParameter {
+        name: "step".into(),
+        value: settings.step,
+        valid: format!(
+            "below {h_limit:.3e} s, the stability limit of {} for the stiffest mode here (|λ| = {stiffness_per_s:.4e} 1/s, h|λ| < {limit:.3}); or use --method implicit, which has no limit",
+            method.label(),
+        ),
     })
+}
+
+/// The error of an adaptive run whose step size collapsed at `a`.
+fn step_collapsed(a: &Point, settings: &Settings) -> LinkageError {
+    LinkageError::Singular {
+        input_deg: a.y[0].to_degrees(),
+        reason: format!(
+            "the step size collapsed at t = {:.9} s (rtol {}, atol {}): the motion is not smooth or not assemblable here",
+            a.t, settings.rtol, settings.atol
+        ),
+    }
 }

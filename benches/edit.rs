@@ -1,0 +1,113 @@
+//! The time of one edit per shipped scene, as a slider makes it: a length set to a
+//! valid value, and to one the chain cannot assemble with (refused, with its limit
+//! found); for scenes with springs or masses, those too. Measured is what the frame
+//! of the edit has to do before it can draw: the edit itself (pose, polygons, the
+//! curves on screen) and the report strip. The dynamic run follows off the frame.
+//!
+//! `cargo bench --bench edit`; the target is 4 ms per edit (a 60 Hz frame with room
+//! for drawing).
+
+use std::hint::black_box;
+use std::path::PathBuf;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use linkage_lab::session::{SceneSource, Session};
+
+/// Every scene file in `assets/scenes`, read from the directory.
+fn scene_files() -> Vec<PathBuf> {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes");
+    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
+        .expect("the scene directory")
+        .map(|e| e.expect("an entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "ron"))
+        .collect();
+    files.sort();
+    files
+}
+
+fn open(path: &PathBuf) -> Session {
+    let text = std::fs::read_to_string(path).expect("a scene file");
+    let name = path.display().to_string();
+    Session::open_text(SceneSource::File(name), &text).expect("a shipped scene opens")
+}
+
+/// What the frame of an edit computes: the edit, then the report it shows.
+fn edit(s: &mut Session, f: impl Fn(&mut Session)) {
+    f(s);
+    black_box(s.report());
+    black_box(s.polygons());
+}
+
+/// A length index and a value of it the chain cannot assemble with, if any has one.
+fn refusable_length(path: &PathBuf) -> Option<(usize, f64)> {
+    let mut s = open(path);
+    for i in 0..s.lengths().len() {
+        let v = s.lengths()[i].value(s.scene())?;
+        for factor in [100.0, 0.01] {
+            s.set_length(i, v * factor);
+            if s.message().is_some() {
+                return Some((i, v * factor));
+            }
+        }
+    }
+    None
+}
+
+fn edits(c: &mut Criterion) {
+    let mut group = c.benchmark_group("edit");
+    for path in scene_files() {
+        let key = path
+            .file_stem()
+            .expect("a name")
+            .to_string_lossy()
+            .to_string();
+        let mut s = open(&path);
+        let v = s.lengths()[0].value(s.scene()).expect("a length");
+        let mut flip = false;
+        group.bench_function(format!("{key}/length valid"), |b| {
+            b.iter(|| {
+                flip = !flip;
+                let x = if flip { 1.01 * v } else { v };
+                edit(&mut s, |s| s.set_length(0, x));
+            });
+        });
+        assert!(s.message().is_none(), "{key}: {:?}", s.message());
+        if let Some((i, bad)) = refusable_length(&path) {
+            let mut s = open(&path);
+            group.bench_function(format!("{key}/length refused"), |b| {
+                b.iter(|| edit(&mut s, |s| s.set_length(i, bad)));
+            });
+            assert!(s.message().is_some(), "{key}: refused");
+        }
+        if let Some(k) = s.scene().forces.springs.first().map(|sp| sp.k_n_per_m) {
+            let mut flip = false;
+            group.bench_function(format!("{key}/spring k"), |b| {
+                b.iter(|| {
+                    flip = !flip;
+                    edit(&mut s, |s| {
+                        s.set_spring_k(0, if flip { 1.1 * k } else { k })
+                    });
+                });
+            });
+        }
+        if let Some((i, m)) = s
+            .scene()
+            .links
+            .iter()
+            .enumerate()
+            .find_map(|(i, l)| Some((i, l.mass?)))
+        {
+            let mut flip = false;
+            group.bench_function(format!("{key}/mass"), |b| {
+                b.iter(|| {
+                    flip = !flip;
+                    edit(&mut s, |s| s.set_mass(i, if flip { 1.1 * m } else { m }));
+                });
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, edits);
+criterion_main!(benches);

@@ -1,0 +1,195 @@
+//! The dynamic run computed off the frame, so that an edit shows at once and the run
+//! follows: natively on a worker thread; in the browser, which has no threads here,
+//! in slices of a few milliseconds per frame. Either way the result is exactly the
+//! one `simulate` gives: slicing a run does not change its steps.
+
+use linkage::Kinematics;
+use linkage::dynamics::Run;
+
+use super::dynamic_run::{DynamicRun, IntegratorChoice, settings_for};
+
+/// Steps taken between two looks at the clock (a step costs microseconds).
+const STEPS_PER_CHUNK: usize = 16;
+
+/// A dynamic run being computed.
+pub struct RunJob {
+    choice: IntegratorChoice,
+    inner: Inner,
+}
+
+enum Inner {
+    /// Native: the run goes on in a thread; dropping the job stops it.
+    #[cfg(not(target_arch = "wasm32"))]
+    Thread(worker::Worker),
+    /// The run advanced a slice per call of [`RunJob::poll`] (the browser).
+    Sliced(Box<Result<Run, String>>),
+}
+
+impl RunJob {
+    /// Starts the run of `k` with `choice`: natively on a worker thread, in the
+    /// browser sliced over frames.
+    pub fn start(k: &Kinematics, choice: IntegratorChoice) -> Self {
+        #[cfg(not(target_arch = "wasm32"))]
+        let inner = Inner::Thread(worker::Worker::spawn(k.clone(), choice));
+        #[cfg(target_arch = "wasm32")]
+        let inner = Inner::Sliced(Box::new(start_run(k, choice)));
+        Self { choice, inner }
+    }
+
+    /// Starts the run to be advanced only by [`RunJob::poll`] on the caller's thread,
+    /// as the browser does (natively too, to test it).
+    pub fn start_sliced(k: &Kinematics, choice: IntegratorChoice) -> Self {
+        Self {
+            choice,
+            inner: Inner::Sliced(Box::new(start_run(k, choice))),
+        }
+    }
+
+    /// Simulated time reached so far, s.
+    pub fn progress_s(&self) -> f64 {
+        match &self.inner {
+            #[cfg(not(target_arch = "wasm32"))]
+            Inner::Thread(w) => w.progress_s(),
+            Inner::Sliced(run) => run.as_ref().as_ref().map_or(0.0, Run::time_s),
+        }
+    }
+
+    /// The run's end time, s.
+    pub fn end_s(&self) -> f64 {
+        settings_for(self.choice).t_end
+    }
+
+    /// Advances the run: a sliced run by steps for at most `budget_ms` of this thread's
+    /// time, a threaded one not at all. The result once the run has finished.
+    pub fn poll(&mut self, budget_ms: f64) -> Option<Result<DynamicRun, String>> {
+        let choice = self.choice;
+        match &mut self.inner {
+            #[cfg(not(target_arch = "wasm32"))]
+            Inner::Thread(w) => w.try_result(),
+            Inner::Sliced(run) => {
+                let finished = match run.as_mut() {
+                    Ok(r) => advance_for(r, budget_ms),
+                    Err(e) => Err(e.clone()),
+                };
+                match finished {
+                    Ok(false) => None,
+                    Err(e) => Some(Err(e)),
+                    Ok(true) => {
+                        let done = std::mem::replace(run.as_mut(), Err("taken".into()));
+                        Some(done.map(|r| DynamicRun::from_simulation(choice, r.finish())))
+                    }
+                }
+            }
+        }
+    }
+
+    /// Waits for the result (blocks; a sliced run is run to its end here).
+    pub fn wait(mut self) -> Result<DynamicRun, String> {
+        loop {
+            if let Some(result) = self.poll(f64::INFINITY) {
+                return result;
+            }
+            #[cfg(not(target_arch = "wasm32"))]
+            if let Inner::Thread(w) = &mut self.inner {
+                return w.join();
+            }
+        }
+    }
+}
+
+fn start_run(k: &Kinematics, choice: IntegratorChoice) -> Result<Run, String> {
+    Run::start(k, &settings_for(choice)).map_err(|e| e.to_string())
+}
+
+/// Steps `run` until it finishes or `budget_ms` of wall time is spent.
+fn advance_for(run: &mut Run, budget_ms: f64) -> Result<bool, String> {
+    let clock = web_time::Instant::now();
+    loop {
+        if run.advance(STEPS_PER_CHUNK).map_err(|e| e.to_string())? {
+            return Ok(true);
+        }
+        if clock.elapsed().as_secs_f64() * 1e3 >= budget_ms {
+            return Ok(false);
+        }
+    }
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+mod worker {
+    //! The native worker thread, stopped when its job is dropped.
+
+    use std::sync::Arc;
+    use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+    use std::sync::mpsc::{Receiver, TryRecvError, channel};
+
+    use linkage::Kinematics;
+
+    use super::{DynamicRun, IntegratorChoice, STEPS_PER_CHUNK, start_run};
+
+    /// A run on its own thread.
+    pub struct Worker {
+        result: Receiver<Result<DynamicRun, String>>,
+        cancel: Arc<AtomicBool>,
+        /// Simulated time reached, as f64 bits.
+        progress: Arc<AtomicU64>,
+    }
+
+    impl Worker {
+        pub fn spawn(k: Kinematics, choice: IntegratorChoice) -> Self {
+            let (tx, result) = channel();
+            let cancel = Arc::new(AtomicBool::new(false));
+            let progress = Arc::new(AtomicU64::new(0f64.to_bits()));
+            let (stop, seen) = (cancel.clone(), progress.clone());
+            std::thread::spawn(move || {
+                let outcome = run_to_end(&k, choice, &stop, &seen);
+                // The job may be gone (a newer edit): nobody is waiting then.
+                let _ = tx.send(outcome);
+            });
+            Self {
+                result,
+                cancel,
+                progress,
+            }
+        }
+
+        pub fn progress_s(&self) -> f64 {
+            f64::from_bits(self.progress.load(Ordering::Relaxed))
+        }
+
+        pub fn try_result(&mut self) -> Option<Result<DynamicRun, String>> {
+            match self.result.try_recv() {
+                Ok(r) => Some(r),
+                Err(TryRecvError::Empty) => None,
+                Err(TryRecvError::Disconnected) => Some(Err("the run's thread ended".into())),
+            }
+        }
+
+        pub fn join(&mut self) -> Result<DynamicRun, String> {
+            self.result
+                .recv()
+                .unwrap_or_else(|_| Err("the run's thread ended".into()))
+        }
+    }
+
+    impl Drop for Worker {
+        fn drop(&mut self) {
+            self.cancel.store(true, Ordering::Relaxed);
+        }
+    }
+
+    fn run_to_end(
+        k: &Kinematics,
+        choice: IntegratorChoice,
+        cancel: &AtomicBool,
+        progress: &AtomicU64,
+    ) -> Result<DynamicRun, String> {
+        let mut run = start_run(k, choice)?;
+        while !run.advance(STEPS_PER_CHUNK).map_err(|e| e.to_string())? {
+            if cancel.load(Ordering::Relaxed) {
+                return Err("cancelled".into());
+            }
+            progress.store(run.time_s().to_bits(), Ordering::Relaxed);
+        }
+        Ok(DynamicRun::from_simulation(choice, run.finish()))
+    }
+}
