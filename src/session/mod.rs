@@ -241,8 +241,8 @@ impl Session {
         self.generation
     }
 
-    /// How many edits were asked for (lengths, springs, masses, branches, integrator,
-    /// reset), taken or refused.
+    /// How many edits were asked for (crank angle, lengths, springs, masses, branches,
+    /// integrator, reset), taken or refused.
     pub fn edit_count(&self) -> u64 {
         self.edits
     }
@@ -276,6 +276,12 @@ impl Session {
     ///
     /// On failure the pose stays and the message says why, with the reachable range.
     pub fn set_input_deg(&mut self, input_deg: f64) {
+        self.edits += 1;
+        self.move_to_deg(input_deg);
+    }
+
+    /// Moves the crank as playback does (not an edit).
+    fn move_to_deg(&mut self, input_deg: f64) {
         if !input_deg.is_finite() {
             self.message = Some(Notice::Text(format!(
                 "input angle {input_deg} is not a number; the pose is unchanged"
@@ -333,7 +339,7 @@ impl Session {
                 next = next.clamp(a, b);
             }
         }
-        self.set_input_deg(next);
+        self.move_to_deg(next);
     }
 
     /// Sets the playback time of the dynamic run and shows its pose.

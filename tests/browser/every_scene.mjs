@@ -137,7 +137,9 @@ for (const scene of scenes) {
       const item = await find(page, 'SceneItem', scene.name);
       if (!item) { fail(`${what}: "${scene.name}" is not in the picker`); await page.close(); continue; }
       await page.mouse.click(...centre(item));
-      await page.waitForTimeout(800);
+      // A loaded machine draws a frame or two a second: wait for the new scene.
+      for (let i = 0; i < 100 && !(await hash(page)).startsWith(`#scene=${scene.key}&`); i++) await page.waitForTimeout(100);
+      await page.waitForTimeout(300);
     }
     if (!(await hash(page)).startsWith(`#scene=${scene.key}&`)) fail(`${what}: the URL says ${await hash(page)}`);
     const opened = await shot(page);
@@ -151,7 +153,7 @@ for (const scene of scenes) {
     // SwiftShader draws a few frames a second and the die cutter turns at 50 rpm:
     // wait, on a slow machine, until the picture has moved.
     let played = 0;
-    for (let i = 0; i < 20 && played < 2000; i++) {
+    for (let i = 0; i < 40 && played < 2000; i++) {
       played = differing(opened, await shot(page));
       if (played < 2000) await page.waitForTimeout(500);
     }
