@@ -214,11 +214,12 @@ impl eframe::App for LinkageApp {
         let edits_before = self.state.session.edit_count();
         self.state.controls.clear();
         let dt = f64::from(ui.input(|i| i.stable_dt)).min(0.1);
-        let solver_started = web_time::Instant::now();
         if self.state.session.poll_run() {
             // The run is being computed off the frame: look again next frame.
             ui.ctx().request_repaint();
         }
+        // After the run's slice: the solver figure is the pose, polygons and shapes.
+        let solver_started = web_time::Instant::now();
         if self.state.playing {
             self.state.session.advance(dt, self.state.speed);
             ui.ctx().request_repaint();

@@ -49,10 +49,9 @@ pub fn length_limit(
         param.apply(&mut s, len).ok()?;
         Mechanism::from_scene(&s).and_then(Kinematics::new).ok()
     };
-    let mut probe = kin_with(good)?;
-    if probe.closure(input).is_none() {
+    let solves = |len: f64| kin_with(len).is_some_and(|mut k| k.solve(input).is_ok());
+    if kin_with(good)?.closure(input).is_none() {
         // Newton only: no margin to follow, bisect on whether it solves.
-        let solves = |len: f64| kin_with(len).is_some_and(|mut k| k.solve(input).is_ok());
         return Some(bisect(good, bad, solves));
     }
     // > 0 where the chain closes. A group that only touches tangency (a toggle the
@@ -69,7 +68,6 @@ pub fn length_limit(
     let found = illinois(good, bad, margin);
     // Next to a tangency the solver may still call the pose singular: step back
     // towards the valid value until it solves.
-    let solves = |len: f64| kin_with(len).is_some_and(|mut k| k.solve(input).is_ok());
     (0..=12)
         .map(|k| found + (good - found) * if k == 0 { 0.0 } else { 10f64.powi(k - 13) })
         .find(|&len| solves(len))

@@ -220,10 +220,7 @@ impl Session {
     /// Computes the dynamic run on this thread, sliced as in the browser, instead of
     /// on a worker thread.
     pub fn run_sliced(&mut self) {
-        if self.scene.models == Models::Dynamics {
-            self.job = Some(RunJob::start_sliced(&self.kin, self.integrator));
-            self.dynamics = None;
-        }
+        self.start_job(RunJob::start_sliced);
     }
 
     /// The integrator settings of the dynamic run.
@@ -516,9 +513,13 @@ impl Session {
     /// Starts computing the dynamic run of a dynamic scene off the frame; the
     /// previous run, finished or not, is dropped.
     fn start_run(&mut self) {
+        self.start_job(RunJob::start);
+    }
+
+    fn start_job(&mut self, start: fn(&Kinematics, IntegratorChoice) -> RunJob) {
         self.dynamics = None;
-        self.job = (self.scene.models == Models::Dynamics)
-            .then(|| RunJob::start(&self.kin, self.integrator));
+        self.job =
+            (self.scene.models == Models::Dynamics).then(|| start(&self.kin, self.integrator));
     }
 
     fn finish_run(&mut self, result: Result<DynamicRun, String>) {

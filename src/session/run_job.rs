@@ -26,14 +26,19 @@ enum Inner {
 }
 
 impl RunJob {
-    /// Starts the run of `k` with `choice`: natively on a worker thread, in the
-    /// browser sliced over frames.
+    /// Starts the run of `k` with `choice` on a worker thread.
+    #[cfg(not(target_arch = "wasm32"))]
     pub fn start(k: &Kinematics, choice: IntegratorChoice) -> Self {
-        #[cfg(not(target_arch = "wasm32"))]
-        let inner = Inner::Thread(worker::Worker::spawn(k.clone(), choice));
-        #[cfg(target_arch = "wasm32")]
-        let inner = Inner::Sliced(Box::new(start_run(k, choice)));
-        Self { choice, inner }
+        Self {
+            choice,
+            inner: Inner::Thread(worker::Worker::spawn(k.clone(), choice)),
+        }
+    }
+
+    /// Starts the run of `k` with `choice`, sliced over frames (no threads here).
+    #[cfg(target_arch = "wasm32")]
+    pub fn start(k: &Kinematics, choice: IntegratorChoice) -> Self {
+        Self::start_sliced(k, choice)
     }
 
     /// Starts the run to be advanced only by [`RunJob::poll`] on the caller's thread,
@@ -85,15 +90,13 @@ impl RunJob {
 
     /// Waits for the result (blocks; a sliced run is run to its end here).
     pub fn wait(mut self) -> Result<DynamicRun, String> {
-        loop {
-            if let Some(result) = self.poll(f64::INFINITY) {
-                return result;
-            }
-            #[cfg(not(target_arch = "wasm32"))]
-            if let Inner::Thread(w) = &mut self.inner {
-                return w.join();
-            }
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Inner::Thread(w) = &mut self.inner {
+            return w.join();
         }
+        // Without a time budget a sliced run goes on to its end or its error.
+        self.poll(f64::INFINITY)
+            .unwrap_or_else(|| Err("the run did not finish".into()))
     }
 }
 
