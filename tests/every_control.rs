@@ -11,16 +11,14 @@ use eframe::egui;
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::{NodeT as _, Queryable as _};
+use linkage_lab::LinkageApp;
 use linkage_lab::session::Session;
 use linkage_lab::ui::control_map::ControlKind;
-use linkage_lab::{LinkageApp, StartOptions};
+
+mod common;
 
 fn harness() -> Harness<'static, LinkageApp> {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1500.0, 950.0))
-        .wgpu()
-        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
-    h.state_mut().state.show_timings = false;
+    let mut h = common::app_harness();
     settle(&mut h);
     h
 }

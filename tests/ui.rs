@@ -10,17 +10,15 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use linkage::polygon::polygons;
 use linkage::{Kinematics, Mechanism};
+use linkage_lab::LinkageApp;
 use linkage_lab::catalog::BUILTIN_SCENES;
 use linkage_lab::session::SceneSource;
 use linkage_lab::ui::controls::CRANK_LABEL;
-use linkage_lab::{LinkageApp, StartOptions};
+
+mod common;
 
 fn harness() -> Harness<'static, LinkageApp> {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1500.0, 950.0))
-        .wgpu()
-        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
-    h.state_mut().state.show_timings = false;
+    let mut h = common::app_harness();
     h.run();
     h
 }

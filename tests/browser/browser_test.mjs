@@ -5,39 +5,13 @@
 // one, then another scene, which changes the picture). Measures time to first frame
 // (the app logs it) and frames per second while the mechanism plays.
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
-import { chromium } from 'playwright-core';
-import { PNG } from 'pngjs';
 import { readFileSync } from 'node:fs';
+import { decode, differing, launchChromium, nonBackground } from './common.mjs';
 
 const url = process.argv[2] ?? 'http://127.0.0.1:8917/';
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
 
-// Pixels that differ from the page background (#1b1b1b) or between two shots.
-function decode(buf) { return PNG.sync.read(buf); }
-function differing(a, b) {
-  let n = 0;
-  for (let i = 0; i < a.data.length; i += 4) {
-    const d = Math.abs(a.data[i] - b.data[i]) + Math.abs(a.data[i + 1] - b.data[i + 1]) + Math.abs(a.data[i + 2] - b.data[i + 2]);
-    if (d > 24) n++;
-  }
-  return n;
-}
-function nonBackground(img) {
-  let n = 0;
-  for (let i = 0; i < img.data.length; i += 4) {
-    if (Math.abs(img.data[i] - 0x1b) + Math.abs(img.data[i + 1] - 0x1b) + Math.abs(img.data[i + 2] - 0x1b) > 24) n++;
-  }
-  return n / (img.width * img.height);
-}
-
-const browser = await chromium.launch({
-  executablePath: '/usr/bin/chromium',
-  headless: true,
-  // WebGL2 through SwiftShader: headless WebGPU screenshots come out blank here.
-  args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-    '--disable-background-networking', '--disable-component-update', '--disable-sync',
-    '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-});
+const browser = await launchChromium();
 const page = await browser.newPage({ viewport: { width: 1500, height: 950 }, deviceScaleFactor: 1 });
 const errors = [];
 const logged = [];

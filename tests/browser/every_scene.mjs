@@ -9,9 +9,8 @@
 // second, not by the edit.
 // The app says where its controls are: window.wasmBindings.linkage_lab_controls().
 // Usage: node every_scene.mjs http://127.0.0.1:PORT/
-import { chromium } from 'playwright-core';
-import { PNG } from 'pngjs';
 import { readdirSync, readFileSync } from 'node:fs';
+import { decode, differing, launchChromium, nonBackground } from './common.mjs';
 
 const base = (process.argv[2] ?? 'http://127.0.0.1:8917/').replace(/#.*$/, '');
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
@@ -25,29 +24,7 @@ const scenes = readdirSync(sceneDir).filter((f) => f.endsWith('.ron')).sort().ma
 });
 if (scenes.length < 6) fail(`only ${scenes.length} scene files found`);
 
-function differing(a, b) {
-  let n = 0;
-  for (let i = 0; i < a.data.length; i += 4) {
-    const d = Math.abs(a.data[i] - b.data[i]) + Math.abs(a.data[i + 1] - b.data[i + 1]) + Math.abs(a.data[i + 2] - b.data[i + 2]);
-    if (d > 24) n++;
-  }
-  return n;
-}
-function drawnFraction(img) {
-  let n = 0;
-  for (let i = 0; i < img.data.length; i += 4) {
-    if (Math.abs(img.data[i] - 0x1b) + Math.abs(img.data[i + 1] - 0x1b) + Math.abs(img.data[i + 2] - 0x1b) > 24) n++;
-  }
-  return n / (img.width * img.height);
-}
-
-const browser = await chromium.launch({
-  executablePath: '/usr/bin/chromium',
-  headless: true,
-  args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-    '--disable-background-networking', '--disable-component-update', '--disable-sync',
-    '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-});
+const browser = await launchChromium();
 
 /** A page with its console watched; resolves once the app has drawn its first frame. */
 async function openPage(url) {
@@ -67,7 +44,7 @@ async function openPage(url) {
 }
 
 const state = async (page) => JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
-const shot = async (page) => PNG.sync.read(await page.locator('#linkage_canvas').screenshot());
+const shot = async (page) => decode(await page.locator('#linkage_canvas').screenshot());
 const hash = (page) => page.evaluate(() => location.hash);
 const centre = (c, fx = 0.5) => [c.rect[0] + fx * (c.rect[2] - c.rect[0]), 0.5 * (c.rect[1] + c.rect[3])];
 
@@ -143,7 +120,7 @@ for (const scene of scenes) {
     }
     if (!(await hash(page)).startsWith(`#scene=${scene.key}&`)) fail(`${what}: the URL says ${await hash(page)}`);
     const opened = await shot(page);
-    const drawn = drawnFraction(opened);
+    const drawn = nonBackground(opened);
     if (drawn < 0.2) fail(`${what}: canvas ${(drawn * 100).toFixed(1)} % drawn`);
 
     // Play for a second.

@@ -1,23 +1,14 @@
 //! The CLI contract that outside scripts depend on: column names and order, JSON
 //! keys, exit status and error messages.
 
-use std::process::Command;
+mod common;
 
-fn scene(file: &str) -> String {
-    format!("{}/../../assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"))
-}
+use common::scene;
 
 /// Runs `linkage ARGS`; returns (success, stdout, stderr).
 fn linkage(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_linkage"))
-        .args(args)
-        .output()
-        .expect("run linkage");
-    (
-        out.status.success(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
+    let (code, out, err) = common::run_linkage(args);
+    (code == Some(0), out, err)
 }
 
 #[test]

@@ -5,22 +5,9 @@
 use std::io::Read;
 use std::process::{Command, Stdio};
 
-fn scene(file: &str) -> String {
-    format!("{}/../../assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"))
-}
+mod common;
 
-/// Runs `linkage ARGS`; returns (exit code, stdout, stderr).
-fn linkage(args: &[&str]) -> (Option<i32>, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_linkage"))
-        .args(args)
-        .output()
-        .expect("run linkage");
-    (
-        out.status.code(),
-        String::from_utf8_lossy(&out.stdout).into(),
-        String::from_utf8_lossy(&out.stderr).into(),
-    )
-}
+use common::{run_linkage as linkage, scene};
 
 #[test]
 fn sweep_into_a_closed_pipe_exits_0_without_a_message() {
