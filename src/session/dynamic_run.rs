@@ -1,8 +1,8 @@
-//! The forward-dynamics run of a dynamic scene, computed once per change of the
-//! scene or integrator settings, and played back frame by frame.
+//! The forward-dynamics run of a dynamic scene (computed off the frame, `run_job`) once
+//! per change of the scene or integrator settings, and played back frame by frame.
 
-use linkage::dynamics::{Method, RunStats, Sample, Settings, Simulation, simulate};
-use linkage::{Kinematics, Solution};
+use linkage::Solution;
+use linkage::dynamics::{Method, RunStats, Sample, Settings, Simulation};
 
 /// Output interval of the run, s: 2 ms gives smooth playback and plots.
 pub const OUTPUT_DT_S: f64 = 2e-3;
@@ -72,15 +72,6 @@ pub struct DynamicRun {
 }
 
 impl DynamicRun {
-    /// Runs the scene of `k` from rest at its start angle, to the end (blocking).
-    ///
-    /// # Errors
-    /// The run's own error, as text (e.g. a fixed step beyond the stability limit).
-    pub fn compute(k: &Kinematics, choice: IntegratorChoice) -> Result<Self, String> {
-        let sim = simulate(k, &settings_for(choice)).map_err(|e| e.to_string())?;
-        Ok(Self::from_simulation(choice, sim))
-    }
-
     /// The plot data of a finished run.
     pub fn from_simulation(choice: IntegratorChoice, sim: Simulation) -> Self {
         let samples = &sim.samples;

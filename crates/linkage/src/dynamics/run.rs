@@ -278,16 +278,6 @@ impl Run {
         self.a.t
     }
 
-    /// The settings of the run.
-    pub fn settings(&self) -> &Settings {
-        &self.settings
-    }
-
-    /// The samples so far.
-    pub fn samples(&self) -> &[Sample] {
-        &self.samples
-    }
-
     /// Ends the run where it got to (normally after [`Run::advance`] returned `true`),
     /// with its cost and warnings.
     pub fn finish(mut self) -> Simulation {
