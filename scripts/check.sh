@@ -28,9 +28,10 @@ cargo test --workspace
 
 echo "== CLI over every scene"
 cargo build -q -p linkage-cli
+bin="${CARGO_TARGET_DIR:-target}/debug"
 for scene in assets/scenes/*.ron; do
-    target/debug/linkage report "$scene" > /dev/null
-    target/debug/linkage sweep "$scene" --steps 36 > /dev/null
+    "$bin/linkage" report "$scene" > /dev/null
+    "$bin/linkage" sweep "$scene" --steps 36 > /dev/null
     echo "ok $scene"
 done
 

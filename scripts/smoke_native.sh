@@ -8,5 +8,5 @@ mkdir -m700 -p /tmp/xdg && export XDG_RUNTIME_DIR=/tmp/xdg
 # Debug build: the tests already built it, so CI pays no extra compile.
 cargo build -q -p linkage-lab
 timeout 300 xvfb-run -a -s "-screen 0 1500x950x24" \
-    target/debug/linkage-lab --exit-after-frames 120 --play
+    "${CARGO_TARGET_DIR:-target}/debug/linkage-lab" --exit-after-frames 120 --play
 echo "native smoke run: ok"
