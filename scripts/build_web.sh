@@ -18,7 +18,7 @@ fi
 cargo build --profile wasm-release --target wasm32-unknown-unknown --bin linkage-lab
 rm -rf dist && mkdir -p dist
 wasm-bindgen --target web --no-typescript --out-dir dist \
-    target/wasm32-unknown-unknown/wasm-release/linkage-lab.wasm
+    "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/wasm-release/linkage-lab.wasm"
 # wasm-opt (binaryen 132 from npm; Debian's 108 breaks this wasm) only when asked for
 # (WASM_OPT=1): measured here, -Os takes 3.5 min and makes the wasm 5 % smaller raw but
 # no smaller gzipped, and the first frame no sooner (README, "The viewer").
