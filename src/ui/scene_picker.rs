@@ -44,9 +44,13 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
                 .selected_text(current)
                 .width(300.0)
                 .show_ui(ui, |ui| {
+                    // A popup's first frame is a sizing pass, laid out away from where
+                    // it will be drawn: its rects are not where a click lands.
+                    let placed = !ui.is_sizing_pass();
                     for (b, name) in BUILTIN_SCENES.iter().zip(names()) {
                         let r = ui.selectable_label(false, name);
-                        items.push((name, r.rect, ui.clip_rect().contains_rect(r.rect)));
+                        let visible = placed && ui.clip_rect().contains_rect(r.rect);
+                        items.push((name, r.rect, visible));
                         if r.clicked() {
                             chosen = Some(b.key);
                         }

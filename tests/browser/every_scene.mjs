@@ -110,9 +110,13 @@ for (const scene of scenes) {
       const picker = await find(page, 'ScenePicker');
       if (!picker) { fail(`${what}: no scene picker`); await page.close(); continue; }
       await page.mouse.click(...centre(picker));
-      await page.waitForTimeout(300);
-      const item = await find(page, 'SceneItem', scene.name);
-      if (!item) { fail(`${what}: "${scene.name}" is not in the picker`); await page.close(); continue; }
+      // The popup's first frame only sizes it: wait until its items are placed.
+      let item;
+      for (let i = 0; i < 50 && !item?.visible; i++) {
+        await page.waitForTimeout(100);
+        item = (await state(page)).controls.entries.find((e) => e.kind === 'SceneItem' && e.label === scene.name);
+      }
+      if (!item?.visible) { fail(`${what}: "${scene.name}" is not shown in the picker`); await page.close(); continue; }
       await page.mouse.click(...centre(item));
       // A loaded machine draws a frame or two a second: wait for the new scene.
       for (let i = 0; i < 100 && !(await hash(page)).startsWith(`#scene=${scene.key}&`); i++) await page.waitForTimeout(100);
