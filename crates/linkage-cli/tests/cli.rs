@@ -328,3 +328,38 @@ fn kinetostatics_prints_torques_reactions_and_amplification() {
     let (ok, _, err) = linkage(&["kinetostatics", &scene("slider_crank.ron")]);
     assert!(!ok && err.contains("models kinematics only"), "{err}");
 }
+
+#[test]
+fn a_newton_only_chain_at_outside_its_range_names_it_and_sweep_covers_it() {
+    let file = format!(
+        "{}/tests/data/triad_six_bar.ron",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&file).expect("fixture");
+    let k = linkage::Kinematics::new(linkage::Mechanism::from_ron(&text).expect("valid"))
+        .expect("assembles");
+    let [lo, hi] = k.traced_range().expect("the triad locks both ways");
+    let a = lo.rem_euclid(std::f64::consts::TAU).to_degrees();
+    let b = a + (hi - lo).to_degrees();
+    let (ok, _, err) = linkage(&["at", &file, "--input-deg", "120"]);
+    assert!(!ok, "120 deg is outside the range");
+    let want = format!("reachable input range: {a:.2}..{b:.2} deg");
+    assert!(err.contains(&want), "{err}");
+    let (ok, out, err) = linkage(&["sweep", &file, "--steps", "50"]);
+    assert!(ok, "{err}");
+    let inputs: Vec<f64> = out
+        .lines()
+        .skip(1)
+        .map(|l| {
+            l.split(',')
+                .next()
+                .unwrap_or_default()
+                .parse()
+                .expect("input_rad")
+        })
+        .collect();
+    assert_eq!(inputs.len(), 50);
+    let width = hi - lo;
+    assert!((inputs[0] - lo.rem_euclid(std::f64::consts::TAU)).abs() < 1e-6 * width);
+    assert!((inputs[49] - inputs[0] - width).abs() < 1e-6 * width);
+}

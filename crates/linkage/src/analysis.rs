@@ -23,13 +23,17 @@ pub struct AssemblyRanges {
     pub intervals: Vec<[f64; 2]>,
 }
 
-/// Assembly ranges of a closed-form chain (root-finding on the groups' margins).
-/// A Newton-only chain is reported as assembling fully (not checked).
+/// Assembly ranges: of a closed-form chain by root-finding on the groups' margins; of
+/// a chain solved by Newton alone, the range its branch was traced over (between
+/// folds) when it was built.
 pub fn assembly_ranges_of(k: &Kinematics) -> AssemblyRanges {
     let Some(cf) = k.closed_form() else {
-        return AssemblyRanges {
-            full_rotation: true,
-            intervals: vec![[0.0, TAU]],
+        return match k.traced_range() {
+            Some([lo, hi]) => crate::newton::range_of(lo, hi),
+            None => AssemblyRanges {
+                full_rotation: true,
+                intervals: vec![[0.0, TAU]],
+            },
         };
     };
     let mut links = vec![Default::default(); k.mechanism().links.len()];
@@ -365,15 +369,9 @@ fn span(
 ) -> f64 {
     let mut values: Vec<f64> = limits.iter().map(|l| l.value).collect();
     if !ranges.full_rotation {
-        let mut sol = k.empty_solution();
         for [a, b] in &ranges.intervals {
-            // A hair inside: exactly at the dead point the solve is singular.
-            let hair = 1e-9 * (b - a);
-            for x in [*a + hair, *b - hair] {
-                if k.solve_into(x, 0.0, &mut sol).is_ok() {
-                    values.push(out.value(&sol));
-                }
-            }
+            values.extend(dead_point_value(k, out, *a, 1.0, b - a));
+            values.extend(dead_point_value(k, out, *b, -1.0, b - a));
         }
     }
     if values.is_empty() {
@@ -394,6 +392,38 @@ fn span(
         let lo = values.iter().cloned().fold(f64::MAX, f64::min);
         hi - lo
     }
+}
+
+/// The value of `out` at the dead point `end` of an input range of length `width`
+/// (`inward` is +1 at the start of the range, -1 at its end).
+///
+/// Exactly at the dead point the solve is singular, and a hair inside it the output
+/// is still off by c·√hair (the branch turns back there: v − v* ∝ √|x − x*|), which
+/// is 1e-5 for a hair of 1e-9. So the dead point is found from two probes as the root
+/// of 1/rate², which is linear in x there, and the value is extrapolated to it along
+/// the square root. Where the rate does not follow that law (an output whose rate
+/// stays finite at the dead point), the nearer probe's value is taken.
+fn dead_point_value(
+    k: &mut Kinematics,
+    out: &Output,
+    end: f64,
+    inward: f64,
+    width: f64,
+) -> Option<f64> {
+    let (d1, d2) = (1e-9 * width, 4e-9 * width);
+    let mut sol = k.empty_solution();
+    k.solve_into(end + inward * d1, 1.0, &mut sol).ok()?;
+    let (v1, r1) = (out.value(&sol), out.rate(&sol));
+    let Ok(()) = k.solve_into(end + inward * d2, 1.0, &mut sol) else {
+        return Some(v1);
+    };
+    let (g1, g2) = (r1.powi(-2), out.rate(&sol).powi(-2));
+    // Distance from the nearer probe back to the root of the line through (d, 1/rate²).
+    let dist = g1 * (d2 - d1) / (g2 - g1);
+    if !(dist.is_finite() && dist > 0.0 && dist < 2.0 * d1) {
+        return Some(v1);
+    }
+    Some(v1 - 2.0 * dist * r1 * inward)
 }
 
 /// Time ratio of an output with exactly two limits on a fully turning input:

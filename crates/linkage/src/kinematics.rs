@@ -66,7 +66,13 @@ impl Kinematics {
             scratch,
         };
         if path == SolverPath::Newton || k.closed.is_none() {
-            k.newton = Some(k.build_newton()?);
+            let mut newton = k.build_newton()?;
+            if k.closed.is_none() {
+                // No margins to find the assembly range on: trace the branch to its
+                // folds instead, and keep every later solve inside what was found.
+                newton.trace_range(&mut k.scratch)?;
+            }
+            k.newton = Some(newton);
             k.path = PathKind::Newton;
         }
         Ok(k)
@@ -339,6 +345,15 @@ impl Kinematics {
     /// Number of closed-form groups (0 on the Newton-only path).
     pub fn group_count(&self) -> usize {
         self.closed.as_ref().map_or(0, |c| c.groups.len())
+    }
+
+    /// The traced assembly range of a chain without a closed form, unwrapped and
+    /// holding the start input; `None` when it turns fully or has a closed form.
+    pub fn traced_range(&self) -> Option<[f64; 2]> {
+        self.newton
+            .as_ref()
+            .filter(|_| self.closed.is_none())?
+            .range()
     }
 
     pub(crate) fn closed_form(&self) -> Option<&ClosedForm> {

@@ -4,56 +4,14 @@
 //! differences, while the closed-form path refuses with the reason.
 
 use linkage::scene::SolverPath;
-use linkage::{Kinematics, LinkageError, Mechanism, Vec2};
+use linkage::{Kinematics, LinkageError, Mechanism};
 
-/// Scene with pins placed at the start pose; guesses are off by `err` (m and rad).
+mod common;
+use common::triad::Triad;
+
+/// The locking layout's scene; guesses are off by `err` (m and rad).
 fn triad_scene(err: f64) -> String {
-    let v = Vec2::new;
-    let (o, p1) = (v(0.0, 0.0), v(0.1, 0.0));
-    let (q1, q2, q3) = (v(0.3, 0.2), v(0.5, 0.25), v(0.4, 0.4));
-    let (g2, g3) = (v(0.6, 0.0), v(0.2, 0.6));
-    let bar = |a: Vec2, b: Vec2| ((b - a).norm(), (b - a).y.atan2((b - a).x).to_degrees());
-    let (l1, a1) = bar(p1, q1);
-    let (l2, a2) = bar(g2, q2);
-    let (l3, a3) = bar(g3, q3);
-    let (t2, t3) = (q2 - q1, q3 - q1);
-    let e = err;
-    let ed = err.to_degrees();
-    format!(
-        r#"Scene(name: "triad", models: Kinematics,
-        links: [
-            (name: "ground", ground: true, points: {{"O": ({ox}, {oy}), "G2": ({g2x}, {g2y}), "G3": ({g3x}, {g3y})}}),
-            (name: "crank", points: {{"O": (0.0, 0.0), "P1": (0.1, 0.0)}}),
-            (name: "l1", points: {{"P1": (0.0, 0.0), "Q1": ({l1}, 0.0)}}),
-            (name: "tri", points: {{"Q1": (0.0, 0.0), "Q2": ({t2x}, {t2y}), "Q3": ({t3x}, {t3y})}}),
-            (name: "l2", points: {{"G2": (0.0, 0.0), "Q2": ({l2}, 0.0)}}),
-            (name: "l3", points: {{"G3": (0.0, 0.0), "Q3": ({l3}, 0.0)}}),
-        ],
-        driver: (link: "crank", speed: RadPerSecond(1.5), start: 0.0),
-        guess: {{
-            "crank": (0.0, 0.0, 0.0),
-            "l1": ({p1x}, {p1y}, {a1}),
-            "tri": ({q1x}, {q1y}, {ed}),
-            "l2": ({g2x}, {g2y}, {a2e}),
-            "l3": ({g3x}, {g3y}, {a3e}),
-        }})"#,
-        ox = o.x,
-        oy = o.y,
-        g2x = g2.x,
-        g2y = g2.y,
-        g3x = g3.x,
-        g3y = g3.y,
-        t2x = t2.x,
-        t2y = t2.y,
-        t3x = t3.x,
-        t3y = t3.y,
-        p1x = p1.x + e,
-        p1y = p1.y - e,
-        q1x = q1.x - e,
-        q1y = q1.y + e,
-        a2e = a2 + ed,
-        a3e = a3 - ed,
-    )
+    Triad::locking().scene(err)
 }
 
 #[test]

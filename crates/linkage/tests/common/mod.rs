@@ -1,6 +1,8 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod triad;
+
 use linkage::scene::SolverPath;
 use linkage::{Kinematics, Mechanism};
 

@@ -17,6 +17,11 @@ use crate::model::{Mechanism, Prismatic};
 use crate::motion::{LinkMotion, PointMotion, Vec2, cross, perp};
 use crate::small_lu::SmallLu;
 
+mod branch;
+
+pub(crate) use branch::range_of;
+use branch::{FOLD_STEP, MIN_STEP};
+
 #[derive(Clone, Debug, PartialEq)]
 enum TreeKind {
     Revolute {
@@ -134,7 +139,11 @@ pub struct Newton {
     jerk: DVector<f64>,
     /// Accepted continuation steps since the pose was set or a step was refused.
     steady_steps: u32,
+    /// The input of the last solution, unwrapped along the branch followed.
     last_input: Option<f64>,
+    /// The branch's assembly range (unwrapped, holding the start) once traced and
+    /// found limited: inputs are then taken inside it (see `branch.rs`).
+    range: Option<[f64; 2]>,
     /// Sign of det J at the last solution (0 before the first): the assembly mode.
     det_sign: f64,
     /// |det J| over the product of its column norms at the last solution.
@@ -303,6 +312,7 @@ impl Newton {
             jerk: DVector::zeros(unknowns),
             steady_steps: 0,
             last_input: None,
+            range: None,
             det_sign: 0.0,
             conditioning: 1.0,
             jac: DMatrix::zeros(unknowns, unknowns),
@@ -594,79 +604,22 @@ impl Newton {
                 valid: "input angle and speed must be finite".into(),
             });
         }
-        let last = self.last_input.unwrap_or(input_rad);
-        // Shortest signed turn from the last solved input, so a full cycle is continuous.
-        let delta = (input_rad - last + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
-            - std::f64::consts::PI;
-        let (mut at, mut h) = (last, delta.signum() * CONTINUATION_STEP.min(delta.abs()));
-        while (input_rad - at).abs() > 0.0 && delta != 0.0 {
-            let remaining = last + delta - at;
-            if h.abs() > remaining.abs() {
-                h = remaining;
-            }
-            let saved_sign = self.det_sign;
-            self.saved.0.copy_from(&self.q);
-            self.saved.1.copy_from(&self.dq);
-            self.saved.2.copy_from(&self.ddq);
-            // Third-order predictor q + q' h + q'' h²/2 + q''' h³/6, built in place:
-            // its error of order h⁴ lets one chord step usually reach the tolerance
-            // (with the h² term alone it took two).
-            self.increment.copy_from(&self.dq);
-            self.increment *= h;
-            self.increment.axpy(0.5 * h * h, &self.ddq, 1.0);
-            self.increment.axpy(h * h * h / 6.0, &self.jerk, 1.0);
-            // Near a dead point the derivatives blow up: a large predicted change means
-            // the step is too long for the branch to be followed safely.
-            if self.increment.amax() > MAX_PREDICTED_CHANGE && h.abs() >= 2e-7 {
-                h *= 0.5;
-                continue;
-            }
-            self.q += &self.increment;
-            let ok = self
-                .correct(at + h, links)
-                .and_then(|_| self.update_derivatives(links));
-            // The sign of det J flips exactly where the solution passes to the other
-            // assembly mode: refuse that step and retry it shorter.
-            let jumped = saved_sign != 0.0 && self.det_sign != saved_sign;
-            if ok.is_err() || jumped {
-                self.q.copy_from(&self.saved.0);
-                self.dq.copy_from(&self.saved.1);
-                self.ddq.copy_from(&self.saved.2);
-                self.det_sign = saved_sign;
-                // The factorization belongs to the failed pose: start the retry fresh.
-                self.lu.invalidate();
-                // Near a dead point q''' is not worth extrapolating.
-                self.jerk.fill(0.0);
-                self.steady_steps = 0;
-                h *= 0.5;
-                if h.abs() < 1e-7 {
-                    return Err(match ok {
-                        Err(e) => e,
-                        Ok(()) => LinkageError::BranchJump {
-                            input_deg: (at + 2.0 * h).to_degrees(),
-                            reason: "Newton would pass to the other assembly mode (det J changes sign): a dead point".into(),
-                        },
-                    });
-                }
-                continue;
-            }
-            if self.steady_steps > 0 {
-                // q''' ≈ (q''(at + h) - q''(at)) / h.
-                self.jerk.copy_from(&self.ddq);
-                self.jerk.axpy(-1.0 / h, &self.saved.2, 1.0 / h);
-            }
-            self.steady_steps = self.steady_steps.saturating_add(1);
-            self.wrap_angles();
-            at += h;
-            if (last + delta - at).abs() <= 1e-15 * (1.0 + at.abs()) {
-                break;
-            }
-        }
-        if delta == 0.0 {
-            self.correct(input_rad, links)?;
+        let target = self.target(input_rad)?;
+        if self.last_input == Some(target) {
+            // The same input again (or the pose was just set): correct in place.
+            self.correct(target, links)?;
             self.update_derivatives(links)?;
+        } else {
+            // Inside a traced range the branch is known to reach its folds: follow it
+            // as close to them as the trace did.
+            let min_step = if self.range.is_some() {
+                FOLD_STEP
+            } else {
+                MIN_STEP
+            };
+            self.continue_to(target, links, min_step)
+                .map_err(|stop| stop.error)?;
         }
-        self.last_input = Some(input_rad);
         // Final motion at the real speed: q̇ = ω q', q̈ = ω² q'' (constant input speed).
         let w = speed_rad_s;
         self.motion_pass(

@@ -1,0 +1,211 @@
+//! Following one branch of the chain along the input: the continuation loop shared by
+//! every solve, and the tracing of the branch to its folds (dead points of the input),
+//! which gives a chain without a closed form its assembly range.
+//!
+//! A fold is where the branch turns back in the input: det J goes to zero there and,
+//! beyond it, no pose on this branch exists. Natural-parameter continuation cannot
+//! pass it, so a fold shows as a step that keeps failing (Newton diverges, or would
+//! land on the other assembly mode, with the opposite sign of det J) however short it
+//! is made. Halving the step is a bisection on "the branch still exists here", so
+//! the last pose reached is the fold to within the shortest step.
+
+use std::f64::consts::{PI, TAU};
+
+use super::{CONTINUATION_STEP, MAX_PREDICTED_CHANGE, Newton};
+use crate::analysis::{AssemblyRanges, describe_ranges};
+use crate::error::{LinkageError, Result};
+use crate::motion::LinkMotion;
+
+/// Shortest step an ordinary solve halves down to before it gives up, rad.
+pub(super) const MIN_STEP: f64 = 1e-7;
+
+/// Shortest step when tracing a branch to its folds, rad: the fold is located to
+/// about twice this (the tests ask for 1e-6 rad).
+pub(super) const FOLD_STEP: f64 = 1e-10;
+
+/// Accepted steps in a row after which a halved step is doubled again (up to
+/// [`CONTINUATION_STEP`]), so one hard spot does not slow the rest of the path.
+const STEPS_BEFORE_GROWTH: u32 = 4;
+
+/// Where a continuation stopped short of its target, and why.
+#[derive(Debug)]
+pub(super) struct Stop {
+    /// The last input reached (a converged pose; the solver is left there).
+    pub reached: f64,
+    /// What failed beyond it.
+    pub error: LinkageError,
+}
+
+impl Newton {
+    /// The input (unwrapped, on this branch) that `input_rad` means: on a traced
+    /// limited branch the one turn of it inside the range (else an error naming the
+    /// range), otherwise the shortest turn from the last input, so that a full cycle
+    /// is continuous.
+    pub(super) fn target(&self, input_rad: f64) -> Result<f64> {
+        let last = self.last_input.unwrap_or(input_rad);
+        let Some([lo, hi]) = self.range else {
+            let delta = (input_rad - last + PI).rem_euclid(TAU) - PI;
+            return Ok(last + delta);
+        };
+        // Round-off in reducing the angle must not push a range end out of the range.
+        let slack = 1e-12 * (1.0 + lo.abs().max(hi.abs()));
+        let x = lo + (input_rad - lo).rem_euclid(TAU);
+        if x <= hi + slack {
+            return Ok(x.min(hi));
+        }
+        if x - TAU >= lo - slack {
+            return Ok(lo);
+        }
+        Err(LinkageError::CannotAssemble {
+            input_deg: input_rad.to_degrees(),
+            reason: format!(
+                "the branch folds (a dead point of the input) at {:.4} and {:.4} deg",
+                lo.to_degrees(),
+                hi.to_degrees()
+            ),
+            reachable: describe_ranges(&range_of(lo, hi)),
+        })
+    }
+
+    /// The traced assembly range of this branch, unwrapped (holding the start input),
+    /// when it is limited.
+    pub fn range(&self) -> Option<[f64; 2]> {
+        self.range
+    }
+
+    /// Traces the branch of the current pose both ways from its input, and from then
+    /// on solves only inside the range found (an input outside it is refused with the
+    /// range named). Returns the range, or `None` when the input turns fully.
+    ///
+    /// # Errors
+    /// The start pose itself does not solve.
+    pub fn trace_range(&mut self, links: &mut [LinkMotion]) -> Result<Option<[f64; 2]>> {
+        let start = self.target(self.last_input.unwrap_or(0.0))?;
+        self.correct(start, links)?;
+        self.update_derivatives(links)?;
+        let mut forward = self.clone();
+        let hi = match forward.continue_to(start + TAU, links, FOLD_STEP) {
+            Ok(()) => {
+                self.range = None;
+                return Ok(None);
+            }
+            Err(stop) => stop.reached,
+        };
+        let mut backward = self.clone();
+        let lo = backward
+            .continue_to(start - TAU, links, FOLD_STEP)
+            .map_or_else(|stop| stop.reached, |()| start - TAU)
+            // A branch that does not come back to itself after a turn: one turn of it.
+            .max(hi - TAU);
+        self.range = Some([lo, hi]);
+        Ok(self.range)
+    }
+
+    /// Continuation from the last input to `target` in steps of at most
+    /// [`CONTINUATION_STEP`], each predicted to third order and corrected by Newton,
+    /// halved down to `min_step` where a step fails or would change the assembly mode.
+    /// On failure the solver is left at the last pose reached.
+    pub(super) fn continue_to(
+        &mut self,
+        target: f64,
+        links: &mut [LinkMotion],
+        min_step: f64,
+    ) -> std::result::Result<(), Stop> {
+        let mut at = self.last_input.unwrap_or(target);
+        let mut h = (target - at).signum() * CONTINUATION_STEP.min((target - at).abs());
+        while at != target {
+            let remaining = target - at;
+            if h.abs() > remaining.abs() {
+                h = remaining;
+            }
+            match self.step(at, h, links) {
+                Ok(true) => {
+                    at += h;
+                    if self.steady_steps >= STEPS_BEFORE_GROWTH
+                        && 2.0 * h.abs() <= CONTINUATION_STEP
+                    {
+                        h *= 2.0;
+                    }
+                }
+                // The predicted change is too large: shorter, not a failure.
+                Ok(false) => h *= 0.5,
+                Err(error) => {
+                    h *= 0.5;
+                    if h.abs() < min_step {
+                        self.last_input = Some(at);
+                        return Err(Stop { reached: at, error });
+                    }
+                }
+            }
+            if (target - at).abs() <= 1e-15 * (1.0 + at.abs()) {
+                at = target;
+            }
+        }
+        self.last_input = Some(target);
+        Ok(())
+    }
+
+    /// One continuation step from `at` by `h`: `Ok(true)` when taken, `Ok(false)` when
+    /// the predictor says it is too long, an error when the correction fails or lands
+    /// on the other assembly mode (the state is then restored to `at`).
+    fn step(&mut self, at: f64, h: f64, links: &mut [LinkMotion]) -> Result<bool> {
+        let saved_sign = self.det_sign;
+        self.saved.0.copy_from(&self.q);
+        self.saved.1.copy_from(&self.dq);
+        self.saved.2.copy_from(&self.ddq);
+        // Third-order predictor q + q' h + q'' h²/2 + q''' h³/6, built in place: its
+        // error of order h⁴ lets one chord step usually reach the tolerance (with the
+        // h² term alone it took two).
+        self.increment.copy_from(&self.dq);
+        self.increment *= h;
+        self.increment.axpy(0.5 * h * h, &self.ddq, 1.0);
+        self.increment.axpy(h * h * h / 6.0, &self.jerk, 1.0);
+        // Near a dead point the derivatives blow up: a large predicted change means the
+        // step is too long for the branch to be followed safely.
+        if self.increment.amax() > MAX_PREDICTED_CHANGE && h.abs() >= 2e-7 {
+            return Ok(false);
+        }
+        self.q += &self.increment;
+        let ok = self
+            .correct(at + h, links)
+            .and_then(|_| self.update_derivatives(links));
+        // The sign of det J flips exactly where the solution passes to the other
+        // assembly mode: refuse that step.
+        let jumped = saved_sign != 0.0 && self.det_sign != saved_sign;
+        if ok.is_err() || jumped {
+            self.q.copy_from(&self.saved.0);
+            self.dq.copy_from(&self.saved.1);
+            self.ddq.copy_from(&self.saved.2);
+            self.det_sign = saved_sign;
+            // The factorization belongs to the failed pose: start the retry fresh.
+            self.lu.invalidate();
+            // Near a dead point q''' is not worth extrapolating.
+            self.jerk.fill(0.0);
+            self.steady_steps = 0;
+            return Err(match ok {
+                Err(e) => e,
+                Ok(()) => LinkageError::BranchJump {
+                    input_deg: (at + h).to_degrees(),
+                    reason: "Newton would pass to the other assembly mode (det J changes sign): a dead point".into(),
+                },
+            });
+        }
+        if self.steady_steps > 0 {
+            // q''' ≈ (q''(at + h) - q''(at)) / h.
+            self.jerk.copy_from(&self.ddq);
+            self.jerk.axpy(-1.0 / h, &self.saved.2, 1.0 / h);
+        }
+        self.steady_steps = self.steady_steps.saturating_add(1);
+        self.wrap_angles();
+        Ok(true)
+    }
+}
+
+/// The assembly range `[lo, hi]` (unwrapped) in the form the analyses use.
+pub(crate) fn range_of(lo: f64, hi: f64) -> AssemblyRanges {
+    let a = lo.rem_euclid(TAU);
+    AssemblyRanges {
+        full_rotation: false,
+        intervals: vec![[a, a + (hi - lo)]],
+    }
+}
