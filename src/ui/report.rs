@@ -79,8 +79,29 @@ pub fn strip(ui: &mut egui::Ui, st: &AppState) {
                 ui.label(format!("{} toggle/dead positions", r.toggles.len()))
                     .on_hover_text(text.join("\n"));
             }
+            if !r.branch_points.is_empty() {
+                ui.separator();
+                let text: Vec<String> = r.branch_points.iter().map(branch_point_line).collect();
+                ui.label(format!("{} branch points", r.branch_points.len()))
+                    .on_hover_text(text.join("\n"));
+            }
         });
     });
+}
+
+/// "crank 180.00°: RRR dyad (coupler, rocker) at C, B on D".
+fn branch_point_line(b: &linkage::branch_points::BranchPoint) -> String {
+    let pairs: Vec<String> = b
+        .coincident_joints
+        .iter()
+        .map(|[p, q]| format!(", {p} on {q}"))
+        .collect();
+    format!(
+        "crank {:.2}°: {}{} (the chain may go on in either mode)",
+        b.input_rad.to_degrees(),
+        b.group,
+        pairs.concat()
+    )
 }
 
 fn limits_of(r: &linkage::analysis::Report, output: &str) -> String {

@@ -13,6 +13,9 @@ use crate::roots_util::{refine, sign_changes};
 const TAU: f64 = std::f64::consts::TAU;
 /// Grid used to bracket roots: 0.5 deg over a full turn.
 const GRID: usize = 720;
+/// Velocity ratio below which an output counts as at rest (round-off of a ratio of
+/// order 1 is 1e-16; a real limit's neighbours on the grid have ratios of 1e-3 and up).
+const RESTING_RATE: f64 = 1e-9;
 
 /// Input intervals (rad) over which the chain assembles on its branch.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -37,7 +40,17 @@ pub fn assembly_ranges_of(k: &Kinematics) -> AssemblyRanges {
         };
     };
     let mut links = vec![Default::default(); k.mechanism().links.len()];
-    let mut margin = |x: f64| cf.margin(x, &mut links).0;
+    // A margin that only touches zero (a dyad stretched straight, or its end pins
+    // coinciding: the branch points of a change-point chain) assembles: counted as
+    // positive, it is no root and no interval ends there.
+    let mut margin = |x: f64| {
+        let m = cf.margin(x, &mut links).0;
+        if m >= -crate::closed_form::TANGENT_SLACK {
+            m.max(f64::MIN_POSITIVE)
+        } else {
+            m
+        }
+    };
     let xs: Vec<f64> = (0..=GRID).map(|i| TAU * i as f64 / GRID as f64).collect();
     let ms: Vec<f64> = xs.iter().map(|&x| margin(x)).collect();
     let roots: Vec<f64> = sign_changes(&ms)
@@ -278,6 +291,9 @@ pub struct Report {
     pub transmission_angle_rad: Option<TransmissionAngle>,
     /// Toggle positions.
     pub toggles: Vec<Toggle>,
+    /// Branch points: inputs inside the range where a group's two assembly modes meet
+    /// (a change-point chain), so that the motion may continue in either.
+    pub branch_points: Vec<crate::branch_points::BranchPoint>,
     /// Input speed the scene uses, rad/s.
     pub input_speed_rad_s: f64,
     /// Notes from the scene.
@@ -301,7 +317,7 @@ impl Probe<'_> {
 
 /// Grid over the assembly ranges: for a full turn one closed loop, else each interval
 /// shrunk by a hair (the ends are dead points where velocities are undefined).
-fn grids(r: &AssemblyRanges, start: f64) -> Vec<Vec<f64>> {
+pub(crate) fn grids(r: &AssemblyRanges, start: f64) -> Vec<Vec<f64>> {
     if r.full_rotation {
         // Offset by a fraction of a step: scenes start at symmetric angles (0, 90 deg)
         // where limits often sit exactly, and a root on a grid point has no sign change.
@@ -342,6 +358,11 @@ pub fn limit_positions(
             .map(|&x| probe.at(x).map_or(f64::NAN, |s| out.rate(s)))
             .collect();
         for i in sign_changes(&rates) {
+            // An output at rest (a change-point chain's folded mode holds its rocker
+            // still) changes the sign of round-off only: no limit there.
+            if rates[i].abs().max(rates[i + 1].abs()) < RESTING_RATE {
+                continue;
+            }
             let Some(root) = refine(xs[i], xs[i + 1], |x| {
                 probe.at(x).map_or(f64::NAN, |s| out.rate(s))
             }) else {
@@ -762,6 +783,7 @@ pub fn report(k: &mut Kinematics) -> Result<Report> {
         }
     }
     let transmission_angle_rad = transmission_angle(k, &working);
+    let branch_points = crate::branch_points::branch_points(k, &working);
     let m = k.mechanism();
     Ok(Report {
         name: m.name.clone(),
@@ -776,6 +798,7 @@ pub fn report(k: &mut Kinematics) -> Result<Report> {
         grashof: grashof(k),
         transmission_angle_rad,
         toggles,
+        branch_points,
         input_speed_rad_s: m.driver.speed_rad_s,
         notes: m.notes.clone(),
     })

@@ -68,6 +68,16 @@ impl Kinematics {
         if path == SolverPath::Newton || k.closed.is_none() {
             let mut newton = k.build_newton()?;
             if k.closed.is_none() {
+                let start = k.mech.driver.start_rad;
+                let dof = newton.mobility(start, &mut k.scratch);
+                if dof != 1 {
+                    return Err(LinkageError::SceneInvalid(format!(
+                        "the chain moves with {dof} degrees of freedom, though counting links and \
+                         joints gives 1: some joints are redundant (they repeat a constraint the \
+                         others already impose, like a brace between two points of one rigid \
+                         link), so the driver alone does not fix the pose"
+                    )));
+                }
                 // No margins to find the assembly range on: trace the branch to its
                 // folds instead, and keep every later solve inside what was found.
                 newton.trace_range(&mut k.scratch)?;

@@ -12,6 +12,7 @@
 #![warn(missing_docs)]
 
 pub mod analysis;
+pub mod branch_points;
 pub mod closed_form;
 pub mod dynamics;
 pub mod error;

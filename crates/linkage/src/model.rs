@@ -250,6 +250,8 @@ impl Mechanism {
         let mut points: Vec<Point> = Vec::new();
         let mut on_links: Vec<Vec<(usize, Vec2)>> = Vec::new();
         let mut size_m: f64 = 0.0;
+        // The point farthest from its link's origin, which sets `size_m`.
+        let mut farthest = (String::new(), String::new());
         for (li, spec) in scene.links.iter().enumerate() {
             if spec.name.is_empty() {
                 return Err(invalid(format!("link #{} has an empty name", li + 1)));
@@ -263,7 +265,12 @@ impl Mechanism {
             let mut link_points = Vec::with_capacity(spec.points.len());
             for (pname, &xy) in &spec.points {
                 let local = v2(&format!("{}.{}", spec.name, pname), xy)?;
-                size_m = size_m.max(local.norm());
+                // hypot: a coordinate of 1e300 squared would overflow to infinity.
+                let reach = local.x.hypot(local.y);
+                if reach > size_m {
+                    size_m = reach;
+                    farthest = (spec.name.clone(), pname.clone());
+                }
                 let pi = match points.iter().position(|p| &p.name == pname) {
                     Some(pi) => pi,
                     None => {
@@ -326,10 +333,21 @@ impl Mechanism {
                 .collect();
             for (n, (pa, a)) in joints.iter().enumerate() {
                 for (pb, b) in &joints[n + 1..] {
-                    if (a - b).norm() <= 1e-12 * size_m.max(f64::MIN_POSITIVE) {
+                    let gap = (a - b).norm();
+                    if gap == 0.0 {
                         return Err(invalid(format!(
                             "link `{}` has zero length between its joints `{}` and `{}`",
                             link.name, points[*pa].name, points[*pb].name
+                        )));
+                    }
+                    if gap <= 1e-12 * size_m {
+                        // Not zero, but lost beside the largest coordinate: name that.
+                        return Err(invalid(format!(
+                            "link `{}`: joints `{}` and `{}` are {gap:.3e} m apart, below 1e-12 \
+                             of the mechanism's size {size_m:.3e} m, set by point `{}` of link \
+                             `{}`; lengths so far apart cannot be solved together (is that point \
+                             a typo?)",
+                            link.name, points[*pa].name, points[*pb].name, farthest.1, farthest.0
                         )));
                     }
                 }

@@ -18,6 +18,7 @@ use crate::motion::{LinkMotion, PointMotion, Vec2, cross, perp};
 use crate::small_lu::SmallLu;
 
 mod branch;
+mod mobility;
 
 pub(crate) use branch::range_of;
 use branch::{FOLD_STEP, MIN_STEP};

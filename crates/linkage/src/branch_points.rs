@@ -1,0 +1,106 @@
+//! Branch points of a closed-form chain: inputs inside the assembly range where a
+//! dyad's two assembly modes meet, so that the chain may leave there in either (the
+//! change points of a Grashof change-point four-bar: its links stretched straight, or
+//! two of its joints coinciding). There the dyad's conditioning (|sin| of the angle
+//! between its links) falls to zero without the chain coming apart, unlike at a
+//! dead point, which ends the range.
+
+use serde::Serialize;
+
+use crate::analysis::{AssemblyRanges, grids};
+use crate::kinematics::Kinematics;
+
+/// Conditioning below which a grid minimum is refined.
+const CANDIDATE: f64 = 0.05;
+/// Refined conditioning below which the minimum is a branch point.
+const BRANCH: f64 = 1e-6;
+
+/// An input where two assembly modes of one group meet.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct BranchPoint {
+    /// Input angle, rad (in [0, 2π)).
+    pub input_rad: f64,
+    /// The group whose modes meet, as [`Kinematics::group_name`] names it.
+    pub group: String,
+    /// Pairs of joints that coincide there (empty when the links are stretched or
+    /// folded straight instead).
+    pub coincident_joints: Vec<[String; 2]>,
+}
+
+/// Branch points inside `ranges` (closed-form chains; none otherwise): local minima
+/// of each group's conditioning on the analyses' grid, refined by golden-section
+/// search, kept where the conditioning reaches zero.
+pub fn branch_points(k: &mut Kinematics, ranges: &AssemblyRanges) -> Vec<BranchPoint> {
+    let groups = k.group_count();
+    let start = k.mechanism().driver.start_rad;
+    let mut found = Vec::new();
+    for xs in grids(ranges, start) {
+        let values: Vec<Vec<f64>> = xs.iter().map(|&x| conditioning(k, x)).collect();
+        for g in 0..groups {
+            let series: Vec<f64> = values.iter().map(|v| v[g]).collect();
+            for (i, w) in series.windows(3).enumerate() {
+                let [before, here, after] = [w[0], w[1], w[2]];
+                if here < CANDIDATE && here <= before && here < after {
+                    let x = golden_minimum(xs[i], xs[i + 2], |x| conditioning(k, x)[g]);
+                    if conditioning(k, x)[g] < BRANCH {
+                        found.push(BranchPoint {
+                            input_rad: x.rem_euclid(std::f64::consts::TAU),
+                            group: k.group_name(g),
+                            coincident_joints: coincident(k, x),
+                        });
+                    }
+                }
+            }
+        }
+    }
+    found
+}
+
+fn conditioning(k: &mut Kinematics, x: f64) -> Vec<f64> {
+    k.group_conditioning(x)
+        .into_iter()
+        .map(|(_, c)| c)
+        .collect()
+}
+
+/// Minimum of a unimodal `f` on [a, b] to round-off (golden-section search: the
+/// conditioning is V-shaped at a branch point, so no derivative to find roots of).
+fn golden_minimum(mut a: f64, mut b: f64, mut f: impl FnMut(f64) -> f64) -> f64 {
+    let r = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut c, mut d) = (b - r * (b - a), a + r * (b - a));
+    let (mut fc, mut fd) = (f(c), f(d));
+    for _ in 0..200 {
+        if (b - a).abs() <= 4.0 * f64::EPSILON * (1.0 + a.abs()) {
+            break;
+        }
+        if fc <= fd {
+            (b, d, fd) = (d, c, fc);
+            c = b - r * (b - a);
+            fc = f(c);
+        } else {
+            (a, c, fc) = (c, d, fd);
+            d = a + r * (b - a);
+            fd = f(d);
+        }
+    }
+    if fc <= fd { c } else { d }
+}
+
+/// Named joints that coincide (within 1e-6 of the mechanism's size) just beside `x`
+/// (exactly there the solve is singular).
+fn coincident(k: &mut Kinematics, x: f64) -> Vec<[String; 2]> {
+    let size = k.mechanism().size_m;
+    let Ok(s) = k.solve(x + 1e-9) else {
+        return Vec::new();
+    };
+    let m = k.mechanism();
+    let mut pairs = Vec::new();
+    for (i, p) in s.points.iter().enumerate() {
+        for (j, q) in s.points.iter().enumerate().skip(i + 1) {
+            if (p.position - q.position).norm() < 1e-6 * size {
+                pairs.push([m.points[i].name.clone(), m.points[j].name.clone()]);
+            }
+        }
+    }
+    pairs
+}

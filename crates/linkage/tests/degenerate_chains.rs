@@ -1,0 +1,96 @@
+//! Degenerate geometry handled for what it is: a change-point four-bar assembles and
+//! its branch points are reported; a chain whose joints are redundant is refused for
+//! its true mobility; a point placed absurdly far away is named as the cause.
+
+use linkage::analysis::report;
+use linkage::{Kinematics, LinkageError, Mechanism};
+
+const RHOMBUS: &str = r#"Scene(name: "rhombus", models: Kinematics,
+    links: [
+        (name: "ground", ground: true, points: {"A": (0.0, 0.0), "D": (1.0, 0.0)}),
+        (name: "crank", points: {"A": (0.0, 0.0), "B": (1.0, 0.0)}),
+        (name: "coupler", points: {"B": (0.0, 0.0), "C": (1.0, 0.0)}),
+        (name: "rocker", points: {"D": (0.0, 0.0), "C": (1.0, 0.0)}),
+    ],
+    driver: (link: "crank", speed: RadPerSecond(1.0), start: 60.0),
+    branches: {"C": Left("B", "D")},
+)"#;
+
+fn kinematics(text: &str) -> linkage::Result<Kinematics> {
+    Mechanism::from_ron(text).and_then(Kinematics::new)
+}
+
+#[test]
+fn a_rhombus_change_point_four_bar_assembles_with_its_branch_points() {
+    let mut k = kinematics(RHOMBUS).expect("the rhombus is a valid scene");
+    let r = report(&mut k).expect("the rhombus assembles");
+    assert!(r.full_rotation, "{:?}", r.assembly_range_rad);
+    assert_eq!(r.grashof.map(|g| g.class).as_deref(), Some("change-point"));
+    // Stretched straight at 180 deg (B, A, C... D in one line), and B on D at 0 deg.
+    let near = |x: f64, want: f64| {
+        let d = (x - want).rem_euclid(std::f64::consts::TAU);
+        d.min(std::f64::consts::TAU - d) < 1e-6
+    };
+    let at_pi = r
+        .branch_points
+        .iter()
+        .find(|b| near(b.input_rad, std::f64::consts::PI));
+    let at_zero = r.branch_points.iter().find(|b| near(b.input_rad, 0.0));
+    assert!(
+        at_pi.is_some_and(|b| b.coincident_joints.is_empty()),
+        "{:?}",
+        r.branch_points
+    );
+    let coincident = &at_zero.expect("a branch point at 0 deg").coincident_joints;
+    assert!(
+        coincident
+            .iter()
+            .any(|p| p.contains(&"B".to_string()) && p.contains(&"D".to_string())),
+        "B and D coincide there: {coincident:?}"
+    );
+    assert_eq!(r.branch_points.len(), 2, "{:?}", r.branch_points);
+}
+
+#[test]
+fn an_over_constrained_braced_five_bar_is_refused_for_its_mobility() {
+    // A five-bar (two degrees of freedom) with a brace pinned to two ground points:
+    // Grübler's count gives 1 (5 moving links, 7 joints).
+    let text = r#"Scene(name: "braced five-bar", models: Kinematics,
+        links: [
+            (name: "ground", ground: true, points: {"O1": (0.0, 0.0), "O2": (1.0, 0.0)}),
+            (name: "crank", points: {"O1": (0.0, 0.0), "B": (0.3, 0.0)}),
+            (name: "l2", points: {"B": (0.0, 0.0), "C": (0.8, 0.0)}),
+            (name: "l3", points: {"C": (0.0, 0.0), "D": (0.8, 0.0)}),
+            (name: "l4", points: {"O2": (0.0, 0.0), "D": (0.5, 0.0)}),
+            (name: "brace", points: {"O1": (0.0, 0.0), "O2": (1.0, 0.0)}),
+        ],
+        driver: (link: "crank", speed: RadPerSecond(1.0), start: 60.0),
+        guess: {
+            "crank": (0.0, 0.0, 60.0),
+            "l2": (0.15, 0.26, 60.0),
+            "l3": (0.55, 0.95, -30.0),
+            "l4": (1.0, 0.0, 100.0),
+            "brace": (0.0, 0.0, 0.0),
+        })"#;
+    match kinematics(text) {
+        Err(LinkageError::SceneInvalid(why)) => {
+            assert!(
+                why.contains("2 degrees of freedom") && why.contains("redundant"),
+                "{why}"
+            )
+        }
+        other => panic!("expected the mobility named, got {other:?}"),
+    }
+}
+
+#[test]
+fn a_point_at_1e300_is_named_not_reported_as_a_zero_length() {
+    let text = RHOMBUS.replace(r#""B": (1.0, 0.0)}),"#, r#""B": (1e300, 0.0)}),"#);
+    assert_ne!(text, RHOMBUS);
+    let why = kinematics(&text).expect_err("refused").to_string();
+    assert!(!why.contains("zero length"), "{why}");
+    assert!(
+        why.contains("point `B` of link `crank`") && why.contains("1.000e300"),
+        "{why}"
+    );
+}
