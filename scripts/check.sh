@@ -26,6 +26,12 @@ echo "== tests"
 mkdir -m700 -p /tmp/xdg && export XDG_RUNTIME_DIR=/tmp/xdg
 cargo test --workspace
 
+echo "== fuzzing and properties at scale (release mode)"
+# 10^5 mutated scene files, and 34,000 each of random four-bars, slider-cranks and
+# six-bars on both solver paths (the plain test run above does a few thousand).
+LINKAGE_FUZZ_CASES=100000 LINKAGE_PROPERTY_CASES=34000 \
+    cargo test --release -p linkage --test fuzz_scenes --test properties -- --nocapture
+
 echo "== CLI over every scene"
 cargo build -q -p linkage-cli
 bin="${CARGO_TARGET_DIR:-target}/debug"

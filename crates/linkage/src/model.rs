@@ -406,10 +406,38 @@ impl Mechanism {
         let moving = links.len() - 1;
         let mobility = 3 * moving as i64 - 2 * (revolutes.len() + sliders.len()) as i64;
         if mobility != 1 {
+            // A misspelt point name is the usual cause: it leaves a joint unmade, its
+            // point alone on one link. Name those, so the typo can be found.
+            let lone: Vec<String> = on_links
+                .iter()
+                .enumerate()
+                .filter(|(_, users)| users.len() == 1)
+                .map(|(p, users)| format!("`{}` (on `{}`)", points[p].name, links[users[0].0].name))
+                .collect();
             return Err(invalid(format!(
                 "the chain has mobility {mobility} (3 x {moving} moving links - 2 x {} joints); \
-                 a single-input mechanism needs exactly 1",
-                revolutes.len() + sliders.len()
+                 a single-input mechanism needs exactly 1. Joints are made by a point name \
+                 shared between links; these points are on one link only: {}",
+                revolutes.len() + sliders.len(),
+                if lone.is_empty() {
+                    let made: Vec<String> = revolutes
+                        .iter()
+                        .map(|r| {
+                            format!(
+                                "`{}` ({}-{})",
+                                points[r.point].name, links[r.a].name, links[r.b].name
+                            )
+                        })
+                        .chain(
+                            sliders
+                                .iter()
+                                .map(|s| format!("slider `{}`", links[s.slider].name)),
+                        )
+                        .collect();
+                    format!("none; the joints made are {}", made.join(", "))
+                } else {
+                    lone.join(", ")
+                }
             )));
         }
 
