@@ -177,8 +177,10 @@ fn check(text: &str) -> Result<(), TestCaseError> {
             }
             Err(e) => return Err(TestCaseError::fail(format!("{path:?}: {e}"))),
         };
-        for i in 0..72 {
-            let x = std::f64::consts::TAU * i as f64 / 72.0;
+        // 24 inputs (15 deg apart) per mechanism: coverage comes from the number of
+        // mechanisms, 34,000 of each in CI.
+        for i in 0..24 {
+            let x = std::f64::consts::TAU * i as f64 / 24.0;
             let margin = reference.assembly_margin(x).unwrap_or(f64::NAN);
             match k.solve(x) {
                 Ok(s) => {
