@@ -116,7 +116,7 @@ pub fn sweep_each<E: From<LinkageError>>(
         let inputs = std::array::from_fn(|l| {
             a + (b - a) * (first + l).min(steps - 1) as f64 / divisions as f64
         });
-        k.solve_lanes(inputs, speed, &mut lanes)?;
+        solve_stepping_past_branch_points(k, inputs, speed, (b - a) * 1e-6, &mut lanes)?;
         for lane in 0..LANES.min(steps - first) {
             lanes.lane_into(lane, &mut s);
             if s.conditioning < NEAR_SINGULAR {
@@ -136,6 +136,31 @@ pub fn sweep_each<E: From<LinkageError>>(
         near_singular,
         range: [a, b],
     })
+}
+
+/// [`Kinematics::solve_lanes`], except that an input landing exactly on a singular
+/// position inside the range (a change-point chain's branch point, where the solve
+/// has no velocity to give) is solved `hair` past it instead: the sweep goes on, and
+/// that row, whose conditioning is about zero, is reported as near singular.
+fn solve_stepping_past_branch_points(
+    k: &mut Kinematics,
+    inputs: [f64; LANES],
+    speed: f64,
+    hair: f64,
+    lanes: &mut crate::lanes::LaneSolution,
+) -> Result<()> {
+    match k.solve_lanes(inputs, speed, lanes) {
+        Err(LinkageError::Singular { .. }) => {}
+        other => return other,
+    }
+    let mut one = k.empty_solution();
+    for (lane, x) in inputs.into_iter().enumerate() {
+        if let Err(LinkageError::Singular { .. }) = k.solve_into(x, speed, &mut one) {
+            k.solve_into(x + hair, speed, &mut one)?;
+        }
+        lanes.set_lane(lane, &one);
+    }
+    Ok(())
 }
 
 /// `angle` shifted by whole turns to be within π of `reference`.

@@ -94,3 +94,32 @@ fn a_point_at_1e300_is_named_not_reported_as_a_zero_length() {
         "{why}"
     );
 }
+
+#[test]
+fn a_sweep_of_the_rhombus_steps_past_its_branch_points() {
+    // From 60 deg in 30 deg steps, two samples land exactly on the branch points.
+    let mut k = kinematics(RHOMBUS).expect("the rhombus is a valid scene");
+    let sw = linkage::sweep::sweep(&mut k, 12).expect("the sweep goes on past 180 deg");
+    let finite = sw.solutions.iter().all(|s| {
+        s.points.iter().all(|p| {
+            p.velocity
+                .iter()
+                .chain(p.acceleration.iter())
+                .all(|v| v.is_finite())
+        })
+    });
+    assert!(finite, "every row finite");
+    let pi = std::f64::consts::PI;
+    for at in [pi, 2.0 * pi] {
+        let row = sw
+            .solutions
+            .iter()
+            .find(|s| (s.input_rad - at).abs() < 1e-4)
+            .expect("a row at the branch point");
+        assert!(row.input_rad != at, "stepped a hair past {at}");
+        assert!(
+            sw.near_singular.contains(&row.input_rad),
+            "{at} reported as near singular"
+        );
+    }
+}
