@@ -39,14 +39,14 @@ pub fn branch_points(k: &mut Kinematics, ranges: &AssemblyRanges) -> Vec<BranchP
         // conditioning is V-shaped at a branch point, so a minimum still shows, and the
         // report, drawn on the frame of an edit, pays a quarter of a sweep for it.
         let xs: Vec<f64> = grid.into_iter().step_by(4).collect();
-        let values: Vec<Vec<f64>> = xs.iter().map(|&x| conditioning(k, x)).collect();
+        let values: Vec<Vec<f64>> = xs.iter().map(|&x| k.group_conditioning_values(x)).collect();
         for g in 0..groups {
             let series: Vec<f64> = values.iter().map(|v| v[g]).collect();
             for (i, w) in series.windows(3).enumerate() {
                 let [before, here, after] = [w[0], w[1], w[2]];
                 if here < CANDIDATE && here <= before && here < after {
-                    let x = golden_minimum(xs[i], xs[i + 2], |x| conditioning(k, x)[g]);
-                    if conditioning(k, x)[g] < BRANCH {
+                    let x = golden_minimum(xs[i], xs[i + 2], |x| k.group_conditioning_values(x)[g]);
+                    if k.group_conditioning_values(x)[g] < BRANCH {
                         found.push(BranchPoint {
                             input_rad: x.rem_euclid(std::f64::consts::TAU),
                             group: k.group_name(g),
@@ -58,13 +58,6 @@ pub fn branch_points(k: &mut Kinematics, ranges: &AssemblyRanges) -> Vec<BranchP
         }
     }
     found
-}
-
-fn conditioning(k: &mut Kinematics, x: f64) -> Vec<f64> {
-    k.group_conditioning(x)
-        .into_iter()
-        .map(|(_, c)| c)
-        .collect()
 }
 
 /// Minimum of a unimodal `f` on [a, b] to round-off (golden-section search: the

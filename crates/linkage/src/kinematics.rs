@@ -343,13 +343,19 @@ impl Kinematics {
 
     /// Per-group velocity conditioning at `input_rad`, with the groups' names.
     pub fn group_conditioning(&mut self, input_rad: f64) -> Vec<(String, f64)> {
-        let Some(cf) = &self.closed else {
-            return Vec::new();
-        };
-        let values = cf.group_conditioning(input_rad, &mut self.scratch);
+        let values = self.group_conditioning_values(input_rad);
         (0..values.len())
             .map(|g| (self.group_name(g), values[g]))
             .collect()
+    }
+
+    /// [`Self::group_conditioning`] without the names, for scans that evaluate it
+    /// many times (the names are formatted strings).
+    pub(crate) fn group_conditioning_values(&mut self, input_rad: f64) -> Vec<f64> {
+        match &self.closed {
+            Some(cf) => cf.group_conditioning(input_rad, &mut self.scratch),
+            None => Vec::new(),
+        }
     }
 
     /// Number of closed-form groups (0 on the Newton-only path).

@@ -414,30 +414,29 @@ impl Mechanism {
                 .filter(|(_, users)| users.len() == 1)
                 .map(|(p, users)| format!("`{}` (on `{}`)", points[p].name, links[users[0].0].name))
                 .collect();
+            // With none alone, list the joints that were made, to compare with the drawing.
+            let made: Vec<String> = revolutes
+                .iter()
+                .map(|r| {
+                    let (a, b) = (&links[r.a].name, &links[r.b].name);
+                    format!("`{}` ({a}-{b})", points[r.point].name)
+                })
+                .chain(
+                    sliders
+                        .iter()
+                        .map(|s| format!("slider `{}`", links[s.slider].name)),
+                )
+                .collect();
+            let hint = if lone.is_empty() {
+                format!("none; the joints made are {}", made.join(", "))
+            } else {
+                lone.join(", ")
+            };
             return Err(invalid(format!(
                 "the chain has mobility {mobility} (3 x {moving} moving links - 2 x {} joints); \
                  a single-input mechanism needs exactly 1. Joints are made by a point name \
-                 shared between links; these points are on one link only: {}",
+                 shared between links; these points are on one link only: {hint}",
                 revolutes.len() + sliders.len(),
-                if lone.is_empty() {
-                    let made: Vec<String> = revolutes
-                        .iter()
-                        .map(|r| {
-                            format!(
-                                "`{}` ({}-{})",
-                                points[r.point].name, links[r.a].name, links[r.b].name
-                            )
-                        })
-                        .chain(
-                            sliders
-                                .iter()
-                                .map(|s| format!("slider `{}`", links[s.slider].name)),
-                        )
-                        .collect();
-                    format!("none; the joints made are {}", made.join(", "))
-                } else {
-                    lone.join(", ")
-                }
             )));
         }
 

@@ -80,7 +80,7 @@ impl Newton {
     /// # Errors
     /// The start pose itself does not solve.
     pub fn trace_range(&mut self, links: &mut [LinkMotion]) -> Result<Option<[f64; 2]>> {
-        let start = self.target(self.last_input.unwrap_or(0.0))?;
+        let start = self.last_input.unwrap_or(0.0);
         self.correct(start, links)?;
         self.update_derivatives(links)?;
         let mut forward = self.clone();

@@ -163,6 +163,18 @@ pub struct Newton {
     pub last_iterations: usize,
 }
 
+/// The link at the other end of a joint between links `a` and `b`, seen from `from`;
+/// `None` when the joint does not touch `from`.
+fn across(a: usize, b: usize, from: usize) -> Option<usize> {
+    if a == from {
+        Some(b)
+    } else if b == from {
+        Some(a)
+    } else {
+        None
+    }
+}
+
 /// Largest change of any coordinate the predictor may make in one step (rad or m/m).
 const MAX_PREDICTED_CHANGE: f64 = 0.2;
 
@@ -216,11 +228,7 @@ impl Newton {
         let mut queue = std::collections::VecDeque::from([m.ground, m.driver.link]);
         while let Some(l) = queue.pop_front() {
             for (r, rv) in m.revolutes.iter().enumerate() {
-                let other = if rv.a == l {
-                    rv.b
-                } else if rv.b == l {
-                    rv.a
-                } else {
+                let Some(other) = across(rv.a, rv.b, l) else {
                     continue;
                 };
                 if used_rev[r] || visited[other] {
@@ -232,11 +240,7 @@ impl Newton {
                 queue.push_back(other);
             }
             for (p, s) in m.sliders.iter().enumerate() {
-                let other = if s.slider == l {
-                    s.guide
-                } else if s.guide == l {
-                    s.slider
-                } else {
+                let Some(other) = across(s.slider, s.guide, l) else {
                     continue;
                 };
                 if used_pri[p] || visited[other] {
