@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Real-browser test of the web demo: builds it (scripts/build_web.sh), serves dist/ on
-# 127.0.0.1, and runs tests/browser/browser_test.mjs in Debian's headless Chromium via
-# playwright-core. Installs chromium and the npm packages if missing.
+# 127.0.0.1, and runs tests/browser/browser_test.mjs and every_scene.mjs in Debian's
+# headless Chromium via playwright-core, once per build (WebGL2, WebGPU). Installs
+# chromium and the npm packages if missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -11,8 +12,10 @@ if ! command -v chromium >/dev/null; then
 fi
 (cd tests/browser && npm ci --no-audit --no-fund)
 bash scripts/build_web.sh
-ls -l dist/*.wasm
-gzip -9 -c dist/*.wasm | wc -c | awk '{printf "wasm gzipped: %.2f MB\n", $1/1e6}'
+for wasm in dist/*/linkage-lab_bg.wasm; do
+    gzip -9 -c "$wasm" | wc -c | awk -v w="$wasm" -v raw="$(stat -c %s "$wasm")" \
+        '{printf "%s: %.2f MB raw, %.2f MB gzipped\n", w, raw/1e6, $1/1e6}'
+done
 
 # A free port, so that nothing else listening (another run, a demo server) answers.
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
@@ -24,6 +27,14 @@ if ! kill -0 "$server" 2>/dev/null; then
     echo "the web server on 127.0.0.1:$port did not start" >&2
     exit 1
 fi
-node tests/browser/browser_test.mjs "http://127.0.0.1:$port/"
-# Every scene file, through the picker and a URL fragment, every kind of control.
-node tests/browser/every_scene.mjs "http://127.0.0.1:$port/"
+# Both builds: Chromium without a WebGPU adapter loads the WebGL2 one, with
+# SwiftShader's Vulkan as adapter the WebGPU-only one (tests/browser/common.mjs).
+status=0
+for build in webgl2 webgpu; do
+    echo "== $build build"
+    export LINKAGE_BUILD=$build
+    node tests/browser/browser_test.mjs "http://127.0.0.1:$port/" || status=1
+    # Every scene file, through the picker and a URL fragment, every kind of control.
+    node tests/browser/every_scene.mjs "http://127.0.0.1:$port/" || status=1
+done
+exit $status

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds the web demo into dist/ without trunk: cargo for wasm32, then wasm-bindgen at
-# exactly the Cargo.lock version (installed with cargo if missing), optionally wasm-opt
-# (WASM_OPT=1), then index.html with the trunk link replaced by a module import. With --serve, serves dist/ on
+# Builds the web demo into dist/ without trunk: cargo for wasm32 (two builds, WebGPU
+# only and WebGPU + WebGL2), then wasm-bindgen at exactly the Cargo.lock version
+# (installed with cargo if missing), optionally wasm-opt (WASM_OPT=1), then index.html
+# with the trunk link replaced by web/load.js, which picks the build. With --serve, serves dist/ on
 # http://127.0.0.1:8080 (python3's http.server).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,25 +16,34 @@ if [ "$have" != "$want" ]; then
     cargo install wasm-bindgen-cli --version "$want"
 fi
 
-cargo build --profile wasm-release --target wasm32-unknown-unknown --bin linkage-lab
+# Two builds: WebGPU only (what a browser with a WebGPU adapter loads: 1.5 MB gzipped),
+# and WebGPU + WebGL2 (the `webgl` feature: wgpu-core and naga, 0.7 MB more gzipped) for
+# the rest. index.html's loader picks one.
 rm -rf dist && mkdir -p dist
-wasm-bindgen --target web --no-typescript --out-dir dist \
-    "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/wasm-release/linkage-lab.wasm"
+for build in webgpu webgl2; do
+    features=(); [ "$build" = webgpu ] && features=(--no-default-features)
+    cargo build --profile wasm-release --target wasm32-unknown-unknown --bin linkage-lab "${features[@]}"
+    wasm-bindgen --target web --no-typescript --out-dir "dist/$build" \
+        "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/wasm-release/linkage-lab.wasm"
+done
 # wasm-opt (binaryen 132 from npm; Debian's 108 breaks this wasm) only when asked for
 # (WASM_OPT=1): measured here, -Os takes 3.5 min and makes the wasm 5 % smaller raw but
 # no smaller gzipped, and the first frame no sooner (README, "The viewer").
 if [ "${WASM_OPT:-0}" = 1 ]; then
     (cd scripts/web_tools && npm ci --no-audit --no-fund --silent)
-    before=$(stat -c %s dist/linkage-lab_bg.wasm)
-    scripts/web_tools/node_modules/.bin/wasm-opt -Os --strip-debug --strip-producers \
-        dist/linkage-lab_bg.wasm -o dist/linkage-lab_bg.opt.wasm
-    mv dist/linkage-lab_bg.opt.wasm dist/linkage-lab_bg.wasm
-    echo "wasm-opt: $before -> $(stat -c %s dist/linkage-lab_bg.wasm) bytes"
+    for wasm in dist/*/linkage-lab_bg.wasm; do
+        before=$(stat -c %s "$wasm")
+        scripts/web_tools/node_modules/.bin/wasm-opt -Os --strip-debug --strip-producers \
+            "$wasm" -o "$wasm.opt"
+        mv "$wasm.opt" "$wasm"
+        echo "wasm-opt $wasm: $before -> $(stat -c %s "$wasm") bytes"
+    done
 fi
 # window.wasmBindings, as trunk names it: the browser test reads the app's controls there.
-sed -e 's|<link data-trunk rel="rust"[^>]*/>|<script type="module">import init, * as bindings from "./linkage-lab.js"; window.wasmBindings = bindings; init();</script>|' \
+cp web/load.js dist/
+sed -e 's|<link data-trunk rel="rust"[^>]*/>|<script type="module" src="./load.js"></script>|' \
     index.html > dist/index.html
-ls -l dist
+ls -l dist dist/*/
 
 if [ "${1:-}" = "--serve" ]; then
     echo "serving http://127.0.0.1:8080"

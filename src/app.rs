@@ -149,6 +149,7 @@ impl LinkageApp {
     /// Creates the app over the default scene (on the web, the URL's scene; on the
     /// desktop, `start.scene`).
     pub fn new(cc: &eframe::CreationContext<'_>, start: crate::StartOptions) -> Self {
+        cc.egui_ctx.set_fonts(crate::fonts::definitions());
         let gpu = match &cc.wgpu_render_state {
             Some(rs) => {
                 MechanismPipeline::install(rs);

@@ -7,6 +7,7 @@ mod app;
 pub mod catalog;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod file_dialog;
+mod fonts;
 pub mod render;
 pub mod session;
 pub mod ui;

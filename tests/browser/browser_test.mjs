@@ -6,7 +6,7 @@
 // (the app logs it) and frames per second while the mechanism plays.
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
 import { readFileSync } from 'node:fs';
-import { decode, differing, launchChromium, nonBackground } from './common.mjs';
+import { build, decode, differing, launchChromium, nonBackground, wrongBuild } from './common.mjs';
 
 const url = process.argv[2] ?? 'http://127.0.0.1:8917/';
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
@@ -32,6 +32,8 @@ const t0 = Date.now();
 await page.goto(url, { waitUntil: 'load' });
 while (firstFrameMs === null && Date.now() - t0 < 60000) await page.waitForTimeout(100);
 if (firstFrameMs === null) fail('the app never drew a first frame');
+const wrong = await wrongBuild(page);
+if (wrong) fail(wrong);
 await page.waitForTimeout(1500);
 
 const canvas = page.locator('#linkage_canvas');
@@ -119,7 +121,7 @@ if (reopened < 2000) fail(`opening slider_crank.ron changed only ${reopened} pix
 
 if (errors.length) fail(`console errors:\n  ${errors.join('\n  ')}`);
 console.log(JSON.stringify({
-  url, first_frame_ms: firstFrameMs, canvas_drawn_fraction: Number(coverage.toFixed(3)),
+  url, build, first_frame_ms: firstFrameMs, canvas_drawn_fraction: Number(coverage.toFixed(3)),
   pixels_changed_by_slider_drag: changed, pixels_changed_by_play: played,
   fps_playing: Number(fps.toFixed(1)), csv_download_rows: csvRows,
   scene_download_bytes: saved.text.length, pixels_changed_by_upload: reopened,

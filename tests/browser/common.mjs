@@ -1,18 +1,33 @@
-// What both browser scripts share: Debian's Chromium launched headless on WebGL2, and
-// the pixel measures they judge screenshots by.
+// What both browser scripts share: Debian's Chromium launched headless on one of the
+// demo's two builds, and the pixel measures they judge screenshots by.
 import { chromium } from 'playwright-core';
 import { PNG } from 'pngjs';
 
-/** Debian's Chromium, headless, rendering WebGL2 through SwiftShader (headless WebGPU
- * screenshots come out blank here). */
+/** The build under test (`LINKAGE_BUILD`, default webgl2): which of web/load.js's two
+ * builds the browser is launched to load. */
+export const build = process.env.LINKAGE_BUILD ?? 'webgl2';
+
+/** Debian's Chromium, headless, on SwiftShader: without a WebGPU adapter (the page
+ * loads the WebGL2 build), or with SwiftShader's Vulkan as WebGPU adapter (the
+ * WebGPU-only build; without `--use-vulkan=swiftshader` its screenshots come out
+ * blank). */
 export function launchChromium() {
+  const gpu = build === 'webgpu'
+    ? ['--enable-unsafe-webgpu', '--enable-features=Vulkan', '--use-webgpu-adapter=swiftshader', '--use-vulkan=swiftshader']
+    : ['--disable-gpu'];
   return chromium.launch({
     executablePath: '/usr/bin/chromium',
     headless: true,
-    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+    args: ['--no-sandbox', '--disable-quic', '--no-first-run',
       '--disable-background-networking', '--disable-component-update', '--disable-sync',
-      '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+      '--use-angle=swiftshader', '--enable-unsafe-swiftshader', ...gpu],
   });
+}
+
+/** Why the page runs another build than the one under test, or null. */
+export async function wrongBuild(page) {
+  const loaded = await page.evaluate(() => window.linkageLabBuild);
+  return loaded === build ? null : `the page loaded the ${loaded} build, not ${build}`;
 }
 
 /** A PNG screenshot as RGBA pixels. */

@@ -10,7 +10,7 @@
 // The app says where its controls are: window.wasmBindings.linkage_lab_controls().
 // Usage: node every_scene.mjs http://127.0.0.1:PORT/
 import { readdirSync, readFileSync } from 'node:fs';
-import { decode, differing, launchChromium, nonBackground } from './common.mjs';
+import { decode, differing, launchChromium, nonBackground, wrongBuild, build } from './common.mjs';
 
 const base = (process.argv[2] ?? 'http://127.0.0.1:8917/').replace(/#.*$/, '');
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
@@ -39,6 +39,8 @@ async function openPage(url) {
   await page.goto(url, { waitUntil: 'load' });
   for (let i = 0; i < 600 && !drawn && !errors.length; i++) await page.waitForTimeout(100);
   if (!drawn) errors.push(`no first frame at ${url}`);
+  const wrong = await wrongBuild(page);
+  if (wrong) errors.push(wrong);
   await page.waitForTimeout(500);
   return { page, errors };
 }
@@ -206,11 +208,11 @@ for (const scene of scenes) {
   }
 }
 await browser.close();
-console.log(JSON.stringify({ scenes: scenes.length, results }, null, 1));
+console.log(JSON.stringify({ build, scenes: scenes.length, results }, null, 1));
 
 // The CPU time of the frame that carried each edit (the app's own performance.now()
 // figure: the edit, the panels and plots), slowest per scene, valid and refused.
-console.log('edit frame CPU, ms (slowest over both routes): scene | valid | refused');
+console.log(`edit frame CPU, ${build} build, ms (slowest over both routes): scene | valid | refused`);
 for (const scene of scenes) {
   const edits = results.filter((r) => r.scene === scene.key).flatMap((r) => Object.values(r.edits));
   const worst = (refused) => {

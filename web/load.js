@@ -1,0 +1,11 @@
+// Loads one of the web demo's two builds (scripts/build_web.sh): the WebGPU-only one
+// where the browser gives a WebGPU adapter (the smaller download), else the one with
+// WebGL2 as well. `?build=webgl2` or `?build=webgpu` forces one (tests, bug reports).
+const asked = new URLSearchParams(location.search).get('build');
+const adapter = asked ? null : await navigator.gpu?.requestAdapter().catch(() => null);
+const build = asked === 'webgpu' || asked === 'webgl2' ? asked : adapter ? 'webgpu' : 'webgl2';
+// The browser test reads which build runs, and the app's controls through the bindings.
+window.linkageLabBuild = build;
+const bindings = await import(`./${build}/linkage-lab.js`);
+window.wasmBindings = bindings;
+await bindings.default();
