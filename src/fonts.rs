@@ -44,7 +44,9 @@ mod tests {
         let ctx = eframe::egui::Context::default();
         ctx.set_fonts(definitions());
         // A frame loads the fonts; its texture upload is not needed here.
-        ctx.run_ui(Default::default(), |_| {}).textures_delta.clear();
+        ctx.run_ui(Default::default(), |_| {})
+            .textures_delta
+            .clear();
         for family in [FontFamily::Proportional, FontFamily::Monospace] {
             let font = eframe::egui::FontId::new(14.0, family.clone());
             // Every non-ASCII character in a string literal of the app or the solver

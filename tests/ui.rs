@@ -13,6 +13,7 @@ use linkage::{Kinematics, Mechanism};
 use linkage_lab::LinkageApp;
 use linkage_lab::catalog::BUILTIN_SCENES;
 use linkage_lab::session::SceneSource;
+use linkage_lab::session::derived::Shown;
 use linkage_lab::ui::controls::CRANK_LABEL;
 
 mod common;
@@ -137,4 +138,36 @@ fn main_view_snapshot() {
         .set_value_accesskit(50.0);
     h.run();
     h.snapshot("gravity_flipper_50deg");
+}
+
+#[test]
+fn a_dragged_slider_moves_the_pose_each_frame_and_the_report_follows_when_it_stops() {
+    let mut h = harness();
+    open_scene(&mut h, "slider_crank");
+    assert!(h.query_by_label("stroke slider = 100.00 mm").is_some());
+    // Two frames that each carry an edit, as a drag gives: the pose and curves move
+    // with each, the report waits.
+    for ab in [60.0, 61.0] {
+        h.get_by_role_and_label(Role::Slider, "AB")
+            .set_value_accesskit(ab);
+        h.step();
+        let session = &h.state().state.session;
+        let value = session.lengths()[0].value(session.scene()).expect("AB");
+        assert!((value - ab).abs() < 1e-12, "{value}");
+        assert!(
+            matches!(session.report_shown(), Shown::Outdated(_)),
+            "no report computed in a frame that carries an edit"
+        );
+    }
+    assert!(h.query_by_label("updating…").is_some());
+    assert!(h.query_by_label("stroke slider = 100.00 mm").is_some());
+    // The first frame without an edit makes it; the next shows it.
+    h.step();
+    assert!(matches!(
+        h.state().state.session.report_shown(),
+        Shown::Current(_)
+    ));
+    h.run();
+    assert!(h.query_by_label("updating…").is_none());
+    assert!(h.query_by_label("stroke slider = 122.00 mm").is_some());
 }

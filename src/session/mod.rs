@@ -4,6 +4,7 @@
 //! goes through here and either succeeds or leaves a message and the old state.
 
 pub mod curves;
+pub mod derived;
 pub mod dynamic_run;
 pub mod limit;
 pub mod notice;
@@ -11,8 +12,6 @@ pub mod params;
 pub mod run_job;
 pub mod topology;
 pub mod url_state;
-
-use std::cell::OnceCell;
 
 use linkage::analysis::{Report, report};
 use linkage::polygon::{VectorEquation, polygons};
@@ -22,14 +21,16 @@ use linkage::{Kinematics, Mechanism, SceneFile, Solution};
 
 use crate::catalog::builtin;
 use curves::{Curves, ModelCurves};
+use derived::{Derived, Shown};
 use dynamic_run::{DynamicRun, IntegratorChoice};
 use notice::Notice;
 use params::{LengthParam, length_params};
 use run_job::RunJob;
 use topology::Topology;
 
-/// A frame's share of a dynamic run computed on the UI thread (the browser), ms: the
-/// rest of the frame draws in well under the other 11 ms of a 60 Hz frame.
+/// The most of a frame a dynamic run computed on the UI thread (the browser) may
+/// take, ms: the rest of the frame draws in well under the other 11 ms of a 60 Hz
+/// frame. The app gives it less where the frame has spent more already.
 pub const RUN_SLICE_MS: f64 = 5.0;
 
 /// Where the scene came from.
@@ -50,11 +51,11 @@ pub struct Session {
     pose: Solution,
     topology: Topology,
     lengths: Vec<LengthParam>,
-    /// The report, made when first shown.
-    report: OnceCell<Result<Report, String>>,
+    /// The report, made when shown, in a frame without an edit.
+    report: Derived<Result<Report, String>>,
     curves: Curves,
-    /// Torque or J(q), M(q) curves, made when first shown.
-    model_curves: OnceCell<ModelCurves>,
+    /// Torque or J(q), M(q) curves, made when shown, in a frame without an edit.
+    model_curves: Derived<ModelCurves>,
     polygons: Vec<VectorEquation>,
     /// The finished dynamic run (dynamic scenes, once computed).
     dynamics: Option<Result<DynamicRun, String>>,
@@ -98,9 +99,9 @@ impl Session {
             pose: built.pose,
             topology: built.topology,
             lengths,
-            report: OnceCell::new(),
+            report: Derived::default(),
             curves: built.curves,
-            model_curves: OnceCell::new(),
+            model_curves: Derived::default(),
             polygons: Vec::new(),
             dynamics: None,
             job: None,
@@ -157,17 +158,44 @@ impl Session {
     }
 
     /// The report (Grashof, K, strokes, limits, transmission angle) or why it failed;
-    /// computed the first time it is asked for after an edit.
+    /// computed now if it is not yet.
     pub fn report(&self) -> &Result<Report, String> {
-        self.report
-            .get_or_init(|| report(&mut self.kin.clone()).map_err(|e| e.to_string()))
+        self.report.get_or_init(|| self.compute_report())
+    }
+
+    /// The report as a panel shows it: the current one, or the one from before the
+    /// last edit until [`Session::catch_up`] has made the current one.
+    pub fn report_shown(&self) -> Shown<'_, Result<Report, String>> {
+        self.report.shown()
     }
 
     /// The curves of what the scene models beyond kinematics (input torque; J(q) and
-    /// M(q)); computed the first time they are asked for after an edit.
+    /// M(q)); computed now if they are not yet.
     pub fn model_curves(&self) -> &ModelCurves {
         self.model_curves
-            .get_or_init(|| ModelCurves::compute(&self.kin, &self.curves.input_deg))
+            .get_or_init(|| self.compute_model_curves())
+    }
+
+    /// The model curves as a plot shows them (see [`Session::report_shown`]).
+    pub fn model_curves_shown(&self) -> Shown<'_, ModelCurves> {
+        self.model_curves.shown()
+    }
+
+    /// Computes what a panel showed out of date since the last edit (the app calls it
+    /// at the end of a frame that carried no edit). Returns whether it computed
+    /// anything (the panels show it next frame).
+    pub fn catch_up(&self) -> bool {
+        let report = self.report.catch_up(|| self.compute_report());
+        let curves = self.model_curves.catch_up(|| self.compute_model_curves());
+        report || curves
+    }
+
+    fn compute_report(&self) -> Result<Report, String> {
+        report(&mut self.kin.clone()).map_err(|e| e.to_string())
+    }
+
+    fn compute_model_curves(&self) -> ModelCurves {
+        ModelCurves::compute(&self.kin, &self.curves.input_deg)
     }
 
     /// The curves over the cycle.
@@ -197,14 +225,15 @@ impl Session {
         self.job.as_ref().map(|j| [j.progress_s(), j.end_s()])
     }
 
-    /// Advances the dynamic run being computed (a slice of at most [`RUN_SLICE_MS`]
-    /// where it runs on this thread) and takes its result when it is done. Returns
-    /// whether a run is still being computed (the caller asks for another frame).
-    pub fn poll_run(&mut self) -> bool {
+    /// Advances the dynamic run being computed (where it runs on this thread, for
+    /// `slice_ms`, at most [`RUN_SLICE_MS`]) and takes its result when it is done.
+    /// Returns whether a run is still being computed (the caller asks for another
+    /// frame).
+    pub fn poll_run(&mut self, slice_ms: f64) -> bool {
         let Some(job) = &mut self.job else {
             return false;
         };
-        if let Some(result) = job.poll(RUN_SLICE_MS) {
+        if let Some(result) = job.poll(slice_ms.min(RUN_SLICE_MS)) {
             self.finish_run(result);
         }
         self.job.is_some()
@@ -544,9 +573,9 @@ impl Session {
         self.kin = built.kin;
         self.pose = built.pose;
         self.topology = built.topology;
-        self.report = OnceCell::new();
+        self.report.invalidate();
         self.curves = built.curves;
-        self.model_curves = OnceCell::new();
+        self.model_curves.invalidate();
         self.time_s = 0.0;
         self.message = None;
         self.generation += 1;
@@ -685,7 +714,7 @@ mod tests {
         let mut sliced = Session::open_builtin("gravity_flipper").expect("opens");
         sliced.run_sliced();
         let mut frames = 0;
-        while sliced.poll_run() {
+        while sliced.poll_run(RUN_SLICE_MS) {
             frames += 1;
             assert!(frames < 100_000, "the run ends");
         }

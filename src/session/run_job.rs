@@ -104,8 +104,12 @@ fn start_run(k: &Kinematics, choice: IntegratorChoice) -> Result<Run, String> {
     Run::start(k, &settings_for(choice)).map_err(|e| e.to_string())
 }
 
-/// Steps `run` until it finishes or `budget_ms` of wall time is spent.
+/// Steps `run` until it finishes or `budget_ms` of wall time is spent (no step at all
+/// for a budget of 0: a frame that has none left).
 fn advance_for(run: &mut Run, budget_ms: f64) -> Result<bool, String> {
+    if budget_ms.is_nan() || budget_ms <= 0.0 {
+        return Ok(false);
+    }
     let clock = web_time::Instant::now();
     loop {
         if run.advance(STEPS_PER_CHUNK).map_err(|e| e.to_string())? {

@@ -9,6 +9,8 @@ use linkage::scene::Models;
 
 use crate::app::{AppState, PlotTab};
 use crate::session::Session;
+use crate::session::curves::ModelCurves;
+use crate::session::derived::Shown;
 
 /// Whether `tab` has anything to show for `s` (a slider appears only where its
 /// parameter exists; so does a plot).
@@ -103,7 +105,9 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             );
         }
         PlotTab::Torque => {
-            let c = s.model_curves();
+            let Some(c) = model_curves(ui, s) else {
+                return;
+            };
             let log_amp: Vec<[f64; 2]> = c
                 .amplification
                 .iter()
@@ -146,7 +150,9 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             }
         }
         PlotTab::ReducedModel => {
-            let c = s.model_curves();
+            let Some(c) = model_curves(ui, s) else {
+                return;
+            };
             row(
                 ui,
                 "reduced",
@@ -156,6 +162,18 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
                     ("M(q) at rest (N·m)", "q (deg)", &c.moment_n_m, Some(x)),
                 ],
             );
+        }
+    }
+}
+
+/// The model curves to plot: the current ones, or while edits come (a slider being
+/// dragged) those from before them, until a frame without an edit makes the new ones.
+fn model_curves<'s>(ui: &mut egui::Ui, s: &'s Session) -> Option<&'s ModelCurves> {
+    match s.model_curves_shown() {
+        Shown::Current(c) | Shown::Outdated(c) => Some(c),
+        Shown::Pending => {
+            ui.weak("computing…");
+            None
         }
     }
 }
