@@ -50,8 +50,16 @@ const shot = async (page) => decode(await page.locator('#linkage_canvas').screen
 const hash = (page) => page.evaluate(() => location.hash);
 const centre = (c, fx = 0.5) => [c.rect[0] + fx * (c.rect[2] - c.rect[0]), 0.5 * (c.rect[1] + c.rect[3])];
 
-/** The first control of `kind` (and label, if given), scrolled into view. */
+/** Waits (up to 20 s) until no dynamic run is being computed: the accuracy panel's
+ * lines change when one ends, which scrolls the panel under a control found before. */
+async function runDone(page) {
+  for (let i = 0; i < 200 && (await state(page)).run_pending; i++) await page.waitForTimeout(100);
+}
+
+/** The first control of `kind` (and label, if given), scrolled into view, once the
+ * layout has stopped changing with a dynamic run. */
 async function find(page, kind, label) {
+  await runDone(page);
   for (let i = 0; i < 30; i++) {
     const c = (await state(page)).controls.entries.find((e) => e.kind === kind && (label === undefined || e.label === label));
     if (!c || c.visible) return c;

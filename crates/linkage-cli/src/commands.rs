@@ -276,6 +276,7 @@ fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<String, String
                 })
                 .collect();
             let polygons = linkage::polygon::polygons(&k, &s);
+            let centres = instant_centres_json(m, &s);
             json_text(&json!({
                 "scene": m.name,
                 "solver_path": k.path().label(),
@@ -287,6 +288,7 @@ fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<String, String
                 "points": points,
                 "links": links,
                 "polygons": polygons,
+                "instant_centres": centres,
                 "notes": m.notes,
             }))
         }
@@ -348,4 +350,36 @@ fn synth(what: SynthCommand) -> Result<String, String> {
             scene.to_ron().map(|t| t + "\n").map_err(|e| e.to_string())
         }
     }
+}
+
+/// The instant centres at `s`, by link names: `{"links": [a, b], "at": [x, y]}` or
+/// `"at_infinity": [dx, dy]` (unit direction), and how each was found (`"pin B"`,
+/// `"slide block/ground"`, `"Kennedy via crank, rod"`, or from the velocities where
+/// Kennedy's lines coincide); pairs that move as one at this pose under `"unresolved"`.
+fn instant_centres_json(m: &Mechanism, s: &Solution) -> Value {
+    use linkage::instant_centres::{Centre, FoundBy, instant_centres};
+    let ic = instant_centres(m, s);
+    let names = |[a, b]: [usize; 2]| json!([m.links[a].name, m.links[b].name]);
+    let centres: Vec<Value> = ic
+        .centres
+        .iter()
+        .map(|c| {
+            let found_by = match c.found_by {
+                FoundBy::Pin(p) => format!("pin {}", m.points[p].name),
+                FoundBy::Slide(j) => format!("slide {}", m.sliders[j].name),
+                FoundBy::Kennedy([k, l]) => {
+                    format!("Kennedy via {}, {}", m.links[k].name, m.links[l].name)
+                }
+                FoundBy::Velocities => "velocities (Kennedy's lines coincide here)".into(),
+            };
+            match c.centre {
+                Centre::At(p) => json!({"links": names(c.links), "at": p, "found_by": found_by}),
+                Centre::AtInfinity(d) => {
+                    json!({"links": names(c.links), "at_infinity": d, "found_by": found_by})
+                }
+            }
+        })
+        .collect();
+    let unresolved: Vec<Value> = ic.unresolved.iter().map(|&p| names(p)).collect();
+    json!({"centres": centres, "unresolved": unresolved})
 }

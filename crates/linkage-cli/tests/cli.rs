@@ -52,6 +52,86 @@ fn sweep_csv_has_the_contract_header_and_finite_rows() {
 }
 
 #[test]
+fn at_json_lists_every_instant_centre_with_how_it_was_found() {
+    let (ok, out, err) = linkage(&[
+        "at",
+        &scene("slider_crank.ron"),
+        "--input-deg",
+        "90",
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    let ic = &v["instant_centres"];
+    let centres = ic["centres"].as_array().expect("centres");
+    // Four links (ground, crank, rod, slider): six centres, none unresolved.
+    assert_eq!(centres.len(), 6, "{ic}");
+    assert_eq!(ic["unresolved"].as_array().map(Vec::len), Some(0));
+    let find = |a: &str, b: &str| {
+        centres
+            .iter()
+            .find(|c| {
+                c["links"] == serde_json::json!([a, b]) || c["links"] == serde_json::json!([b, a])
+            })
+            .unwrap_or_else(|| panic!("no centre {a}-{b} in {ic}"))
+    };
+    // The block slides on the ground: its centre is at infinity, across the guide (y).
+    let slide = find("ground", "slider");
+    assert_eq!(
+        slide["at_infinity"][0].as_f64().map(f64::abs),
+        Some(0.0),
+        "{slide}"
+    );
+    // At 90 deg the crank pin moves along the guide as the block does: the rod
+    // translates, and its centre with the ground is at infinity, across the guide
+    // (the lines A-B and through C across the guide are parallel).
+    let rod = find("ground", "rod");
+    let d = rod["at_infinity"]
+        .as_array()
+        .unwrap_or_else(|| panic!("{rod}"));
+    assert!(d[0].as_f64().expect("x").abs() < 1e-12, "{rod}");
+    assert!(
+        rod["found_by"]
+            .as_str()
+            .expect("text")
+            .starts_with("Kennedy via "),
+        "{rod}"
+    );
+    // Elsewhere it is a point: at 60 deg on the crank line, past B.
+    let (ok, out, err) = linkage(&[
+        "at",
+        &scene("slider_crank.ron"),
+        "--input-deg",
+        "60",
+        "--format",
+        "json",
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    let rod = v["instant_centres"]["centres"]
+        .as_array()
+        .expect("centres")
+        .iter()
+        .find(|c| c["links"] == serde_json::json!(["ground", "rod"]))
+        .expect("P ground-rod")
+        .clone();
+    let at: Vec<f64> = rod["at"]
+        .as_array()
+        .expect("a point")
+        .iter()
+        .filter_map(|x| x.as_f64())
+        .collect();
+    let (c60, s60) = (60f64.to_radians().cos(), 60f64.to_radians().sin());
+    let x_c = 0.05 * c60 + (0.2f64.powi(2) - (0.05 * s60).powi(2)).sqrt();
+    // On the crank line (y = x tan 60°) at x = x_c (the line through C across the guide).
+    assert!(
+        (at[0] - x_c).abs() < 1e-12 && (at[1] - x_c * s60 / c60).abs() < 1e-12,
+        "{at:?}"
+    );
+}
+
+#[test]
 fn at_json_adds_polygon_equations() {
     let (ok, out, err) = linkage(&[
         "at",

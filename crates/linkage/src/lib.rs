@@ -6,7 +6,8 @@
 //! on the loop-closure constraints ([`newton`]). The closed form also solves four
 //! inputs at once in SIMD lanes ([`lanes`]). [`analysis`] finds assembly ranges,
 //! limit positions, strokes, time ratio, Grashof class, transmission angle and
-//! toggles; [`polygon`] gives the velocity and acceleration polygon terms;
+//! toggles; [`polygon`] gives the velocity and acceleration polygon terms and
+//! [`instant_centres`] the instant centres by Kennedy's theorem;
 //! [`synthesis`] designs crank-rockers from swing and time ratio.
 
 #![warn(missing_docs)]
@@ -16,6 +17,7 @@ pub mod branch_points;
 pub mod closed_form;
 pub mod dynamics;
 pub mod error;
+pub mod instant_centres;
 pub mod kinematics;
 pub mod kinetostatics;
 pub mod lanes;
