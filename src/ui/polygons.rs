@@ -4,7 +4,7 @@
 //! scale bar, and beside them the vector-equation table.
 
 use eframe::egui::{self, Color32, Pos2, Stroke, Vec2};
-use linkage::polygon::{Term, VectorEquation};
+use linkage::polygon::{Component, Quantity, Symbol, Term, VectorEquation};
 
 use crate::app::AppState;
 
@@ -57,33 +57,36 @@ impl Diagram {
     }
 }
 
-fn style_of(symbol: &str) -> Style {
-    match symbol.split_once('^').map(|(_, s)| s) {
-        Some("n") => Style::Normal,
-        Some("t") => Style::Tangential,
-        Some("k") => Style::Coriolis,
-        Some("r") => Style::Sliding,
-        _ => Style::Relative,
+fn style_of(symbol: &Symbol) -> Style {
+    match symbol.component {
+        Component::Whole => Style::Relative,
+        Component::Normal => Style::Normal,
+        Component::Tangential => Style::Tangential,
+        Component::Coriolis => Style::Coriolis,
+        Component::Sliding => Style::Sliding,
     }
 }
 
-/// Absolute terms name one joint (`v_B`, `a_C`); relative ones two (`v_CB`), and
-/// components carry a `^` suffix.
-fn is_absolute(symbol: &str, joints: &[(String, [f64; 2])]) -> bool {
-    !symbol.contains('^')
-        && symbol
-            .split_once('_')
-            .is_some_and(|(_, p)| joints.iter().any(|(name, _)| name == p))
+/// An absolute term (`v_B`, `a_C`: a joint's whole motion relative to the frame) is
+/// drawn from the pole with the joints' vectors, not again in a chain.
+fn is_absolute(symbol: &Symbol, joints: &[(String, [f64; 2])]) -> bool {
+    symbol.relative_to.is_none()
+        && symbol.component == Component::Whole
+        && joints.iter().any(|(name, _)| *name == symbol.point)
 }
 
 /// The polygon of `kind` (`velocity` or `acceleration`) from the session's equations
 /// and the absolute vectors of the joints.
 pub fn diagram(
     equations: &[VectorEquation],
-    kind: &str,
+    kind: Quantity,
     absolute: &[(String, [f64; 2])],
 ) -> Diagram {
-    let prime = if kind == "acceleration" { "'" } else { "" };
+    let prime = if kind == Quantity::Acceleration {
+        "'"
+    } else {
+        ""
+    };
     let mut segments: Vec<Segment> = absolute
         .iter()
         .filter(|(_, v)| v[0].is_finite() && v[1].is_finite())
@@ -115,7 +118,7 @@ fn chain(terms: &[Term], joints: &[(String, [f64; 2])], out: &mut Vec<Segment>) 
                 from: at,
                 to: next,
                 style: style_of(&t.symbol),
-                label: t.symbol.clone(),
+                label: t.symbol.to_string(),
             });
         }
         at = next;
@@ -142,8 +145,13 @@ pub fn panel(ui: &mut egui::Ui, st: &AppState) {
         [a.x, a.y]
     });
     for (title, kind, abs, unit) in [
-        ("Velocity polygon", "velocity", v_abs, "m/s"),
-        ("Acceleration polygon", "acceleration", a_abs, "m/s²"),
+        ("Velocity polygon", Quantity::Velocity, v_abs, "m/s"),
+        (
+            "Acceleration polygon",
+            Quantity::Acceleration,
+            a_abs,
+            "m/s²",
+        ),
     ] {
         ui.strong(title);
         let d = diagram(s.polygons(), kind, &abs);
@@ -151,7 +159,11 @@ pub fn panel(ui: &mut egui::Ui, st: &AppState) {
             ui,
             &d,
             unit,
-            if kind == "acceleration" { "p'" } else { "p" },
+            if kind == Quantity::Acceleration {
+                "p'"
+            } else {
+                "p"
+            },
         );
         egui::CollapsingHeader::new(format!("{title}: vector equations"))
             .default_open(false)
@@ -279,7 +291,7 @@ fn fmt_value(v: f64) -> String {
     }
 }
 
-fn table(ui: &mut egui::Ui, equations: &[VectorEquation], kind: &str) {
+fn table(ui: &mut egui::Ui, equations: &[VectorEquation], kind: Quantity) {
     for (i, eq) in equations.iter().filter(|e| e.kind == kind).enumerate() {
         ui.label(format!("{}: {}", eq.group, eq.equation));
         egui::Grid::new((kind, i)).striped(true).show(ui, |ui| {
@@ -289,7 +301,7 @@ fn table(ui: &mut egui::Ui, equations: &[VectorEquation], kind: &str) {
             ui.strong("known");
             ui.end_row();
             for t in eq.lhs.iter().chain(&eq.rhs) {
-                ui.label(&t.symbol);
+                ui.label(t.symbol.to_string());
                 ui.label(format!("{:.4}", t.magnitude));
                 ui.label(format!(
                     "{:.2}° ({})",
@@ -319,7 +331,7 @@ mod tests {
         let s = Session::open_builtin("slider_crank").expect("opens");
         let eqs = s.polygons();
         let v = s.pose().points[s.mechanism().point_index("C").expect("C")].velocity;
-        let d = diagram(eqs, "velocity", &[("C".into(), [v.x, v.y])]);
+        let d = diagram(eqs, Quantity::Velocity, &[("C".into(), [v.x, v.y])]);
         let rel = d
             .segments
             .iter()
@@ -332,7 +344,7 @@ mod tests {
     #[test]
     fn quick_return_acceleration_polygon_shows_coriolis() {
         let s = Session::open_builtin("quick_return").expect("opens");
-        let d = diagram(s.polygons(), "acceleration", &[]);
+        let d = diagram(s.polygons(), Quantity::Acceleration, &[]);
         assert!(
             d.segments.iter().any(|g| g.style == Style::Coriolis),
             "{d:?}"

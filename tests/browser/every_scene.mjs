@@ -57,18 +57,28 @@ async function runDone(page) {
 }
 
 /** The first control of `kind` (and label, if given), scrolled into view, once the
- * layout has stopped changing with a dynamic run. */
+ * layout has stopped changing: after a dynamic run, and with its place the same in
+ * two frames 100 ms apart (egui's scroll is animated, and a panel's lines can change
+ * under a control between the look and the click). */
 async function find(page, kind, label) {
   await runDone(page);
-  for (let i = 0; i < 30; i++) {
+  let seen;
+  for (let i = 0; i < 40; i++) {
     const c = (await state(page)).controls.entries.find((e) => e.kind === kind && (label === undefined || e.label === label));
-    if (!c || c.visible) return c;
+    if (!c) return undefined;
+    if (c.visible) {
+      if (seen && seen.rect.every((v, k) => Math.abs(v - c.rect[k]) < 0.5)) return c;
+      seen = c;
+      await page.waitForTimeout(100);
+      continue;
+    }
+    seen = undefined;
     // Scroll the control panel towards it.
     await page.mouse.move(120, 500);
     await page.mouse.wheel(0, c.rect[1] > 500 ? 150 : -150);
     await page.waitForTimeout(150);
   }
-  return undefined;
+  return seen;
 }
 
 /** Clicks at (x, y) and returns the ms from the click to the next frame drawn after it. */

@@ -4,18 +4,119 @@
 //! whether its magnitude and direction are known before solving the group, and the
 //! direction in words, as the textbooks tabulate them.
 
-use serde::Serialize;
+use std::fmt;
+
+use serde::{Serialize, Serializer};
 
 use crate::closed_form::Group;
 use crate::kinematics::Kinematics;
 use crate::model::Mechanism;
 use crate::motion::{PointMotion, Solution, Vec2, perp};
 
+/// Velocity or acceleration.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Quantity {
+    /// v.
+    Velocity,
+    /// a.
+    Acceleration,
+}
+
+/// Which part of a point's (relative) motion a term is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+pub enum Component {
+    /// The whole vector.
+    Whole,
+    /// The normal (centripetal) part, towards the centre of rotation: ^n.
+    Normal,
+    /// The tangential part, at right angles to the radius: ^t.
+    Tangential,
+    /// The Coriolis part, 2 ω × v_rel of a point riding a turning guide: ^k.
+    Coriolis,
+    /// The sliding part along a moving guide: ^r.
+    Sliding,
+}
+
+/// A term's symbol as data: `v_CB` is the velocity of C relative to B, whole;
+/// `a_C^n` the normal acceleration of C (relative to the frame). Text is made where
+/// it is shown ([`fmt::Display`] gives the ASCII form `v_CB`, `a_C^n`).
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Symbol {
+    /// Velocity or acceleration.
+    pub quantity: Quantity,
+    /// The point (its name; `C'` is the point of a guide under the slider's C).
+    pub point: String,
+    /// The point it is relative to; `None` relative to the frame.
+    pub relative_to: Option<String>,
+    /// Which part.
+    pub component: Component,
+}
+
+impl Symbol {
+    fn new(accel: bool, point: &str, relative_to: Option<&str>, component: Component) -> Self {
+        Self {
+            quantity: if accel {
+                Quantity::Acceleration
+            } else {
+                Quantity::Velocity
+            },
+            point: point.to_string(),
+            relative_to: relative_to.map(str::to_string),
+            component,
+        }
+    }
+
+    /// The subscript: the point, then the one it is relative to (`CB`).
+    pub fn subscript(&self) -> String {
+        format!(
+            "{}{}",
+            self.point,
+            self.relative_to.as_deref().unwrap_or("")
+        )
+    }
+
+    /// The superscript letter of the component (`n`, `t`, `k`, `r`), if any.
+    pub fn superscript(&self) -> Option<char> {
+        match self.component {
+            Component::Whole => None,
+            Component::Normal => Some('n'),
+            Component::Tangential => Some('t'),
+            Component::Coriolis => Some('k'),
+            Component::Sliding => Some('r'),
+        }
+    }
+
+    /// The letter of the quantity (`v`, `a`).
+    pub fn letter(&self) -> char {
+        match self.quantity {
+            Quantity::Velocity => 'v',
+            Quantity::Acceleration => 'a',
+        }
+    }
+}
+
+impl fmt::Display for Symbol {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}_{}", self.letter(), self.subscript())?;
+        match self.superscript() {
+            Some(c) => write!(f, "^{c}"),
+            None => Ok(()),
+        }
+    }
+}
+
+/// In JSON a symbol is its ASCII text (`v_CB`), as scripts reading `linkage at` expect.
+fn symbol_text<S: Serializer>(symbol: &Symbol, out: S) -> Result<S::Ok, S::Error> {
+    out.collect_str(symbol)
+}
+
 /// One vector of a polygon equation.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Term {
-    /// Symbol, e.g. `v_CB` or `a_C^t` (`^k` marks Coriolis, `^r` sliding).
-    pub symbol: String,
+    /// Its symbol (in JSON as text: `v_CB`, `a_C^t`; `^k` Coriolis, `^r` sliding).
+    #[serde(serialize_with = "symbol_text")]
+    pub symbol: Symbol,
     /// The vector, m/s or m/s².
     pub vector: [f64; 2],
     /// Its length.
@@ -33,8 +134,8 @@ pub struct Term {
 /// One vector equation: sum of `lhs` = sum of `rhs`.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct VectorEquation {
-    /// `velocity` or `acceleration`.
-    pub kind: &'static str,
+    /// Velocity or acceleration (in JSON `velocity`, `acceleration`).
+    pub kind: Quantity,
     /// The group it solves.
     pub group: String,
     /// The equation in symbols.
@@ -58,7 +159,7 @@ impl VectorEquation {
 }
 
 fn term(
-    symbol: String,
+    symbol: Symbol,
     v: Vec2,
     magnitude_known: bool,
     direction_known: bool,
@@ -120,14 +221,14 @@ fn known_point(
             if accel {
                 vec![
                     term(
-                        format!("a_{name}^n"),
+                        Symbol::new(true, name, None, Component::Normal),
                         -r * l.omega_rad_s.powi(2),
                         true,
                         true,
                         format!("{name} to {o}"),
                     ),
                     term(
-                        format!("a_{name}^t"),
+                        Symbol::new(true, name, None, Component::Tangential),
                         perp(&r) * l.alpha_rad_s2,
                         true,
                         true,
@@ -136,7 +237,7 @@ fn known_point(
                 ]
             } else {
                 vec![term(
-                    format!("v_{name}"),
+                    Symbol::new(false, name, None, Component::Whole),
                     p.velocity,
                     true,
                     true,
@@ -147,7 +248,7 @@ fn known_point(
         None => {
             let v = if accel { p.acceleration } else { p.velocity };
             vec![term(
-                format!("{}_{name}", if accel { "a" } else { "v" }),
+                Symbol::new(accel, name, None, Component::Whole),
                 v,
                 true,
                 true,
@@ -168,22 +269,18 @@ fn relative(
     a_fixed: bool,
     accel: bool,
 ) -> Vec<Term> {
-    let sym = if a_fixed {
-        m_name.to_string()
-    } else {
-        format!("{m_name}{a_name}")
-    };
+    let about = (!a_fixed).then_some(a_name);
     if accel {
         vec![
             term(
-                format!("a_{sym}^n"),
+                Symbol::new(true, m_name, about, Component::Normal),
                 -r * omega * omega,
                 true,
                 true,
                 format!("{m_name} to {a_name}"),
             ),
             term(
-                format!("a_{sym}^t"),
+                Symbol::new(true, m_name, about, Component::Tangential),
                 perp(&r) * alpha,
                 false,
                 true,
@@ -192,7 +289,7 @@ fn relative(
         ]
     } else {
         vec![term(
-            format!("v_{sym}"),
+            Symbol::new(false, m_name, about, Component::Whole),
             perp(&r) * omega,
             false,
             true,
@@ -217,36 +314,32 @@ fn riding(
     let coriolis = perp(&v_rel) * (2.0 * g.omega_rad_s);
     let fixed = guide == m.ground;
     let prime = format!("{m_name}'");
-    let rel = if fixed {
-        m_name.to_string()
-    } else {
-        format!("{m_name}{prime}")
-    };
+    let about = (!fixed).then_some(prime.as_str());
     let mut t = Vec::new();
     if accel {
         if !fixed {
             t.push(term(
-                format!("a_{prime}"),
+                Symbol::new(true, &prime, None, Component::Whole),
                 on.acceleration,
                 true,
                 true,
                 format!("known ({} point at {m_name})", m.links[guide].name),
             ));
             t.push(term(
-                format!("a_{rel}^k"),
+                Symbol::new(true, m_name, about, Component::Coriolis),
                 coriolis,
                 true,
                 true,
                 "Coriolis: 2 omega_guide x v_rel".into(),
             ));
         }
-        let sym = if fixed {
-            format!("a_{rel}")
+        let component = if fixed {
+            Component::Whole
         } else {
-            format!("a_{rel}^r")
+            Component::Sliding
         };
         t.push(term(
-            sym,
+            Symbol::new(true, m_name, about, component),
             pm.acceleration - on.acceleration - coriolis,
             false,
             true,
@@ -255,7 +348,7 @@ fn riding(
     } else {
         if !fixed {
             t.push(term(
-                format!("v_{prime}"),
+                Symbol::new(false, &prime, None, Component::Whole),
                 on.velocity,
                 true,
                 true,
@@ -263,7 +356,7 @@ fn riding(
             ));
         }
         t.push(term(
-            format!("v_{rel}"),
+            Symbol::new(false, m_name, about, Component::Whole),
             v_rel,
             false,
             true,
@@ -273,13 +366,13 @@ fn riding(
     t
 }
 
-fn equation(kind: &'static str, group: String, lhs: Vec<Term>, rhs: Vec<Term>) -> VectorEquation {
+fn equation(kind: Quantity, group: String, lhs: Vec<Term>, rhs: Vec<Term>) -> VectorEquation {
     let side = |t: &[Term]| {
         if t.is_empty() {
             "0".to_string()
         } else {
             t.iter()
-                .map(|x| x.symbol.as_str())
+                .map(|x| x.symbol.to_string())
                 .collect::<Vec<_>>()
                 .join(" + ")
         }
@@ -303,7 +396,11 @@ pub fn polygons(k: &Kinematics, s: &Solution) -> Vec<VectorEquation> {
     for (gi, group) in cf.groups.iter().enumerate() {
         let gname = k.group_name(gi);
         for accel in [false, true] {
-            let kind = if accel { "acceleration" } else { "velocity" };
+            let kind = if accel {
+                Quantity::Acceleration
+            } else {
+                Quantity::Velocity
+            };
             let (lhs, rhs) = match group {
                 Group::Rrr(d) => {
                     let (a, c) = (d.a.link, d.c.link);
@@ -377,7 +474,7 @@ pub fn polygons(k: &Kinematics, s: &Solution) -> Vec<VectorEquation> {
                     rhs.extend(
                         slide
                             .into_iter()
-                            .filter(|t| !t.symbol.ends_with(&format!("_{prime}"))),
+                            .filter(|t| t.symbol.point != prime || t.symbol.relative_to.is_some()),
                     );
                     (lhs, rhs)
                 }

@@ -4,6 +4,7 @@
 mod common;
 
 use common::{SCENES, cycle, kinematics, motion_scales, wrap};
+use linkage::polygon::{Component, Quantity};
 use linkage::scene::SolverPath;
 use linkage::{Kinematics, Solution};
 
@@ -158,12 +159,12 @@ fn polygon_equations_close_and_show_coriolis() {
     let eqs = linkage::polygon::polygons(&k, &s);
     let acc = eqs
         .iter()
-        .find(|e| e.kind == "acceleration" && e.group.starts_with("RPR"))
+        .find(|e| e.kind == Quantity::Acceleration && e.group.starts_with("RPR"))
         .expect("RPR accel");
     let cor = acc
         .rhs
         .iter()
-        .find(|t| t.symbol.ends_with("^k"))
+        .find(|t| t.symbol.component == Component::Coriolis)
         .expect("Coriolis term");
     let m = k.mechanism();
     let (rocker, b) = (
