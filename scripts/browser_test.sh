@@ -12,6 +12,9 @@ if ! command -v chromium >/dev/null; then
 fi
 (cd tests/browser && npm ci --no-audit --no-fund)
 bash scripts/build_web.sh
+# The CLI the browser test compares the app's diagram download with.
+cargo build -q -p linkage-cli
+export LINKAGE_CLI="$PWD/${CARGO_TARGET_DIR:-target}/debug/linkage"
 for wasm in dist/*/linkage-lab_bg.wasm; do
     gzip -9 -c "$wasm" | wc -c | awk -v w="$wasm" -v raw="$(stat -c %s "$wasm")" \
         '{printf "%s: %.2f MB raw, %.2f MB gzipped\n", w, raw/1e6, $1/1e6}'
@@ -34,7 +37,8 @@ for build in webgl2 webgpu; do
     echo "== $build build"
     export LINKAGE_BUILD=$build
     node tests/browser/browser_test.mjs "http://127.0.0.1:$port/" || status=1
-    # Every scene file, through the picker and a URL fragment, every kind of control.
+    # Every scene file, every kind of control; the picker and the URL fragment in
+    # turn, so that each scene opens both ways over the two builds.
     node tests/browser/every_scene.mjs "http://127.0.0.1:$port/" || status=1
 done
 exit $status

@@ -101,6 +101,12 @@ pub struct AppState {
     pub edit_timing: EditTiming,
     /// Counts scenes opened (a frame that opens one is an edit frame).
     pub opened: u64,
+    /// The polygon term under the pointer last frame (in a figure or its table row).
+    pub polygon_hover: Option<linkage::polygon::Symbol>,
+    /// Whether the polygon pane takes half the window.
+    pub polygons_wide: bool,
+    /// The equation being constructed step by step, and the step.
+    pub construction: ui::construction::ConstructionView,
 }
 
 impl AppState {
@@ -122,6 +128,9 @@ impl AppState {
             controls: ui::control_map::ControlMap::default(),
             edit_timing: EditTiming::default(),
             opened: 0,
+            polygon_hover: None,
+            polygons_wide: false,
+            construction: Default::default(),
         }
     }
 
@@ -264,11 +273,17 @@ impl eframe::App for LinkageApp {
                     ui::accuracy::panel(ui, &mut self.state);
                 });
             });
-        egui::Panel::right("polygons")
-            .default_size(360.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| ui::polygons::panel(ui, &self.state));
-            });
+        let polygons = egui::Panel::right("polygons").default_size(360.0);
+        // Enlarged, the polygons share the room beside the controls equally with the
+        // mechanism.
+        let polygons = if self.state.polygons_wide {
+            polygons.exact_size(0.5 * ui.available_width())
+        } else {
+            polygons
+        };
+        polygons.show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| ui::polygons::panel(ui, &mut self.state));
+        });
         egui::Panel::bottom("plots")
             .default_size(230.0)
             .show(ui, |ui| ui::plots::panel(ui, &mut self.state));
@@ -292,7 +307,7 @@ impl eframe::App for LinkageApp {
         #[cfg(target_arch = "wasm32")]
         {
             self.url.update(&self.state.session);
-            crate::web::publish_controls(&self.state);
+            crate::web::publish_controls(&self.state, self.frames_drawn + 1);
         }
         self.frames_drawn += 1;
         #[cfg(target_arch = "wasm32")]

@@ -72,7 +72,7 @@ impl PathChooser for SystemDialog {
         // on a helper thread so that the window keeps drawing while the dialog is open.
         let pending: PendingDialog = match request.action {
             FileAction::Open => Box::pin(dialog.pick_file()),
-            FileAction::SaveScene | FileAction::ExportCsv => {
+            FileAction::SaveScene | FileAction::ExportCsv | FileAction::ExportSheet => {
                 Box::pin(dialog.set_file_name(&request.suggested_name).save_file())
             }
         };

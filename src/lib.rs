@@ -7,7 +7,7 @@ mod app;
 pub mod catalog;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod file_dialog;
-mod fonts;
+pub mod fonts;
 pub mod render;
 pub mod session;
 pub mod ui;
@@ -21,7 +21,7 @@ pub fn controls_json() -> String {
     web::controls_json()
 }
 
-pub use app::LinkageApp;
+pub use app::{AppState, LinkageApp};
 
 /// How the desktop app starts (from its command line).
 #[derive(Clone, Debug, Default, PartialEq)]

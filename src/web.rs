@@ -16,6 +16,9 @@ thread_local! {
 /// What the page's test hook returns: the controls on screen and the session's state.
 #[derive(serde::Serialize)]
 struct Published<'a> {
+    /// Which frame this is (the first is 1): a control's place is settled only when
+    /// two different frames show it in the same place.
+    frame: u64,
     controls: &'a crate::ui::control_map::ControlMap,
     /// What the last edit could not do (a refusal), if anything.
     message: Option<String>,
@@ -30,9 +33,10 @@ struct Published<'a> {
 }
 
 /// Keeps this frame's controls for [`controls_json`].
-pub fn publish_controls(st: &crate::app::AppState) {
+pub fn publish_controls(st: &crate::app::AppState, frame: u64) {
     let pose = st.session.pose();
     let published = Published {
+        frame,
         controls: &st.controls,
         message: st.session.message(),
         edit_timing: st.edit_timing,

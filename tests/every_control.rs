@@ -1,6 +1,7 @@
 //! Every scene in `assets/scenes` (read from the directory, not listed here), every
 //! control it offers, driven as a user would: each slider to its minimum, its maximum
-//! and back, each branch toggle flipped and flipped back, each integrator chosen.
+//! and back, each branch toggle flipped and flipped back, each integrator chosen, the
+//! instant centres shown and hidden, the polygon pane enlarged and narrowed.
 //! After every step: no panic, nothing non-finite in the pose, the polygon tables or
 //! the plotted curves, and either the edit took or it was refused with a message and
 //! the last valid pose kept.
@@ -235,6 +236,18 @@ fn every_scene_every_control_to_its_extremes_and_back() {
                     &format!("{scene}: {}", method.label()),
                 );
             }
+        }
+        // The instant centres shown and hidden, the polygon pane enlarged and back.
+        for on in [true, false] {
+            h.get_by_role_and_label(Role::CheckBox, "instant centres")
+                .click();
+            settle(&mut h);
+            assert_eq!(h.state().state.layers.centres, on, "{scene}");
+        }
+        for (label, wide) in [("enlarge", true), ("narrower", false)] {
+            h.get_by_role_and_label(Role::Button, label).click();
+            settle(&mut h);
+            assert_eq!(h.state().state.polygons_wide, wide, "{scene}");
         }
     }
     // Slider extremes reach unassemblable lengths in some scenes: both outcomes occur.

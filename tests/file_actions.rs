@@ -194,3 +194,65 @@ fn an_unreadable_file_is_named_in_the_message_and_the_scene_stays() {
     assert_eq!(h.state().state.session.scene(), &before);
     std::fs::remove_dir_all(dir).expect("clean up");
 }
+
+/// The sheet `linkage diagram SCENE --input-deg X` writes, built here the CLI's way:
+/// from the scene file, solved afresh at the input.
+fn sheet_as_the_cli_draws_it(key: &str, input_rad: f64, centres: bool) -> String {
+    let path = format!("{}/assets/scenes/{key}.ron", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(path).expect("a shipped scene");
+    let m = linkage::Mechanism::from_ron(&text).expect("valid");
+    let mut k = linkage::Kinematics::new(m).expect("kinematics");
+    let s = k.solve(input_rad).expect("solves");
+    let eqs = linkage::polygon::polygons(&k, &s);
+    let found = linkage::instant_centres::instant_centres(k.mechanism(), &s);
+    let position = linkage_diagram::svg::Position {
+        mechanism: k.mechanism(),
+        solution: &s,
+        equations: &eqs,
+        centres: Some(&found),
+    };
+    let parts = linkage_diagram::svg::Parts {
+        centres,
+        ..Default::default()
+    };
+    linkage_diagram::svg::sheet(&position, parts)
+}
+
+#[test]
+fn export_diagram_writes_the_sheet_the_cli_draws() {
+    let dir = scratch("sheet");
+    let path = dir.join("sheet.svg");
+    let (mut h, dialog) = harness_answering(PathAnswer::Chosen(path.clone()));
+    click(&mut h, "Export diagram…");
+    let asked = dialog.asked.lock().expect("not poisoned").clone();
+    assert_eq!(asked[0].action, FileAction::ExportSheet);
+    let input = h.state().state.session.input_rad();
+    assert_eq!(
+        asked[0].suggested_name,
+        format!("die_cutter_at_{:.0}deg.svg", input.to_degrees())
+    );
+    let text = std::fs::read_to_string(&path).expect("the sheet was written");
+    assert!(
+        text.starts_with("<?xml") && text.contains("<svg"),
+        "{}",
+        &text[..80]
+    );
+    assert_eq!(text, sheet_as_the_cli_draws_it("die_cutter", input, false));
+    std::fs::remove_dir_all(dir).expect("clean up");
+}
+
+#[test]
+fn every_scene_exports_the_sheet_the_cli_draws_with_instant_centres() {
+    for scene in linkage_lab::catalog::BUILTIN_SCENES {
+        let mut s = linkage_lab::session::Session::open_builtin(scene.key).expect("opens");
+        let [lo, hi] = s.input_range_deg();
+        s.set_input_deg(lo + 0.37 * (hi - lo));
+        assert!(s.message().is_none(), "{}: {:?}", scene.key, s.message());
+        assert_eq!(
+            s.sheet_svg(true),
+            sheet_as_the_cli_draws_it(scene.key, s.input_rad(), true),
+            "{}",
+            scene.key
+        );
+    }
+}

@@ -33,6 +33,8 @@ pub struct Layers {
     pub accelerations: bool,
     /// Coupler traces.
     pub traces: bool,
+    /// Instant centres and their circle diagram.
+    pub centres: bool,
 }
 
 impl Default for Layers {
@@ -41,6 +43,7 @@ impl Default for Layers {
             velocities: true,
             accelerations: false,
             traces: true,
+            centres: false,
         }
     }
 }

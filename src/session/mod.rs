@@ -539,6 +539,25 @@ impl Session {
         Ok(out)
     }
 
+    /// The sheet of the current position (pose, polygons, tables; instant centres if
+    /// `centres`) as SVG: what `linkage diagram` writes for the same scene and input.
+    pub fn sheet_svg(&self, centres: bool) -> String {
+        let m = self.mechanism();
+        let pose = self.pose();
+        let found = linkage::instant_centres::instant_centres(m, pose);
+        let position = linkage_diagram::svg::Position {
+            mechanism: m,
+            solution: pose,
+            equations: self.polygons(),
+            centres: Some(&found),
+        };
+        let parts = linkage_diagram::svg::Parts {
+            centres,
+            ..Default::default()
+        };
+        linkage_diagram::svg::sheet(&position, parts)
+    }
+
     /// Starts computing the dynamic run of a dynamic scene off the frame; the
     /// previous run, finished or not, is dropped.
     fn start_run(&mut self) {

@@ -19,14 +19,7 @@ pub struct Topology {
 impl Topology {
     /// The topology of `m`.
     pub fn of(m: &Mechanism) -> Self {
-        let mut joint_points: Vec<usize> = m
-            .revolutes
-            .iter()
-            .map(|r| r.point)
-            .chain(m.sliders.iter().map(|sl| sl.point))
-            .collect();
-        joint_points.sort_unstable();
-        joint_points.dedup();
+        let joint_points = m.joint_points();
         let link_joints: Vec<Vec<usize>> = (0..m.links.len())
             .map(|l| {
                 m.revolutes

@@ -33,6 +33,12 @@ pub enum ControlKind {
     ScenePicker,
     /// One scene in the open picker.
     SceneItem,
+    /// An overlay checkbox of the mechanism view (vectors, traces, instant centres).
+    Layer,
+    /// A file button of the top bar (open, save, export).
+    FileButton,
+    /// The polygon pane's enlarge / narrower button.
+    PolygonLayout,
 }
 
 /// One control as drawn this frame.

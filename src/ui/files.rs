@@ -16,6 +16,8 @@ pub enum FileAction {
     SaveScene,
     /// Write the sweep as CSV.
     ExportCsv,
+    /// Write the sheet of the current position (pose, polygons, tables) as SVG.
+    ExportSheet,
 }
 
 impl FileAction {
@@ -25,6 +27,7 @@ impl FileAction {
             Self::Open => "Open scene file",
             Self::SaveScene => "Save scene file",
             Self::ExportCsv => "Export sweep CSV",
+            Self::ExportSheet => "Export diagram sheet (SVG)",
         }
     }
 
@@ -33,6 +36,7 @@ impl FileAction {
         match self {
             Self::Open | Self::SaveScene => ("Linkage scene", "ron"),
             Self::ExportCsv => ("CSV table", "csv"),
+            Self::ExportSheet => ("SVG drawing", "svg"),
         }
     }
 }
@@ -84,8 +88,16 @@ pub fn buttons(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
         ("Open scene…", FileAction::Open),
         ("Save scene…", FileAction::SaveScene),
         ("Export CSV…", FileAction::ExportCsv),
+        ("Export diagram…", FileAction::ExportSheet),
     ] {
-        if ui.button(label).clicked() {
+        let button = ui.button(label);
+        st.controls.note(
+            ui,
+            crate::ui::control_map::ControlKind::FileButton,
+            label,
+            &button,
+        );
+        if button.clicked() {
             start(ui.ctx(), st, action, frame);
         }
     }
@@ -111,7 +123,7 @@ fn take_answers(st: &mut AppState) {
             PathAnswer::Chosen(path) => {
                 let path = match action {
                     FileAction::Open => path,
-                    FileAction::SaveScene | FileAction::ExportCsv => {
+                    FileAction::SaveScene | FileAction::ExportCsv | FileAction::ExportSheet => {
                         crate::file_dialog::with_extension(path, action.file_type().1)
                     }
                 };
@@ -139,6 +151,10 @@ fn default_name(st: &AppState, action: FileAction) -> String {
     match action {
         FileAction::Open | FileAction::SaveScene => format!("{stem}.ron"),
         FileAction::ExportCsv => format!("{stem}_sweep.csv"),
+        FileAction::ExportSheet => format!(
+            "{stem}_at_{:.0}deg.svg",
+            st.session.input_rad().to_degrees()
+        ),
     }
 }
 
@@ -147,6 +163,7 @@ fn contents(st: &AppState, action: FileAction) -> Result<String, String> {
     match action {
         FileAction::SaveScene => st.session.to_ron(),
         FileAction::ExportCsv => st.session.sweep_csv(),
+        FileAction::ExportSheet => Ok(st.session.sheet_svg(st.layers.centres)),
         FileAction::Open => Err("nothing to write when opening".into()),
     }
 }
@@ -202,11 +219,11 @@ fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, frame: &efr
 fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, _frame: &eframe::Frame) {
     let result = match action {
         FileAction::Open => crate::web::pick_file(&st.files.upload, ctx),
-        FileAction::SaveScene | FileAction::ExportCsv => {
-            let mime = if action == FileAction::ExportCsv {
-                "text/csv"
-            } else {
-                "text/plain"
+        FileAction::SaveScene | FileAction::ExportCsv | FileAction::ExportSheet => {
+            let mime = match action {
+                FileAction::ExportCsv => "text/csv",
+                FileAction::ExportSheet => "image/svg+xml",
+                _ => "text/plain",
             };
             contents(st, action)
                 .and_then(|t| crate::web::download(&default_name(st, action), mime, &t))
@@ -258,7 +275,7 @@ fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {
             Ok(text) => open_text(st, name, &text),
             Err(e) => report(st, log::Level::Warn, format!("cannot read {shown}: {e}")),
         },
-        FileAction::SaveScene | FileAction::ExportCsv => {
+        FileAction::SaveScene | FileAction::ExportCsv | FileAction::ExportSheet => {
             let written = contents(st, action)
                 .and_then(|t| std::fs::write(path, t).map_err(|e| e.to_string()));
             match written {

@@ -1,6 +1,8 @@
 //! The panels, one file each.
 
 pub mod accuracy;
+pub mod centres;
+pub mod construction;
 pub mod control_map;
 pub mod controls;
 pub mod files;
@@ -8,4 +10,5 @@ pub mod plots;
 pub mod polygons;
 pub mod report;
 pub mod scene_picker;
+pub mod typeset;
 pub mod viewport;

@@ -1,361 +1,280 @@
-//! Velocity and acceleration polygons drawn as the textbooks draw them: pole p (p'),
-//! each joint's absolute vector to its lowercase point (b, c / b', c'), relative and
-//! component vectors head to tail (normal and tangential dashed, Coriolis in red), a
-//! scale bar, and beside them the vector-equation table.
+//! The polygon pane: the velocity and acceleration polygons of the current position as
+//! the textbooks draw them, laid out by `linkage-diagram` (the same layout the
+//! exported sheet uses): fitted to the pane with a round scale bar, arrow heads in
+//! pixels, typeset labels placed clear of each other, coincident points under one
+//! label. Hovering an arrow names it with its magnitude and direction and marks its
+//! row in the vector-equation table; hovering a row marks the arrow.
 
-use eframe::egui::{self, Color32, Pos2, Stroke, Vec2};
-use linkage::polygon::{Component, Quantity, Symbol, Term, VectorEquation};
+use eframe::egui::{self, Color32, Pos2, Sense, Stroke, Vec2};
+use linkage::polygon::{Quantity, Symbol, VectorEquation};
+use linkage_diagram::label::Label;
+use linkage_diagram::layout::{LaidPolygon, Sizes};
+use linkage_diagram::{PolygonFigure, Rect, layout_polygon};
 
 use crate::app::AppState;
+use crate::ui::control_map::ControlKind;
+use crate::ui::typeset::galley;
 
-/// How a polygon segment is drawn.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Style {
-    /// Absolute vector from the pole.
-    Absolute,
-    /// Relative vector (`v_CB`).
-    Relative,
-    /// Normal component (`^n`).
-    Normal,
-    /// Tangential component (`^t`).
-    Tangential,
-    /// Coriolis component (`^k`).
-    Coriolis,
-    /// Sliding component (`^r`).
-    Sliding,
-}
-
-/// One drawn vector, in the polygon's own units (m/s or m/s²).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Segment {
-    /// Tail.
-    pub from: [f64; 2],
-    /// Head.
-    pub to: [f64; 2],
-    /// Style.
-    pub style: Style,
-    /// Label (a point letter for absolute vectors, the symbol otherwise).
-    pub label: String,
-}
-
-/// One polygon: its segments.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Diagram {
-    /// Segments, absolute vectors first.
-    pub segments: Vec<Segment>,
-}
-
-impl Diagram {
-    /// Largest distance of any vertex from the pole (0 for a still mechanism).
-    pub fn extent(&self) -> f64 {
-        self.segments
-            .iter()
-            .flat_map(|s| [s.from, s.to])
-            .map(|p| p[0].hypot(p[1]))
-            .filter(|d| d.is_finite())
-            .fold(0.0, f64::max)
-    }
-}
-
-fn style_of(symbol: &Symbol) -> Style {
-    match symbol.component {
-        Component::Whole => Style::Relative,
-        Component::Normal => Style::Normal,
-        Component::Tangential => Style::Tangential,
-        Component::Coriolis => Style::Coriolis,
-        Component::Sliding => Style::Sliding,
-    }
-}
-
-/// An absolute term (`v_B`, `a_C`: a joint's whole motion relative to the frame) is
-/// drawn from the pole with the joints' vectors, not again in a chain.
-fn is_absolute(symbol: &Symbol, joints: &[(String, [f64; 2])]) -> bool {
-    symbol.relative_to.is_none()
-        && symbol.component == Component::Whole
-        && joints.iter().any(|(name, _)| *name == symbol.point)
-}
-
-/// The polygon of `kind` (`velocity` or `acceleration`) from the session's equations
-/// and the absolute vectors of the joints.
-pub fn diagram(
-    equations: &[VectorEquation],
-    kind: Quantity,
-    absolute: &[(String, [f64; 2])],
-) -> Diagram {
-    let prime = if kind == Quantity::Acceleration {
-        "'"
-    } else {
-        ""
-    };
-    let mut segments: Vec<Segment> = absolute
-        .iter()
-        .filter(|(_, v)| v[0].is_finite() && v[1].is_finite())
-        .map(|(name, v)| Segment {
-            from: [0.0, 0.0],
-            to: *v,
-            style: Style::Absolute,
-            label: format!("{}{prime}", name.to_lowercase()),
-        })
-        .collect();
-    for eq in equations.iter().filter(|e| e.kind == kind) {
-        for side in [&eq.rhs, &eq.lhs] {
-            chain(side, absolute, &mut segments);
-        }
-    }
-    Diagram { segments }
-}
-
-/// Lays `terms` head to tail from the pole; absolute terms are already drawn.
-fn chain(terms: &[Term], joints: &[(String, [f64; 2])], out: &mut Vec<Segment>) {
-    let mut at = [0.0, 0.0];
-    for t in terms {
-        let next = [at[0] + t.vector[0], at[1] + t.vector[1]];
-        if !(next[0].is_finite() && next[1].is_finite()) {
-            return;
-        }
-        if !is_absolute(&t.symbol, joints) && t.magnitude > 0.0 {
-            out.push(Segment {
-                from: at,
-                to: next,
-                style: style_of(&t.symbol),
-                label: t.symbol.to_string(),
-            });
-        }
-        at = next;
-    }
-}
+/// Label size in the figures, points.
+const FONT: f32 = 13.0;
+/// The figure's background and its black.
+const PAPER: Color32 = Color32::from_rgb(252, 252, 248);
+const INK: Color32 = Color32::from_gray(25);
+/// An arrow this close to the pointer (points) is the hovered one.
+const HOVER_PX: f32 = 6.0;
 
 /// The polygon pane.
-pub fn panel(ui: &mut egui::Ui, st: &AppState) {
+pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
+    ui.horizontal(|ui| {
+        ui.heading("Polygons");
+        let (text, tip) = if st.polygons_wide {
+            ("narrower", "Give the mechanism its room back")
+        } else {
+            ("enlarge", "Polygons and mechanism share the window equally")
+        };
+        let button = ui.button(text).on_hover_text(tip);
+        st.controls
+            .note(ui, ControlKind::PolygonLayout, text, &button);
+        if button.clicked() {
+            st.polygons_wide = !st.polygons_wide;
+        }
+    });
+    let before = st.polygon_hover.take();
+    let mut hovered = None;
     let s = &st.session;
-    let pose = s.pose();
-    let names = |f: &dyn Fn(usize) -> [f64; 2]| -> Vec<(String, [f64; 2])> {
-        s.topology()
-            .joint_points
-            .iter()
-            .map(|&p| (s.mechanism().points[p].name.clone(), f(p)))
-            .collect()
-    };
-    let v_abs = names(&|p| {
-        let v = pose.points[p].velocity;
-        [v.x, v.y]
-    });
-    let a_abs = names(&|p| {
-        let a = pose.points[p].acceleration;
-        [a.x, a.y]
-    });
-    for (title, kind, abs, unit) in [
-        ("Velocity polygon", Quantity::Velocity, v_abs, "m/s"),
-        (
-            "Acceleration polygon",
-            Quantity::Acceleration,
-            a_abs,
-            "m/s²",
-        ),
-    ] {
-        ui.strong(title);
-        let d = diagram(s.polygons(), kind, &abs);
-        draw(
-            ui,
-            &d,
-            unit,
-            if kind == Quantity::Acceleration {
-                "p'"
-            } else {
-                "p"
-            },
-        );
-        egui::CollapsingHeader::new(format!("{title}: vector equations"))
+    for q in [Quantity::Velocity, Quantity::Acceleration] {
+        ui.strong(title(q));
+        let fig = PolygonFigure::of_position(q, s.mechanism(), s.pose(), s.polygons());
+        let over_figure = figure(ui, &fig, before.as_ref());
+        let over_table = egui::CollapsingHeader::new(format!("{}: vector equations", title(q)))
             .default_open(false)
-            .show(ui, |ui| table(ui, s.polygons(), kind));
+            .show(ui, |ui| table(ui, s.polygons(), q, before.as_ref()))
+            .body_returned
+            .flatten();
+        hovered = hovered.or(over_figure).or(over_table);
+    }
+    st.polygon_hover = hovered;
+    egui::CollapsingHeader::new("Construct an equation step by step")
+        .default_open(false)
+        .show(ui, |ui| crate::ui::construction::section(ui, st));
+}
+
+fn title(q: Quantity) -> &'static str {
+    match q {
+        Quantity::Velocity => "Velocity polygon",
+        Quantity::Acceleration => "Acceleration polygon",
     }
 }
 
-fn colour(style: Style) -> Color32 {
-    match style {
-        Style::Absolute => Color32::from_rgb(30, 90, 170),
-        Style::Relative => Color32::from_gray(70),
-        Style::Normal => Color32::from_rgb(40, 140, 200),
-        Style::Tangential => Color32::from_rgb(220, 130, 20),
-        Style::Coriolis => Color32::from_rgb(210, 40, 40),
-        Style::Sliding => Color32::from_rgb(40, 150, 70),
-    }
+fn rgb(c: [u8; 3]) -> Color32 {
+    Color32::from_rgb(c[0], c[1], c[2])
 }
 
-/// A round scale-bar length near a quarter of `extent`: 1, 2 or 5 × 10^k.
-pub fn scale_bar(extent: f64) -> f64 {
-    if !(extent.is_finite() && extent > 0.0) {
-        return 0.0;
-    }
-    let target = extent / 4.0;
-    let decade = 10f64.powf(target.log10().floor());
-    [5.0, 2.0, 1.0]
-        .into_iter()
-        .map(|m| m * decade)
-        .find(|&v| v <= target)
-        .unwrap_or(decade)
+fn pos(p: [f64; 2]) -> Pos2 {
+    Pos2::new(p[0] as f32, p[1] as f32)
 }
 
-fn draw(ui: &mut egui::Ui, d: &Diagram, unit: &str, pole: &str) {
-    let size = Vec2::new(ui.available_width().max(120.0), 220.0);
-    let (rect, _) = ui.allocate_exact_size(size, egui::Sense::hover());
+/// Draws one polygon filling the pane's width; returns the symbol of the arrow under
+/// the pointer. `marked` is the term hovered last frame (here or in the table).
+fn figure(ui: &mut egui::Ui, fig: &PolygonFigure, marked: Option<&Symbol>) -> Option<Symbol> {
+    let w = ui.available_width().max(160.0);
+    let h = (w * 0.72).clamp(160.0, 560.0);
+    let (rect, response) = ui.allocate_exact_size(Vec2::new(w, h), Sense::hover());
     let painter = ui.painter_at(rect);
-    painter.rect_filled(rect, 4.0, ui.visuals().extreme_bg_color);
-    let extent = d.extent();
-    if extent <= 0.0 {
+    // Drawn on paper, in either theme: the figure looks as it will on the sheet.
+    painter.rect_filled(rect, 4.0, PAPER);
+    let ink = INK;
+    let measure = |l: &Label| {
+        let g = galley(&painter, l, FONT, ink);
+        [f64::from(g.size().x), f64::from(g.size().y)]
+    };
+    let pane = Rect {
+        min: [f64::from(rect.min.x), f64::from(rect.min.y)],
+        max: [f64::from(rect.max.x), f64::from(rect.max.y)],
+    };
+    let sizes = Sizes {
+        font_px: f64::from(FONT),
+        head_px: 9.0,
+    };
+    let laid = layout_polygon(fig, pane, sizes, &measure);
+    if laid.px_per_unit <= 0.0 {
         painter.text(
             rect.center(),
             egui::Align2::CENTER_CENTER,
             "at rest: the polygon is a point",
             egui::FontId::proportional(12.0),
-            ui.visuals().text_color(),
+            ink,
         );
-        return;
+        return None;
     }
-    let scale = f64::from(rect.width().min(rect.height())) * 0.42 / extent;
-    let origin = rect.center();
-    let to_screen = |p: [f64; 2]| {
-        Pos2::new(
-            origin.x + (p[0] * scale) as f32,
-            origin.y - (p[1] * scale) as f32,
-        )
-    };
-    let font = egui::FontId::proportional(11.0);
-    for seg in &d.segments {
-        let (a, b) = (to_screen(seg.from), to_screen(seg.to));
-        let c = colour(seg.style);
-        let width = if seg.style == Style::Absolute {
-            2.0
-        } else {
-            1.4
+    let near = response.hover_pos().and_then(|p| nearest_arrow(&laid, p));
+    let lit = near.or_else(|| marked.and_then(|m| fig.arrows.iter().position(|a| &a.symbol == m)));
+    draw(&painter, fig, &laid, lit, ink);
+    let arrow = &fig.arrows[near?];
+    let symbol = arrow.symbol.clone();
+    let v = [arrow.to[0] - arrow.from[0], arrow.to[1] - arrow.from[1]];
+    response.on_hover_ui_at_pointer(|ui| {
+        let ink = ui.visuals().text_color();
+        ui.label(crate::ui::typeset::job(
+            &Label::of_symbol(&symbol),
+            15.0,
+            ink,
+        ));
+        ui.label(format!(
+            "{:.4} {} at {:.2}°",
+            v[0].hypot(v[1]),
+            fig.unit(),
+            v[1].atan2(v[0]).to_degrees()
+        ));
+    });
+    Some(symbol)
+}
+
+/// The arrow within [`HOVER_PX`] of `p`, the nearest.
+fn nearest_arrow(laid: &LaidPolygon, p: Pos2) -> Option<usize> {
+    laid.arrows
+        .iter()
+        .map(|a| {
+            let (s, e) = (pos(a.from), pos(a.to));
+            let d = e - s;
+            let t = ((p - s).dot(d) / d.length_sq().max(1e-6)).clamp(0.0, 1.0);
+            ((s + d * t).distance(p), a.index)
+        })
+        .filter(|(d, _)| *d <= HOVER_PX)
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, i)| i)
+}
+
+/// Draws a laid-out figure: arrows, points, labels, scale bar; `lit` drawn thicker.
+pub fn draw(
+    painter: &egui::Painter,
+    fig: &PolygonFigure,
+    laid: &LaidPolygon,
+    lit: Option<usize>,
+    ink: Color32,
+) {
+    for a in &laid.arrows {
+        let c = rgb(a.style.rgb());
+        let width = match (Some(a.index) == lit, a.style.dashed()) {
+            (true, _) => 3.2,
+            (false, true) => 1.3,
+            (false, false) => 1.8,
         };
-        if matches!(seg.style, Style::Absolute | Style::Relative) {
-            painter.arrow(a, b - a, Stroke::new(width, c));
-        } else {
-            painter.add(egui::Shape::dashed_line(
-                &[a, b],
+        let (s, e) = (pos(a.from), pos(a.to));
+        if a.style.dashed() {
+            painter.extend(egui::Shape::dashed_line(
+                &[s, e],
                 Stroke::new(width, c),
                 5.0,
                 3.0,
             ));
-            painter.arrow(
-                b - (b - a).normalized() * 6.0,
-                (b - a).normalized() * 6.0,
-                Stroke::new(width, c),
-            );
-        }
-        let at = if seg.style == Style::Absolute {
-            b
         } else {
-            a + (b - a) * 0.5
+            painter.line_segment([s, e], Stroke::new(width, c));
+        }
+        if let Some(h) = a.head {
+            painter.add(egui::Shape::convex_polygon(
+                h.iter().map(|&p| pos(p)).collect(),
+                c,
+                Stroke::NONE,
+            ));
+        }
+    }
+    for &v in &laid.vertices {
+        painter.circle_filled(pos(v), 2.5, ink);
+    }
+    for l in &laid.labels {
+        let colour = match l.owner {
+            linkage_diagram::layout::LabelOwner::Arrow(i) => rgb(fig.arrows[i].style.rgb()),
+            linkage_diagram::layout::LabelOwner::Vertices(_) => ink,
         };
-        painter.text(
-            at + Vec2::new(4.0, -4.0),
-            egui::Align2::LEFT_BOTTOM,
-            &seg.label,
-            font.clone(),
-            c,
+        if let Some([a, b]) = l.leader {
+            painter.line_segment([pos(a), pos(b)], Stroke::new(0.7, Color32::from_gray(150)));
+        }
+        painter.galley(
+            pos(l.rect.min),
+            galley(painter, &l.label, FONT, colour),
+            colour,
         );
     }
-    painter.circle_filled(origin, 3.0, ui.visuals().text_color());
-    painter.text(
-        origin + Vec2::new(-4.0, 4.0),
-        egui::Align2::RIGHT_TOP,
-        pole,
-        font.clone(),
-        ui.visuals().text_color(),
-    );
-    // Scale bar, bottom left.
-    let bar = scale_bar(extent);
-    let len = (bar * scale) as f32;
-    let y = rect.bottom() - 10.0;
-    let x0 = rect.left() + 10.0;
-    painter.line_segment(
-        [Pos2::new(x0, y), Pos2::new(x0 + len, y)],
-        Stroke::new(2.0, ui.visuals().text_color()),
-    );
-    painter.text(
-        Pos2::new(x0, y - 4.0),
-        egui::Align2::LEFT_BOTTOM,
-        format!("{} {unit}", fmt_value(bar)),
-        font,
-        ui.visuals().text_color(),
-    );
-}
-
-fn fmt_value(v: f64) -> String {
-    if (1e-3..1e4).contains(&v.abs()) {
-        format!("{v}")
-    } else {
-        format!("{v:.0e}")
+    if let Some(bar) = &laid.scale_bar {
+        let (a, b) = (pos(bar.from), pos(bar.to));
+        painter.line_segment([a, b], Stroke::new(2.0, ink));
+        for end in [a, b] {
+            painter.line_segment(
+                [end - Vec2::Y * 3.0, end + Vec2::Y * 3.0],
+                Stroke::new(1.0, ink),
+            );
+        }
+        painter.text(
+            b + Vec2::new(6.0, 0.0),
+            egui::Align2::LEFT_CENTER,
+            format!(
+                "{} {}",
+                linkage_diagram::svg::round_text(bar.value),
+                fig.unit()
+            ),
+            egui::FontId::proportional(12.0),
+            ink,
+        );
     }
 }
 
-fn table(ui: &mut egui::Ui, equations: &[VectorEquation], kind: Quantity) {
-    for (i, eq) in equations.iter().filter(|e| e.kind == kind).enumerate() {
-        ui.label(format!("{}: {}", eq.group, eq.equation));
-        egui::Grid::new((kind, i)).striped(true).show(ui, |ui| {
-            ui.strong("term");
-            ui.strong("magnitude");
-            ui.strong("direction");
-            ui.strong("known");
+/// The vector-equation table of `q`, typeset; the `marked` term's row highlighted.
+/// Returns the symbol of the row under the pointer.
+fn table(
+    ui: &mut egui::Ui,
+    equations: &[VectorEquation],
+    q: Quantity,
+    marked: Option<&Symbol>,
+) -> Option<Symbol> {
+    let ink = ui.visuals().text_color();
+    let highlight = ui.visuals().selection.bg_fill;
+    let mut hovered = None;
+    for (i, eq) in equations.iter().filter(|e| e.kind == q).enumerate() {
+        ui.label(format!("{}:", eq.group));
+        ui.label(crate::ui::typeset::job(&Label::of_equation(eq), 14.0, ink));
+        egui::Grid::new((q, i)).striped(true).show(ui, |ui| {
+            for head in ["term", "magnitude", "direction", "known"] {
+                ui.strong(head);
+            }
             ui.end_row();
             for t in eq.lhs.iter().chain(&eq.rhs) {
-                ui.label(t.symbol.to_string());
-                ui.label(format!("{:.4}", t.magnitude));
-                ui.label(format!(
-                    "{:.2}° ({})",
-                    t.direction_rad.to_degrees(),
-                    t.direction
-                ));
-                let known = |k: bool| if k { "yes" } else { "solved" };
-                ui.label(format!(
-                    "mag {}, dir {}",
-                    known(t.magnitude_known),
-                    known(t.direction_known)
-                ));
+                let on = marked == Some(&t.symbol);
+                let mut job = crate::ui::typeset::job(&Label::of_symbol(&t.symbol), 14.0, ink);
+                if on {
+                    job.sections
+                        .iter_mut()
+                        .for_each(|s| s.format.background = highlight);
+                }
+                let cell = |text: String| {
+                    let r = egui::RichText::new(text);
+                    if on { r.background_color(highlight) } else { r }
+                };
+                let known = |k: bool| if k { "known" } else { "solved" };
+                let row = [
+                    ui.label(job),
+                    ui.label(cell(format!(
+                        "{:.4} {}",
+                        t.magnitude,
+                        linkage_diagram::polygon_figure::unit(q)
+                    ))),
+                    ui.label(cell(format!(
+                        "{:.2}° ({})",
+                        t.direction_rad.to_degrees(),
+                        t.direction
+                    ))),
+                    ui.label(cell(format!(
+                        "magnitude {}, direction {}",
+                        known(t.magnitude_known),
+                        known(t.direction_known)
+                    ))),
+                ];
+                if row.iter().any(egui::Response::hovered) {
+                    hovered = Some(t.symbol.clone());
+                }
                 ui.end_row();
             }
         });
     }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::session::Session;
-
-    #[test]
-    fn chains_close_on_the_absolute_vector_of_the_dyad_point() {
-        // The rhs chain of v_C = v_B + v_CB ends where the absolute v_C does.
-        let s = Session::open_builtin("slider_crank").expect("opens");
-        let eqs = s.polygons();
-        let v = s.pose().points[s.mechanism().point_index("C").expect("C")].velocity;
-        let d = diagram(eqs, Quantity::Velocity, &[("C".into(), [v.x, v.y])]);
-        let rel = d
-            .segments
-            .iter()
-            .find(|g| g.label == "v_CB")
-            .expect("relative vector");
-        assert!((rel.to[0] - v.x).abs() < 1e-12 && (rel.to[1] - v.y).abs() < 1e-12);
-        assert_eq!(d.segments[0].label, "c");
-    }
-
-    #[test]
-    fn quick_return_acceleration_polygon_shows_coriolis() {
-        let s = Session::open_builtin("quick_return").expect("opens");
-        let d = diagram(s.polygons(), Quantity::Acceleration, &[]);
-        assert!(
-            d.segments.iter().any(|g| g.style == Style::Coriolis),
-            "{d:?}"
-        );
-    }
-
-    #[test]
-    fn scale_bar_is_round_and_at_most_a_quarter() {
-        assert_eq!(scale_bar(10.0), 2.0);
-        assert_eq!(scale_bar(0.37), 0.05);
-        assert_eq!(scale_bar(0.0), 0.0);
-        assert_eq!(scale_bar(f64::NAN), 0.0);
-    }
+    hovered
 }

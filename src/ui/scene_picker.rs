@@ -74,9 +74,15 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
             if ui.button("Fit view").clicked() {
                 st.fit_pending = true;
             }
-            ui.checkbox(&mut st.layers.velocities, "v vectors");
-            ui.checkbox(&mut st.layers.accelerations, "a vectors");
-            ui.checkbox(&mut st.layers.traces, "traces");
+            for (on, label) in [
+                (&mut st.layers.velocities, "v vectors"),
+                (&mut st.layers.accelerations, "a vectors"),
+                (&mut st.layers.traces, "traces"),
+                (&mut st.layers.centres, "instant centres"),
+            ] {
+                let r = ui.checkbox(on, label);
+                st.controls.note(ui, ControlKind::Layer, label, &r);
+            }
             if let Some(status) = &st.status {
                 ui.label(status);
             }

@@ -91,6 +91,10 @@ pub fn show(ui: &mut egui::Ui, st: &mut AppState, shapes: &SharedShapes, gpu: bo
         }
     }
 
+    if st.layers.centres {
+        crate::ui::centres::overlay(&painter, rect, st);
+    }
+
     let small = FontId::proportional(12.0);
     let mut legend = format!("crank {:.2}°", st.session.input_rad().to_degrees());
     if let Some(Ok(_)) = st.session.dynamics() {

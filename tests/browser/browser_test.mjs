@@ -1,10 +1,13 @@
 // Real-browser test of the web demo: Debian's Chromium, headless, driven by
 // playwright-core (no browser download). Checks: no console errors, a canvas that is
 // not blank, that dragging the crank slider changes the picture, that Save and Export
-// download the scene and the sweep CSV, and that Open uploads a scene file (the saved
+// download the scene and the sweep CSV, that Export diagram downloads the sheet that
+// `linkage diagram` writes for the same scene and crank angle (the CLI named by
+// LINKAGE_CLI, built by scripts/browser_test.sh), and that Open uploads a scene file (the saved
 // one, then another scene, which changes the picture). Measures time to first frame
 // (the app logs it) and frames per second while the mechanism plays.
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
+import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { build, decode, differing, launchChromium, nonBackground, wrongBuild } from './common.mjs';
 
@@ -102,6 +105,25 @@ const csv = await download(EXPORT);
 const csvRows = csv.text.trim().split('\n').length;
 if (csv.name !== 'die_cutter_sweep.csv') fail(`CSV download named ${csv.name}`);
 if (!csv.text.startsWith('input_rad,') || csvRows < 100) fail(`CSV download: ${csvRows} rows, starts ${csv.text.slice(0, 40)}`);
+// The diagram sheet: found through the app's control map, compared with the CLI's.
+const controls = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+const exportDiagram = controls.controls.entries.find((e) => e.kind === 'FileButton' && e.label === 'Export diagram…');
+let sheetBytes = 0;
+if (!exportDiagram) fail('no Export diagram button');
+else {
+  const sheet = await download([0.5 * (exportDiagram.rect[0] + exportDiagram.rect[2]), 0.5 * (exportDiagram.rect[1] + exportDiagram.rect[3])]);
+  sheetBytes = sheet.text.length;
+  const deg = controls.input_deg;
+  if (sheet.name !== `die_cutter_at_${deg.toFixed(0)}deg.svg`) fail(`diagram download named ${sheet.name} at ${deg}°`);
+  const cli = process.env.LINKAGE_CLI ?? 'target/debug/linkage';
+  const scene = new URL('../../assets/scenes/die_cutter.ron', import.meta.url).pathname;
+  const expected = execFileSync(cli, ['diagram', scene, '--input-deg', String(deg)], { encoding: 'utf8' });
+  if (sheet.text !== expected) {
+    const a = sheet.text.split('\n'), b = expected.split('\n');
+    const i = a.findIndex((line, k) => line !== b[k]);
+    fail(`the downloaded sheet differs from linkage diagram at line ${i + 1}:\n  ${a[i]}\n  ${b[i]}`);
+  }
+}
 const saved = await download(SAVE);
 if (saved.name !== 'die_cutter.ron') fail(`scene download named ${saved.name}`);
 if (!/\bname:/.test(saved.text)) fail(`scene download is no scene: ${saved.text.slice(0, 80)}`);
@@ -124,7 +146,8 @@ console.log(JSON.stringify({
   url, build, first_frame_ms: firstFrameMs, canvas_drawn_fraction: Number(coverage.toFixed(3)),
   pixels_changed_by_slider_drag: changed, pixels_changed_by_play: played,
   fps_playing: Number(fps.toFixed(1)), csv_download_rows: csvRows,
-  scene_download_bytes: saved.text.length, pixels_changed_by_upload: reopened,
+  scene_download_bytes: saved.text.length, sheet_download_bytes: sheetBytes,
+  pixels_changed_by_upload: reopened,
   console_errors: errors.length,
 }));
 await browser.close();

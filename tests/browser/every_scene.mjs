@@ -3,7 +3,8 @@
 // through a URL fragment; for each: no console error or panic, the canvas drawn,
 // Play for a second changes the picture, and every kind of control the scene offers
 // is moved with the mouse (crank, a length, a spring constant, a mass, the
-// integrator, its tolerance, a branch flip). The URL after those edits, opened in a
+// integrator, its tolerance, a branch flip, the instant centres, the polygon pane's
+// size). The URL after those edits, opened in a
 // new page, must reopen the same state. Each edit's click-to-frame time is printed
 // (performance.now()); under SwiftShader it is set by the rasteriser's few frames a
 // second, not by the edit.
@@ -50,35 +51,43 @@ const shot = async (page) => decode(await page.locator('#linkage_canvas').screen
 const hash = (page) => page.evaluate(() => location.hash);
 const centre = (c, fx = 0.5) => [c.rect[0] + fx * (c.rect[2] - c.rect[0]), 0.5 * (c.rect[1] + c.rect[3])];
 
-/** Waits (up to 20 s) until no dynamic run is being computed: the accuracy panel's
- * lines change when one ends, which scrolls the panel under a control found before. */
+/** Waits (up to 60 s: SwiftShader on a loaded machine draws two frames a second, and
+ * the run gets a slice of each) until no dynamic run is being computed: the accuracy
+ * panel's lines change when one ends, which can scroll the panel under a control. */
 async function runDone(page) {
-  for (let i = 0; i < 200 && (await state(page)).run_pending; i++) await page.waitForTimeout(100);
+  for (let i = 0; i < 600 && (await state(page)).run_pending; i++) await page.waitForTimeout(100);
 }
 
 /** The first control of `kind` (and label, if given), scrolled into view, once the
  * layout has stopped changing: after a dynamic run, and with its place the same in
- * two frames 100 ms apart (egui's scroll is animated, and a panel's lines can change
- * under a control between the look and the click). */
+ * two different frames (egui's scroll is animated, and a panel's lines can change
+ * under a control between the look and the click; at two frames a second, two looks
+ * 100 ms apart can read the same frame). */
 async function find(page, kind, label) {
   await runDone(page);
   let seen;
-  for (let i = 0; i < 40; i++) {
-    const c = (await state(page)).controls.entries.find((e) => e.kind === kind && (label === undefined || e.label === label));
+  for (let i = 0; i < 300; i++) {
+    const st = await state(page);
+    const c = st.controls.entries.find((e) => e.kind === kind && (label === undefined || e.label === label));
     if (!c) return undefined;
     if (c.visible) {
-      if (seen && seen.rect.every((v, k) => Math.abs(v - c.rect[k]) < 0.5)) return c;
-      seen = c;
+      if (seen && st.frame > seen.frame) {
+        if (seen.c.rect.every((v, k) => Math.abs(v - c.rect[k]) < 0.5)) return c;
+        seen = { c, frame: st.frame };
+      } else if (!seen) seen = { c, frame: st.frame };
+      // An idle egui app draws no frame until something happens: a pointer move
+      // over the top bar's title asks for one.
+      await page.mouse.move(20 + (i % 2), 10);
       await page.waitForTimeout(100);
       continue;
     }
     seen = undefined;
-    // Scroll the control panel towards it.
+    // Scroll the control panel towards it, then let the scroll's animation run.
     await page.mouse.move(120, 500);
     await page.mouse.wheel(0, c.rect[1] > 500 ? 150 : -150);
     await page.waitForTimeout(150);
   }
-  return seen;
+  return seen?.c;
 }
 
 /** Clicks at (x, y) and returns the ms from the click to the next frame drawn after it. */
@@ -122,8 +131,17 @@ async function settle(page, before) {
 
 const SLIDERS = ['Crank', 'Length', 'Spring', 'Mass', 'Tolerance'];
 const results = [];
-for (const scene of scenes) {
-  for (const route of ['picker', 'fragment']) {
+// Each scene opens through both routes over the two builds (and each build opens
+// scenes through both): the picker on one build, the fragment on the other, in turn.
+// LINKAGE_ROUTES=all runs both routes on every build.
+const allRoutes = process.env.LINKAGE_ROUTES === 'all';
+const routesFor = (i) => {
+  const both = ['picker', 'fragment'];
+  if (allRoutes) return both;
+  return [both[(i + (build === 'webgpu' ? 1 : 0)) % 2]];
+};
+for (const [i, scene] of scenes.entries()) {
+  for (const route of routesFor(i)) {
     const what = `${scene.file} via ${route}`;
     const { page, errors } = await openPage(route === 'fragment' ? `${base}#scene=${scene.key}` : base);
     if (route === 'picker') {
@@ -208,6 +226,24 @@ for (const scene of scenes) {
         moved.Integrator = { edit_frame_ms: Number((await state(page)).edit_timing.last_ms.toFixed(2)), click_to_frame_ms: Number(ms.toFixed(1)), refused: false };
       }
     }
+    // The instant centres shown and hidden, the polygon pane enlarged and narrowed:
+    // each changes the picture (waited for: SwiftShader draws a few frames a second).
+    for (const [kind, label] of [['Layer', 'instant centres'], ['PolygonLayout', undefined]]) {
+      const name = label ?? kind;
+      for (const turn of ['on', 'off']) {
+        const c = await find(page, kind, label);
+        if (!c) { fail(`${what}: no ${name} control`); break; }
+        const picBefore = await shot(page);
+        const ms = await timedClick(page, centre(c));
+        let px = 0;
+        for (let i = 0; i < 20 && px < 200; i++) {
+          await page.waitForTimeout(200);
+          px = differing(picBefore, await shot(page));
+        }
+        if (px < 200) fail(`${what}: turning ${name} ${turn} changed only ${px} pixels`);
+        moved[`${name} ${turn}`] = { click_to_frame_ms: Number(ms.toFixed(1)), pixels_changed: px };
+      }
+    }
     for (const k of ['Crank', 'Length']) if (!moved[k]) fail(`${what}: no ${k} control`);
 
     // The URL after the edits reopens the same state.
@@ -230,7 +266,7 @@ console.log(JSON.stringify({ build, scenes: scenes.length, results }, null, 1));
 
 // The CPU time of the frame that carried each edit (the app's own performance.now()
 // figure: the edit, the panels and plots), slowest per scene, valid and refused.
-console.log(`edit frame CPU, ${build} build, ms (slowest over both routes): scene | valid | refused`);
+console.log(`edit frame CPU, ${build} build, ms (slowest over the routes run): scene | valid | refused`);
 for (const scene of scenes) {
   const edits = results.filter((r) => r.scene === scene.key).flatMap((r) => Object.values(r.edits));
   const worst = (refused) => {

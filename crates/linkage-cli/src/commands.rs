@@ -68,6 +68,7 @@ pub fn run(command: Command, out: &mut dyn Write) -> Result<(), Failure> {
         } => at(&scene, input_deg, format),
         Command::Report { scene } => report(&scene),
         Command::Synth { what } => synth(what),
+        Command::Diagram { scene, args } => crate::diagram::run(&scene, &args),
         Command::Simulate { scene, sim, format } => crate::simulate::run(&scene, &sim, format),
         Command::Tradeoff { scene, args } => crate::tradeoff::run(&scene, &args),
         Command::Kinetostatics {

@@ -4,6 +4,7 @@
 //! non-zero exit status and a message naming the cause.
 
 mod commands;
+mod diagram;
 mod kinetostatics;
 mod plot;
 mod simulate;
@@ -116,6 +117,14 @@ enum Command {
         scene: SceneArgs,
         #[command(flatten)]
         args: tradeoff::TradeoffArgs,
+    },
+    /// An A4 sheet of one position to hand in: pose, velocity and acceleration
+    /// polygons with scales, vector-equation tables, instant centres (SVG; --png too).
+    Diagram {
+        #[command(flatten)]
+        scene: SceneArgs,
+        #[command(flatten)]
+        args: diagram::DiagramArgs,
     },
     /// Dimensional synthesis.
     Synth {

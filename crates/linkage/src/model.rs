@@ -223,6 +223,19 @@ impl Mechanism {
         self.points.iter().position(|p| p.name == name)
     }
 
+    /// The points that are joints (pins and slider points), each once, ascending.
+    pub fn joint_points(&self) -> Vec<usize> {
+        let mut joints: Vec<usize> = self
+            .revolutes
+            .iter()
+            .map(|r| r.point)
+            .chain(self.sliders.iter().map(|sl| sl.point))
+            .collect();
+        joints.sort_unstable();
+        joints.dedup();
+        joints
+    }
+
     /// Moving links (all but ground), in scene order.
     pub fn moving_links(&self) -> impl Iterator<Item = usize> + '_ {
         (0..self.links.len()).filter(move |&i| i != self.ground)

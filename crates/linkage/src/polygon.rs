@@ -147,6 +147,15 @@ pub struct VectorEquation {
 }
 
 impl VectorEquation {
+    /// The largest magnitude among its terms: the scale its round-off is judged by.
+    pub fn largest_term(&self) -> f64 {
+        self.lhs
+            .iter()
+            .chain(&self.rhs)
+            .map(|t| t.magnitude)
+            .fold(0.0, f64::max)
+    }
+
     /// |Σlhs − Σrhs|: zero up to round-off for a solved position.
     pub fn residual(&self) -> f64 {
         let sum = |t: &[Term]| {

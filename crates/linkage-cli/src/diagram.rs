@@ -1,0 +1,125 @@
+//! `linkage diagram`: the sheet of one position (pose, polygons, tables, instant
+//! centres) as SVG, written by `linkage-diagram` exactly as the app exports it, and
+//! as PNG rendered from that SVG by resvg with the app's own font.
+
+use std::path::PathBuf;
+
+use clap::ValueEnum;
+use linkage::instant_centres::instant_centres;
+use linkage::polygon::polygons;
+use linkage_diagram::svg::{Parts, Position, sheet};
+
+use crate::SceneArgs;
+use crate::commands::load;
+
+/// A part of the sheet.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum Part {
+    /// The mechanism's pose, with a scale bar.
+    Pose,
+    /// The velocity polygon.
+    Velocity,
+    /// The acceleration polygon.
+    Acceleration,
+    /// The instant centres on the pose.
+    Centres,
+    /// The vector-equation tables.
+    Table,
+}
+
+/// Options of `linkage diagram`.
+#[derive(clap::Args, Debug)]
+pub struct DiagramArgs {
+    /// Input (crank) angle in degrees.
+    #[arg(long, allow_hyphen_values = true)]
+    pub input_deg: f64,
+    /// Write the SVG here (without --svg or --png it goes to standard output).
+    #[arg(long)]
+    pub svg: Option<PathBuf>,
+    /// Write a PNG here, rendered from the SVG.
+    #[arg(long)]
+    pub png: Option<PathBuf>,
+    /// PNG resolution, dots per inch (the sheet is A4).
+    #[arg(long, default_value_t = 150.0)]
+    pub dpi: f32,
+    /// What the sheet holds, comma-separated.
+    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Part::Pose, Part::Velocity, Part::Acceleration, Part::Table])]
+    pub what: Vec<Part>,
+}
+
+/// The SVG text of the sheet, and the PNG written if asked; returns what goes to
+/// standard output (the SVG when no file was named).
+pub fn run(scene: &SceneArgs, args: &DiagramArgs) -> Result<String, String> {
+    if !(args.input_deg.is_finite()) {
+        return Err(format!(
+            "--input-deg {} is invalid: must be a finite number",
+            args.input_deg
+        ));
+    }
+    if !(args.dpi.is_finite() && (10.0..=1200.0).contains(&args.dpi)) {
+        return Err(format!("--dpi {} is out of range: 10 to 1200", args.dpi));
+    }
+    let mut k = load(scene)?;
+    let s = k
+        .solve(args.input_deg.to_radians())
+        .map_err(|e| e.to_string())?;
+    let eqs = polygons(&k, &s);
+    let m = k.mechanism();
+    let centres = instant_centres(m, &s);
+    let has = |p: Part| args.what.contains(&p);
+    let parts = Parts {
+        pose: has(Part::Pose) || has(Part::Centres),
+        velocity: has(Part::Velocity),
+        acceleration: has(Part::Acceleration),
+        centres: has(Part::Centres),
+        table: has(Part::Table),
+    };
+    let position = Position {
+        mechanism: m,
+        solution: &s,
+        equations: &eqs,
+        centres: Some(&centres),
+    };
+    let svg = sheet(&position, parts);
+    if let Some(path) = &args.svg {
+        std::fs::write(path, &svg).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    }
+    if let Some(path) = &args.png {
+        let png = render_png(&svg, args.dpi)?;
+        std::fs::write(path, png).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    }
+    Ok(if args.svg.is_none() && args.png.is_none() {
+        svg
+    } else {
+        String::new()
+    })
+}
+
+/// The SVG rendered at `dpi`, as PNG bytes. Only the app's font is loaded, so the
+/// picture is the same on every machine.
+pub fn render_png(svg: &str, dpi: f32) -> Result<Vec<u8>, String> {
+    let mut opt = resvg::usvg::Options::default();
+    opt.fontdb_mut()
+        .load_font_data(epaint_default_fonts::UBUNTU_LIGHT.to_vec());
+    opt.fontdb_mut().set_sans_serif_family("Ubuntu");
+    opt.font_family = "Ubuntu".into();
+    let tree = resvg::usvg::Tree::from_str(svg, &opt)
+        .map_err(|e| format!("the SVG does not parse: {e}"))?;
+    // The sheet's units are CSS pixels, 96 to the inch.
+    let zoom = dpi / 96.0;
+    let size = tree
+        .size()
+        .to_int_size()
+        .scale_by(zoom)
+        .ok_or("the sheet has no size")?;
+    let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height())
+        .ok_or_else(|| format!("cannot make a {}x{} picture", size.width(), size.height()))?;
+    resvg::render(
+        &tree,
+        resvg::tiny_skia::Transform::from_scale(zoom, zoom),
+        &mut pixmap.as_mut(),
+    );
+    pixmap
+        .encode_png()
+        .map_err(|e| format!("cannot encode the PNG: {e}"))
+}

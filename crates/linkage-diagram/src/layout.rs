@@ -1,0 +1,315 @@
+//! A polygon figure fitted to a pane: the scale that makes it fill the pane, arrow
+//! heads sized in pixels, a round scale bar, and every label placed
+//! ([`crate::placement`]). Pane coordinates are pixels, y down; the figure's are
+//! m/s or m/s², y up.
+
+use crate::geometry::{Pt, Rect, distance};
+use crate::label::Label;
+use crate::placement::{Obstacles, place_arrow_label, place_vertex_label};
+use crate::polygon_figure::{ArrowStyle, PolygonFigure};
+
+/// Sizes of the drawing, in pixels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sizes {
+    /// Label font size.
+    pub font_px: f64,
+    /// Arrow head length (shorter on short arrows: at most 40 % of the arrow).
+    pub head_px: f64,
+}
+
+impl Default for Sizes {
+    fn default() -> Self {
+        Self {
+            font_px: 13.0,
+            head_px: 9.0,
+        }
+    }
+}
+
+/// An arrow in pane pixels.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LaidArrow {
+    /// Tail.
+    pub from: Pt,
+    /// Head.
+    pub to: Pt,
+    /// The head's triangle (tip, left, right); none on an arrow under a pixel long.
+    pub head: Option<[Pt; 3]>,
+    /// Style.
+    pub style: ArrowStyle,
+    /// Index into the figure's arrows.
+    pub index: usize,
+}
+
+/// What a label names.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum LabelOwner {
+    /// Points of the polygon that fall on one spot (indices into the figure's vertices).
+    Vertices(Vec<usize>),
+    /// An arrow (index into the figure's arrows).
+    Arrow(usize),
+}
+
+/// A placed label.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LaidLabel {
+    /// The text.
+    pub label: Label,
+    /// Its box in the pane.
+    pub rect: Rect,
+    /// A line from the box to what it names, when the box had to move away from it.
+    pub leader: Option<[Pt; 2]>,
+    /// What it names.
+    pub owner: LabelOwner,
+    /// Whether no free place was found (it overlaps something).
+    pub collides: bool,
+}
+
+/// The scale bar: a round length of the figure's unit.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScaleBar {
+    /// Its length in the figure's unit: 1, 2 or 5 × 10^k.
+    pub value: f64,
+    /// Left end, pixels.
+    pub from: Pt,
+    /// Right end, pixels.
+    pub to: Pt,
+}
+
+/// A polygon laid out in a pane.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LaidPolygon {
+    /// The pane.
+    pub pane: Rect,
+    /// Pixels per unit (m/s or m/s²); 0 for a polygon that is a point.
+    pub px_per_unit: f64,
+    /// Where the figure's origin (the pole) is, pixels.
+    pub origin: Pt,
+    /// Arrows.
+    pub arrows: Vec<LaidArrow>,
+    /// The vertices in pixels, indexed like the figure's.
+    pub vertices: Vec<Pt>,
+    /// Labels.
+    pub labels: Vec<LaidLabel>,
+    /// The scale bar; none for a polygon that is a point.
+    pub scale_bar: Option<ScaleBar>,
+}
+
+impl LaidPolygon {
+    /// A point of the figure (m/s or m/s², y up) in pane pixels (y down).
+    pub fn to_px(&self, p: Pt) -> Pt {
+        [
+            self.origin[0] + p[0] * self.px_per_unit,
+            self.origin[1] - p[1] * self.px_per_unit,
+        ]
+    }
+
+    /// The box of the drawn figure (arrows and vertices), pixels.
+    pub fn figure_box(&self) -> Option<Rect> {
+        Rect::around(
+            self.arrows
+                .iter()
+                .flat_map(|a| [a.from, a.to])
+                .chain(self.vertices.iter().copied()),
+        )
+    }
+}
+
+/// A round length near a quarter of `extent`: 1, 2 or 5 × 10^k, at most a quarter.
+pub fn round_scale(extent: f64) -> f64 {
+    if !(extent.is_finite() && extent > 0.0) {
+        return 0.0;
+    }
+    let target = extent / 4.0;
+    let decade = 10f64.powf(target.log10().floor());
+    [5.0, 2.0, 1.0]
+        .into_iter()
+        .map(|m| m * decade)
+        .find(|&v| v <= target)
+        .unwrap_or(decade)
+}
+
+/// Lays `fig` out in `pane`, labels measured by `measure` (width, height in pixels).
+pub fn layout_polygon(
+    fig: &PolygonFigure,
+    pane: Rect,
+    sizes: Sizes,
+    measure: &dyn Fn(&Label) -> [f64; 2],
+) -> LaidPolygon {
+    layout_polygon_fitting(fig, None, pane, sizes, measure)
+}
+
+/// As [`layout_polygon`], with the scale set by `fit` (figure units) instead of the
+/// figure's own extent: the steps of a construction share the last step's scale.
+pub fn layout_polygon_fitting(
+    fig: &PolygonFigure,
+    fit: Option<Rect>,
+    pane: Rect,
+    sizes: Sizes,
+    measure: &dyn Fn(&Label) -> [f64; 2],
+) -> LaidPolygon {
+    // Room for labels round the figure and for the scale bar below it.
+    let side = 2.2 * sizes.font_px;
+    let inner = Rect {
+        min: [pane.min[0] + side, pane.min[1] + side],
+        max: [pane.max[0] - side, pane.max[1] - side - 1.6 * sizes.font_px],
+    };
+    let units = fit.unwrap_or_else(|| fig.extent());
+    let fits = |w: f64, span: f64| if w > 0.0 { span / w } else { f64::INFINITY };
+    let s = fits(units.width(), inner.width()).min(fits(units.height(), inner.height()));
+    let s = if s.is_finite() && s > 0.0 { s } else { 0.0 };
+    let (c, u) = (inner.centre(), units.centre());
+    let px = |p: Pt| [c[0] + (p[0] - u[0]) * s, c[1] - (p[1] - u[1]) * s];
+    let arrows: Vec<LaidArrow> = fig
+        .arrows
+        .iter()
+        .enumerate()
+        .map(|(index, a)| {
+            let (from, to) = (px(a.from), px(a.to));
+            LaidArrow {
+                from,
+                to,
+                head: head(from, to, sizes.head_px),
+                style: a.style,
+                index,
+            }
+        })
+        .collect();
+    let vertices: Vec<Pt> = fig.vertices.iter().map(|v| px(v.at)).collect();
+    let mut obstacles = Obstacles::new(pane.expand(-2.0), &arrows, &vertices);
+    let mut labels = vertex_labels(fig, &vertices, &mut obstacles, measure);
+    labels.extend(arrow_labels(fig, &arrows, &mut obstacles, measure));
+    let scale_bar = (s > 0.0).then(|| {
+        let value = round_scale(units.width().max(units.height()));
+        let y = pane.max[1] - 0.8 * sizes.font_px;
+        let x = pane.min[0] + 0.8 * sizes.font_px;
+        ScaleBar {
+            value,
+            from: [x, y],
+            to: [x + value * s, y],
+        }
+    });
+    LaidPolygon {
+        pane,
+        px_per_unit: s,
+        origin: px([0.0, 0.0]),
+        arrows,
+        vertices,
+        labels,
+        scale_bar,
+    }
+}
+
+/// The head's triangle: `head_px` long, or 40 % of a short arrow.
+fn head(from: Pt, to: Pt, head_px: f64) -> Option<[Pt; 3]> {
+    let len = distance(from, to);
+    if len < 1.0 {
+        return None;
+    }
+    let h = head_px.min(0.4 * len);
+    let u = [(to[0] - from[0]) / len, (to[1] - from[1]) / len];
+    let n = [-u[1], u[0]];
+    let base = [to[0] - h * u[0], to[1] - h * u[1]];
+    let w = 0.4 * h;
+    Some([
+        to,
+        [base[0] + w * n[0], base[1] + w * n[1]],
+        [base[0] - w * n[0], base[1] - w * n[1]],
+    ])
+}
+
+/// Vertices within this many pixels share one label ("p, a, d").
+const SAME_SPOT_PX: f64 = 4.0;
+
+/// One label per spot: vertices closer than [`SAME_SPOT_PX`] share it, pole first.
+fn vertex_labels(
+    fig: &PolygonFigure,
+    at: &[Pt],
+    obstacles: &mut Obstacles,
+    measure: &dyn Fn(&Label) -> [f64; 2],
+) -> Vec<LaidLabel> {
+    let mut spot_of: Vec<Option<usize>> = vec![None; at.len()];
+    let mut spots: Vec<Vec<usize>> = Vec::new();
+    for i in 0..at.len() {
+        if spot_of[i].is_some() {
+            continue;
+        }
+        let members: Vec<usize> = (i..at.len())
+            .filter(|&j| spot_of[j].is_none() && distance(at[i], at[j]) < SAME_SPOT_PX)
+            .collect();
+        for &j in &members {
+            spot_of[j] = Some(spots.len());
+        }
+        spots.push(members);
+    }
+    spots
+        .into_iter()
+        .map(|members| {
+            let names: Vec<&str> = members
+                .iter()
+                .map(|&j| fig.vertices[j].name.as_str())
+                .collect();
+            let label = Label::plain(names.join(", "));
+            let anchor = at[members[0]];
+            // Away from the pole: where the absolute vector would go on.
+            let pole = at[0];
+            let away = [anchor[0] - pole[0], anchor[1] - pole[1]];
+            let placed = place_vertex_label(anchor, away, measure(&label), obstacles);
+            LaidLabel {
+                label,
+                rect: placed.rect,
+                leader: placed.leader,
+                owner: LabelOwner::Vertices(members),
+                collides: placed.collides,
+            }
+        })
+        .collect()
+}
+
+/// A label per relative or component arrow, the shortest (least room) first.
+fn arrow_labels(
+    fig: &PolygonFigure,
+    arrows: &[LaidArrow],
+    obstacles: &mut Obstacles,
+    measure: &dyn Fn(&Label) -> [f64; 2],
+) -> Vec<LaidLabel> {
+    let mut order: Vec<&LaidArrow> = arrows
+        .iter()
+        .filter(|a| a.style != ArrowStyle::Absolute)
+        .collect();
+    order.sort_by(|a, b| distance(a.from, a.to).total_cmp(&distance(b.from, b.to)));
+    order
+        .into_iter()
+        .filter_map(|a| {
+            let label = PolygonFigure::arrow_label(&fig.arrows[a.index])?;
+            let placed = place_arrow_label(a.from, a.to, measure(&label), obstacles);
+            Some(LaidLabel {
+                label,
+                rect: placed.rect,
+                leader: placed.leader,
+                owner: LabelOwner::Arrow(a.index),
+                collides: placed.collides,
+            })
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn scale_is_round_and_at_most_a_quarter() {
+        assert_eq!(round_scale(10.0), 2.0);
+        assert_eq!(round_scale(0.37), 0.05);
+        assert_eq!(round_scale(0.0), 0.0);
+        assert_eq!(round_scale(f64::NAN), 0.0);
+    }
+
+    #[test]
+    fn a_head_is_at_most_forty_percent_of_a_short_arrow() {
+        let h = head([0.0, 0.0], [10.0, 0.0], 9.0).expect("head");
+        assert!((h[1][0] - 6.0).abs() < 1e-12);
+        assert!(head([0.0, 0.0], [0.5, 0.0], 9.0).is_none());
+    }
+}

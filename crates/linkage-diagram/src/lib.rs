@@ -1,0 +1,33 @@
+//! `linkage-diagram`: the figures of one linkage position as a textbook draws them,
+//! laid out once for every place they are shown — the app's panes (egui), the SVG
+//! sheet (`linkage diagram`, the app's export) — so that what a student hands in is
+//! what the app showed.
+//!
+//! - [`label`]: typeset labels (`v` with subscript `CB`, superscript `n`) as runs of
+//!   text, and an approximate measure for places without a font engine.
+//! - [`polygon_figure`]: the velocity or acceleration polygon of a position as
+//!   arrows and named vertices, in m/s or m/s².
+//! - [`layout`]: a figure fitted to a pane in pixels, with arrow heads, a round
+//!   scale bar and labels placed clear of each other and of the arrow heads
+//!   ([`placement`]).
+//! - [`pose_figure`]: the mechanism's links, joints and instant centres.
+//! - [`construction`]: one vector equation constructed step by step (known terms,
+//!   the unknowns' direction lines, their crossing).
+//! - [`svg`]: an A4 sheet of the chosen figures and the vector-equation tables.
+
+#![warn(missing_docs)]
+
+pub mod construction;
+pub mod geometry;
+pub mod label;
+pub mod layout;
+pub mod placement;
+pub mod polygon_figure;
+pub mod pose_figure;
+pub mod pose_layout;
+pub mod svg;
+
+pub use geometry::{Pt, Rect};
+pub use label::{Label, Run, Script};
+pub use layout::{LaidArrow, LaidLabel, LaidPolygon, layout_polygon};
+pub use polygon_figure::{Arrow, ArrowStyle, PolygonFigure, Vertex};

@@ -1,0 +1,235 @@
+//! Label placement: each label tries candidate places in order of preference — next
+//! to its point or beside its arrow, then on rings further out with a leader line —
+//! and takes the first that stays in the pane and overlaps no label placed before,
+//! no arrow head and no vertex, crossing as few arrows as it can. Greedy placement
+//! with candidates is what cartographic labelling does for point and line features;
+//! the figures have tens of labels, so every candidate is checked directly.
+
+use crate::geometry::{Pt, Rect, along, distance};
+use crate::layout::LaidArrow;
+
+/// What a label must keep clear of.
+#[derive(Clone, Debug)]
+pub struct Obstacles {
+    bounds: Rect,
+    hard: Vec<Rect>,
+    segments: Vec<[Pt; 2]>,
+}
+
+/// Where a label went.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Placed {
+    /// Its box.
+    pub rect: Rect,
+    /// A leader from the box to its anchor, when it is on an outer ring.
+    pub leader: Option<[Pt; 2]>,
+    /// Whether every candidate collided (the least bad one was taken).
+    pub collides: bool,
+}
+
+/// Radius of a vertex's dot, pixels.
+pub const DOT_PX: f64 = 2.5;
+
+impl Obstacles {
+    /// Labels must stay inside `bounds`, off the arrows' heads and the vertices.
+    pub fn new(bounds: Rect, arrows: &[LaidArrow], vertices: &[Pt]) -> Self {
+        let heads = arrows
+            .iter()
+            .filter_map(|a| a.head)
+            .filter_map(Rect::around)
+            .map(|r| r.expand(1.0));
+        let dots = vertices
+            .iter()
+            .map(|&v| Rect { min: v, max: v }.expand(DOT_PX + 1.0));
+        Self {
+            bounds,
+            hard: heads.chain(dots).collect(),
+            segments: arrows.iter().map(|a| [a.from, a.to]).collect(),
+        }
+    }
+
+    /// Labels must stay inside `bounds`, off the `points` and the `shapes` (pivot
+    /// and slider symbols); the `outlines` (links) are crossed as little as may be.
+    pub fn for_points<'a>(
+        bounds: Rect,
+        outlines: &[Vec<Pt>],
+        points: impl Iterator<Item = &'a Pt>,
+        shapes: impl Iterator<Item = Rect>,
+    ) -> Self {
+        let segments = outlines
+            .iter()
+            .flat_map(|o| {
+                let closed = o.len() > 2;
+                (0..o.len()).filter_map(move |i| {
+                    let j = i + 1;
+                    if j < o.len() {
+                        Some([o[i], o[j]])
+                    } else if closed {
+                        Some([o[i], o[0]])
+                    } else {
+                        None
+                    }
+                })
+            })
+            .collect();
+        Self {
+            bounds,
+            hard: points
+                .map(|&p| Rect { min: p, max: p }.expand(DOT_PX + 2.0))
+                .chain(shapes)
+                .collect(),
+            segments,
+        }
+    }
+
+    /// Whether `r` is a free place: in bounds, overlapping nothing hard.
+    fn free(&self, r: &Rect) -> bool {
+        self.bounds.contains_rect(r) && !self.hard.iter().any(|h| h.overlaps(r))
+    }
+
+    /// How many arrows cross `r`.
+    fn crossings(&self, r: &Rect) -> usize {
+        self.segments
+            .iter()
+            .filter(|s| r.crosses_segment(s[0], s[1]))
+            .count()
+    }
+
+    /// How badly `r` collides: overlap area with hard obstacles and the outside.
+    fn badness(&self, r: &Rect) -> f64 {
+        let overlap = |h: &Rect| {
+            let w = (r.max[0].min(h.max[0]) - r.min[0].max(h.min[0])).max(0.0);
+            let t = (r.max[1].min(h.max[1]) - r.min[1].max(h.min[1])).max(0.0);
+            w * t
+        };
+        let area = r.width() * r.height();
+        let inside = overlap(&self.bounds);
+        (area - inside) + self.hard.iter().map(overlap).sum::<f64>()
+    }
+
+    /// Chooses among `candidates` (box, anchor of the leader if any), in order of
+    /// preference; the chosen box becomes an obstacle for later labels.
+    fn choose(&mut self, candidates: impl IntoIterator<Item = (Rect, Option<Pt>)>) -> Placed {
+        let mut best: Option<(usize, usize, Rect, Option<Pt>)> = None;
+        let mut least_bad: Option<(f64, Rect, Option<Pt>)> = None;
+        for (order, (rect, leader)) in candidates.into_iter().enumerate() {
+            if self.free(&rect) {
+                let cost = self.crossings(&rect);
+                if best.as_ref().is_none_or(|b| (cost, order) < (b.0, b.1)) {
+                    best = Some((cost, order, rect, leader));
+                }
+                if cost == 0 {
+                    break;
+                }
+            } else if best.is_none() {
+                let bad = self.badness(&rect);
+                if least_bad.as_ref().is_none_or(|l| bad < l.0) {
+                    least_bad = Some((bad, rect, leader));
+                }
+            }
+        }
+        let (rect, leader, collides) = match (best, least_bad) {
+            (Some((_, _, r, l)), _) => (r, l, false),
+            (None, Some((_, r, l))) => (r, l, true),
+            (None, None) => unreachable!("candidates are never empty"),
+        };
+        self.hard.push(rect);
+        Placed {
+            rect,
+            leader: leader.map(|a| [nearest_on(&rect, a), a]),
+            collides,
+        }
+    }
+}
+
+/// How a candidate box keeps its gap from the anchor.
+#[derive(Clone, Copy)]
+enum Clear {
+    /// From the point (a vertex): the box's side or corner `gap` from it.
+    Point,
+    /// From the line through it at right angles to the direction (an arrow): the
+    /// whole box `gap` beyond that line, so that a slanted arrow does not cut its corner.
+    Line,
+}
+
+/// The box of `size` `gap` from `anchor` in direction `d`.
+fn box_towards(anchor: Pt, d: Pt, gap: f64, size: [f64; 2], clear: Clear) -> Rect {
+    let n = d[0].hypot(d[1]);
+    let d = if n > 0.0 {
+        [d[0] / n, d[1] / n]
+    } else {
+        [1.0, 0.0]
+    };
+    let (hx, hy) = (0.5 * size[0] * d[0].abs(), 0.5 * size[1] * d[1].abs());
+    let reach = gap
+        + match clear {
+            Clear::Point => hx.max(hy),
+            // The box's half-extent along d (its support function).
+            Clear::Line => hx + hy,
+        };
+    let c = along(anchor, d, reach);
+    Rect::from_min_size(
+        [c[0] - 0.5 * size[0], c[1] - 0.5 * size[1]],
+        size[0],
+        size[1],
+    )
+}
+
+/// `n` directions round the circle, starting at `first` and alternating either side.
+fn directions(first: Pt, n: usize) -> impl Iterator<Item = Pt> {
+    let a0 = first[1].atan2(first[0]);
+    let step = std::f64::consts::TAU / n as f64;
+    (0..n).map(move |k| {
+        let side = if k % 2 == 1 { 1.0 } else { -1.0 };
+        let a = a0 + side * step * k.div_ceil(2) as f64;
+        [a.cos(), a.sin()]
+    })
+}
+
+/// Rings further out for a label with a leader, pixels.
+const RINGS_PX: [f64; 5] = [12.0, 20.0, 32.0, 48.0, 70.0];
+
+/// Places a vertex's label next to it, preferring direction `away`.
+pub fn place_vertex_label(anchor: Pt, away: Pt, size: [f64; 2], o: &mut Obstacles) -> Placed {
+    let away = if away[0].hypot(away[1]) > 0.0 {
+        away
+    } else {
+        [1.0, -1.0]
+    };
+    let near = directions(away, 8).map(move |d| {
+        (
+            box_towards(anchor, d, DOT_PX + 2.0, size, Clear::Point),
+            None,
+        )
+    });
+    let far = RINGS_PX.into_iter().flat_map(move |r| {
+        directions(away, 16)
+            .map(move |d| (box_towards(anchor, d, r, size, Clear::Point), Some(anchor)))
+    });
+    o.choose(near.chain(far))
+}
+
+/// Places an arrow's label beside it, near its middle first.
+pub fn place_arrow_label(from: Pt, to: Pt, size: [f64; 2], o: &mut Obstacles) -> Placed {
+    let len = distance(from, to).max(1e-9);
+    let n = [-(to[1] - from[1]) / len, (to[0] - from[0]) / len];
+    let beside = [0.5, 0.35, 0.65, 0.2, 0.8].into_iter().flat_map(move |t| {
+        let at = along(from, [to[0] - from[0], to[1] - from[1]], t);
+        [n, [-n[0], -n[1]]]
+            .into_iter()
+            .map(move |side| (box_towards(at, side, 3.0, size, Clear::Line), None))
+    });
+    let mid = along(from, [to[0] - from[0], to[1] - from[1]], 0.5);
+    let far = RINGS_PX.into_iter().flat_map(move |r| {
+        directions(n, 16).map(move |d| (box_towards(mid, d, r, size, Clear::Point), Some(mid)))
+    });
+    o.choose(beside.chain(far))
+}
+
+/// The point of `r`'s outline nearest to `p`.
+fn nearest_on(r: &Rect, p: Pt) -> Pt {
+    [
+        p[0].clamp(r.min[0], r.max[0]),
+        p[1].clamp(r.min[1], r.max[1]),
+    ]
+}

@@ -1,0 +1,176 @@
+//! The pose fitted to a pane: links, pivots, sliders and joint names in pixels, the
+//! instant centres that fall near the mechanism, and a round scale bar in metres.
+
+use linkage::instant_centres::Centre;
+
+use crate::geometry::{Pt, Rect};
+use crate::label::Label;
+use crate::layout::{ScaleBar, Sizes, round_scale};
+use crate::placement::{Obstacles, Placed, place_vertex_label};
+use crate::pose_figure::PoseFigure;
+
+/// A placed label of the pose.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PoseLabel {
+    /// Its text.
+    pub label: Label,
+    /// Where it went.
+    pub placed: Placed,
+}
+
+/// The pose laid out in a pane.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LaidPose {
+    /// The pane.
+    pub pane: Rect,
+    /// Pixels per metre.
+    pub px_per_m: f64,
+    /// Link outlines, pixels.
+    pub links: Vec<Vec<Pt>>,
+    /// Ground pivots, pixels.
+    pub ground_pivots: Vec<Pt>,
+    /// Joints, pixels.
+    pub joints: Vec<Pt>,
+    /// Slider blocks: the four corners, pixels.
+    pub sliders: Vec<[Pt; 4]>,
+    /// Instant centres on the figure, pixels.
+    pub centres: Vec<Pt>,
+    /// Joint names, then the centres' labels.
+    pub labels: Vec<PoseLabel>,
+    /// Centres not drawn: at infinity (with their direction), or far off the figure.
+    pub centres_off: Vec<(Label, Centre)>,
+    /// The scale bar, metres.
+    pub scale_bar: Option<ScaleBar>,
+}
+
+/// The box of the ground symbol drawn under a pivot at `p`: a triangle 14 px wide
+/// and 11 px high with a base line 20 px wide.
+pub fn pivot_symbol_box(p: Pt) -> Rect {
+    Rect {
+        min: [p[0] - 10.0, p[1]],
+        max: [p[0] + 10.0, p[1] + 12.0],
+    }
+}
+
+/// A centre farther from the mechanism's box than this many times its size is
+/// listed instead of drawn (it would shrink the mechanism to a speck).
+const CENTRE_REACH: f64 = 1.5;
+
+/// Lays the pose out in `pane`.
+pub fn layout_pose(
+    fig: &PoseFigure,
+    pane: Rect,
+    sizes: Sizes,
+    measure: &dyn Fn(&Label) -> [f64; 2],
+) -> LaidPose {
+    let mech = fig.mechanism_box().unwrap_or(Rect {
+        min: [0.0; 2],
+        max: [0.0; 2],
+    });
+    let size = mech.width().max(mech.height()).max(1e-9);
+    let reach = mech.expand(CENTRE_REACH * size);
+    let mut shown = Vec::new();
+    let mut centres_off = Vec::new();
+    for c in &fig.centres {
+        match c.centre {
+            Centre::At(p) if reach.contains_rect(&Rect { min: p, max: p }) => {
+                shown.push((c.label.clone(), p))
+            }
+            other => centres_off.push((c.label.clone(), other)),
+        }
+    }
+    let all = Rect::around(
+        [mech.min, mech.max]
+            .into_iter()
+            .chain(shown.iter().map(|c| c.1)),
+    )
+    .unwrap_or(mech);
+    let side = 2.2 * sizes.font_px;
+    let inner = Rect {
+        min: [pane.min[0] + side, pane.min[1] + side],
+        max: [pane.max[0] - side, pane.max[1] - side - 1.6 * sizes.font_px],
+    };
+    let fits = |w: f64, span: f64| if w > 0.0 { span / w } else { f64::INFINITY };
+    let s = fits(all.width(), inner.width()).min(fits(all.height(), inner.height()));
+    let s = if s.is_finite() && s > 0.0 { s } else { 1.0 };
+    let (c, u) = (inner.centre(), all.centre());
+    let px = |p: Pt| [c[0] + (p[0] - u[0]) * s, c[1] - (p[1] - u[1]) * s];
+    let links: Vec<Vec<Pt>> = fig
+        .links
+        .iter()
+        .map(|l| l.iter().map(|&p| px(p)).collect())
+        .collect();
+    let joints: Vec<Pt> = fig.joints.iter().map(|j| px(j.1)).collect();
+    let centres: Vec<Pt> = shown.iter().map(|c| px(c.1)).collect();
+    let half = 0.9 * sizes.font_px;
+    let sliders: Vec<[Pt; 4]> = fig
+        .sliders
+        .iter()
+        .map(|sl| {
+            let at = px(sl.at);
+            // y flips: the guide's direction in pixels.
+            let d = [sl.direction[0], -sl.direction[1]];
+            let n = [-d[1], d[0]];
+            let corner = |a: f64, b: f64| {
+                [
+                    at[0] + a * 1.4 * half * d[0] + b * half * n[0],
+                    at[1] + a * 1.4 * half * d[1] + b * half * n[1],
+                ]
+            };
+            [
+                corner(-1.0, -1.0),
+                corner(1.0, -1.0),
+                corner(1.0, 1.0),
+                corner(-1.0, 1.0),
+            ]
+        })
+        .collect();
+    let ground_pivots: Vec<Pt> = fig.ground_pivots.iter().map(|&p| px(p)).collect();
+    let shapes = ground_pivots
+        .iter()
+        .map(|&p| pivot_symbol_box(p))
+        .chain(sliders.iter().filter_map(|c: &[Pt; 4]| Rect::around(*c)))
+        .collect::<Vec<_>>();
+    let mut obstacles = Obstacles::for_points(
+        pane.expand(-2.0),
+        &links,
+        joints.iter().chain(&centres),
+        shapes.into_iter(),
+    );
+    let mut labels = Vec::new();
+    let middle = mech.centre();
+    let middle = px(middle);
+    for ((name, _), &at) in fig.joints.iter().zip(&joints) {
+        let label = Label::plain(name.clone());
+        let away = [at[0] - middle[0], at[1] - middle[1]];
+        let placed = place_vertex_label(at, away, measure(&label), &mut obstacles);
+        labels.push(PoseLabel { label, placed });
+    }
+    for ((label, _), &at) in shown.iter().zip(&centres) {
+        let away = [at[0] - middle[0], at[1] - middle[1]];
+        let placed = place_vertex_label(at, away, measure(label), &mut obstacles);
+        labels.push(PoseLabel {
+            label: label.clone(),
+            placed,
+        });
+    }
+    let value = round_scale(size);
+    let y = pane.max[1] - 0.8 * sizes.font_px;
+    let x = pane.min[0] + 0.8 * sizes.font_px;
+    LaidPose {
+        pane,
+        px_per_m: s,
+        links,
+        ground_pivots,
+        joints,
+        sliders,
+        centres,
+        labels,
+        centres_off,
+        scale_bar: Some(ScaleBar {
+            value,
+            from: [x, y],
+            to: [x + value * s, y],
+        }),
+    }
+}

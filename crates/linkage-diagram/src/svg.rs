@@ -1,0 +1,442 @@
+//! An A4 sheet of one position as plain SVG 1.1: title, the pose (with instant
+//! centres if asked), the velocity and acceleration polygons side by side, each with
+//! its scale bar, and the vector-equation tables. Text is text (searchable, editable
+//! in Inkscape); symbols are set with `tspan` sub- and superscripts. Coordinates are
+//! CSS pixels (96 per inch) and the sheet is sized in millimetres.
+
+use std::fmt::Write as _;
+
+use linkage::instant_centres::{Centre, InstantCentres};
+use linkage::polygon::{Quantity, VectorEquation};
+use linkage::{Mechanism, Solution};
+
+use crate::geometry::{Pt, Rect};
+use crate::label::{Label, SCRIPT_SCALE, Script};
+use crate::layout::{LaidPolygon, ScaleBar, Sizes, layout_polygon};
+use crate::polygon_figure::{PolygonFigure, unit};
+use crate::pose_figure::PoseFigure;
+use crate::pose_layout::{LaidPose, layout_pose};
+
+/// Which parts the sheet holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Parts {
+    /// The mechanism's pose.
+    pub pose: bool,
+    /// The velocity polygon.
+    pub velocity: bool,
+    /// The acceleration polygon.
+    pub acceleration: bool,
+    /// Instant centres on the pose.
+    pub centres: bool,
+    /// The vector-equation tables.
+    pub table: bool,
+}
+
+impl Default for Parts {
+    fn default() -> Self {
+        Self {
+            pose: true,
+            velocity: true,
+            acceleration: true,
+            centres: false,
+            table: true,
+        }
+    }
+}
+
+/// One position of a mechanism: what the sheet draws.
+#[derive(Clone, Copy, Debug)]
+pub struct Position<'a> {
+    /// The mechanism.
+    pub mechanism: &'a Mechanism,
+    /// Its solution at the position.
+    pub solution: &'a Solution,
+    /// The polygon equations there.
+    pub equations: &'a [VectorEquation],
+    /// Its instant centres, if they are to be drawn.
+    pub centres: Option<&'a InstantCentres>,
+}
+
+/// A4 width in CSS pixels (210 mm at 96 per inch).
+const PAGE_W: f64 = 793.7;
+/// A4 height in CSS pixels (297 mm).
+const PAGE_H: f64 = 1122.5;
+const MARGIN: f64 = 40.0;
+const FONT: f64 = 12.0;
+
+/// Label sizes on the sheet: the approximate measure, as no font engine is at hand.
+fn measure(label: &Label) -> [f64; 2] {
+    label.approximate_size(FONT)
+}
+
+/// The sheet of `pos` with `parts`, as SVG text.
+pub fn sheet(pos: &Position<'_>, parts: Parts) -> String {
+    let sizes = Sizes {
+        font_px: FONT,
+        ..Sizes::default()
+    };
+    let width = PAGE_W - 2.0 * MARGIN;
+    let mut body = String::new();
+    let mut y = MARGIN;
+    let m = pos.mechanism;
+    let s = pos.solution;
+    let title = format!(
+        "{} at input {:.2}°, ω = {:.3} rad/s",
+        m.name,
+        s.input_rad.to_degrees(),
+        s.input_speed_rad_s
+    );
+    text_at(&mut body, [MARGIN, y + 14.0], &title, 16.0, "bold");
+    y += 30.0;
+    if parts.pose {
+        let centres = if parts.centres { pos.centres } else { None };
+        let fig = PoseFigure::new(m, s, centres);
+        let pane = Rect::from_min_size([MARGIN, y], width, 360.0);
+        y = pose(&mut body, &layout_pose(&fig, pane, sizes, &measure)) + 10.0;
+    }
+    let quantities: Vec<Quantity> = [
+        (parts.velocity, Quantity::Velocity),
+        (parts.acceleration, Quantity::Acceleration),
+    ]
+    .into_iter()
+    .filter_map(|(on, q)| on.then_some(q))
+    .collect();
+    if !quantities.is_empty() {
+        let w = (width - 10.0 * (quantities.len() - 1) as f64) / quantities.len() as f64;
+        for (i, &q) in quantities.iter().enumerate() {
+            let fig = PolygonFigure::of_position(q, m, s, pos.equations);
+            let pane = Rect::from_min_size([MARGIN + i as f64 * (w + 10.0), y], w, 320.0);
+            // The figure keeps clear of the pane's title.
+            let below_title = Rect {
+                min: [pane.min[0], pane.min[1] + TITLE_H],
+                max: pane.max,
+            };
+            frame(&mut body, &pane);
+            text_at(
+                &mut body,
+                [pane.min[0] + 6.0, pane.min[1] + 15.0],
+                polygon_title(q),
+                13.0,
+                "bold",
+            );
+            polygon(
+                &mut body,
+                &fig,
+                &layout_polygon(&fig, below_title, sizes, &measure),
+            );
+        }
+        y += 330.0;
+    }
+    if parts.table {
+        for q in [Quantity::Velocity, Quantity::Acceleration] {
+            y = table(&mut body, pos.equations, q, y);
+        }
+    }
+    let height = PAGE_H.max(y + MARGIN);
+    format!(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n\
+         <svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" \
+         width=\"{:.1}mm\" height=\"{:.1}mm\" viewBox=\"0 0 {PAGE_W} {height:.1}\" \
+         font-family=\"Ubuntu, Liberation Sans, Arial, Helvetica, sans-serif\">\n\
+         <title>{}</title>\n\
+         <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n{body}</svg>\n",
+        PAGE_W * 25.4 / 96.0,
+        height * 25.4 / 96.0,
+        escape(&title)
+    )
+}
+
+/// `#rrggbb`.
+fn hex([r, g, b]: [u8; 3]) -> String {
+    format!("#{r:02x}{g:02x}{b:02x}")
+}
+
+fn escape(t: &str) -> String {
+    t.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+}
+
+fn text_at(out: &mut String, at: Pt, t: &str, size: f64, weight: &str) {
+    let _ = writeln!(
+        out,
+        "<text x=\"{:.1}\" y=\"{:.1}\" font-size=\"{size}\" font-weight=\"{weight}\">{}</text>",
+        at[0],
+        at[1],
+        escape(t)
+    );
+}
+
+/// A typeset label with its box's left top at `min`.
+fn label_at(out: &mut String, label: &Label, min: Pt, colour: &str) {
+    let scripted = label.runs.iter().any(|r| r.script != Script::Base);
+    let baseline = min[1] + FONT * if scripted { 1.05 } else { 0.92 };
+    let _ = write!(
+        out,
+        "<text x=\"{:.1}\" y=\"{baseline:.1}\" font-size=\"{FONT}\" fill=\"{colour}\">",
+        min[0]
+    );
+    for r in &label.runs {
+        let t = escape(&r.text);
+        let small = FONT * SCRIPT_SCALE;
+        match r.script {
+            Script::Base => {
+                let _ = write!(out, "<tspan>{t}</tspan>");
+            }
+            Script::Sub => {
+                let _ = write!(
+                    out,
+                    "<tspan font-size=\"{small:.1}\" baseline-shift=\"sub\">{t}</tspan>"
+                );
+            }
+            Script::Super => {
+                let _ = write!(
+                    out,
+                    "<tspan font-size=\"{small:.1}\" baseline-shift=\"super\">{t}</tspan>"
+                );
+            }
+        }
+    }
+    out.push_str("</text>\n");
+}
+
+fn line(out: &mut String, a: Pt, b: Pt, colour: &str, width: f64, dashed: bool) {
+    let dash = if dashed {
+        " stroke-dasharray=\"5 3\""
+    } else {
+        ""
+    };
+    let _ = writeln!(
+        out,
+        "<line x1=\"{:.2}\" y1=\"{:.2}\" x2=\"{:.2}\" y2=\"{:.2}\" stroke=\"{colour}\" stroke-width=\"{width}\"{dash}/>",
+        a[0], a[1], b[0], b[1]
+    );
+}
+
+fn circle(out: &mut String, at: Pt, r: f64, fill: &str, stroke: &str) {
+    let _ = writeln!(
+        out,
+        "<circle cx=\"{:.2}\" cy=\"{:.2}\" r=\"{r}\" fill=\"{fill}\" stroke=\"{stroke}\"/>",
+        at[0], at[1]
+    );
+}
+
+fn polygon_shape(out: &mut String, pts: &[Pt], fill: &str, stroke: &str) {
+    let list: Vec<String> = pts
+        .iter()
+        .map(|p| format!("{:.2},{:.2}", p[0], p[1]))
+        .collect();
+    let _ = writeln!(
+        out,
+        "<polygon points=\"{}\" fill=\"{fill}\" stroke=\"{stroke}\"/>",
+        list.join(" ")
+    );
+}
+
+fn frame(out: &mut String, pane: &Rect) {
+    let _ = writeln!(
+        out,
+        "<rect x=\"{:.1}\" y=\"{:.1}\" width=\"{:.1}\" height=\"{:.1}\" fill=\"none\" stroke=\"#bbbbbb\"/>",
+        pane.min[0],
+        pane.min[1],
+        pane.width(),
+        pane.height()
+    );
+}
+
+fn scale_bar(out: &mut String, bar: &ScaleBar, unit: &str) {
+    line(out, bar.from, bar.to, "#000000", 2.0, false);
+    for end in [bar.from, bar.to] {
+        line(
+            out,
+            [end[0], end[1] - 3.0],
+            [end[0], end[1] + 3.0],
+            "#000000",
+            1.0,
+            false,
+        );
+    }
+    text_at(
+        out,
+        [bar.to[0] + 6.0, bar.to[1] + 4.0],
+        &format!("{} {unit}", round_text(bar.value)),
+        FONT,
+        "normal",
+    );
+}
+
+/// A round value without float noise (0.05, not 0.05000000000000001).
+pub fn round_text(v: f64) -> String {
+    let t = format!("{v:.6}");
+    let t = t.trim_end_matches('0').trim_end_matches('.');
+    if t.is_empty() || t == "0" {
+        format!("{v:.0e}")
+    } else {
+        t.to_string()
+    }
+}
+
+fn leaders_and_label(
+    out: &mut String,
+    label: &Label,
+    rect: &Rect,
+    leader: Option<[Pt; 2]>,
+    colour: &str,
+) {
+    if let Some([a, b]) = leader {
+        line(out, a, b, "#999999", 0.7, false);
+    }
+    label_at(out, label, rect.min, colour);
+}
+
+/// Height of a pane's title line.
+const TITLE_H: f64 = 20.0;
+
+fn polygon_title(q: Quantity) -> &'static str {
+    match q {
+        Quantity::Velocity => "Velocity polygon",
+        Quantity::Acceleration => "Acceleration polygon",
+    }
+}
+
+fn polygon(out: &mut String, fig: &PolygonFigure, laid: &LaidPolygon) {
+    if laid.px_per_unit <= 0.0 {
+        text_at(
+            out,
+            laid.pane.centre(),
+            "at rest: the polygon is a point",
+            FONT,
+            "normal",
+        );
+        return;
+    }
+    for a in &laid.arrows {
+        let c = hex(a.style.rgb());
+        let width = if a.style.dashed() { 1.3 } else { 1.8 };
+        line(out, a.from, a.to, &c, width, a.style.dashed());
+        if let Some(h) = a.head {
+            polygon_shape(out, &h, &c, "none");
+        }
+    }
+    for &v in &laid.vertices {
+        circle(out, v, 2.5, "#000000", "none");
+    }
+    for l in &laid.labels {
+        let colour = match l.owner {
+            crate::layout::LabelOwner::Arrow(i) => hex(fig.arrows[i].style.rgb()),
+            crate::layout::LabelOwner::Vertices(_) => "#000000".into(),
+        };
+        leaders_and_label(out, &l.label, &l.rect, l.leader, &colour);
+    }
+    if let Some(bar) = &laid.scale_bar {
+        scale_bar(out, bar, fig.unit());
+    }
+}
+
+/// Draws the pose; the centres not drawn are listed below it. Returns the y below.
+fn pose(out: &mut String, laid: &LaidPose) -> f64 {
+    frame(out, &laid.pane);
+    for l in &laid.links {
+        if l.len() > 2 {
+            polygon_shape(out, l, "#dde6f3", "#1e5aaa");
+        } else if let [a, b] = l[..] {
+            line(out, a, b, "#1e5aaa", 3.0, false);
+        }
+    }
+    for &p in &laid.ground_pivots {
+        let tri = [p, [p[0] - 7.0, p[1] + 11.0], [p[0] + 7.0, p[1] + 11.0]];
+        polygon_shape(out, &tri, "#cccccc", "#333333");
+        line(
+            out,
+            [p[0] - 10.0, p[1] + 11.0],
+            [p[0] + 10.0, p[1] + 11.0],
+            "#333333",
+            1.5,
+            false,
+        );
+    }
+    for sl in &laid.sliders {
+        polygon_shape(out, sl, "#f3e2c8", "#7a4a10");
+    }
+    for &j in &laid.joints {
+        circle(out, j, 3.0, "white", "#000000");
+    }
+    for &c in &laid.centres {
+        circle(out, c, 2.5, "#b0306a", "none");
+    }
+    for l in &laid.labels {
+        leaders_and_label(out, &l.label, &l.placed.rect, l.placed.leader, "#000000");
+    }
+    if let Some(bar) = &laid.scale_bar {
+        scale_bar(out, bar, "m");
+    }
+    let mut y = laid.pane.max[1];
+    for (label, centre) in &laid.centres_off {
+        let note = match centre {
+            Centre::AtInfinity(d) => format!(
+                ": at infinity, direction {:.1}°",
+                d[1].atan2(d[0]).to_degrees()
+            ),
+            Centre::At(p) => format!(": at ({:.4}, {:.4}) m, off the figure", p[0], p[1]),
+        };
+        let mut text = label.clone();
+        text.runs.push(crate::label::Run {
+            text: note,
+            script: Script::Base,
+        });
+        y += 16.0;
+        label_at(out, &text, [laid.pane.min[0], y - 1.05 * FONT], "#000000");
+    }
+    y
+}
+
+/// The table of `quantity`'s equations from `y` on; returns the y below it.
+fn table(out: &mut String, equations: &[VectorEquation], quantity: Quantity, mut y: f64) -> f64 {
+    let row = 1.5 * FONT;
+    let columns = [0.0, 80.0, 190.0, 270.0, 470.0];
+    for eq in equations.iter().filter(|e| e.kind == quantity) {
+        y += row;
+        text_at(out, [MARGIN, y], &format!("{}:", eq.group), FONT, "bold");
+        y += row;
+        label_at(
+            out,
+            &Label::of_equation(eq),
+            [MARGIN + 12.0, y - 1.05 * FONT],
+            "#000000",
+        );
+        y += row;
+        for (x, head) in columns
+            .iter()
+            .zip(["term", "magnitude", "direction", "along", "known"])
+        {
+            text_at(out, [MARGIN + x, y], head, FONT, "bold");
+        }
+        for t in eq.lhs.iter().chain(&eq.rhs) {
+            let cells = [
+                format!("{:.4} {}", t.magnitude, unit(quantity)),
+                format!("{:.2}°", t.direction_rad.to_degrees()),
+                t.direction.clone(),
+                format!(
+                    "magnitude {}, direction {}",
+                    known(t.magnitude_known),
+                    known(t.direction_known)
+                ),
+            ];
+            label_at(
+                out,
+                &Label::of_symbol(&t.symbol),
+                [MARGIN, y + 0.45 * FONT],
+                "#000000",
+            );
+            y += row;
+            for (x, cell) in columns[1..].iter().zip(&cells) {
+                text_at(out, [MARGIN + x, y], cell, FONT, "normal");
+            }
+        }
+    }
+    y
+}
+
+fn known(k: bool) -> &'static str {
+    if k { "known" } else { "solved" }
+}

@@ -1,0 +1,147 @@
+//! Construction mode: one vector equation built step by step as the textbook does —
+//! the known terms head to tail, the unknowns' direction lines, their crossing — with
+//! what each step fixes written under the figure. All steps share the last one's
+//! scale, so the figure grows in place as the student steps through it.
+
+use eframe::egui::{self, Color32, Pos2, Sense, Stroke, Vec2};
+use linkage::polygon::Quantity;
+use linkage_diagram::construction::{DirectionLine, construct};
+use linkage_diagram::label::Label;
+use linkage_diagram::layout::{LaidPolygon, Sizes, layout_polygon_fitting};
+use linkage_diagram::{Rect, geometry};
+
+use crate::app::AppState;
+use crate::ui::typeset::{galley, job};
+
+/// Which equation is being constructed, and how far.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct ConstructionView {
+    /// Index into the position's equations.
+    pub equation: usize,
+    /// Steps shown (0-based index of the last one shown).
+    pub step: usize,
+}
+
+const PAPER: Color32 = Color32::from_rgb(252, 252, 248);
+const INK: Color32 = Color32::from_gray(25);
+const LINE: Color32 = Color32::from_rgb(120, 60, 160);
+
+/// The construction section of the polygon pane.
+pub fn section(ui: &mut egui::Ui, st: &mut AppState) {
+    let equations = st.session.polygons();
+    if equations.is_empty() {
+        ui.weak("no equations at this position");
+        return;
+    }
+    let view = &mut st.construction;
+    view.equation = view.equation.min(equations.len() - 1);
+    let eq = &equations[view.equation];
+    let ink = ui.visuals().text_color();
+    egui::ComboBox::from_label("equation")
+        .selected_text(job(&Label::of_equation(eq), 14.0, ink))
+        .width(ui.available_width() - 80.0)
+        .show_ui(ui, |ui| {
+            for (i, e) in equations.iter().enumerate() {
+                if ui
+                    .selectable_label(i == view.equation, job(&Label::of_equation(e), 14.0, ink))
+                    .clicked()
+                {
+                    view.equation = i;
+                    view.step = 0;
+                }
+            }
+        });
+    let pole = if eq.kind == Quantity::Velocity {
+        "p"
+    } else {
+        "p'"
+    };
+    let crossing = eq.lhs.first().map_or("x".to_string(), |t| {
+        let prime = if eq.kind == Quantity::Velocity {
+            ""
+        } else {
+            "'"
+        };
+        format!("{}{prime}", t.symbol.point.to_lowercase())
+    });
+    let steps = match construct(eq, pole, &crossing) {
+        Ok(steps) => steps,
+        Err(e) => {
+            ui.colored_label(ui.visuals().warn_fg_color, e.to_string());
+            return;
+        }
+    };
+    view.step = view.step.min(steps.len() - 1);
+    ui.horizontal(|ui| {
+        if ui
+            .add_enabled(view.step > 0, egui::Button::new("back"))
+            .clicked()
+        {
+            view.step -= 1;
+        }
+        ui.label(format!("step {} of {}", view.step + 1, steps.len()));
+        if ui
+            .add_enabled(view.step + 1 < steps.len(), egui::Button::new("next"))
+            .clicked()
+        {
+            view.step += 1;
+        }
+    });
+    let last = steps.last().expect("a construction has steps");
+    let step = &steps[view.step];
+    draw_step(ui, step, last.figure.extent());
+    ui.label(job(&step.says, 14.0, ink));
+}
+
+fn pos(p: geometry::Pt) -> Pos2 {
+    Pos2::new(p[0] as f32, p[1] as f32)
+}
+
+fn draw_step(ui: &mut egui::Ui, step: &linkage_diagram::construction::Step, fit: Rect) {
+    let w = ui.available_width().max(160.0);
+    let h = (w * 0.72).clamp(160.0, 560.0);
+    let (rect, _) = ui.allocate_exact_size(Vec2::new(w, h), Sense::hover());
+    let painter = ui.painter_at(rect);
+    painter.rect_filled(rect, 4.0, PAPER);
+    let measure = |l: &Label| {
+        let g = galley(&painter, l, 13.0, INK);
+        [f64::from(g.size().x), f64::from(g.size().y)]
+    };
+    let pane = Rect {
+        min: [f64::from(rect.min.x), f64::from(rect.min.y)],
+        max: [f64::from(rect.max.x), f64::from(rect.max.y)],
+    };
+    let sizes = Sizes {
+        font_px: 13.0,
+        head_px: 9.0,
+    };
+    let laid = layout_polygon_fitting(&step.figure, Some(fit), pane, sizes, &measure);
+    if laid.px_per_unit <= 0.0 {
+        return;
+    }
+    for line in &step.lines {
+        direction_line(&painter, &laid, line, rect);
+    }
+    crate::ui::polygons::draw(&painter, &step.figure, &laid, None, INK);
+}
+
+/// A direction line across the pane, dashed, named near where it enters the figure.
+fn direction_line(
+    painter: &egui::Painter,
+    laid: &LaidPolygon,
+    line: &DirectionLine,
+    rect: egui::Rect,
+) {
+    let through = pos(laid.to_px(line.through));
+    // y flips on screen.
+    let d = Vec2::new(line.direction[0] as f32, -(line.direction[1] as f32));
+    let reach = rect.size().length();
+    painter.extend(egui::Shape::dashed_line(
+        &[through - d * reach, through + d * reach],
+        Stroke::new(1.2, LINE),
+        7.0,
+        4.0,
+    ));
+    let g = galley(painter, &line.label, 13.0, LINE);
+    painter.galley(through + d * 40.0 + Vec2::new(4.0, -14.0), g, LINE);
+}

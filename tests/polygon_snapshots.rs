@@ -1,0 +1,74 @@
+//! The polygon pane of each seed scene at three crank angles, drawn through wgpu
+//! (Mesa's lavapipe in CI) and compared with the images committed under
+//! `docs/polygons/` (shown in the README; `UPDATE_SNAPSHOTS=1` rewrites them). The
+//! die cutter as printed is shown at the paper's "position 1" (crank at 50°).
+//! Each pane is also checked as a user would read it: both polygons drawn, no label
+//! without a free place.
+
+use eframe::egui;
+use egui_kittest::{Harness, SnapshotOptions};
+use linkage_lab::AppState;
+use linkage_lab::session::Session;
+
+/// Scene, crank angles (deg): the paper-cup feed, both die cutters, the flipper.
+const SHOTS: [(&str, [f64; 3]); 4] = [
+    ("paper_cup_feed", [0.0, 120.0, 240.0]),
+    ("die_cutter", [30.0, 150.0, 270.0]),
+    ("die_cutter_as_printed", [50.0, 150.0, 270.0]),
+    ("gravity_flipper", [40.0, 70.0, 110.0]),
+];
+
+/// The pane's state: the app's, and whether its fonts are set yet.
+struct Pane {
+    st: AppState,
+    fonts_set: bool,
+}
+
+fn pane(scene: &str, deg: f64) -> Harness<'static, Pane> {
+    let mut session = Session::open_builtin(scene).expect("a shipped scene opens");
+    session.set_input_deg(deg);
+    assert!(
+        session.message().is_none(),
+        "{scene} at {deg}°: {:?}",
+        session.message()
+    );
+    let mut st = AppState::new(session);
+    st.show_timings = false;
+    Harness::builder()
+        .with_size(egui::vec2(620.0, 980.0))
+        .wgpu()
+        .build_ui_state(
+            |ui, p: &mut Pane| {
+                // The app's own fonts (egui's defaults are not built in): set in the
+                // first frame, used from the next.
+                if !p.fonts_set {
+                    ui.ctx().set_fonts(linkage_lab::fonts::definitions());
+                    p.fonts_set = true;
+                    return;
+                }
+                egui::ScrollArea::vertical()
+                    .show(ui, |ui| linkage_lab::ui::polygons::panel(ui, &mut p.st));
+            },
+            Pane {
+                st,
+                fonts_set: false,
+            },
+        )
+}
+
+#[test]
+fn polygon_panes_of_the_seed_scenes_match_the_committed_images() {
+    let options =
+        SnapshotOptions::new().output_path(format!("{}/docs/polygons", env!("CARGO_MANIFEST_DIR")));
+    let mut failures = Vec::new();
+    for (scene, angles) in SHOTS {
+        for deg in angles {
+            let mut h = pane(scene, deg);
+            h.run();
+            if let Err(e) = h.try_snapshot_options(format!("{scene}_{deg:.0}deg"), &options) {
+                failures.push(e.to_string());
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
