@@ -83,27 +83,86 @@ impl UrlSync {
     }
 }
 
-/// Offers `text` as a download named `file_name`.
-pub fn download(file_name: &str, mime: &str, text: &str) -> Result<(), String> {
+/// Offers `bytes` as a download named `file_name`, of type `mime`.
+pub fn download(file_name: &str, mime: &str, bytes: &[u8]) -> Result<(), String> {
     let err = |e: JsValue| format!("download failed: {e:?}");
+    let parts = js_sys::Array::of1(&js_sys::Uint8Array::from(bytes));
+    let options = web_sys::BlobPropertyBag::new();
+    options.set_type(mime);
+    let blob =
+        web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &options).map_err(err)?;
+    download_blob(file_name, &blob).map_err(err)
+}
+
+/// Hands `blob` to the browser as a download named `file_name`.
+fn download_blob(file_name: &str, blob: &web_sys::Blob) -> Result<(), JsValue> {
     let document = web_sys::window()
         .and_then(|w| w.document())
         .ok_or("no document")?;
-    let parts = js_sys::Array::of1(&JsValue::from_str(text));
-    let options = web_sys::BlobPropertyBag::new();
-    options.set_type(mime);
-    let blob = web_sys::Blob::new_with_str_sequence_and_options(&parts, &options).map_err(err)?;
-    let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(err)?;
-    let a: web_sys::HtmlAnchorElement = document
-        .create_element("a")
-        .map_err(err)?
-        .dyn_into()
-        .map_err(|_| "not an anchor")?;
+    let url = web_sys::Url::create_object_url_with_blob(blob)?;
+    let a: web_sys::HtmlAnchorElement = document.create_element("a")?.dyn_into()?;
     a.set_href(&url);
     a.set_download(file_name);
     a.click();
-    web_sys::Url::revoke_object_url(&url).map_err(err)?;
+    web_sys::Url::revoke_object_url(&url)
+}
+
+/// Downloads `svg` as a PNG at `dpi` (the sheet's units are CSS pixels, 96 to the
+/// inch), rasterised by the browser itself: an image of the SVG drawn on a canvas.
+/// The work finishes in the image's load callback, after this returns; a failure
+/// there is logged.
+pub fn download_svg_as_png(file_name: &str, svg: &str, dpi: f32) -> Result<(), String> {
+    let err = |e: JsValue| format!("PNG export failed: {e:?}");
+    let parts = js_sys::Array::of1(&JsValue::from_str(svg));
+    let options = web_sys::BlobPropertyBag::new();
+    options.set_type("image/svg+xml");
+    let blob = web_sys::Blob::new_with_str_sequence_and_options(&parts, &options).map_err(err)?;
+    let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(err)?;
+    let image = web_sys::HtmlImageElement::new().map_err(err)?;
+    let (name, loaded, src) = (file_name.to_string(), image.clone(), url.clone());
+    let onload = Closure::once_into_js(move || {
+        let _ = web_sys::Url::revoke_object_url(&src);
+        if let Err(e) = draw_and_download(&loaded, f64::from(dpi) / 96.0, name) {
+            log::warn!("PNG export failed: {e:?}");
+        }
+    });
+    image.set_onload(Some(onload.unchecked_ref()));
+    image.set_src(&url);
     Ok(())
+}
+
+/// Draws the loaded `image` on a white canvas `scale` times its size and downloads it.
+fn draw_and_download(
+    image: &web_sys::HtmlImageElement,
+    scale: f64,
+    name: String,
+) -> Result<(), JsValue> {
+    let document = web_sys::window()
+        .and_then(|w| w.document())
+        .ok_or("no document")?;
+    let canvas: web_sys::HtmlCanvasElement = document.create_element("canvas")?.dyn_into()?;
+    let (w, h) = (
+        f64::from(image.natural_width()) * scale,
+        f64::from(image.natural_height()) * scale,
+    );
+    canvas.set_width(w.round() as u32);
+    canvas.set_height(h.round() as u32);
+    let context: web_sys::CanvasRenderingContext2d = canvas
+        .get_context("2d")?
+        .ok_or("no 2d context")?
+        .dyn_into()?;
+    context.set_fill_style_str("white");
+    context.fill_rect(0.0, 0.0, w, h);
+    context.draw_image_with_html_image_element_and_dw_and_dh(image, 0.0, 0.0, w, h)?;
+    let done = Closure::once_into_js(move |blob: Option<web_sys::Blob>| {
+        let sent = blob
+            .ok_or_else(|| JsValue::from_str("the canvas gave no PNG"))
+            .and_then(|b| download_blob(&name, &b));
+        if let Err(e) = sent {
+            log::warn!("PNG export failed: {e:?}");
+        }
+    });
+    canvas.to_blob(done.unchecked_ref())
 }
 
 /// A file the user picked, read as text, waiting for the next frame to take it.

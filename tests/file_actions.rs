@@ -256,3 +256,24 @@ fn every_scene_exports_the_sheet_the_cli_draws_with_instant_centres() {
         );
     }
 }
+
+#[test]
+fn png_export_writes_the_sheet_rendered_at_150_dpi() {
+    let dir = scratch("sheet-png");
+    let path = dir.join("sheet.png");
+    let (mut h, dialog) = harness_answering(PathAnswer::Chosen(path.clone()));
+    click(&mut h, "PNG…");
+    let asked = dialog.asked.lock().expect("not poisoned").clone();
+    assert_eq!(asked[0].action, FileAction::ExportSheetPng);
+    assert!(
+        asked[0].suggested_name.ends_with("deg.png"),
+        "{}",
+        asked[0].suggested_name
+    );
+    let bytes = std::fs::read(&path).expect("the PNG was written");
+    assert_eq!(&bytes[1..4], b"PNG");
+    let width = u32::from_be_bytes([bytes[16], bytes[17], bytes[18], bytes[19]]);
+    // A4 is 210 mm wide: 1240 px at 150 dpi.
+    assert!((1239..=1241).contains(&width), "{width} px wide");
+    std::fs::remove_dir_all(dir).expect("clean up");
+}

@@ -1,4 +1,5 @@
-//! Open and save a scene file, export the sweep as CSV. On the desktop the system's
+//! Open and save a scene file, export the sweep as CSV and the diagram sheet of the
+//! current position as SVG or PNG. On the desktop the system's
 //! file dialog chooses the path (a typed path where no dialog can be shown); in the
 //! browser the file picker uploads and the browser downloads.
 
@@ -18,6 +19,8 @@ pub enum FileAction {
     ExportCsv,
     /// Write the sheet of the current position (pose, polygons, tables) as SVG.
     ExportSheet,
+    /// The same sheet as PNG.
+    ExportSheetPng,
 }
 
 impl FileAction {
@@ -28,6 +31,7 @@ impl FileAction {
             Self::SaveScene => "Save scene file",
             Self::ExportCsv => "Export sweep CSV",
             Self::ExportSheet => "Export diagram sheet (SVG)",
+            Self::ExportSheetPng => "Export diagram sheet (PNG)",
         }
     }
 
@@ -37,6 +41,7 @@ impl FileAction {
             Self::Open | Self::SaveScene => ("Linkage scene", "ron"),
             Self::ExportCsv => ("CSV table", "csv"),
             Self::ExportSheet => ("SVG drawing", "svg"),
+            Self::ExportSheetPng => ("PNG picture", "png"),
         }
     }
 }
@@ -89,6 +94,7 @@ pub fn buttons(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
         ("Save scene…", FileAction::SaveScene),
         ("Export CSV…", FileAction::ExportCsv),
         ("Export diagram…", FileAction::ExportSheet),
+        ("PNG…", FileAction::ExportSheetPng),
     ] {
         let button = ui.button(label);
         st.controls.note(
@@ -123,7 +129,10 @@ fn take_answers(st: &mut AppState) {
             PathAnswer::Chosen(path) => {
                 let path = match action {
                     FileAction::Open => path,
-                    FileAction::SaveScene | FileAction::ExportCsv | FileAction::ExportSheet => {
+                    FileAction::SaveScene
+                    | FileAction::ExportCsv
+                    | FileAction::ExportSheet
+                    | FileAction::ExportSheetPng => {
                         crate::file_dialog::with_extension(path, action.file_type().1)
                     }
                 };
@@ -151,21 +160,48 @@ fn default_name(st: &AppState, action: FileAction) -> String {
     match action {
         FileAction::Open | FileAction::SaveScene => format!("{stem}.ron"),
         FileAction::ExportCsv => format!("{stem}_sweep.csv"),
-        FileAction::ExportSheet => format!(
-            "{stem}_at_{:.0}deg.svg",
-            st.session.input_rad().to_degrees()
+        FileAction::ExportSheet | FileAction::ExportSheetPng => format!(
+            "{stem}_at_{:.0}deg.{}",
+            st.session.input_rad().to_degrees(),
+            action.file_type().1
         ),
     }
 }
 
-/// The text an action writes, or why there is none.
-fn contents(st: &AppState, action: FileAction) -> Result<String, String> {
+/// The bytes an action writes, or why there are none.
+fn contents(st: &AppState, action: FileAction) -> Result<Vec<u8>, String> {
     match action {
-        FileAction::SaveScene => st.session.to_ron(),
-        FileAction::ExportCsv => st.session.sweep_csv(),
-        FileAction::ExportSheet => Ok(st.session.sheet_svg(st.layers.centres)),
+        FileAction::SaveScene => st.session.to_ron().map(String::into_bytes),
+        FileAction::ExportCsv => st.session.sweep_csv().map(String::into_bytes),
+        FileAction::ExportSheet => Ok(sheet(st).into_bytes()),
+        FileAction::ExportSheetPng => sheet_png(st),
         FileAction::Open => Err("nothing to write when opening".into()),
     }
+}
+
+/// The sheet of the current position, instant centres as the view shows them.
+fn sheet(st: &AppState) -> String {
+    st.session.sheet_svg(st.layers.centres)
+}
+
+/// Resolution of the exported PNG sheet: 150 dpi, print quality for A4.
+pub const SHEET_DPI: f32 = 150.0;
+
+/// The sheet rendered by resvg with the app's font (the browser rasterises the SVG
+/// itself instead: `crate::web::download_svg_as_png`).
+#[cfg(not(target_arch = "wasm32"))]
+fn sheet_png(st: &AppState) -> Result<Vec<u8>, String> {
+    linkage_diagram::png::render(
+        &sheet(st),
+        SHEET_DPI,
+        epaint_default_fonts::UBUNTU_LIGHT,
+        "Ubuntu",
+    )
+}
+
+#[cfg(target_arch = "wasm32")]
+fn sheet_png(_st: &AppState) -> Result<Vec<u8>, String> {
+    Err("in the browser the PNG is drawn by the page".into())
 }
 
 /// Shows the outcome of a file action in the top bar and logs it: the browser test
@@ -219,6 +255,9 @@ fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, frame: &efr
 fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, _frame: &eframe::Frame) {
     let result = match action {
         FileAction::Open => crate::web::pick_file(&st.files.upload, ctx),
+        FileAction::ExportSheetPng => {
+            crate::web::download_svg_as_png(&default_name(st, action), &sheet(st), SHEET_DPI)
+        }
         FileAction::SaveScene | FileAction::ExportCsv | FileAction::ExportSheet => {
             let mime = match action {
                 FileAction::ExportCsv => "text/csv",
@@ -226,7 +265,7 @@ fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, _frame: &ef
                 _ => "text/plain",
             };
             contents(st, action)
-                .and_then(|t| crate::web::download(&default_name(st, action), mime, &t))
+                .and_then(|bytes| crate::web::download(&default_name(st, action), mime, &bytes))
         }
     };
     if let Err(e) = result {
@@ -275,7 +314,10 @@ fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {
             Ok(text) => open_text(st, name, &text),
             Err(e) => report(st, log::Level::Warn, format!("cannot read {shown}: {e}")),
         },
-        FileAction::SaveScene | FileAction::ExportCsv | FileAction::ExportSheet => {
+        FileAction::SaveScene
+        | FileAction::ExportCsv
+        | FileAction::ExportSheet
+        | FileAction::ExportSheetPng => {
             let written = contents(st, action)
                 .and_then(|t| std::fs::write(path, t).map_err(|e| e.to_string()));
             match written {

@@ -3,7 +3,8 @@
 // not blank, that dragging the crank slider changes the picture, that Save and Export
 // download the scene and the sweep CSV, that Export diagram downloads the sheet that
 // `linkage diagram` writes for the same scene and crank angle (the CLI named by
-// LINKAGE_CLI, built by scripts/browser_test.sh), and that Open uploads a scene file (the saved
+// LINKAGE_CLI, built by scripts/browser_test.sh) and PNG… a 150 dpi PNG of it, and
+// that Open uploads a scene file (the saved
 // one, then another scene, which changes the picture). Measures time to first frame
 // (the app logs it) and frames per second while the mechanism plays.
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
@@ -124,6 +125,21 @@ else {
     fail(`the downloaded sheet differs from linkage diagram at line ${i + 1}:\n  ${a[i]}\n  ${b[i]}`);
   }
 }
+// The same sheet as PNG, rasterised by the browser: A4 at 150 dpi is 1240 px wide.
+const pngButton = controls.controls.entries.find((e) => e.kind === 'FileButton' && e.label === 'PNG…');
+let pngWidth = 0;
+if (!pngButton) fail('no PNG export button');
+else {
+  const [dl] = await Promise.all([
+    page.waitForEvent('download', { timeout: 20000 }),
+    page.mouse.click(0.5 * (pngButton.rect[0] + pngButton.rect[2]), 0.5 * (pngButton.rect[1] + pngButton.rect[3])),
+  ]);
+  const bytes = readFileSync(await dl.path());
+  if (!dl.suggestedFilename().endsWith('deg.png')) fail(`PNG download named ${dl.suggestedFilename()}`);
+  if (bytes.subarray(1, 4).toString() !== 'PNG') fail('the PNG download is no PNG');
+  else pngWidth = bytes.readUInt32BE(16);
+  if (Math.abs(pngWidth - 1240) > 1) fail(`the PNG sheet is ${pngWidth} px wide, not 1240`);
+}
 const saved = await download(SAVE);
 if (saved.name !== 'die_cutter.ron') fail(`scene download named ${saved.name}`);
 if (!/\bname:/.test(saved.text)) fail(`scene download is no scene: ${saved.text.slice(0, 80)}`);
@@ -146,7 +162,7 @@ console.log(JSON.stringify({
   url, build, first_frame_ms: firstFrameMs, canvas_drawn_fraction: Number(coverage.toFixed(3)),
   pixels_changed_by_slider_drag: changed, pixels_changed_by_play: played,
   fps_playing: Number(fps.toFixed(1)), csv_download_rows: csvRows,
-  scene_download_bytes: saved.text.length, sheet_download_bytes: sheetBytes,
+  scene_download_bytes: saved.text.length, sheet_download_bytes: sheetBytes, sheet_png_width: pngWidth,
   pixels_changed_by_upload: reopened,
   console_errors: errors.length,
 }));

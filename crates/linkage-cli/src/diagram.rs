@@ -1,6 +1,7 @@
 //! `linkage diagram`: the sheet of one position (pose, polygons, tables, instant
 //! centres) as SVG, written by `linkage-diagram` exactly as the app exports it, and
-//! as PNG rendered from that SVG by resvg with the app's own font.
+//! as PNG rendered from that SVG by resvg (`linkage_diagram::png`) with the app's own
+//! font.
 
 use std::path::PathBuf;
 
@@ -95,31 +96,7 @@ pub fn run(scene: &SceneArgs, args: &DiagramArgs) -> Result<String, String> {
     })
 }
 
-/// The SVG rendered at `dpi`, as PNG bytes. Only the app's font is loaded, so the
-/// picture is the same on every machine.
+/// The SVG rendered at `dpi`, as PNG bytes, with the app's own font.
 pub fn render_png(svg: &str, dpi: f32) -> Result<Vec<u8>, String> {
-    let mut opt = resvg::usvg::Options::default();
-    opt.fontdb_mut()
-        .load_font_data(epaint_default_fonts::UBUNTU_LIGHT.to_vec());
-    opt.fontdb_mut().set_sans_serif_family("Ubuntu");
-    opt.font_family = "Ubuntu".into();
-    let tree = resvg::usvg::Tree::from_str(svg, &opt)
-        .map_err(|e| format!("the SVG does not parse: {e}"))?;
-    // The sheet's units are CSS pixels, 96 to the inch.
-    let zoom = dpi / 96.0;
-    let size = tree
-        .size()
-        .to_int_size()
-        .scale_by(zoom)
-        .ok_or("the sheet has no size")?;
-    let mut pixmap = resvg::tiny_skia::Pixmap::new(size.width(), size.height())
-        .ok_or_else(|| format!("cannot make a {}x{} picture", size.width(), size.height()))?;
-    resvg::render(
-        &tree,
-        resvg::tiny_skia::Transform::from_scale(zoom, zoom),
-        &mut pixmap.as_mut(),
-    );
-    pixmap
-        .encode_png()
-        .map_err(|e| format!("cannot encode the PNG: {e}"))
+    linkage_diagram::png::render(svg, dpi, epaint_default_fonts::UBUNTU_LIGHT, "Ubuntu")
 }

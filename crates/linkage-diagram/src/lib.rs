@@ -13,7 +13,8 @@
 //! - [`pose_figure`]: the mechanism's links, joints and instant centres.
 //! - [`construction`]: one vector equation constructed step by step (known terms,
 //!   the unknowns' direction lines, their crossing).
-//! - [`svg`]: an A4 sheet of the chosen figures and the vector-equation tables.
+//! - [`svg`]: an A4 sheet of the chosen figures and the vector-equation tables;
+//!   `png` (feature `png`) renders it.
 
 #![warn(missing_docs)]
 
@@ -22,6 +23,8 @@ pub mod geometry;
 pub mod label;
 pub mod layout;
 pub mod placement;
+#[cfg(feature = "png")]
+pub mod png;
 pub mod polygon_figure;
 pub mod pose_figure;
 pub mod pose_layout;

@@ -1,0 +1,59 @@
+//! What the polygon pane costs each frame: both polygons of a position built and
+//! laid out (fit, arrow heads, label placement) in a 340×260 pane, per shipped seed
+//! scene at 30° (labels measured by the approximate metric; the app's egui
+//! measurement is cached by egui). And the whole A4 sheet as SVG, made on export.
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use linkage::instant_centres::instant_centres;
+use linkage::polygon::{Quantity, polygons};
+use linkage::{Kinematics, Mechanism};
+use linkage_diagram::layout::Sizes;
+use linkage_diagram::svg::{Parts, Position, sheet};
+use linkage_diagram::{Label, PolygonFigure, Rect, layout_polygon};
+
+fn kinematics(file: &str) -> Kinematics {
+    let path = format!("{}/../../assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(path).expect("scene");
+    Kinematics::new(Mechanism::from_ron(&text).expect("valid")).expect("kinematics")
+}
+
+fn bench(c: &mut Criterion) {
+    let measure = |l: &Label| l.approximate_size(13.0);
+    for file in [
+        "paper_cup_feed.ron",
+        "die_cutter.ron",
+        "gravity_flipper.ron",
+    ] {
+        let mut k = kinematics(file);
+        let input = if file == "gravity_flipper.ron" {
+            70f64
+        } else {
+            30.0
+        };
+        let s = k.solve(input.to_radians()).expect("solves");
+        let eqs = polygons(&k, &s);
+        let m = k.mechanism().clone();
+        let pane = Rect::from_min_size([0.0, 0.0], 340.0, 260.0);
+        c.bench_function(&format!("{file}/both polygons laid out"), |b| {
+            b.iter(|| {
+                for q in [Quantity::Velocity, Quantity::Acceleration] {
+                    let fig = PolygonFigure::of_position(q, &m, &s, &eqs);
+                    std::hint::black_box(layout_polygon(&fig, pane, Sizes::default(), &measure));
+                }
+            });
+        });
+        let centres = instant_centres(&m, &s);
+        let position = Position {
+            mechanism: &m,
+            solution: &s,
+            equations: &eqs,
+            centres: Some(&centres),
+        };
+        c.bench_function(&format!("{file}/sheet svg"), |b| {
+            b.iter(|| std::hint::black_box(sheet(&position, Parts::default())));
+        });
+    }
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
