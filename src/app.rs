@@ -107,6 +107,8 @@ pub struct AppState {
     pub polygons_wide: bool,
     /// The equation being constructed step by step, and the step.
     pub construction: ui::construction::ConstructionView,
+    /// A scene waiting to replace one with unsaved edits, until the user says so.
+    pub pending_open: Option<Box<Session>>,
 }
 
 impl AppState {
@@ -131,11 +133,24 @@ impl AppState {
             polygon_hover: None,
             polygons_wide: false,
             construction: Default::default(),
+            pending_open: None,
         }
     }
 
     /// Replaces the session (a new scene), keeping the view settings.
     pub fn open(&mut self, session: Session) {
+        if self.session.is_dirty() {
+            // The user says first whether the unsaved edits may go
+            // (`ui::scene_picker::discard_question`).
+            self.pending_open = Some(Box::new(session));
+            return;
+        }
+        self.open_now(session);
+    }
+
+    /// Opens `session` whatever the current one holds.
+    pub fn open_now(&mut self, session: Session) {
+        self.pending_open = None;
         self.session = session;
         self.opened += 1;
         self.fit_pending = true;
@@ -171,14 +186,16 @@ impl LinkageApp {
             None => false,
         };
         let session = match start.scene.as_deref().map(Session::open_builtin) {
-            Some(Ok(s)) => s,
+            Some(Ok(s)) => (s, None),
             Some(Err(e)) => {
                 log::error!("{e}; opening the default scene");
                 initial_session()
             }
             None => initial_session(),
         };
+        let (session, why_not) = session;
         let mut state = AppState::new(session);
+        state.status = why_not;
         state.playing = start.play;
         Self {
             state,
@@ -205,6 +222,27 @@ const FRAME_BUDGET_MS: f64 = 10.0;
 /// edit, ms: slow frames still let it finish.
 const MIN_RUN_SLICE_MS: f64 = 1.0;
 
+/// Ctrl+Z (Cmd+Z on a Mac) undoes; Ctrl+Shift+Z and Ctrl+Y redo.
+fn undo_shortcuts(ui: &egui::Ui, session: &mut Session) {
+    use egui::{Key, KeyboardShortcut, Modifiers};
+    let redo = [
+        KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z),
+        KeyboardShortcut::new(Modifiers::COMMAND, Key::Y),
+    ];
+    // The shift variant first: Ctrl+Z also matches Ctrl+Shift+Z logically.
+    if redo
+        .iter()
+        .any(|k| ui.ctx().input_mut(|i| i.consume_shortcut(k)))
+    {
+        session.redo();
+    } else if ui
+        .ctx()
+        .input_mut(|i| i.consume_shortcut(&KeyboardShortcut::new(Modifiers::COMMAND, Key::Z)))
+    {
+        session.undo();
+    }
+}
+
 /// What a frame does after its panels: in a frame that carried no edit, the analyses
 /// the panels showed out of date, and the dynamic run for what is left of the frame's
 /// budget; in a frame that carried one, neither (what the edit made out of date
@@ -220,17 +258,28 @@ fn follow_up(session: &mut Session, edited: bool, frame_started: web_time::Insta
     session.poll_run(slice_ms) || caught_up
 }
 
+/// The scene the app starts on, and why it is not the one asked for, if it is not.
 #[cfg(not(target_arch = "wasm32"))]
-fn initial_session() -> Session {
-    open_or_explain(DEFAULT_SCENE)
+fn initial_session() -> (Session, Option<String>) {
+    (open_or_explain(DEFAULT_SCENE), None)
 }
 
+/// The scene the page's URL fragment names (or carries), else the default one with
+/// the reason shown: a link is user input.
 #[cfg(target_arch = "wasm32")]
-fn initial_session() -> Session {
-    let st = crate::session::url_state::decode(&crate::web::fragment());
+fn initial_session() -> (Session, Option<String>) {
+    let fragment = crate::web::fragment();
+    let st = crate::session::url_state::decode(&fragment);
     match crate::session::url_state::open(&st) {
-        Ok(s) => s,
-        Err(_) => open_or_explain(DEFAULT_SCENE),
+        Ok(s) => (s, None),
+        Err(e) if fragment.len() > 1 => {
+            log::warn!("the link's scene did not open: {e}");
+            (
+                open_or_explain(DEFAULT_SCENE),
+                Some(format!("the link's scene did not open: {e}")),
+            )
+        }
+        Err(_) => (open_or_explain(DEFAULT_SCENE), None),
     }
 }
 
@@ -257,9 +306,13 @@ impl eframe::App for LinkageApp {
             ui.ctx().request_repaint();
         }
         let mut solver_us = solver_started.elapsed().as_secs_f64() * 1e6;
-        // Space plays and pauses, unless a text field has the keyboard.
-        if ui.input(|i| i.key_pressed(egui::Key::Space)) && !ui.ctx().egui_wants_keyboard_input() {
-            self.state.playing = !self.state.playing;
+        // Space plays and pauses, Ctrl+Z undoes, Ctrl+Shift+Z or Ctrl+Y redoes, unless
+        // a text field has the keyboard (it has its own undo).
+        if !ui.ctx().egui_wants_keyboard_input() {
+            if ui.input(|i| i.key_pressed(egui::Key::Space)) {
+                self.state.playing = !self.state.playing;
+            }
+            undo_shortcuts(ui, &mut self.state.session);
         }
 
         ui::scene_picker::top_bar(ui, &mut self.state, frame);
@@ -292,6 +345,10 @@ impl eframe::App for LinkageApp {
         });
 
         let edited = (self.state.opened, self.state.session.edit_count()) != edits_before;
+        if !edited && !ui.input(|i| i.pointer.any_down()) {
+            // A slider let go: its drag is one undo step.
+            self.state.session.end_gesture();
+        }
         if follow_up(&mut self.state.session, edited, started) {
             ui.ctx().request_repaint();
         }
@@ -306,7 +363,9 @@ impl eframe::App for LinkageApp {
         }
         #[cfg(target_arch = "wasm32")]
         {
-            self.url.update(&self.state.session);
+            if let Some(why) = self.url.update(&self.state.session) {
+                self.state.status = Some(why);
+            }
             crate::web::publish_controls(&self.state, self.frames_drawn + 1);
         }
         self.frames_drawn += 1;

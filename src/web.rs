@@ -28,6 +28,10 @@ struct Published<'a> {
     run_pending: bool,
     /// Current input angle, deg.
     input_deg: f64,
+    /// The scene's name.
+    scene_name: &'a str,
+    /// Whether it has unsaved edits.
+    dirty: bool,
     /// Whether the pose holds only finite numbers.
     pose_finite: bool,
 }
@@ -42,6 +46,8 @@ pub fn publish_controls(st: &crate::app::AppState, frame: u64) {
         edit_timing: st.edit_timing,
         run_pending: st.session.run_progress().is_some(),
         input_deg: st.session.input_rad().to_degrees(),
+        scene_name: &st.session.scene().name,
+        dirty: st.session.is_dirty(),
         pose_finite: pose.points.iter().all(|p| {
             p.position.x.is_finite() && p.position.y.is_finite() && p.velocity.x.is_finite()
         }),
@@ -70,17 +76,30 @@ pub struct UrlSync {
 }
 
 impl UrlSync {
-    /// Updates the URL if the state differs from the last one written.
-    pub fn update(&mut self, s: &Session) {
+    /// Updates the URL if the state differs from the last one written. Returns why
+    /// the scene cannot travel in the URL, once, when that becomes so.
+    pub fn update(&mut self, s: &Session) -> Option<String> {
         let now = url_state::encode(s);
-        if now == self.last || now.is_empty() {
-            return;
+        if now == self.last {
+            return None;
+        }
+        self.last = now.clone();
+        if now.is_empty() {
+            return s
+                .share_payload()
+                .err()
+                .map(|e| format!("{e}: a reload will not keep it"));
         }
         if let Some(history) = web_sys::window().and_then(|w| w.history().ok()) {
             let _ = history.replace_state_with_url(&JsValue::NULL, "", Some(&format!("#{now}")));
         }
-        self.last = now;
+        None
     }
+}
+
+/// The page's address, which carries the scene (the share link).
+pub fn page_url() -> Option<String> {
+    web_sys::window().and_then(|w| w.location().href().ok())
 }
 
 /// Offers `bytes` as a download named `file_name`, of type `mime`.

@@ -50,11 +50,19 @@ fn shipped_scene_names() -> Vec<(PathBuf, String)> {
     out
 }
 
+/// Opens a scene from the picker; the edits to the last one are dropped when the app
+/// asks (it asks whenever there are any).
 fn open_by_picker(h: &mut Harness<'static, LinkageApp>, name: &str) {
     h.get_by_role_and_label(Role::ComboBox, "Scene").click();
     settle(h);
     h.get_by_label(name).click();
     settle(h);
+    if h.state().state.session.is_dirty() {
+        h.get_by_role_and_label(Role::Button, "Drop the edits and open")
+            .click();
+        settle(h);
+    }
+    assert!(h.state().state.pending_open.is_none());
 }
 
 /// Everything the user sees is finite: pose, polygon tables, plotted curves.

@@ -36,6 +36,11 @@ fn open_scene(h: &mut Harness<'static, LinkageApp>, key: &str) {
     h.run();
     h.get_by_label(&name).click();
     h.run();
+    if h.state().state.pending_open.is_some() {
+        h.get_by_role_and_label(Role::Button, "Drop the edits and open")
+            .click();
+        h.run();
+    }
     // A dynamic scene's run is computed off the frame: wait for it, as a user would.
     h.state_mut().state.session.wait_for_run();
     h.run();

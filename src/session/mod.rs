@@ -6,6 +6,7 @@
 pub mod curves;
 pub mod derived;
 pub mod dynamic_run;
+pub mod history;
 pub mod limit;
 pub mod notice;
 pub mod params;
@@ -23,6 +24,7 @@ use crate::catalog::builtin;
 use curves::{Curves, ModelCurves};
 use derived::{Derived, Shown};
 use dynamic_run::{DynamicRun, IntegratorChoice};
+use history::{EditTarget, History, Snapshot};
 use notice::Notice;
 use params::{LengthParam, length_params};
 use run_job::RunJob;
@@ -71,6 +73,13 @@ pub struct Session {
     generation: u64,
     /// Counts edits asked for, taken or refused (the app times the frames they land in).
     edits: u64,
+    /// Undo and redo.
+    history: History,
+    /// The scene as last opened or saved: it differs from `scene` when there are
+    /// unsaved edits.
+    saved: SceneFile,
+    /// The scene packed for a link, made when first asked for after an edit.
+    share: std::cell::OnceCell<Result<String, linkage::share::ShareError>>,
 }
 
 impl Session {
@@ -89,6 +98,7 @@ impl Session {
     /// The parse error with line and column, or why the mechanism does not assemble.
     pub fn open_text(source: SceneSource, text: &str) -> Result<Self, String> {
         let scene = SceneFile::parse(text).map_err(|e| e.to_string())?;
+        let saved = scene.clone();
         let built = Built::new(&scene, None)?;
         let lengths = length_params(&scene);
         let mut session = Self {
@@ -111,6 +121,9 @@ impl Session {
             play_direction: 1.0,
             generation: 0,
             edits: 0,
+            history: History::default(),
+            saved,
+            share: std::cell::OnceCell::new(),
         };
         session.refresh_polygons();
         session.start_run();
@@ -396,7 +409,7 @@ impl Session {
         }
         let input = self.input_rad();
         let why = match limit::try_assemble(&scene, input) {
-            Ok(built) => return self.accept(scene, built),
+            Ok(built) => return self.commit(EditTarget::Length(index), scene, built),
             Err(why) => why,
         };
         let good = param.value(&self.scene);
@@ -426,7 +439,7 @@ impl Session {
             return;
         };
         spring.k_n_per_m = k_n_per_m;
-        if let Err(why) = self.rebuild(scene) {
+        if let Err(why) = self.rebuild(EditTarget::Spring(index), scene) {
             self.message = Some(Notice::Text(why));
         }
     }
@@ -451,7 +464,7 @@ impl Session {
             *i *= mass_kg / old;
         }
         link.mass = Some(mass_kg);
-        if let Err(why) = self.rebuild(scene) {
+        if let Err(why) = self.rebuild(EditTarget::Mass(index), scene) {
             self.message = Some(Notice::Text(why));
         }
     }
@@ -488,7 +501,7 @@ impl Session {
         };
         let mut scene = self.scene.clone();
         scene.branches.insert(point.to_string(), b);
-        if let Err(why) = self.rebuild(scene) {
+        if let Err(why) = self.rebuild(EditTarget::Branch(point.to_string()), scene) {
             self.message = Some(Notice::Text(format!(
                 "flipping the branch at {point}: {why}"
             )));
@@ -507,9 +520,83 @@ impl Session {
     pub fn reset(&mut self) {
         self.edits += 1;
         let scene = self.original.clone();
-        if let Err(why) = self.rebuild(scene) {
+        if scene == self.scene {
+            return;
+        }
+        if let Err(why) = self.rebuild(EditTarget::Reset, scene) {
             self.message = Some(Notice::Text(why));
         }
+    }
+
+    /// Takes the last edit back (a whole slider drag is one edit).
+    pub fn undo(&mut self) {
+        self.edits += 1;
+        let Some(to) = self.history.to_undo().cloned() else {
+            return;
+        };
+        match self.rebuild_snapshot(&to) {
+            Ok(built) => {
+                let now = self.snapshot();
+                self.history.undone(now);
+                self.accept(to.scene, built);
+            }
+            Err(why) => self.message = Some(Notice::Text(format!("cannot undo: {why}"))),
+        }
+    }
+
+    /// Makes the last undone edit again.
+    pub fn redo(&mut self) {
+        self.edits += 1;
+        let Some(to) = self.history.to_redo().cloned() else {
+            return;
+        };
+        match self.rebuild_snapshot(&to) {
+            Ok(built) => {
+                let now = self.snapshot();
+                self.history.redone(now);
+                self.accept(to.scene, built);
+            }
+            Err(why) => self.message = Some(Notice::Text(format!("cannot redo: {why}"))),
+        }
+    }
+
+    /// Whether there is an edit to undo.
+    pub fn can_undo(&self) -> bool {
+        self.history.can_undo()
+    }
+
+    /// Whether there is an undone edit to redo.
+    pub fn can_redo(&self) -> bool {
+        self.history.can_redo()
+    }
+
+    /// Ends the edit gesture in progress (a slider let go): the next edit is a new
+    /// undo step.
+    pub fn end_gesture(&mut self) {
+        self.history.end_gesture();
+    }
+
+    /// Whether the scene has edits not saved to a file (or, for a shipped scene, not
+    /// in it).
+    pub fn is_dirty(&self) -> bool {
+        self.scene != self.saved
+    }
+
+    /// Notes that the scene as it is now has been saved.
+    pub fn mark_saved(&mut self) {
+        self.saved = self.scene.clone();
+    }
+
+    /// The edited scene packed for a link (`linkage::share`), or why it does not fit.
+    pub fn share_payload(&self) -> Result<&str, &linkage::share::ShareError> {
+        self.share
+            .get_or_init(|| {
+                // Writing a scene that was read cannot fail; were it to, the empty
+                // link would be refused where it is opened, naming the cause.
+                linkage::share::encode(&self.to_ron().unwrap_or_default())
+            })
+            .as_ref()
+            .map(String::as_str)
     }
 
     /// The edited scene as RON text.
@@ -579,16 +666,38 @@ impl Session {
 
     /// Rebuilds everything from `scene` at the current input; on failure nothing
     /// changes.
-    fn rebuild(&mut self, scene: SceneFile) -> Result<(), String> {
+    fn rebuild(&mut self, target: EditTarget, scene: SceneFile) -> Result<(), String> {
         let built = Built::new(&scene, Some(self.input_rad()))?;
-        self.accept(scene, built);
+        self.commit(target, scene, built);
         Ok(())
+    }
+
+    /// Makes an edit of `target` current, the scene before it kept for undo.
+    fn commit(&mut self, target: EditTarget, scene: SceneFile, built: Built) {
+        let before = self.snapshot();
+        self.history.record(target, before);
+        self.accept(scene, built);
+    }
+
+    fn snapshot(&self) -> Snapshot {
+        Snapshot {
+            scene: self.scene.clone(),
+            input_rad: self.input_rad(),
+        }
+    }
+
+    /// Builds `to` at the current input, or where it stood if it does not assemble
+    /// here.
+    fn rebuild_snapshot(&self, to: &Snapshot) -> Result<Built, String> {
+        Built::new(&to.scene, Some(self.input_rad()))
+            .or_else(|_| Built::new(&to.scene, Some(to.input_rad)))
     }
 
     /// Makes `scene`, built as `built`, the current one: what is on screen now, the
     /// rest when shown, the dynamic run off the frame.
     fn accept(&mut self, scene: SceneFile, built: Built) {
         self.scene = scene;
+        self.share = std::cell::OnceCell::new();
         self.kin = built.kin;
         self.pose = built.pose;
         self.topology = built.topology;

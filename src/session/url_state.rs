@@ -1,6 +1,8 @@
 //! The viewer's state as a URL fragment (`#scene=die_cutter&input=42&len.AB=300`), so
-//! that a link reopens the same mechanism in the same pose. Only edits relative to the
-//! shipped scene are written; a scene opened from a file cannot travel in a URL.
+//! that a link reopens the same mechanism in the same pose. For a shipped scene only
+//! the edits relative to it are written; any other scene travels whole, packed by
+//! `linkage::share` (`#file=my.ron&doc=1.…&input=42`), so that a reload or a shared
+//! link brings it back.
 
 use linkage::dynamics::Method;
 
@@ -12,6 +14,8 @@ use super::{SceneSource, Session};
 pub struct UrlState {
     /// Built-in scene key.
     pub scene: Option<String>,
+    /// A whole scene, packed (`linkage::share`), and the file name it came from.
+    pub doc: Option<(String, String)>,
     /// Input angle, deg.
     pub input_deg: Option<f64>,
     /// Edited lengths by slider label, scene units.
@@ -26,15 +30,40 @@ pub struct UrlState {
     pub integrator: Option<IntegratorChoice>,
 }
 
-/// The fragment (without `#`) for the session's current state.
+/// The fragment (without `#`) for the session's current state; empty for a scene too
+/// large for a link.
 pub fn encode(s: &Session) -> String {
-    let SceneSource::Builtin(key) = s.source() else {
-        return String::new();
+    let input = format!("input={:.3}", s.input_rad().to_degrees());
+    let mut parts = match s.source() {
+        SceneSource::Builtin(key) => {
+            let mut parts = vec![format!("scene={}", escape(key)), input];
+            parts.extend(edits(s));
+            parts
+        }
+        SceneSource::File(name) => match s.share_payload() {
+            Ok(payload) => vec![
+                format!("file={}", escape(name)),
+                format!("{}={payload}", linkage::share::FRAGMENT_KEY),
+                input,
+            ],
+            Err(_) => return String::new(),
+        },
     };
-    let mut parts = vec![
-        format!("scene={}", escape(key)),
-        format!("input={:.3}", s.input_rad().to_degrees()),
-    ];
+    let choice = s.integrator();
+    if choice != IntegratorChoice::default() {
+        parts.push(format!("int={}", choice.method.label()));
+        if choice.method.is_adaptive() {
+            parts.push(format!("rtol={:e}", choice.rtol));
+        } else {
+            parts.push(format!("step={:e}", choice.step));
+        }
+    }
+    parts.join("&")
+}
+
+/// The edits to a shipped scene: lengths, springs, masses, branch flips.
+fn edits(s: &Session) -> Vec<String> {
+    let mut parts = Vec::new();
     for p in s.lengths() {
         if let (Some(now), Some(orig)) = (p.value(s.scene()), p.value(s.original()))
             && (now - orig).abs() > 1e-12 * orig
@@ -70,16 +99,7 @@ pub fn encode(s: &Session) -> String {
     if !flips.is_empty() {
         parts.push(format!("flip={}", flips.join(",")));
     }
-    let choice = s.integrator();
-    if choice != IntegratorChoice::default() {
-        parts.push(format!("int={}", choice.method.label()));
-        if choice.method.is_adaptive() {
-            parts.push(format!("rtol={:e}", choice.rtol));
-        } else {
-            parts.push(format!("step={:e}", choice.step));
-        }
-    }
-    parts.join("&")
+    parts
 }
 
 /// Reads a fragment (with or without the leading `#`); unknown or malformed entries
@@ -94,6 +114,12 @@ pub fn decode(fragment: &str) -> UrlState {
         let number = value.parse::<f64>().ok().filter(|v| v.is_finite());
         if key == "scene" {
             st.scene = Some(value);
+        } else if key == linkage::share::FRAGMENT_KEY {
+            let name = st.doc.take().map(|d| d.1).unwrap_or_default();
+            st.doc = Some((value, name));
+        } else if key == "file" {
+            let payload = st.doc.take().map(|d| d.0).unwrap_or_default();
+            st.doc = Some((payload, value));
         } else if key == "input" {
             st.input_deg = number;
         } else if key == "flip" {
@@ -130,8 +156,15 @@ pub fn decode(fragment: &str) -> UrlState {
 /// No scene named, or an unknown one. Edits that fail leave the session's message
 /// set, as the same edit from a slider would.
 pub fn open(st: &UrlState) -> Result<Session, String> {
-    let key = st.scene.as_deref().ok_or("the URL names no scene")?;
-    let mut s = Session::open_builtin(key)?;
+    let mut s = match (&st.doc, &st.scene) {
+        (Some((payload, name)), _) => {
+            let text = linkage::share::decode(payload).map_err(|e| e.to_string())?;
+            let name = if name.is_empty() { "shared.ron" } else { name };
+            Session::open_text(SceneSource::File(name.to_string()), &text)?
+        }
+        (None, Some(key)) => Session::open_builtin(key)?,
+        (None, None) => return Err("the URL names no scene".into()),
+    };
     for point in &st.flips {
         s.flip_branch(point);
     }
@@ -195,6 +228,31 @@ fn unescape(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_scene_from_a_file_travels_whole_in_the_fragment() {
+        let text = crate::catalog::builtin("quick_return")
+            .expect("shipped")
+            .text;
+        let mut s =
+            Session::open_text(SceneSource::File("my shaper.ron".into()), text).expect("opens");
+        s.set_length(0, s.lengths()[0].value(s.scene()).expect("a length") * 1.05);
+        s.set_input_deg(77.0);
+        assert_eq!(s.message(), None);
+        let fragment = encode(&s);
+        assert!(
+            fragment.starts_with("file=my%20shaper.ron&doc=1."),
+            "{fragment}"
+        );
+        let back = open(&decode(&fragment)).expect("reopens");
+        assert_eq!(back.scene(), s.scene());
+        assert_eq!(back.source(), s.source());
+        assert!((back.input_rad() - s.input_rad()).abs() < 1e-4);
+        // A damaged link names its cause.
+        let damaged = fragment.replace("doc=1.", "doc=1.@");
+        let e = open(&decode(&damaged)).err().expect("refused");
+        assert!(e.contains("the link is damaged"), "{e}");
+    }
 
     #[test]
     fn edited_state_round_trips_through_the_fragment() {

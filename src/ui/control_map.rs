@@ -39,6 +39,8 @@ pub enum ControlKind {
     FileButton,
     /// The polygon pane's enlarge / narrower button.
     PolygonLayout,
+    /// Undo or redo.
+    History,
 }
 
 /// One control as drawn this frame.

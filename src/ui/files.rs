@@ -107,6 +107,27 @@ pub fn buttons(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
             start(ui.ctx(), st, action, frame);
         }
     }
+    #[cfg(target_arch = "wasm32")]
+    {
+        let copy = ui
+            .button("Copy link")
+            .on_hover_text("The page's address carries the scene and its edits: share it");
+        st.controls.note(
+            ui,
+            crate::ui::control_map::ControlKind::FileButton,
+            "Copy link",
+            &copy,
+        );
+        if copy.clicked() {
+            match crate::web::page_url() {
+                Some(url) => {
+                    st.status = Some(format!("link copied ({} characters)", url.len()));
+                    ui.ctx().copy_text(url);
+                }
+                None => st.status = Some("the page has no address to copy".into()),
+            }
+        }
+    }
     take_answers(st);
 }
 
@@ -268,8 +289,10 @@ fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, _frame: &ef
                 .and_then(|bytes| crate::web::download(&default_name(st, action), mime, &bytes))
         }
     };
-    if let Err(e) = result {
-        st.status = Some(e);
+    match result {
+        Ok(()) if action == FileAction::SaveScene => st.session.mark_saved(),
+        Ok(()) => {}
+        Err(e) => st.status = Some(e),
     }
 }
 
@@ -321,7 +344,12 @@ fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {
             let written = contents(st, action)
                 .and_then(|t| std::fs::write(path, t).map_err(|e| e.to_string()));
             match written {
-                Ok(()) => report(st, log::Level::Info, format!("wrote {shown}")),
+                Ok(()) => {
+                    if action == FileAction::SaveScene {
+                        st.session.mark_saved();
+                    }
+                    report(st, log::Level::Info, format!("wrote {shown}"));
+                }
                 Err(e) => report(st, log::Level::Warn, format!("cannot write {shown}: {e}")),
             }
         }

@@ -71,6 +71,25 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
             if ui.button("Reset edits").clicked() {
                 st.session.reset();
             }
+            let undo = ui
+                .add_enabled(st.session.can_undo(), egui::Button::new("Undo"))
+                .on_hover_text("Ctrl+Z");
+            st.controls.note(ui, ControlKind::History, "Undo", &undo);
+            if undo.clicked() {
+                st.session.undo();
+            }
+            let redo = ui
+                .add_enabled(st.session.can_redo(), egui::Button::new("Redo"))
+                .on_hover_text("Ctrl+Shift+Z or Ctrl+Y");
+            st.controls.note(ui, ControlKind::History, "Redo", &redo);
+            if redo.clicked() {
+                st.session.redo();
+            }
+            if st.session.is_dirty() {
+                ui.label("(edited)").on_hover_text(
+                    "The scene has edits not saved to a file: Save scene… keeps them",
+                );
+            }
             if ui.button("Fit view").clicked() {
                 st.fit_pending = true;
             }
@@ -89,4 +108,43 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
         });
     });
     files::prompt_window(ui.ctx(), st);
+    discard_question(ui.ctx(), st);
+}
+
+/// Asks before a scene with unsaved edits is replaced by the one waiting.
+fn discard_question(ctx: &egui::Context, st: &mut AppState) {
+    let Some(waiting) = st.pending_open.as_ref() else {
+        return;
+    };
+    let (current, next) = (
+        st.session.scene().name.clone(),
+        waiting.scene().name.clone(),
+    );
+    let mut answer = None;
+    egui::Window::new("Unsaved edits")
+        .collapsible(false)
+        .resizable(false)
+        .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
+        .show(ctx, |ui| {
+            ui.label(format!(
+                "\"{current}\" has edits that are not saved. Open \"{next}\" and drop them?"
+            ));
+            ui.horizontal(|ui| {
+                if ui.button("Drop the edits and open").clicked() {
+                    answer = Some(true);
+                }
+                if ui.button("Keep editing").clicked() {
+                    answer = Some(false);
+                }
+            });
+        });
+    match answer {
+        Some(true) => {
+            if let Some(s) = st.pending_open.take() {
+                st.open_now(*s);
+            }
+        }
+        Some(false) => st.pending_open = None,
+        None => {}
+    }
 }

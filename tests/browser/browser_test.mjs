@@ -4,9 +4,10 @@
 // download the scene and the sweep CSV, that Export diagram downloads the sheet that
 // `linkage diagram` writes for the same scene and crank angle (the CLI named by
 // LINKAGE_CLI, built by scripts/browser_test.sh) and PNG… a 150 dpi PNG of it, and
-// that Open uploads a scene file (the saved
-// one, then another scene, which changes the picture). Measures time to first frame
-// (the app logs it) and frames per second while the mechanism plays.
+// that Open uploads a scene file (the saved one, then another scene, which changes
+// the picture), and that the uploaded scene survives a reload and opens from the
+// page's address in a new page (a share link). Measures time to first frame (the app
+// logs it) and frames per second while the mechanism plays.
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
@@ -157,13 +158,41 @@ for (let i = 0; i < 20 && reopened < 2000; i++) {
 }
 if (reopened < 2000) fail(`opening slider_crank.ron changed only ${reopened} pixels`);
 
+// A scene opened from a file travels whole in the URL (doc=1.…): a reload keeps it,
+// and the address opened in a new page (a shared link) shows the same mechanism.
+const appState = async (p) => JSON.parse(await p.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+const uploadedName = (await appState(page)).scene_name;
+let hash = '';
+for (let i = 0; i < 50 && !hash.includes('doc=1.'); i++) {
+  await page.waitForTimeout(100);
+  hash = await page.evaluate(() => location.hash);
+}
+if (!hash.includes('doc=1.')) fail(`the URL does not carry the opened file: ${hash.slice(0, 60)}`);
+const afterReload = async (p) => {
+  for (let i = 0; i < 600; i++) {
+    const ready = await p.evaluate(() => Boolean(window.wasmBindings?.linkage_lab_controls?.()));
+    if (ready) return appState(p);
+    await p.waitForTimeout(100);
+  }
+  return {};
+};
+await page.reload({ waitUntil: 'load' });
+const reloaded = await afterReload(page);
+if (reloaded.scene_name !== uploadedName) fail(`after a reload the app shows ${reloaded.scene_name}, not ${uploadedName}`);
+const shared = await browser.newPage({ viewport: { width: 1500, height: 950 }, deviceScaleFactor: 1 });
+shared.on('pageerror', (e) => errors.push(`pageerror (shared link): ${e.message}`));
+await shared.goto(page.url(), { waitUntil: 'load' });
+const there = await afterReload(shared);
+if (there.scene_name !== uploadedName) fail(`the shared link opens ${there.scene_name}, not ${uploadedName}`);
+await shared.close();
+
 if (errors.length) fail(`console errors:\n  ${errors.join('\n  ')}`);
 console.log(JSON.stringify({
   url, build, first_frame_ms: firstFrameMs, canvas_drawn_fraction: Number(coverage.toFixed(3)),
   pixels_changed_by_slider_drag: changed, pixels_changed_by_play: played,
   fps_playing: Number(fps.toFixed(1)), csv_download_rows: csvRows,
   scene_download_bytes: saved.text.length, sheet_download_bytes: sheetBytes, sheet_png_width: pngWidth,
-  pixels_changed_by_upload: reopened,
+  pixels_changed_by_upload: reopened, link_chars: page.url().length,
   console_errors: errors.length,
 }));
 await browser.close();

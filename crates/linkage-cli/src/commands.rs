@@ -69,6 +69,7 @@ pub fn run(command: Command, out: &mut dyn Write) -> Result<(), Failure> {
         Command::Report { scene } => report(&scene),
         Command::Synth { what } => synth(what),
         Command::Diagram { scene, args } => crate::diagram::run(&scene, &args),
+        Command::Share { scene, decode } => share(scene.as_deref(), decode.as_deref()),
         Command::Simulate { scene, sim, format } => crate::simulate::run(&scene, &sim, format),
         Command::Tradeoff { scene, args } => crate::tradeoff::run(&scene, &args),
         Command::Kinetostatics {
@@ -79,6 +80,20 @@ pub fn run(command: Command, out: &mut dyn Write) -> Result<(), Failure> {
     }?;
     out.write_all(text.as_bytes())?;
     Ok(())
+}
+
+/// `share SCENE`: the fragment for the scene (checked to load first); `share --decode
+/// LINK`: the scene text it carries, exactly.
+fn share(scene: Option<&std::path::Path>, decode: Option<&str>) -> Result<String, String> {
+    if let Some(link) = decode {
+        return linkage::share::decode(link).map_err(|e| e.to_string());
+    }
+    let path = scene.ok_or("give a scene file, or --decode LINK")?;
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| format!("cannot read scene {}: {e}", path.display()))?;
+    Mechanism::from_ron(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+    let payload = linkage::share::encode(&text).map_err(|e| e.to_string())?;
+    Ok(format!("{}={payload}\n", linkage::share::FRAGMENT_KEY))
 }
 
 pub(crate) fn load(args: &SceneArgs) -> Result<Kinematics, String> {

@@ -126,6 +126,17 @@ enum Command {
         #[command(flatten)]
         args: diagram::DiagramArgs,
     },
+    /// A scene as the fragment of a share link (`doc=1.…`: the file deflated and
+    /// base64url-encoded, as the app's share link carries it); with --decode, a link,
+    /// fragment or payload back to the scene file, byte for byte.
+    Share {
+        /// Scene file (RON) to pack.
+        #[arg(required_unless_present = "decode", conflicts_with = "decode")]
+        scene: Option<PathBuf>,
+        /// A share link, its fragment or its payload, to unpack.
+        #[arg(long)]
+        decode: Option<String>,
+    },
     /// Dimensional synthesis.
     Synth {
         #[command(subcommand)]

@@ -8,7 +8,8 @@
 //! limit positions, strokes, time ratio, Grashof class, transmission angle and
 //! toggles; [`polygon`] gives the velocity and acceleration polygon terms and
 //! [`instant_centres`] the instant centres by Kennedy's theorem;
-//! [`synthesis`] designs crank-rockers from swing and time ratio.
+//! [`synthesis`] designs crank-rockers from swing and time ratio; [`share`] packs a
+//! scene into a link and back.
 
 #![warn(missing_docs)]
 
@@ -27,6 +28,7 @@ pub mod newton;
 pub mod polygon;
 mod roots_util;
 pub mod scene;
+pub mod share;
 mod small_lu;
 pub mod sweep;
 pub mod synthesis;
