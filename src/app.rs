@@ -109,6 +109,10 @@ pub struct AppState {
     pub construction: ui::construction::ConstructionView,
     /// A scene waiting to replace one with unsaved edits, until the user says so.
     pub pending_open: Option<Box<Session>>,
+    /// Whether dragging in the view moves points (else it pans).
+    pub edit_points: bool,
+    /// The point being dragged, by name.
+    pub dragged_point: Option<String>,
 }
 
 impl AppState {
@@ -134,6 +138,8 @@ impl AppState {
             polygons_wide: false,
             construction: Default::default(),
             pending_open: None,
+            edit_points: false,
+            dragged_point: None,
         }
     }
 

@@ -31,6 +31,25 @@ pub const BUILTIN_SCENES: &[BuiltinScene] = &[
     scene!("quick_return"),
 ];
 
+macro_rules! template {
+    ($key:literal) => {
+        BuiltinScene {
+            key: $key,
+            text: include_str!(concat!("../assets/templates/", $key, ".ron")),
+        }
+    };
+}
+
+/// The templates in `assets/templates` a new scene starts from, in the menu's order.
+/// A test checks that this list and the directory agree.
+pub const TEMPLATES: &[BuiltinScene] = &[
+    template!("four_bar"),
+    template!("slider_crank"),
+    template!("inverted_slider_crank"),
+    template!("watt_six_bar"),
+    template!("stephenson_six_bar"),
+];
+
 /// The built-in scene with this key.
 pub fn builtin(key: &str) -> Option<&'static BuiltinScene> {
     BUILTIN_SCENES.iter().find(|s| s.key == key)
@@ -39,6 +58,34 @@ pub fn builtin(key: &str) -> Option<&'static BuiltinScene> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn keys_on_disk(folder: &str) -> Vec<String> {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(folder);
+        let mut keys: Vec<String> = std::fs::read_dir(&dir)
+            .expect("asset folder")
+            .filter_map(|e| {
+                let name = e.ok()?.file_name().into_string().ok()?;
+                name.strip_suffix(".ron").map(str::to_string)
+            })
+            .collect();
+        keys.sort();
+        keys
+    }
+
+    #[test]
+    fn the_catalog_lists_exactly_the_template_files_and_each_opens() {
+        let mut listed: Vec<String> = TEMPLATES.iter().map(|s| s.key.to_string()).collect();
+        listed.sort();
+        assert_eq!(listed, keys_on_disk("assets/templates"));
+        for t in TEMPLATES {
+            let s = crate::session::Session::open_text(
+                crate::session::SceneSource::File(format!("{}.ron", t.key)),
+                t.text,
+            )
+            .unwrap_or_else(|e| panic!("{}: {e}", t.key));
+            assert!(s.message().is_none(), "{}", t.key);
+        }
+    }
 
     #[test]
     fn the_catalog_lists_exactly_the_scene_files() {

@@ -188,77 +188,102 @@ fn every_scene_every_control_to_its_extremes_and_back() {
             .to_string_lossy()
             .to_string();
         assert_eq!(h.state().state.session.scene().name, name, "{scene} opened");
-        assert_all_finite(&h.state().state.session, &scene);
-        let kinds: Vec<ControlKind> = h
-            .state()
-            .state
-            .controls
-            .entries
-            .iter()
-            .map(|e| e.kind)
-            .collect();
-        assert!(
-            kinds.contains(&ControlKind::Crank) && kinds.contains(&ControlKind::Length),
-            "{scene}: {kinds:?}"
-        );
-        for (_, label) in slider_labels(&h) {
-            drive_slider(&mut h, &scene, &label, &mut tally);
-        }
-        let branches: Vec<String> = h
-            .state()
-            .state
-            .controls
-            .of_kind(ControlKind::Branch)
-            .map(|e| e.label.clone())
-            .collect();
-        for label in branches {
-            for _ in 0..2 {
-                let before = h.state().state.session.pose().clone();
-                // The label says which branch is current: find the toggle by its point.
-                let point = label.split(" (now").next().expect("label").to_string();
-                h.get_by_label_contains(&point).click();
-                settle(&mut h);
-                assert_took_or_refused(&h, &before, &format!("{scene}: {point}"), &mut tally);
-            }
-        }
-        if h.state()
-            .state
-            .controls
-            .of_kind(ControlKind::Integrator)
-            .next()
-            .is_some()
-        {
-            for method in linkage_lab::session::dynamic_run::METHODS {
-                h.get_by_role_and_label(Role::ComboBox, "integrator")
-                    .click();
-                settle(&mut h);
-                h.get_by_label(method.label()).click();
-                settle(&mut h);
-                assert_eq!(
-                    h.state().state.session.integrator().method,
-                    method,
-                    "{scene}"
-                );
-                assert_all_finite(
-                    &h.state().state.session,
-                    &format!("{scene}: {}", method.label()),
-                );
-            }
-        }
-        // The instant centres shown and hidden, the polygon pane enlarged and back.
-        for on in [true, false] {
-            h.get_by_role_and_label(Role::CheckBox, "instant centres")
-                .click();
-            settle(&mut h);
-            assert_eq!(h.state().state.layers.centres, on, "{scene}");
-        }
-        for (label, wide) in [("enlarge", true), ("narrower", false)] {
-            h.get_by_role_and_label(Role::Button, label).click();
-            settle(&mut h);
-            assert_eq!(h.state().state.polygons_wide, wide, "{scene}");
-        }
+        exercise(&mut h, &scene, &mut tally);
+    }
+    // Every template of the New… menu, the same way.
+    for t in linkage_lab::catalog::TEMPLATES {
+        let name = linkage::SceneFile::parse(t.text).expect("parses").name;
+        open_template(&mut h, &name);
+        assert_eq!(h.state().state.session.scene().name, name);
+        exercise(&mut h, t.key, &mut tally);
     }
     // Slider extremes reach unassemblable lengths in some scenes: both outcomes occur.
     println!("{tally:?}");
     assert!(tally.took > 50 && tally.refused > 0, "{tally:?}");
+}
+
+/// Opens a template from the New… menu, dropping the last scene's edits when asked.
+fn open_template(h: &mut Harness<'static, LinkageApp>, name: &str) {
+    h.get_by_role_and_label(Role::Button, "New…").click();
+    settle(h);
+    h.get_by_role_and_label(Role::Button, name).click();
+    settle(h);
+    if h.state().state.pending_open.is_some() {
+        h.get_by_role_and_label(Role::Button, "Drop the edits and open")
+            .click();
+        settle(h);
+    }
+}
+
+/// Every control of the open scene, to its extremes and back.
+fn exercise(h: &mut Harness<'static, LinkageApp>, scene: &str, tally: &mut Tally) {
+    assert_all_finite(&h.state().state.session, scene);
+    let kinds: Vec<ControlKind> = h
+        .state()
+        .state
+        .controls
+        .entries
+        .iter()
+        .map(|e| e.kind)
+        .collect();
+    assert!(
+        kinds.contains(&ControlKind::Crank) && kinds.contains(&ControlKind::Length),
+        "{scene}: {kinds:?}"
+    );
+    for (_, label) in slider_labels(h) {
+        drive_slider(h, scene, &label, tally);
+    }
+    let branches: Vec<String> = h
+        .state()
+        .state
+        .controls
+        .of_kind(ControlKind::Branch)
+        .map(|e| e.label.clone())
+        .collect();
+    for label in branches {
+        for _ in 0..2 {
+            let before = h.state().state.session.pose().clone();
+            // The label says which branch is current: find the toggle by its point.
+            let point = label.split(" (now").next().expect("label").to_string();
+            h.get_by_label_contains(&point).click();
+            settle(h);
+            assert_took_or_refused(h, &before, &format!("{scene}: {point}"), tally);
+        }
+    }
+    if h.state()
+        .state
+        .controls
+        .of_kind(ControlKind::Integrator)
+        .next()
+        .is_some()
+    {
+        for method in linkage_lab::session::dynamic_run::METHODS {
+            h.get_by_role_and_label(Role::ComboBox, "integrator")
+                .click();
+            settle(h);
+            h.get_by_label(method.label()).click();
+            settle(h);
+            assert_eq!(
+                h.state().state.session.integrator().method,
+                method,
+                "{scene}"
+            );
+            assert_all_finite(
+                &h.state().state.session,
+                &format!("{scene}: {}", method.label()),
+            );
+        }
+    }
+    // The instant centres shown and hidden, the polygon pane enlarged and back.
+    for on in [true, false] {
+        h.get_by_role_and_label(Role::CheckBox, "instant centres")
+            .click();
+        settle(h);
+        assert_eq!(h.state().state.layers.centres, on, "{scene}");
+    }
+    for (label, wide) in [("enlarge", true), ("narrower", false)] {
+        h.get_by_role_and_label(Role::Button, label).click();
+        settle(h);
+        assert_eq!(h.state().state.polygons_wide, wide, "{scene}");
+    }
 }

@@ -20,6 +20,8 @@ pub enum EditTarget {
     Mass(usize),
     /// The assembly branch at a point.
     Branch(String),
+    /// A point moved (dragged in the editor).
+    Point(String),
     /// Everything put back as opened.
     Reset,
 }

@@ -10,6 +10,7 @@ pub mod history;
 pub mod limit;
 pub mod notice;
 pub mod params;
+mod point_edit;
 pub mod run_job;
 pub mod topology;
 pub mod url_state;
@@ -732,6 +733,12 @@ impl Built {
         let kin = Kinematics::new(mech).map_err(|e| e.to_string())?;
         let start = kin.mechanism().driver.start_rad;
         Self::at(kin, input.unwrap_or(start)).map_err(|e| e.to_string())
+    }
+
+    /// Where point `name` is in the built pose, m.
+    pub(crate) fn point_position(&self, name: &str) -> Option<linkage::Vec2> {
+        let p = self.kin.mechanism().point_index(name)?;
+        Some(self.pose.points[p].position)
     }
 
     /// Solves `kin` at `input` and sweeps it.

@@ -41,6 +41,8 @@ pub enum ControlKind {
     PolygonLayout,
     /// Undo or redo.
     History,
+    /// One template in the open New… menu.
+    TemplateItem,
 }
 
 /// One control as drawn this frame.
@@ -61,11 +63,15 @@ pub struct ControlEntry {
 pub struct ControlMap {
     /// In drawing order.
     pub entries: Vec<ControlEntry>,
+    /// The mechanism view's rectangle in points, [min x, min y, max x, max y]: where
+    /// a drag moves points or pans.
+    pub view: Option<[f32; 4]>,
 }
 
 impl ControlMap {
     /// Forgets the last frame's controls.
     pub fn clear(&mut self) {
+        self.view = None;
         self.entries.clear();
     }
 

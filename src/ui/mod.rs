@@ -7,6 +7,7 @@ pub mod control_map;
 pub mod controls;
 pub mod files;
 pub mod plots;
+pub mod point_drag;
 pub mod polygons;
 pub mod report;
 pub mod scene_picker;

@@ -68,6 +68,7 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
                     Err(e) => st.status = Some(e),
                 }
             }
+            new_menu(ui, st);
             if ui.button("Reset edits").clicked() {
                 st.session.reset();
             }
@@ -93,6 +94,11 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
             if ui.button("Fit view").clicked() {
                 st.fit_pending = true;
             }
+            let edit = ui
+                .checkbox(&mut st.edit_points, "move points")
+                .on_hover_text("Drag a joint in the view to move it; Undo takes a drag back");
+            st.controls
+                .note(ui, ControlKind::Layer, "move points", &edit);
             for (on, label) in [
                 (&mut st.layers.velocities, "v vectors"),
                 (&mut st.layers.accelerations, "a vectors"),
@@ -109,6 +115,43 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
     });
     files::prompt_window(ui.ctx(), st);
     discard_question(ui.ctx(), st);
+}
+
+/// Display names of the templates, read once.
+fn template_names() -> &'static [String] {
+    static NAMES: OnceLock<Vec<String>> = OnceLock::new();
+    NAMES.get_or_init(|| {
+        crate::catalog::TEMPLATES
+            .iter()
+            .map(|t| {
+                linkage::SceneFile::parse(t.text).map_or_else(|_| t.key.to_string(), |s| s.name)
+            })
+            .collect()
+    })
+}
+
+/// "New…": a scene started from a template (four-bar, slider-crank, inverted
+/// slider-crank, Watt and Stephenson six-bars), named after it, to edit and save.
+fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
+    let mut chosen = None;
+    let menu = ui.menu_button("New…", |ui| {
+        for (t, name) in crate::catalog::TEMPLATES.iter().zip(template_names()) {
+            let item = ui.button(name);
+            st.controls.note(ui, ControlKind::TemplateItem, name, &item);
+            if item.clicked() {
+                chosen = Some(t);
+                ui.close();
+            }
+        }
+    });
+    st.controls
+        .note(ui, ControlKind::FileButton, "New…", &menu.response);
+    if let Some(t) = chosen {
+        match Session::open_text(SceneSource::File(format!("{}.ron", t.key)), t.text) {
+            Ok(s) => st.open(s),
+            Err(e) => st.status = Some(format!("template {}: {e}", t.key)),
+        }
+    }
 }
 
 /// Asks before a scene with unsaved edits is replaced by the one waiting.

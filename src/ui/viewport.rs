@@ -12,11 +12,13 @@ use crate::render::pipeline::{MechanismCallback, SharedShapes};
 /// Draws the view; returns the µs spent building its shapes.
 pub fn show(ui: &mut egui::Ui, st: &mut AppState, shapes: &SharedShapes, gpu: bool) -> f64 {
     let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+    st.controls.view = Some([rect.min.x, rect.min.y, rect.max.x, rect.max.y]);
     if st.fit_pending && rect.width() > 1.0 {
         st.camera.fit(st.session.curves().bounds_m, rect);
         st.fit_pending = false;
     }
-    if response.dragged() {
+    let moving_point = crate::ui::point_drag::handle(ui, &response, rect, st);
+    if response.dragged() && !moving_point {
         st.camera.pan(response.drag_delta());
     }
     if response.double_clicked() {
@@ -106,7 +108,11 @@ pub fn show(ui: &mut egui::Ui, st: &mut AppState, shapes: &SharedShapes, gpu: bo
     if st.layers.accelerations && st.scales.acceleration > 0.0 {
         legend += &format!("\na: 1 m/s² drawn {:.4} m", st.scales.acceleration);
     }
-    legend += "\ndrag to pan, wheel to zoom, double-click to fit";
+    legend += if st.edit_points {
+        "\ndrag a joint to move it (Alt: off the grid), elsewhere to pan"
+    } else {
+        "\ndrag to pan, wheel to zoom, double-click to fit"
+    };
     painter.text(
         rect.left_top() + egui::vec2(8.0, 8.0),
         Align2::LEFT_TOP,

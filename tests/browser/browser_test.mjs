@@ -52,9 +52,11 @@ const before = await shot('loaded');
 const coverage = nonBackground(before);
 if (coverage < 0.2) fail(`canvas looks blank: ${(coverage * 100).toFixed(1)} % drawn`);
 
-// Drag the crank-angle slider (second row of the control panel, at 1500x950 and one
-// pixel per point) in small steps.
-const y = 84, x0 = 14, x1 = 100;
+// Drag the crank-angle slider (found through the app's control map) in small steps.
+const crank = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()))
+  .controls.entries.find((e) => e.kind === 'Crank');
+if (!crank) fail('no crank slider');
+const y = 0.5 * (crank.rect[1] + crank.rect[3]), x0 = crank.rect[0] + 4, x1 = crank.rect[0] + 90;
 await page.mouse.move(x0, y);
 await page.waitForTimeout(50);
 await page.mouse.down();
@@ -68,9 +70,12 @@ const after = await shot('dragged');
 const changed = differing(before, after);
 if (changed < 2000) fail(`dragging the crank slider changed only ${changed} pixels`);
 
-// Press Play (top-left button of the control panel), count the page's animation
-// frames for 3 s, then wait, on a slow machine, until the picture has moved.
-await page.mouse.click(27, 61);
+// Press Play, count the page's animation frames for 3 s, then wait, on a slow
+// machine, until the picture has moved.
+const playButton = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()))
+  .controls.entries.find((e) => e.kind === 'Play');
+const PLAY = [0.5 * (playButton.rect[0] + playButton.rect[2]), 0.5 * (playButton.rect[1] + playButton.rect[3])];
+await page.mouse.click(...PLAY);
 const fps = await page.evaluate(() => new Promise((resolve) => {
   let n = 0; const start = performance.now();
   const tick = () => { n++; if (performance.now() - start < 3000) requestAnimationFrame(tick); else resolve(n / ((performance.now() - start) / 1000)); };
@@ -81,11 +86,17 @@ for (let i = 0; i < 20 && played < 2000; i++) {
   played = differing(after, await shot('played'));
   if (played < 2000) await page.waitForTimeout(500);
 }
-await page.mouse.click(27, 61); // pause
+await page.mouse.click(...PLAY); // pause
 if (played < 2000) fail(`playing changed only ${played} pixels`);
 
-// The top bar's file buttons (centres at 1500x950, one pixel per point).
-const OPEN = [133, 12], SAVE = [235, 12], EXPORT = [336, 12];
+// The top bar's file buttons, from the control map.
+const lastControls = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+const fileButton = (label) => {
+  const b = lastControls.controls.entries.find((e) => e.kind === 'FileButton' && e.label === label);
+  if (!b) { fail(`no ${label} button`); return [0, 0]; }
+  return [0.5 * (b.rect[0] + b.rect[2]), 0.5 * (b.rect[1] + b.rect[3])];
+};
+const OPEN = fileButton('Open scene…'), SAVE = fileButton('Save scene…'), EXPORT = fileButton('Export CSV…');
 const download = async ([x, y]) => {
   const [dl] = await Promise.all([page.waitForEvent('download', { timeout: 20000 }), page.mouse.click(x, y)]);
   return { name: dl.suggestedFilename(), text: readFileSync(await dl.path(), 'utf8') };

@@ -1,0 +1,98 @@
+//! Dragging a point in the mechanism view (with "move points" on): the joint under
+//! the pointer follows it, snapped to a 1 mm grid and into line with other joints
+//! (within 6 points, horizontally or vertically; Alt drags freely). Each frame of
+//! the drag is one `Session::move_point`, and the drag as a whole one undo step. A
+//! place where the chain does not assemble is refused by the session: the point
+//! stays at its last valid place and the reason shows.
+
+use eframe::egui::{self, Pos2, Rect};
+
+use crate::app::AppState;
+
+/// How near a joint (points) a press must be to grab it.
+const GRAB_PT: f32 = 10.0;
+/// How near another joint's x or y (points) snaps into line with it.
+const ALIGN_PT: f32 = 6.0;
+/// The grid, metres.
+const GRID_M: f64 = 1e-3;
+
+/// Handles the view's pointer in edit mode; returns whether a point is being dragged
+/// (then the view does not pan).
+pub fn handle(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut AppState) -> bool {
+    if response.drag_started()
+        && let Some(at) = response.interact_pointer_pos()
+    {
+        st.dragged_point = joint_near(st, at, rect);
+    }
+    if response.drag_stopped() || !st.edit_points {
+        st.dragged_point = None;
+        return false;
+    }
+    let Some(name) = st.dragged_point.clone() else {
+        return false;
+    };
+    if response.dragged()
+        && let Some(at) = response.interact_pointer_pos()
+    {
+        let free = ui.input(|i| i.modifiers.alt);
+        let to = if free {
+            st.camera.to_world(at, rect)
+        } else {
+            snapped(st, &name, at, rect)
+        };
+        let current = point_position(st, &name);
+        if current.is_none_or(|c| (c[0] - to[0]).hypot(c[1] - to[1]) > 1e-12) {
+            st.session.move_point(&name, to);
+        }
+    }
+    true
+}
+
+/// The joint within [`GRAB_PT`] of `at`, the nearest.
+fn joint_near(st: &AppState, at: Pos2, rect: Rect) -> Option<String> {
+    let m = st.session.mechanism();
+    let pose = st.session.pose();
+    st.session
+        .topology()
+        .joint_points
+        .iter()
+        .map(|&p| {
+            let q = pose.points[p].position;
+            (st.camera.to_screen([q.x, q.y], rect).distance(at), p)
+        })
+        .filter(|(d, _)| *d <= GRAB_PT)
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, p)| m.points[p].name.clone())
+}
+
+fn point_position(st: &AppState, name: &str) -> Option<[f64; 2]> {
+    let p = st.session.mechanism().point_index(name)?;
+    let q = st.session.pose().points[p].position;
+    Some([q.x, q.y])
+}
+
+/// The pointer's world place on the grid, then into line with any other joint whose
+/// x or y is within [`ALIGN_PT`].
+fn snapped(st: &AppState, name: &str, at: Pos2, rect: Rect) -> [f64; 2] {
+    let w = st.camera.to_world(at, rect);
+    let mut to = [
+        (w[0] / GRID_M).round() * GRID_M,
+        (w[1] / GRID_M).round() * GRID_M,
+    ];
+    let m = st.session.mechanism();
+    let pose = st.session.pose();
+    for &p in &st.session.topology().joint_points {
+        if m.points[p].name == name {
+            continue;
+        }
+        let q = pose.points[p].position;
+        let s = st.camera.to_screen([q.x, q.y], rect);
+        if (s.x - at.x).abs() <= ALIGN_PT {
+            to[0] = q.x;
+        }
+        if (s.y - at.y).abs() <= ALIGN_PT {
+            to[1] = q.y;
+        }
+    }
+    to
+}
