@@ -14,7 +14,9 @@ fi
 bash scripts/build_web.sh
 # The CLI the browser test compares the app's diagram download with.
 cargo build -q -p linkage-cli
-export LINKAGE_CLI="$PWD/${CARGO_TARGET_DIR:-target}/debug/linkage"
+target_dir="${CARGO_TARGET_DIR:-target}"
+case "$target_dir" in /*) ;; *) target_dir="$PWD/$target_dir" ;; esac
+export LINKAGE_CLI="$target_dir/debug/linkage"
 for wasm in dist/*/linkage-lab_bg.wasm; do
     gzip -9 -c "$wasm" | wc -c | awk -v w="$wasm" -v raw="$(stat -c %s "$wasm")" \
         '{printf "%s: %.2f MB raw, %.2f MB gzipped\n", w, raw/1e6, $1/1e6}'

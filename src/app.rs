@@ -113,6 +113,8 @@ pub struct AppState {
     pub edit_points: bool,
     /// The point being dragged, by name.
     pub dragged_point: Option<String>,
+    /// While the driver is turned by hand: its grabbed point's angle from the input.
+    pub turning: Option<f64>,
 }
 
 impl AppState {
@@ -140,6 +142,7 @@ impl AppState {
             pending_open: None,
             edit_points: false,
             dragged_point: None,
+            turning: None,
         }
     }
 

@@ -133,3 +133,49 @@ fn dragging_a_joint_moves_it_and_dragging_elsewhere_pans() {
     assert_ne!(h.state().state.camera, camera, "panned");
     assert_eq!(h.state().state.session.scene(), &scene);
 }
+
+#[test]
+fn dragging_the_crank_pin_turns_the_crank() {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1500.0, 950.0))
+        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
+    h.run();
+    h.run();
+    let [x0, y0, x1, y1] = h.state().state.controls.view.expect("the view is drawn");
+    let rect = egui::Rect::from_min_max(egui::pos2(x0, y0), egui::pos2(x1, y1));
+    let st = &h.state().state;
+    let m = st.session.mechanism();
+    let pivot = st.session.pose().points[m.revolutes[m.driver.pivot].point].position;
+    let pin = m.links[m.driver.link]
+        .points
+        .iter()
+        .map(|&(p, _)| p)
+        .find(|&p| p != m.revolutes[m.driver.pivot].point)
+        .expect("a crank pin");
+    let q = st.session.pose().points[pin].position;
+    let before = st.session.input_rad();
+    let scene = st.session.scene().clone();
+    // The pin carried 30° round the pivot, in five steps.
+    let turned = |deg: f64| {
+        let (s, c) = deg.to_radians().sin_cos();
+        let r = q - pivot;
+        st.camera.to_screen(
+            [pivot.x + c * r.x - s * r.y, pivot.y + s * r.x + c * r.y],
+            rect,
+        )
+    };
+    let path: Vec<egui::Pos2> = (0..=5).map(|k| turned(6.0 * f64::from(k))).collect();
+    pointer(&mut h, path[0], Some(true));
+    for &p in &path[1..] {
+        pointer(&mut h, p, None);
+    }
+    pointer(&mut h, path[5], Some(false));
+    let st = &h.state().state;
+    let turned_deg = (st.session.input_rad() - before).to_degrees();
+    assert!((turned_deg - 30.0).abs() < 0.5, "turned {turned_deg}°");
+    assert_eq!(
+        st.session.scene(),
+        &scene,
+        "turning is not an edit of the scene"
+    );
+}

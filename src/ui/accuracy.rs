@@ -11,6 +11,17 @@ use crate::app::AppState;
 use crate::session::dynamic_run::METHODS;
 use crate::ui::control_map::ControlKind;
 
+/// "degrees of freedom: 3(n − 1) − 2j = …" for the mechanism's links and joints.
+pub fn mobility_line(m: &linkage::Mechanism) -> String {
+    let n = m.links.len();
+    let j = m.revolutes.len() + m.sliders.len();
+    let dof = 3 * (n as i64 - 1) - 2 * j as i64;
+    format!(
+        "degrees of freedom: 3(n − 1) − 2j = 3·{} − 2·{j} = {dof} ({n} links, {j} joints)",
+        n - 1
+    )
+}
+
 /// The accuracy panel.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     ui.heading("Accuracy and cost");
@@ -30,6 +41,8 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         st.session.pose().conditioning
     ))
     .on_hover_text("Smallest singular value ratio of the group Jacobians: how far from a dead point or toggle.");
+    ui.label(mobility_line(k.mechanism()))
+        .on_hover_text("Grübler–Kutzbach count over links and lower pairs; the solver also checks the true mobility from the constraint Jacobian's rank, which redundant joints do not fool.");
     if st.show_timings {
         ui.label(format!(
             "CPU per frame: {:.0} µs (pose, polygons and shapes {:.0} µs)",
@@ -127,5 +140,32 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     }
     if changed || choice.method != st.session.integrator().method {
         st.session.set_integrator(choice);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_shipped_scene_and_template_counts_one_degree_of_freedom() {
+        let all = crate::catalog::BUILTIN_SCENES
+            .iter()
+            .chain(crate::catalog::TEMPLATES);
+        for b in all {
+            let m = linkage::Mechanism::from_ron(b.text).expect("valid");
+            let line = mobility_line(&m);
+            assert!(line.contains(" = 1 ("), "{}: {line}", b.key);
+        }
+        let m = linkage::Mechanism::from_ron(
+            crate::catalog::builtin("slider_crank")
+                .expect("shipped")
+                .text,
+        )
+        .expect("valid");
+        assert_eq!(
+            mobility_line(&m),
+            "degrees of freedom: 3(n − 1) − 2j = 3·3 − 2·4 = 1 (4 links, 4 joints)"
+        );
     }
 }

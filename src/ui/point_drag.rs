@@ -1,5 +1,6 @@
-//! Dragging a point in the mechanism view (with "move points" on): the joint under
-//! the pointer follows it, snapped to a 1 mm grid and into line with other joints
+//! Dragging in the mechanism view. Without "move points", grabbing a point of the
+//! driver link turns it to follow the pointer (drive by hand). With it, the joint
+//! under the pointer follows it, snapped to a 1 mm grid and into line with other joints
 //! (within 6 points, horizontally or vertically; Alt drags freely). Each frame of
 //! the drag is one `Session::move_point`, and the drag as a whole one undo step. A
 //! place where the chain does not assemble is refused by the session: the point
@@ -22,18 +23,34 @@ pub fn handle(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut App
     if response.drag_started()
         && let Some(at) = response.interact_pointer_pos()
     {
-        st.dragged_point = joint_near(st, at, rect);
+        if st.edit_points {
+            st.dragged_point = joint_near(st, at, rect);
+        } else {
+            st.turning = driver_handle(st, at, rect);
+        }
     }
-    if response.drag_stopped() || !st.edit_points {
+    if response.drag_stopped() {
+        st.dragged_point = None;
+        st.turning = None;
+        return false;
+    }
+    // A pointer held still asks for nothing: an edit in every frame would keep the
+    // app repainting (and a refused one would be asked again and again).
+    let moved = response.drag_delta() != egui::Vec2::ZERO;
+    if let Some(offset) = st.turning {
+        if moved && let Some(at) = response.interact_pointer_pos() {
+            turn_to(st, at, rect, offset);
+        }
+        return true;
+    }
+    if !st.edit_points {
         st.dragged_point = None;
         return false;
     }
     let Some(name) = st.dragged_point.clone() else {
         return false;
     };
-    if response.dragged()
-        && let Some(at) = response.interact_pointer_pos()
-    {
+    if moved && let Some(at) = response.interact_pointer_pos() {
         let free = ui.input(|i| i.modifiers.alt);
         let to = if free {
             st.camera.to_world(at, rect)
@@ -46,6 +63,42 @@ pub fn handle(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut App
         }
     }
     true
+}
+
+/// A point of the driver link (not its pivot) within [`GRAB_PT`] of `at`: the angle
+/// between that point's direction from the pivot and the input angle, which the drag
+/// keeps.
+fn driver_handle(st: &AppState, at: Pos2, rect: Rect) -> Option<f64> {
+    let m = st.session.mechanism();
+    let pose = st.session.pose();
+    let pivot_point = m.revolutes[m.driver.pivot].point;
+    let pivot = pose.points[pivot_point].position;
+    m.links[m.driver.link]
+        .points
+        .iter()
+        .map(|&(p, _)| p)
+        .filter(|&p| p != pivot_point)
+        .map(|p| {
+            let q = pose.points[p].position;
+            (st.camera.to_screen([q.x, q.y], rect).distance(at), q)
+        })
+        .filter(|(d, _)| *d <= GRAB_PT)
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, q)| (q.y - pivot.y).atan2(q.x - pivot.x) - st.session.input_rad())
+}
+
+/// Turns the driver so that its grabbed point points at `at`.
+fn turn_to(st: &mut AppState, at: Pos2, rect: Rect, offset: f64) {
+    let m = st.session.mechanism();
+    let pivot = st.session.pose().points[m.revolutes[m.driver.pivot].point].position;
+    let w = st.camera.to_world(at, rect);
+    let pointed = (w[1] - pivot.y).atan2(w[0] - pivot.x) - offset;
+    // The turn nearest the current angle: a range such as 242°..326° is reached from
+    // atan2's (-180°, 180°] without a jump.
+    let now = st.session.input_rad();
+    let step = (pointed - now + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
+        - std::f64::consts::PI;
+    st.session.set_input_deg((now + step).to_degrees());
 }
 
 /// The joint within [`GRAB_PT`] of `at`, the nearest.

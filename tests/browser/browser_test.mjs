@@ -130,8 +130,13 @@ else {
   if (sheet.name !== `die_cutter_at_${deg.toFixed(0)}deg.svg`) fail(`diagram download named ${sheet.name} at ${deg}°`);
   const cli = process.env.LINKAGE_CLI ?? 'target/debug/linkage';
   const scene = new URL('../../assets/scenes/die_cutter.ron', import.meta.url).pathname;
-  const expected = execFileSync(cli, ['diagram', scene, '--input-deg', String(deg)], { encoding: 'utf8' });
-  if (sheet.text !== expected) {
+  let expected = '';
+  try {
+    expected = execFileSync(cli, ['diagram', scene, '--input-deg', String(deg)], { encoding: 'utf8' });
+  } catch (e) {
+    fail(`linkage diagram (${cli}) did not run: ${e.message}`);
+  }
+  if (expected && sheet.text !== expected) {
     const a = sheet.text.split('\n'), b = expected.split('\n');
     const i = a.findIndex((line, k) => line !== b[k]);
     fail(`the downloaded sheet differs from linkage diagram at line ${i + 1}:\n  ${a[i]}\n  ${b[i]}`);
