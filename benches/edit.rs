@@ -1,6 +1,7 @@
 //! The time of one edit per shipped scene, as a slider makes it: a length set to a
 //! valid value, and to one the chain cannot assemble with (refused, with its limit
-//! found); for scenes with springs or masses, those too. Measured is what the frame
+//! found); a joint dragged in the editor; for scenes with springs or masses, those
+//! too. Measured is what the frame
 //! of the edit has to do before it can draw: the edit itself (pose, polygons, the
 //! curves on screen). The report follows in the first frame without an edit
 //! (`report`, measured apart); the dynamic run follows off the frame.
@@ -73,6 +74,27 @@ fn edits(c: &mut Criterion) {
             });
         });
         assert!(s.message().is_none(), "{key}: {:?}", s.message());
+        // An editor drag: a joint moved back and forth by 1 % of the mechanism's size.
+        let mut dragged = open(&path);
+        let (name, at) = {
+            let m = dragged.mechanism();
+            let p = *dragged.topology().joint_points.last().expect("a joint");
+            let q = dragged.pose().points[p].position;
+            (m.points[p].name.clone(), [q.x, q.y])
+        };
+        let step = 0.01 * dragged.mechanism().size_m;
+        group.bench_function(format!("{key}/point dragged"), |b| {
+            b.iter(|| {
+                flip = !flip;
+                let to = if flip { [at[0] + step, at[1]] } else { at };
+                edit(&mut dragged, |s| s.move_point(&name, to));
+            });
+        });
+        assert!(
+            dragged.message().is_none(),
+            "{key}: {:?}",
+            dragged.message()
+        );
         group.bench_function(format!("{key}/report"), |b| {
             b.iter(|| black_box(report(&mut s.kinematics().clone())));
         });

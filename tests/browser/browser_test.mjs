@@ -186,7 +186,10 @@ for (let i = 0; i < 50 && !hash.includes('doc=1.'); i++) {
 if (!hash.includes('doc=1.')) fail(`the URL does not carry the opened file: ${hash.slice(0, 60)}`);
 const afterReload = async (p) => {
   for (let i = 0; i < 600; i++) {
-    const ready = await p.evaluate(() => Boolean(window.wasmBindings?.linkage_lab_controls?.()));
+    // The bindings exist before the wasm is ready: a call then throws.
+    const ready = await p.evaluate(() => {
+      try { return Boolean(window.wasmBindings?.linkage_lab_controls?.()); } catch { return false; }
+    });
     if (ready) return appState(p);
     await p.waitForTimeout(100);
   }
