@@ -32,8 +32,43 @@ struct Published<'a> {
     scene_name: &'a str,
     /// Whether it has unsaved edits.
     dirty: bool,
+    /// Every joint: its name, world place (m) and place on screen (points).
+    joints: Vec<PublishedJoint<'a>>,
     /// Whether the pose holds only finite numbers.
     pose_finite: bool,
+}
+
+/// A joint as the test hook shows it.
+#[derive(serde::Serialize)]
+struct PublishedJoint<'a> {
+    name: &'a str,
+    world: [f64; 2],
+    screen: [f32; 2],
+}
+
+/// The joints of the pose, with their places on screen in the mechanism view.
+fn joints(st: &crate::app::AppState) -> Vec<PublishedJoint<'_>> {
+    let m = st.session.mechanism();
+    let view = st.controls.view.map(|[x0, y0, x1, y1]| {
+        eframe::egui::Rect::from_min_max(eframe::egui::pos2(x0, y0), eframe::egui::pos2(x1, y1))
+    });
+    st.session
+        .topology()
+        .joint_points
+        .iter()
+        .map(|&p| {
+            let q = st.session.pose().points[p].position;
+            let screen = view.map_or([f32::NAN; 2], |r| {
+                let s = st.camera.to_screen([q.x, q.y], r);
+                [s.x, s.y]
+            });
+            PublishedJoint {
+                name: &m.points[p].name,
+                world: [q.x, q.y],
+                screen,
+            }
+        })
+        .collect()
 }
 
 /// Keeps this frame's controls for [`controls_json`].
@@ -48,6 +83,7 @@ pub fn publish_controls(st: &crate::app::AppState, frame: u64) {
         input_deg: st.session.input_rad().to_degrees(),
         scene_name: &st.session.scene().name,
         dirty: st.session.is_dirty(),
+        joints: joints(st),
         pose_finite: pose.points.iter().all(|p| {
             p.position.x.is_finite() && p.position.y.is_finite() && p.velocity.x.is_finite()
         }),
