@@ -78,7 +78,14 @@ fn edits(c: &mut Criterion) {
         let mut dragged = open(&path);
         let (name, at) = {
             let m = dragged.mechanism();
-            let p = *dragged.topology().joint_points.last().expect("a joint");
+            // The last pin joint (a slider's point moves only along its guide).
+            let p = *dragged
+                .topology()
+                .joint_points
+                .iter()
+                .rev()
+                .find(|&&p| m.sliders.iter().all(|sl| sl.point != p))
+                .expect("a pin joint");
             let q = dragged.pose().points[p].position;
             (m.points[p].name.clone(), [q.x, q.y])
         };

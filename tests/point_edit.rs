@@ -69,6 +69,21 @@ fn a_place_on_the_other_branch_is_refused() {
     assert!(msg.contains("other branch"), "{msg}");
     assert_eq!(s.scene(), &scene);
     assert!(!s.can_undo());
+    // The die cutter's die slides on a vertical guide: its pin moves only along it.
+    let mut cutter = Session::open_builtin("die_cutter").expect("opens");
+    let e = cutter.mechanism().point_index("E").expect("E");
+    let q = cutter.pose().points[e].position;
+    cutter.move_point("E", [q.x + 0.01, q.y]);
+    assert!(
+        cutter
+            .message()
+            .expect("refused")
+            .contains("only along the guide's line"),
+        "{:?}",
+        cutter.message()
+    );
+    cutter.move_point("E", [q.x, q.y + 0.01]);
+    assert_eq!(cutter.message(), None, "along the guide it moves");
     s.move_point("Q", [0.0, 0.0]);
     assert_eq!(s.message().as_deref(), Some("there is no point named Q"));
     s.move_point("B", [f64::NAN, 0.0]);
@@ -123,6 +138,25 @@ fn dragging_a_joint_moves_it_and_dragging_elsewhere_pans() {
     // One undo takes the whole drag back.
     h.state_mut().state.session.undo();
     assert_eq!(h.state().state.session.scene(), &scene);
+
+    // A slow frame: the press and 20 points of motion arrive together. The joint is
+    // grabbed where the button went down, not where the pointer is by then.
+    h.event(egui::Event::PointerMoved(from));
+    h.event(egui::Event::PointerButton {
+        pos: from,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::default(),
+    });
+    h.event(egui::Event::PointerMoved(from + egui::vec2(20.0, 0.0)));
+    h.run();
+    pointer(&mut h, from + egui::vec2(20.0, 0.0), Some(false));
+    assert_ne!(
+        h.state().state.session.scene(),
+        &scene,
+        "a quick drag moves C too"
+    );
+    h.state_mut().state.session.undo();
 
     // A drag on empty space pans.
     let camera = h.state().state.camera;

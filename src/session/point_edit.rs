@@ -2,8 +2,9 @@
 //! carries the point gets its new place in that link's own coordinates, taken from
 //! the link's place in the current pose, so that at the current crank angle the point
 //! lands where it was put and everything else stays. Where the chain would not
-//! assemble, or would only on its other branch (the point would jump away), the edit
-//! is refused with the reason and the last valid geometry stays.
+//! assemble, or would put the point elsewhere (on its other branch, or a slider's
+//! point off its guide's line), the edit is refused with the reason and the last
+//! valid geometry stays.
 
 use linkage::Vec2;
 
@@ -57,9 +58,14 @@ impl Session {
         let landed = built.point_position(name);
         let tolerance = 1e-9 * self.mechanism().size_m.max(1e-3);
         if landed.is_none_or(|p| (p - target).norm() > tolerance) {
-            self.message = Some(refuse(
-                "the chain assembles there only on its other branch (flip the branch first)".into(),
-            ));
+            let m = self.mechanism();
+            let on_guide = m.sliders.iter().any(|sl| m.points[sl.point].name == name);
+            let why = if on_guide {
+                "it slides on a guide, so it can move only along the guide's line"
+            } else {
+                "the chain assembles there only on its other branch (flip the branch first)"
+            };
+            self.message = Some(refuse(why.into()));
             return;
         }
         self.commit(EditTarget::Point(name.to_string()), scene, built);

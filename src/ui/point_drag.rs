@@ -20,8 +20,11 @@ const GRID_M: f64 = 1e-3;
 /// Handles the view's pointer in edit mode; returns whether a point is being dragged
 /// (then the view does not pan).
 pub fn handle(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut AppState) -> bool {
+    // Grab by where the button went down: by the frame that sees the drag start the
+    // pointer may have gone several points on (a slow frame, a quick hand).
+    let pressed_at = ui.input(|i| i.pointer.press_origin());
     if response.drag_started()
-        && let Some(at) = response.interact_pointer_pos()
+        && let Some(at) = pressed_at.or_else(|| response.interact_pointer_pos())
     {
         if st.edit_points {
             st.dragged_point = joint_near(st, at, rect);

@@ -137,7 +137,10 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
     let menu = ui.menu_button("New…", |ui| {
         for (t, name) in crate::catalog::TEMPLATES.iter().zip(template_names()) {
             let item = ui.button(name);
-            st.controls.note(ui, ControlKind::TemplateItem, name, &item);
+            // The menu's first frame only sizes it, somewhere else: not clickable yet.
+            let placed = !ui.is_sizing_pass() && ui.clip_rect().contains_rect(item.rect);
+            st.controls
+                .note_rect(ControlKind::TemplateItem, name, item.rect, placed);
             if item.clicked() {
                 chosen = Some(t);
                 ui.close();

@@ -232,6 +232,7 @@ else {
   if (!item) fail('no four-bar template in New…');
   else await page.mouse.click(...middle(item));
   for (let i = 0; i < 50 && (await appState(page)).scene_name !== 'Four-bar (template)'; i++) await page.waitForTimeout(100);
+  if ((await appState(page)).scene_name !== 'Four-bar (template)') fail(`New… → four-bar opened ${(await appState(page)).scene_name}`);
   const toggle = await entry(page, 'Layer', 'move points');
   if (toggle) await page.mouse.click(...middle(toggle));
   await page.waitForTimeout(300);
@@ -257,12 +258,15 @@ else {
   }
   await page.reload({ waitUntil: 'load' });
   const kept = await afterReload(page);
-  if (kept.scene_name !== 'Four-bar (template)' || !samePlaces(kept.joints, built.joints)) fail('after a reload the built four-bar is not the same');
+  const places = (st) => JSON.stringify((st.joints ?? []).map((j) => [j.name, ...j.world.map((v) => Number(v.toFixed(6)))]));
+  if (kept.scene_name !== 'Four-bar (template)' || !samePlaces(kept.joints, built.joints)) {
+    fail(`after a reload the built four-bar is not the same: ${kept.scene_name} ${places(kept)}, built ${built.scene_name} ${places(built)} (${url.slice(0, 80)})`);
+  }
   const other = await browser.newPage({ viewport: { width: 1500, height: 950 }, deviceScaleFactor: 1 });
   other.on('pageerror', (e) => errors.push(`pageerror (four-bar link): ${e.message}`));
   await other.goto(url, { waitUntil: 'load' });
   const seen = await afterReload(other);
-  if (!samePlaces(seen.joints ?? [], built.joints)) fail('the four-bar link opens another mechanism');
+  if (!samePlaces(seen.joints ?? [], built.joints)) fail(`the four-bar link opens another mechanism: ${places(seen)}, built ${places(built)}`);
   await other.close();
 }
 
