@@ -112,7 +112,17 @@ const waitForLog = async (needle) => {
   return false;
 };
 const upload = async (name, text) => {
-  const [chooser] = await Promise.all([page.waitForEvent('filechooser', { timeout: 20000 }), page.mouse.click(...OPEN)]);
+  // The app opens the file picker in the frame after the click; the browser allows
+  // that only within its user-activation window (about 5 s). On a loaded machine at a
+  // frame or two a second the frame can come later: then a user clicks again.
+  let chooser;
+  for (let attempt = 0; attempt < 3 && !chooser; attempt++) {
+    [chooser] = await Promise.all([
+      page.waitForEvent('filechooser', { timeout: 20000 }).catch(() => undefined),
+      page.mouse.click(...OPEN),
+    ]);
+  }
+  if (!chooser) { fail(`Open never showed the file picker (three clicks)`); return; }
   await chooser.setFiles({ name, mimeType: 'text/plain', buffer: Buffer.from(text) });
   if (!(await waitForLog(`opened ${name}`))) fail(`uploading ${name} did not open it`);
 };
