@@ -10,11 +10,12 @@ pub struct BuiltinScene {
     pub text: &'static str,
 }
 
-macro_rules! scene {
-    ($key:literal) => {
+/// The file `assets/FOLDER/KEY.ron`, built in.
+macro_rules! embedded {
+    ($folder:literal, $key:literal) => {
         BuiltinScene {
             key: $key,
-            text: include_str!(concat!("../assets/scenes/", $key, ".ron")),
+            text: include_str!(concat!("../assets/", $folder, "/", $key, ".ron")),
         }
     };
 }
@@ -23,32 +24,31 @@ macro_rules! scene {
 /// as-printed die cutter and the teaching classics. A test checks that this list and
 /// the directory agree.
 pub const BUILTIN_SCENES: &[BuiltinScene] = &[
-    scene!("paper_cup_feed"),
-    scene!("die_cutter"),
-    scene!("gravity_flipper"),
-    scene!("die_cutter_as_printed"),
-    scene!("slider_crank"),
-    scene!("quick_return"),
+    embedded!("scenes", "paper_cup_feed"),
+    embedded!("scenes", "die_cutter"),
+    embedded!("scenes", "gravity_flipper"),
+    embedded!("scenes", "die_cutter_as_printed"),
+    embedded!("scenes", "slider_crank"),
+    embedded!("scenes", "quick_return"),
 ];
-
-macro_rules! template {
-    ($key:literal) => {
-        BuiltinScene {
-            key: $key,
-            text: include_str!(concat!("../assets/templates/", $key, ".ron")),
-        }
-    };
-}
 
 /// The templates in `assets/templates` a new scene starts from, in the menu's order.
 /// A test checks that this list and the directory agree.
 pub const TEMPLATES: &[BuiltinScene] = &[
-    template!("four_bar"),
-    template!("slider_crank"),
-    template!("inverted_slider_crank"),
-    template!("watt_six_bar"),
-    template!("stephenson_six_bar"),
+    embedded!("templates", "four_bar"),
+    embedded!("templates", "slider_crank"),
+    embedded!("templates", "inverted_slider_crank"),
+    embedded!("templates", "watt_six_bar"),
+    embedded!("templates", "stephenson_six_bar"),
 ];
+
+impl BuiltinScene {
+    /// Its display name (the file's `name` field), or its key if the text does not
+    /// parse (a test checks that every built-in one does).
+    pub fn name(&self) -> String {
+        linkage::SceneFile::parse(self.text).map_or_else(|_| self.key.to_string(), |s| s.name)
+    }
+}
 
 /// The built-in scene with this key.
 pub fn builtin(key: &str) -> Option<&'static BuiltinScene> {

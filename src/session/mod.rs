@@ -531,33 +531,41 @@ impl Session {
 
     /// Takes the last edit back (a whole slider drag is one edit).
     pub fn undo(&mut self) {
-        self.edits += 1;
-        let Some(to) = self.history.to_undo().cloned() else {
-            return;
-        };
-        match self.rebuild_snapshot(&to) {
-            Ok(built) => {
-                let now = self.snapshot();
-                self.history.undone(now);
-                self.accept(to.scene, built);
-            }
-            Err(why) => self.message = Some(Notice::Text(format!("cannot undo: {why}"))),
-        }
+        self.travel(true);
     }
 
     /// Makes the last undone edit again.
     pub fn redo(&mut self) {
+        self.travel(false);
+    }
+
+    /// Puts back the scene the history holds next, backwards (undo) or forwards
+    /// (redo), and moves the entry to the other stack; a scene that no longer builds
+    /// stays in the history, with the reason shown.
+    fn travel(&mut self, back: bool) {
         self.edits += 1;
-        let Some(to) = self.history.to_redo().cloned() else {
+        let next = if back {
+            self.history.to_undo()
+        } else {
+            self.history.to_redo()
+        };
+        let Some(to) = next.cloned() else {
             return;
         };
         match self.rebuild_snapshot(&to) {
             Ok(built) => {
                 let now = self.snapshot();
-                self.history.redone(now);
+                if back {
+                    self.history.undone(now);
+                } else {
+                    self.history.redone(now);
+                }
                 self.accept(to.scene, built);
             }
-            Err(why) => self.message = Some(Notice::Text(format!("cannot redo: {why}"))),
+            Err(why) => {
+                let what = if back { "undo" } else { "redo" };
+                self.message = Some(Notice::Text(format!("cannot {what}: {why}")));
+            }
         }
     }
 

@@ -3,14 +3,15 @@
 //! what each step fixes written under the figure. All steps share the last one's
 //! scale, so the figure grows in place as the student steps through it.
 
-use eframe::egui::{self, Color32, Pos2, Sense, Stroke, Vec2};
+use eframe::egui::{self, Color32, Stroke, Vec2};
 use linkage::polygon::Quantity;
+use linkage_diagram::Rect;
 use linkage_diagram::construction::{DirectionLine, construct};
 use linkage_diagram::label::Label;
-use linkage_diagram::layout::{LaidPolygon, Sizes, layout_polygon_fitting};
-use linkage_diagram::{Rect, geometry};
+use linkage_diagram::layout::LaidPolygon;
 
 use crate::app::AppState;
+use crate::ui::polygons::{INK, Paper, pos};
 use crate::ui::typeset::{galley, job};
 
 /// Which equation is being constructed, and how far.
@@ -22,8 +23,6 @@ pub struct ConstructionView {
     pub step: usize,
 }
 
-const PAPER: Color32 = Color32::from_rgb(252, 252, 248);
-const INK: Color32 = Color32::from_gray(25);
 const LINE: Color32 = Color32::from_rgb(120, 60, 160);
 
 /// The construction section of the polygon pane.
@@ -93,36 +92,17 @@ pub fn section(ui: &mut egui::Ui, st: &mut AppState) {
     ui.label(job(&step.says, 14.0, ink));
 }
 
-fn pos(p: geometry::Pt) -> Pos2 {
-    Pos2::new(p[0] as f32, p[1] as f32)
-}
-
 fn draw_step(ui: &mut egui::Ui, step: &linkage_diagram::construction::Step, fit: Rect) {
-    let w = ui.available_width().max(160.0);
-    let h = (w * 0.72).clamp(160.0, 560.0);
-    let (rect, _) = ui.allocate_exact_size(Vec2::new(w, h), Sense::hover());
-    let painter = ui.painter_at(rect);
-    painter.rect_filled(rect, 4.0, PAPER);
-    let measure = |l: &Label| {
-        let g = galley(&painter, l, 13.0, INK);
-        [f64::from(g.size().x), f64::from(g.size().y)]
-    };
-    let pane = Rect {
-        min: [f64::from(rect.min.x), f64::from(rect.min.y)],
-        max: [f64::from(rect.max.x), f64::from(rect.max.y)],
-    };
-    let sizes = Sizes {
-        font_px: 13.0,
-        head_px: 9.0,
-    };
-    let laid = layout_polygon_fitting(&step.figure, Some(fit), pane, sizes, &measure);
+    let paper = Paper::new(ui);
+    let laid = paper.lay_out(&step.figure, Some(fit));
     if laid.px_per_unit <= 0.0 {
         return;
     }
+    let (painter, rect) = (&paper.painter, paper.rect);
     for line in &step.lines {
-        direction_line(&painter, &laid, line, rect);
+        direction_line(painter, &laid, line, rect);
     }
-    crate::ui::polygons::draw(&painter, &step.figure, &laid, None, INK);
+    crate::ui::polygons::draw(painter, &step.figure, &laid, None, INK);
 }
 
 /// A direction line across the pane, dashed, named near where it enters the figure.

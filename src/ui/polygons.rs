@@ -8,8 +8,8 @@
 use eframe::egui::{self, Color32, Pos2, Sense, Stroke, Vec2};
 use linkage::polygon::{Quantity, Symbol, VectorEquation};
 use linkage_diagram::label::Label;
-use linkage_diagram::layout::{LaidPolygon, Sizes};
-use linkage_diagram::{PolygonFigure, Rect, layout_polygon};
+use linkage_diagram::layout::{LaidPolygon, Sizes, layout_polygon_fitting};
+use linkage_diagram::{PolygonFigure, Rect};
 
 use crate::app::AppState;
 use crate::ui::control_map::ControlKind;
@@ -17,9 +17,10 @@ use crate::ui::typeset::galley;
 
 /// Label size in the figures, points.
 const FONT: f32 = 13.0;
-/// The figure's background and its black.
-const PAPER: Color32 = Color32::from_rgb(252, 252, 248);
-const INK: Color32 = Color32::from_gray(25);
+/// The figure's background: paper, in either theme.
+pub const PAPER: Color32 = Color32::from_rgb(252, 252, 248);
+/// The figure's black.
+pub const INK: Color32 = Color32::from_gray(25);
 /// An arrow this close to the pointer (points) is the hovered one.
 const HOVER_PX: f32 = 6.0;
 
@@ -70,33 +71,67 @@ fn rgb(c: [u8; 3]) -> Color32 {
     Color32::from_rgb(c[0], c[1], c[2])
 }
 
-fn pos(p: [f64; 2]) -> Pos2 {
+/// A figure point (pixels) as an egui position.
+pub fn pos(p: [f64; 2]) -> Pos2 {
     Pos2::new(p[0] as f32, p[1] as f32)
+}
+
+/// A figure's pane: the width available, about 3:4, drawn on paper in either theme
+/// so that the figure looks as it will on the sheet.
+pub struct Paper {
+    /// Its rectangle.
+    pub rect: egui::Rect,
+    /// Pointer interaction over it (hover).
+    pub response: egui::Response,
+    /// A painter clipped to it.
+    pub painter: egui::Painter,
+}
+
+impl Paper {
+    /// Allocates the pane in `ui` and paints the paper.
+    pub fn new(ui: &mut egui::Ui) -> Self {
+        let w = ui.available_width().max(160.0);
+        let h = (w * 0.72).clamp(160.0, 560.0);
+        let (rect, response) = ui.allocate_exact_size(Vec2::new(w, h), Sense::hover());
+        let painter = ui.painter_at(rect);
+        painter.rect_filled(rect, 4.0, PAPER);
+        Self {
+            rect,
+            response,
+            painter,
+        }
+    }
+
+    /// `fig` laid out on it, labels measured as egui sets them; scaled by `fit`
+    /// (figure units) if given, else by the figure's own extent.
+    pub fn lay_out(&self, fig: &PolygonFigure, fit: Option<Rect>) -> LaidPolygon {
+        let measure = |l: &Label| {
+            let g = galley(&self.painter, l, FONT, INK);
+            [f64::from(g.size().x), f64::from(g.size().y)]
+        };
+        let pane = Rect {
+            min: [f64::from(self.rect.min.x), f64::from(self.rect.min.y)],
+            max: [f64::from(self.rect.max.x), f64::from(self.rect.max.y)],
+        };
+        let sizes = Sizes {
+            font_px: f64::from(FONT),
+            head_px: 9.0,
+        };
+        layout_polygon_fitting(fig, fit, pane, sizes, &measure)
+    }
 }
 
 /// Draws one polygon filling the pane's width; returns the symbol of the arrow under
 /// the pointer. `marked` is the term hovered last frame (here or in the table).
 fn figure(ui: &mut egui::Ui, fig: &PolygonFigure, marked: Option<&Symbol>) -> Option<Symbol> {
-    let w = ui.available_width().max(160.0);
-    let h = (w * 0.72).clamp(160.0, 560.0);
-    let (rect, response) = ui.allocate_exact_size(Vec2::new(w, h), Sense::hover());
-    let painter = ui.painter_at(rect);
-    // Drawn on paper, in either theme: the figure looks as it will on the sheet.
-    painter.rect_filled(rect, 4.0, PAPER);
+    let paper = Paper::new(ui);
+    let laid = paper.lay_out(fig, None);
+    let Paper {
+        rect,
+        response,
+        painter,
+    } = paper;
     let ink = INK;
-    let measure = |l: &Label| {
-        let g = galley(&painter, l, FONT, ink);
-        [f64::from(g.size().x), f64::from(g.size().y)]
-    };
-    let pane = Rect {
-        min: [f64::from(rect.min.x), f64::from(rect.min.y)],
-        max: [f64::from(rect.max.x), f64::from(rect.max.y)],
-    };
-    let sizes = Sizes {
-        font_px: f64::from(FONT),
-        head_px: 9.0,
-    };
-    let laid = layout_polygon(fig, pane, sizes, &measure);
     if laid.px_per_unit <= 0.0 {
         painter.text(
             rect.center(),

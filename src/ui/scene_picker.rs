@@ -5,7 +5,7 @@ use std::sync::OnceLock;
 use eframe::egui;
 
 use crate::app::AppState;
-use crate::catalog::BUILTIN_SCENES;
+use crate::catalog::{BUILTIN_SCENES, BuiltinScene};
 use crate::session::{SceneSource, Session};
 use crate::ui::control_map::ControlKind;
 use crate::ui::files;
@@ -13,14 +13,7 @@ use crate::ui::files;
 /// Display names of the shipped scenes (their `name` field), read once.
 fn names() -> &'static [String] {
     static NAMES: OnceLock<Vec<String>> = OnceLock::new();
-    NAMES.get_or_init(|| {
-        BUILTIN_SCENES
-            .iter()
-            .map(|b| {
-                linkage::SceneFile::parse(b.text).map_or_else(|_| b.key.to_string(), |s| s.name)
-            })
-            .collect()
-    })
+    NAMES.get_or_init(|| BUILTIN_SCENES.iter().map(BuiltinScene::name).collect())
 }
 
 /// The top bar.
@@ -123,9 +116,7 @@ fn template_names() -> &'static [String] {
     NAMES.get_or_init(|| {
         crate::catalog::TEMPLATES
             .iter()
-            .map(|t| {
-                linkage::SceneFile::parse(t.text).map_or_else(|_| t.key.to_string(), |s| s.name)
-            })
+            .map(BuiltinScene::name)
             .collect()
     })
 }

@@ -115,6 +115,54 @@ impl LaidPolygon {
     }
 }
 
+/// A figure's units (y up) fitted into a pane's pixels (y down): the largest scale
+/// that leaves room round the figure for labels and below it for the scale bar, the
+/// figure centred. The polygons and the pose share it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fit {
+    /// Pixels per unit; 0 where the figure has no extent.
+    pub scale: f64,
+    centre_px: Pt,
+    centre_units: Pt,
+}
+
+impl Fit {
+    /// `units` fitted into `pane`.
+    pub fn new(units: Rect, pane: Rect, sizes: Sizes) -> Self {
+        let side = 2.2 * sizes.font_px;
+        let inner = Rect {
+            min: [pane.min[0] + side, pane.min[1] + side],
+            max: [pane.max[0] - side, pane.max[1] - side - 1.6 * sizes.font_px],
+        };
+        let fits = |w: f64, span: f64| if w > 0.0 { span / w } else { f64::INFINITY };
+        let s = fits(units.width(), inner.width()).min(fits(units.height(), inner.height()));
+        Self {
+            scale: if s.is_finite() && s > 0.0 { s } else { 0.0 },
+            centre_px: inner.centre(),
+            centre_units: units.centre(),
+        }
+    }
+
+    /// A point of the figure in pixels.
+    pub fn px(&self, p: Pt) -> Pt {
+        let (c, u, s) = (self.centre_px, self.centre_units, self.scale);
+        [c[0] + (p[0] - u[0]) * s, c[1] - (p[1] - u[1]) * s]
+    }
+
+    /// The scale bar at the pane's bottom left: a round length for a figure `extent`
+    /// units across.
+    pub fn scale_bar(&self, extent: f64, pane: Rect, sizes: Sizes) -> ScaleBar {
+        let value = round_scale(extent);
+        let y = pane.max[1] - 0.8 * sizes.font_px;
+        let x = pane.min[0] + 0.8 * sizes.font_px;
+        ScaleBar {
+            value,
+            from: [x, y],
+            to: [x + value * self.scale, y],
+        }
+    }
+}
+
 /// A round length near a quarter of `extent`: 1, 2 or 5 × 10^k, at most a quarter.
 pub fn round_scale(extent: f64) -> f64 {
     if !(extent.is_finite() && extent > 0.0) {
@@ -148,18 +196,9 @@ pub fn layout_polygon_fitting(
     sizes: Sizes,
     measure: &dyn Fn(&Label) -> [f64; 2],
 ) -> LaidPolygon {
-    // Room for labels round the figure and for the scale bar below it.
-    let side = 2.2 * sizes.font_px;
-    let inner = Rect {
-        min: [pane.min[0] + side, pane.min[1] + side],
-        max: [pane.max[0] - side, pane.max[1] - side - 1.6 * sizes.font_px],
-    };
     let units = fit.unwrap_or_else(|| fig.extent());
-    let fits = |w: f64, span: f64| if w > 0.0 { span / w } else { f64::INFINITY };
-    let s = fits(units.width(), inner.width()).min(fits(units.height(), inner.height()));
-    let s = if s.is_finite() && s > 0.0 { s } else { 0.0 };
-    let (c, u) = (inner.centre(), units.centre());
-    let px = |p: Pt| [c[0] + (p[0] - u[0]) * s, c[1] - (p[1] - u[1]) * s];
+    let fitted = Fit::new(units, pane, sizes);
+    let (s, px) = (fitted.scale, |p: Pt| fitted.px(p));
     let arrows: Vec<LaidArrow> = fig
         .arrows
         .iter()
@@ -179,16 +218,8 @@ pub fn layout_polygon_fitting(
     let mut obstacles = Obstacles::new(pane.expand(-2.0), &arrows, &vertices);
     let mut labels = vertex_labels(fig, &vertices, &mut obstacles, measure);
     labels.extend(arrow_labels(fig, &arrows, &mut obstacles, measure));
-    let scale_bar = (s > 0.0).then(|| {
-        let value = round_scale(units.width().max(units.height()));
-        let y = pane.max[1] - 0.8 * sizes.font_px;
-        let x = pane.min[0] + 0.8 * sizes.font_px;
-        ScaleBar {
-            value,
-            from: [x, y],
-            to: [x + value * s, y],
-        }
-    });
+    let scale_bar =
+        (s > 0.0).then(|| fitted.scale_bar(units.width().max(units.height()), pane, sizes));
     LaidPolygon {
         pane,
         px_per_unit: s,

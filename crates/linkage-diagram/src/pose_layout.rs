@@ -5,7 +5,7 @@ use linkage::instant_centres::Centre;
 
 use crate::geometry::{Pt, Rect};
 use crate::label::Label;
-use crate::layout::{ScaleBar, Sizes, round_scale};
+use crate::layout::{Fit, ScaleBar, Sizes};
 use crate::placement::{Obstacles, Placed, place_vertex_label};
 use crate::pose_figure::PoseFigure;
 
@@ -85,16 +85,12 @@ pub fn layout_pose(
             .chain(shown.iter().map(|c| c.1)),
     )
     .unwrap_or(mech);
-    let side = 2.2 * sizes.font_px;
-    let inner = Rect {
-        min: [pane.min[0] + side, pane.min[1] + side],
-        max: [pane.max[0] - side, pane.max[1] - side - 1.6 * sizes.font_px],
-    };
-    let fits = |w: f64, span: f64| if w > 0.0 { span / w } else { f64::INFINITY };
-    let s = fits(all.width(), inner.width()).min(fits(all.height(), inner.height()));
-    let s = if s.is_finite() && s > 0.0 { s } else { 1.0 };
-    let (c, u) = (inner.centre(), all.centre());
-    let px = |p: Pt| [c[0] + (p[0] - u[0]) * s, c[1] - (p[1] - u[1]) * s];
+    let mut fitted = Fit::new(all, pane, sizes);
+    if fitted.scale == 0.0 {
+        // A mechanism that is a point: drawn at a pixel per metre.
+        fitted.scale = 1.0;
+    }
+    let (s, px) = (fitted.scale, |p: Pt| fitted.px(p));
     let links: Vec<Vec<Pt>> = fig
         .links
         .iter()
@@ -154,9 +150,6 @@ pub fn layout_pose(
             placed,
         });
     }
-    let value = round_scale(size);
-    let y = pane.max[1] - 0.8 * sizes.font_px;
-    let x = pane.min[0] + 0.8 * sizes.font_px;
     LaidPose {
         pane,
         px_per_m: s,
@@ -167,10 +160,6 @@ pub fn layout_pose(
         centres,
         labels,
         centres_off,
-        scale_bar: Some(ScaleBar {
-            value,
-            from: [x, y],
-            to: [x + value * s, y],
-        }),
+        scale_bar: Some(fitted.scale_bar(size, pane, sizes)),
     }
 }
