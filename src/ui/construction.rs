@@ -86,7 +86,9 @@ pub fn section(ui: &mut egui::Ui, st: &mut AppState) {
             view.step += 1;
         }
     });
-    let last = steps.last().expect("a construction has steps");
+    let Some(last) = steps.last() else {
+        return;
+    };
     let step = &steps[view.step];
     draw_step(ui, step, last.figure.extent());
     ui.label(job(&step.says, 14.0, ink));

@@ -131,7 +131,16 @@ impl Obstacles {
         let (rect, leader, collides) = match (best, least_bad) {
             (Some((_, _, r, l)), _) => (r, l, false),
             (None, Some((_, r, l))) => (r, l, true),
-            (None, None) => unreachable!("candidates are never empty"),
+            // The callers always give candidates; were there none, the label sits
+            // at the pane's corner, marked as colliding, rather than stop the drawing.
+            (None, None) => (
+                Rect {
+                    min: self.bounds.min,
+                    max: self.bounds.min,
+                },
+                None,
+                true,
+            ),
         };
         self.hard.push(rect);
         Placed {
