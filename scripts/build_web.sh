@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Builds the web demo into dist/ without trunk: cargo for wasm32 (two builds, WebGPU
-# only and WebGPU + WebGL2), then wasm-bindgen at exactly the Cargo.lock version
+# Builds the web demo into dist/ without trunk: cargo for wasm32 (two builds, one
+# drawing with WebGPU, one with WebGL2), then wasm-bindgen at exactly the Cargo.lock version
 # (installed with cargo if missing), optionally wasm-opt (WASM_OPT=1), then index.html
 # with the trunk link replaced by web/load.js, which picks the build. With --serve, serves dist/ on
 # http://127.0.0.1:8080 (python3's http.server).
@@ -16,13 +16,13 @@ if [ "$have" != "$want" ]; then
     cargo install wasm-bindgen-cli --version "$want"
 fi
 
-# Two builds: WebGPU only (what a browser with a WebGPU adapter loads: 1.5 MB gzipped),
-# and WebGPU + WebGL2 (the `webgl` feature: wgpu-core and naga, 0.7 MB more gzipped) for
-# the rest. index.html's loader picks one.
+# Two builds: WebGPU through wgpu (the `webgpu` feature), and WebGL2 through eframe's
+# glow renderer (the `webgl` feature) for browsers without a WebGPU adapter.
+# web/load.js picks one.
 rm -rf dist && mkdir -p dist
 for build in webgpu webgl2; do
-    features=(); [ "$build" = webgpu ] && features=(--no-default-features)
-    cargo build --profile wasm-release --target wasm32-unknown-unknown --bin linkage-lab "${features[@]}"
+    feature=webgpu; [ "$build" = webgl2 ] && feature=webgl
+    cargo build --profile wasm-release --target wasm32-unknown-unknown --bin linkage-lab --features "$feature"
     wasm-bindgen --target web --no-typescript --out-dir "dist/$build" \
         "${CARGO_TARGET_DIR:-target}/wasm32-unknown-unknown/wasm-release/linkage-lab.wasm"
 done

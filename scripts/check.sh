@@ -19,9 +19,11 @@ cargo clippy --workspace --all-targets -- -D warnings
 echo "== clippy (wasm32: the solver, the CLI and the app compile for the browser)"
 # With the browser's own lints: std::time::Instant/SystemTime compile for wasm32 but
 # panic there at run time, so they are refused (use web_time).
-CLIPPY_CONF_DIR=scripts/clippy_wasm cargo clippy --workspace --target wasm32-unknown-unknown -- -D warnings
-# The web demo's WebGPU-only build (no `webgl` feature).
-CLIPPY_CONF_DIR=scripts/clippy_wasm cargo clippy -p linkage-lab --no-default-features --target wasm32-unknown-unknown -- -D warnings
+# The app in both web builds: WebGL2 through glow (`webgl`), WebGPU through wgpu (`webgpu`).
+CLIPPY_CONF_DIR=scripts/clippy_wasm cargo clippy --workspace --target wasm32-unknown-unknown \
+    --features linkage-lab/webgl -- -D warnings
+CLIPPY_CONF_DIR=scripts/clippy_wasm cargo clippy -p linkage-lab --features webgpu \
+    --target wasm32-unknown-unknown -- -D warnings
 
 echo "== tests"
 # winit and wgpu warn without a runtime dir; the UI tests need none, give them one.

@@ -3,8 +3,9 @@
 
 use eframe::egui;
 
+use crate::render::Renderer;
 use crate::render::build::{Layers, VectorScales};
-use crate::render::pipeline::{MechanismPipeline, SharedShapes};
+use crate::render::shape::SharedShapes;
 use crate::render::view::Camera;
 use crate::session::Session;
 use crate::ui;
@@ -175,7 +176,7 @@ pub struct LinkageApp {
     /// The state the panels work on (public for UI tests).
     pub state: AppState,
     shapes: SharedShapes,
-    gpu: bool,
+    renderer: Option<Renderer>,
     frames_drawn: u64,
     exit_after_frames: Option<u64>,
     #[cfg(target_arch = "wasm32")]
@@ -187,13 +188,7 @@ impl LinkageApp {
     /// desktop, `start.scene`).
     pub fn new(cc: &eframe::CreationContext<'_>, start: crate::StartOptions) -> Self {
         cc.egui_ctx.set_fonts(crate::fonts::definitions());
-        let gpu = match &cc.wgpu_render_state {
-            Some(rs) => {
-                MechanismPipeline::install(rs);
-                true
-            }
-            None => false,
-        };
+        let renderer = Renderer::install(cc);
         let session = match start.scene.as_deref().map(Session::open_builtin) {
             Some(Ok(s)) => (s, None),
             Some(Err(e)) => {
@@ -209,7 +204,7 @@ impl LinkageApp {
         Self {
             state,
             shapes: SharedShapes::default(),
-            gpu,
+            renderer,
             frames_drawn: 0,
             exit_after_frames: start.exit_after_frames,
             #[cfg(target_arch = "wasm32")]
@@ -217,9 +212,9 @@ impl LinkageApp {
         }
     }
 
-    /// Whether the wgpu renderer is installed (else the view says so).
+    /// Whether the GPU renderer is installed (else the view says so).
     pub fn has_gpu(&self) -> bool {
-        self.gpu
+        self.renderer.is_some()
     }
 }
 
@@ -350,7 +345,8 @@ impl eframe::App for LinkageApp {
             .default_size(230.0)
             .show(ui, |ui| ui::plots::panel(ui, &mut self.state));
         egui::CentralPanel::default_margins().show(ui, |ui| {
-            solver_us += ui::viewport::show(ui, &mut self.state, &self.shapes, self.gpu);
+            solver_us +=
+                ui::viewport::show(ui, &mut self.state, &self.shapes, self.renderer.as_ref());
         });
 
         let edited = (self.state.opened, self.state.session.edit_count()) != edits_before;
@@ -375,7 +371,11 @@ impl eframe::App for LinkageApp {
             if let Some(why) = self.url.update(&self.state.session) {
                 self.state.status = Some(why);
             }
-            crate::web::publish_controls(&self.state, self.frames_drawn + 1);
+            crate::web::publish_controls(
+                &self.state,
+                self.frames_drawn + 1,
+                self.renderer.is_some(),
+            );
         }
         self.frames_drawn += 1;
         #[cfg(target_arch = "wasm32")]

@@ -36,6 +36,8 @@ struct Published<'a> {
     joints: Vec<PublishedJoint<'a>>,
     /// Whether the pose holds only finite numbers.
     pose_finite: bool,
+    /// Whether the GPU renderer of the mechanism view started.
+    renderer: bool,
 }
 
 /// A joint as the test hook shows it.
@@ -71,8 +73,9 @@ fn joints(st: &crate::app::AppState) -> Vec<PublishedJoint<'_>> {
         .collect()
 }
 
-/// Keeps this frame's controls for [`controls_json`].
-pub fn publish_controls(st: &crate::app::AppState, frame: u64) {
+/// Keeps this frame's controls for [`controls_json`]; `renderer`: whether the view's
+/// GPU renderer started.
+pub fn publish_controls(st: &crate::app::AppState, frame: u64, renderer: bool) {
     let pose = st.session.pose();
     let published = Published {
         frame,
@@ -87,6 +90,7 @@ pub fn publish_controls(st: &crate::app::AppState, frame: u64) {
         pose_finite: pose.points.iter().all(|p| {
             p.position.x.is_finite() && p.position.y.is_finite() && p.velocity.x.is_finite()
         }),
+        renderer,
     };
     let json = serde_json::to_string(&published).unwrap_or_default();
     CONTROLS.with(|c| *c.borrow_mut() = json);

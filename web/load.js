@@ -1,6 +1,5 @@
-// Loads one of the web demo's two builds (scripts/build_web.sh): the WebGPU-only one
-// where the browser gives a WebGPU adapter (the smaller download), else the one with
-// WebGL2 as well. `?build=webgl2` or `?build=webgpu` forces one (tests, bug reports).
+// Loads one of the web demo's two builds (scripts/build_web.sh): the WebGPU one where
+// the browser gives a WebGPU adapter, else the WebGL2 one. `?build=webgl2` or `?build=webgpu` forces one (tests, bug reports).
 const asked = new URLSearchParams(location.search).get('build');
 const adapter = asked ? null : await navigator.gpu?.requestAdapter().catch(() => null);
 const build = asked === 'webgpu' || asked === 'webgl2' ? asked : adapter ? 'webgpu' : 'webgl2';

@@ -76,10 +76,9 @@ impl Shape {
     }
 }
 
-/// The vertex buffer layout of [`Shape`] as per-instance attributes 0..=6.
-pub const ATTRIBUTES: [eframe::egui_wgpu::wgpu::VertexAttribute; 7] = eframe::egui_wgpu::wgpu::vertex_attr_array![
-    0 => Float32x2, 1 => Float32x2, 2 => Float32x2, 3 => Float32, 4 => Uint32, 5 => Float32x4, 6 => Float32x2
-];
+/// The shapes of the frame, written by the app and read by the renderer's paint
+/// callback (shared, so that no per-frame copy of the list is made).
+pub type SharedShapes = std::sync::Arc<std::sync::Mutex<Vec<Shape>>>;
 
 /// The view transform handed to the shader (`View` in WGSL; 16 bytes).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Pod, Zeroable)]
@@ -96,13 +95,6 @@ pub struct ViewUniform {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn shape_matches_the_wgsl_instance_layout() {
-        // 3 vec2 + f32 + u32 + vec4 + vec2, tightly packed as the attributes say.
-        assert_eq!(std::mem::size_of::<Shape>(), 56);
-        assert_eq!(ATTRIBUTES[6].offset, 48);
-    }
 
     #[test]
     fn non_finite_shapes_are_refused() {

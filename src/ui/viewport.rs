@@ -3,14 +3,20 @@
 //! and the message when an edit was refused.
 
 use eframe::egui::{self, Align2, FontId, Sense};
-use eframe::egui_wgpu;
 
 use crate::app::AppState;
+use crate::render::Renderer;
 use crate::render::build::build;
-use crate::render::pipeline::{MechanismCallback, SharedShapes};
+use crate::render::shape::SharedShapes;
 
-/// Draws the view; returns the µs spent building its shapes.
-pub fn show(ui: &mut egui::Ui, st: &mut AppState, shapes: &SharedShapes, gpu: bool) -> f64 {
+/// Draws the view with `renderer` (`None`: a message says there is no GPU); returns
+/// the µs spent building its shapes.
+pub fn show(
+    ui: &mut egui::Ui,
+    st: &mut AppState,
+    shapes: &SharedShapes,
+    renderer: Option<&Renderer>,
+) -> f64 {
     let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
     st.controls.view = Some([rect.min.x, rect.min.y, rect.max.x, rect.max.y]);
     if st.fit_pending && rect.width() > 1.0 {
@@ -56,19 +62,13 @@ pub fn show(ui: &mut egui::Ui, st: &mut AppState, shapes: &SharedShapes, gpu: bo
 
     let painter = ui.painter_at(rect);
     painter.rect_filled(rect, 0.0, egui::Color32::from_rgb(246, 246, 242));
-    if gpu {
-        painter.add(egui_wgpu::Callback::new_paint_callback(
-            rect,
-            MechanismCallback {
-                view,
-                shapes: shapes.clone(),
-            },
-        ));
+    if let Some(renderer) = renderer {
+        painter.add(renderer.paint_callback(rect, view, shapes));
     } else {
         painter.text(
             rect.center(),
             Align2::CENTER_CENTER,
-            "no wgpu renderer: the mechanism view needs a GPU or a CPU adapter",
+            "no GPU renderer: the mechanism view needs a GPU or a CPU adapter",
             FontId::proportional(14.0),
             egui::Color32::DARK_RED,
         );

@@ -13,7 +13,7 @@
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { build, decode, differing, launchChromium, nonBackground, wrongBuild } from './common.mjs';
+import { build, colouredIn, decode, differing, launchChromium, nonBackground, wrongBuild } from './common.mjs';
 
 const url = process.argv[2] ?? 'http://127.0.0.1:8917/';
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
@@ -54,6 +54,12 @@ const shot = async (name) => {
 const before = await shot('loaded');
 const coverage = nonBackground(before);
 if (coverage < 0.2) fail(`canvas looks blank: ${(coverage * 100).toFixed(1)} % drawn`);
+// The mechanism itself, drawn by the build's GPU renderer (wgpu or glow), not egui:
+// coloured links, vectors and traces inside the view, where egui draws grey text only.
+const loadedState = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+if (!loadedState.renderer) fail(`the ${build} build's mechanism renderer did not start`);
+const drawn = colouredIn(before, loadedState.controls.view);
+if (drawn < 500) fail(`the mechanism view shows ${drawn} coloured pixels: the GPU draw is missing`);
 
 // Drag the crank-angle slider (found through the app's control map) in small steps.
 const crank = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()))

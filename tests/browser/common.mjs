@@ -51,3 +51,18 @@ export function nonBackground(img) {
   }
   return n / (img.width * img.height);
 }
+
+/** Strongly coloured pixels (channels spread by more than 80) inside `rect`
+ * ([x0, y0, x1, y1] in CSS pixels) of a screenshot taken at device scale 1. */
+export function colouredIn(img, rect) {
+  let n = 0;
+  const [x0, y0, x1, y1] = rect.map(Math.round);
+  for (let y = Math.max(0, y0); y < Math.min(img.height, y1); y++) {
+    for (let x = Math.max(0, x0); x < Math.min(img.width, x1); x++) {
+      const i = 4 * (y * img.width + x);
+      const c = [img.data[i], img.data[i + 1], img.data[i + 2]];
+      if (Math.max(...c) - Math.min(...c) > 80) n++;
+    }
+  }
+  return n;
+}

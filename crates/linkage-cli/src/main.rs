@@ -3,6 +3,8 @@
 //! A contract scripts depend on: see README.md, "CLI". Errors go to stderr with a
 //! non-zero exit status and a message naming the cause.
 
+#![forbid(unsafe_code)]
+
 mod commands;
 mod diagram;
 mod kinetostatics;

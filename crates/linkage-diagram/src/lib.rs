@@ -17,6 +17,7 @@
 //!   `png` (feature `png`) renders it.
 
 #![warn(missing_docs)]
+#![forbid(unsafe_code)]
 
 pub mod construction;
 pub mod geometry;

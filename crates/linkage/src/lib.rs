@@ -12,6 +12,7 @@
 //! scene into a link and back.
 
 #![warn(missing_docs)]
+#![forbid(unsafe_code)]
 
 pub mod analysis;
 pub mod branch_points;

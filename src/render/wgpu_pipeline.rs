@@ -1,22 +1,53 @@
-//! The wgpu side: the pipeline over `shaders/linkage.wgsl`, kept in egui-wgpu's
-//! callback resources, and the paint callback that uploads the frame's shapes in
-//! `prepare` and draws them in `paint`.
+//! The wgpu renderer (native, and the web demo's WebGPU build): the pipeline over
+//! `shaders/linkage.wgsl`, kept in egui-wgpu's callback resources, and the paint
+//! callback that uploads the frame's shapes in `prepare` and draws them in `paint`.
 
-use std::sync::{Arc, Mutex};
-
+use eframe::egui;
 use eframe::egui_wgpu::{self, wgpu};
 
-use super::shape::{ATTRIBUTES, Shape, ViewUniform};
+use super::shape::{Shape, SharedShapes, ViewUniform};
 
 /// Instances the buffer holds at first; it doubles when a frame needs more.
 const INITIAL_CAPACITY: usize = 4096;
 
-/// The shapes of the frame, written by the app and read by the callback (shared, so
-/// that no per-frame copy of the list is made).
-pub type SharedShapes = Arc<Mutex<Vec<Shape>>>;
+/// The vertex buffer layout of [`Shape`] as per-instance attributes 0..=6 (`Instance`
+/// in the WGSL).
+const ATTRIBUTES: [wgpu::VertexAttribute; 7] = wgpu::vertex_attr_array![
+    0 => Float32x2, 1 => Float32x2, 2 => Float32x2, 3 => Float32, 4 => Uint32, 5 => Float32x4, 6 => Float32x2
+];
+
+/// The mechanism view's renderer; its GPU resources live in egui-wgpu's callback
+/// resources.
+pub struct Renderer;
+
+impl Renderer {
+    /// Builds the pipeline on the app's wgpu device, or `None` where eframe runs
+    /// without one (the view then says so).
+    pub fn install(cc: &eframe::CreationContext<'_>) -> Option<Self> {
+        let render_state = cc.wgpu_render_state.as_ref()?;
+        MechanismPipeline::install(render_state);
+        Some(Self)
+    }
+
+    /// The paint callback that draws `shapes` into `rect` with `view`.
+    pub fn paint_callback(
+        &self,
+        rect: egui::Rect,
+        view: ViewUniform,
+        shapes: &SharedShapes,
+    ) -> egui::PaintCallback {
+        egui_wgpu::Callback::new_paint_callback(
+            rect,
+            MechanismCallback {
+                view,
+                shapes: shapes.clone(),
+            },
+        )
+    }
+}
 
 /// GPU resources, created once per wgpu device.
-pub struct MechanismPipeline {
+struct MechanismPipeline {
     pipeline: wgpu::RenderPipeline,
     uniform: wgpu::Buffer,
     bind_group: wgpu::BindGroup,
@@ -28,7 +59,7 @@ pub struct MechanismPipeline {
 impl MechanismPipeline {
     /// Builds the pipeline for `render_state`'s target and stores it in its callback
     /// resources.
-    pub fn install(render_state: &egui_wgpu::RenderState) {
+    fn install(render_state: &egui_wgpu::RenderState) {
         let device = &render_state.device;
         let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
             label: Some("linkage shapes"),
@@ -122,11 +153,11 @@ fn instance_buffer(device: &wgpu::Device, capacity: usize) -> wgpu::Buffer {
 }
 
 /// This frame's draw: the view transform and the shared shape list.
-pub struct MechanismCallback {
+struct MechanismCallback {
     /// The view transform.
-    pub view: ViewUniform,
+    view: ViewUniform,
     /// The shapes, in drawing order.
-    pub shapes: SharedShapes,
+    shapes: SharedShapes,
 }
 
 impl egui_wgpu::CallbackTrait for MechanismCallback {
@@ -176,5 +207,21 @@ impl egui_wgpu::CallbackTrait for MechanismCallback {
         pass.set_bind_group(0, &gpu.bind_group, &[]);
         pass.set_vertex_buffer(0, gpu.instances.slice(..));
         pass.draw(0..6, 0..gpu.count);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn shape_matches_the_wgsl_instance_layout() {
+        // 3 vec2 + f32 + u32 + vec4 + vec2, tightly packed as the attributes say.
+        assert_eq!(std::mem::size_of::<Shape>(), 56);
+        assert_eq!(ATTRIBUTES[6].offset, 48);
+        assert_eq!(
+            ATTRIBUTES[6].offset,
+            std::mem::offset_of!(Shape, param) as u64
+        );
     }
 }
