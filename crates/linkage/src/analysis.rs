@@ -193,6 +193,25 @@ pub fn outputs(k: &Kinematics) -> Vec<Output> {
     out
 }
 
+/// Which extreme of an output a limit position is (`"max"` or `"min"` in JSON).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Extreme {
+    /// The output's largest value.
+    Max,
+    /// The output's smallest value.
+    Min,
+}
+
+impl std::fmt::Display for Extreme {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Extreme::Max => "max",
+            Extreme::Min => "min",
+        })
+    }
+}
+
 /// An extreme of one output.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct LimitPosition {
@@ -200,8 +219,8 @@ pub struct LimitPosition {
     pub input_rad: f64,
     /// Output name.
     pub output: String,
-    /// "max" or "min".
-    pub kind: &'static str,
+    /// Whether the output is largest or smallest there.
+    pub kind: Extreme,
     /// Output value there (rad or m).
     pub value: f64,
 }
@@ -372,7 +391,11 @@ pub fn limit_positions(
             found.push(LimitPosition {
                 input_rad: root.rem_euclid(TAU),
                 output: out.name().to_string(),
-                kind: if rates[i] > 0.0 { "max" } else { "min" },
+                kind: if rates[i] > 0.0 {
+                    Extreme::Max
+                } else {
+                    Extreme::Min
+                },
                 value: out.value(s),
             });
         }
@@ -451,7 +474,11 @@ fn dead_point_value(
 /// slower stroke angle / faster stroke angle, and a note saying which is slower.
 pub fn time_ratio(limits: &[LimitPosition], speed_rad_s: f64) -> Option<(f64, String)> {
     let [a, b] = limits else { return None };
-    let (max, min) = if a.kind == "max" { (a, b) } else { (b, a) };
+    let (max, min) = if a.kind == Extreme::Max {
+        (a, b)
+    } else {
+        (b, a)
+    };
     if max.kind == min.kind {
         return None;
     }

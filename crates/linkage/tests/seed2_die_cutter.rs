@@ -41,7 +41,7 @@ fn synthesized_die_cutter_meets_stroke_k_and_toggle_at_top() {
     let top_limit = r
         .limit_positions
         .iter()
-        .find(|l| l.output == "die" && l.kind == "max")
+        .find(|l| l.output == "die" && l.kind == linkage::analysis::Extreme::Max)
         .expect("top");
     assert!((top.input_rad - top_limit.input_rad).abs() < 1e-9);
     assert!(
