@@ -62,6 +62,8 @@ pub(crate) struct Rrr {
     pub dir_j_inv: UnitComplex<f64>,
     /// +1: `mid` left of a→c.
     pub sign: f64,
+    /// The points of the end pins `a` and `c` (to name the branch).
+    pub end_points: (usize, usize),
 }
 
 /// Link `i` pinned at `a`, joined at `mid` to slider `j` on a guide of a known link.
@@ -249,6 +251,33 @@ impl Group {
             Group::Rrp(g) => g.sign = -g.sign,
             Group::Rpr(g) => g.sign = -g.sign,
             Group::Prp(_) => {}
+        }
+    }
+
+    /// The branch this group is on, as a scene writes it (a PRP group has none).
+    fn branch(&self, m: &Mechanism) -> Option<Branch> {
+        let along = |sign: f64| {
+            if sign > 0.0 {
+                Branch::Along
+            } else {
+                Branch::Against
+            }
+        };
+        match self {
+            Group::Rrr(g) => {
+                let (a, c) = (
+                    &m.points[g.end_points.0].name,
+                    &m.points[g.end_points.1].name,
+                );
+                Some(if g.sign > 0.0 {
+                    Branch::Left(a.clone(), c.clone())
+                } else {
+                    Branch::Right(a.clone(), c.clone())
+                })
+            }
+            Group::Rrp(g) => Some(along(g.sign)),
+            Group::Rpr(g) => Some(along(g.sign)),
+            Group::Prp(_) => None,
         }
     }
 
@@ -762,6 +791,7 @@ impl ClosedForm {
                         dir_i_inv: dir_i.inverse(),
                         dir_j_inv: dir_j.inverse(),
                         sign,
+                        end_points: (pa, pc),
                     }), mid)
             }
             (Rev(_), Rev(_), Pri(_)) | (Pri(_), Rev(_), Rev(_)) => {
@@ -889,6 +919,16 @@ impl ClosedForm {
                 self.groups[g].flip_branch();
             }
         }
+    }
+
+    /// Every group's branch as a scene writes it, keyed by the group's inner joint
+    /// point (after [`Self::match_pose`]: the branches of that pose).
+    pub(crate) fn branches(&self, m: &Mechanism) -> Vec<(String, Branch)> {
+        self.groups
+            .iter()
+            .zip(&self.group_points)
+            .filter_map(|(g, &p)| Some((m.points[p].name.clone(), g.branch(m)?)))
+            .collect()
     }
 
     /// Places the crank for input angle `input_rad` turning at `speed_rad_s`.

@@ -30,6 +30,7 @@ pub mod polygon;
 mod roots_util;
 pub mod scene;
 pub mod share;
+pub mod sketch;
 mod small_lu;
 pub mod sweep;
 pub mod synthesis;

@@ -1,0 +1,316 @@
+//! A mechanism as drawn: points at their places in the world, links as sets of
+//! points, sliders on guides, perhaps a driver; complete or not. An editor builds
+//! one click by click; [`Sketch::to_scene`] turns a complete one into a scene whose
+//! start pose is the drawing: every link's coordinates are the world's at input 0,
+//! and each dyad's assembly branch is read off the drawing.
+
+use indexmap::IndexMap;
+
+use crate::Kinematics;
+use crate::closed_form::ClosedForm;
+use crate::error::LinkageError;
+use crate::model::Mechanism;
+use crate::motion::{LinkMotion, Vec2};
+use crate::scene::{
+    AngleUnit, DriverSpec, LengthUnit, LinkSpec, Models, SceneFile, SliderSpec, Speed,
+};
+
+/// A point of the drawing.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SketchPoint {
+    /// Unique name (a joint where links share it).
+    pub name: String,
+    /// Place in the world, m.
+    pub at: Vec2,
+    /// Whether the point is fixed to the frame (a ground pivot).
+    pub ground: bool,
+}
+
+/// A rigid link through two or more points (indices into [`Sketch::points`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SketchLink {
+    /// Unique name.
+    pub name: String,
+    /// Its points; two make a binary link, three or more a plate.
+    pub points: Vec<usize>,
+}
+
+/// A slider block pinned at `point`, sliding on a guide line through the point's
+/// drawn place.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SketchSlider {
+    /// The block's pin (shared with the links that drive or follow it).
+    pub point: usize,
+    /// The link carrying the guide (an index into [`Sketch::links`]); `None`: ground.
+    pub guide: Option<usize>,
+    /// The guide's direction in the world as drawn, rad.
+    pub angle_rad: f64,
+}
+
+/// A drawing of a mechanism.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sketch {
+    /// Title of the scene it becomes.
+    pub name: String,
+    /// The unit the scene writes lengths in.
+    pub length_unit: LengthUnit,
+    /// The points.
+    pub points: Vec<SketchPoint>,
+    /// The moving links (the frame is every ground point together).
+    pub links: Vec<SketchLink>,
+    /// The sliders.
+    pub sliders: Vec<SketchSlider>,
+    /// The input link (an index into [`Sketch::links`]), once picked.
+    pub driver: Option<usize>,
+    /// The input speed.
+    pub speed: Speed,
+    /// The main output for the time ratio (an index into [`Sketch::links`]); `None`:
+    /// the scene's default, its last link (slider blocks come after the links).
+    pub output: Option<usize>,
+}
+
+/// The Grübler–Kutzbach count of a drawing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Mobility {
+    /// Moving bodies: links and slider blocks.
+    pub moving: usize,
+    /// Revolute joints: a point shared by k bodies (the frame counts for a ground
+    /// point) is k - 1 of them.
+    pub revolutes: usize,
+    /// Prismatic joints: one per slider.
+    pub prismatics: usize,
+}
+
+impl Mobility {
+    /// Degrees of freedom: 3 per moving body, less 2 per joint.
+    pub fn dof(&self) -> i64 {
+        3 * self.moving as i64 - 2 * (self.revolutes + self.prismatics) as i64
+    }
+}
+
+/// Why a drawing is not yet a mechanism.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SketchProblem {
+    /// Nothing moves yet.
+    NoLinks,
+    /// The count says `dof` degrees of freedom, not 1.
+    Mobility(Mobility),
+    /// No input link picked.
+    NoDriver,
+    /// The input link has no ground pivot to turn about.
+    DriverNotGrounded(String),
+    /// The solver refuses the drawing (zero-length links, an over-constrained chain).
+    Invalid(LinkageError),
+}
+
+impl std::fmt::Display for SketchProblem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::NoLinks => {
+                f.write_str("no links yet: place ground pivots, then links between points")
+            }
+            Self::Mobility(m) => {
+                let dof = m.dof();
+                let what = if dof > 1 {
+                    "add a link or fix a point to ground"
+                } else {
+                    "the chain is locked: remove a link or free a point"
+                };
+                write!(
+                    f,
+                    "{dof} degrees of freedom (3 x {} moving - 2 x {} joints): {what}",
+                    m.moving,
+                    m.revolutes + m.prismatics
+                )
+            }
+            Self::NoDriver => f.write_str("1 degree of freedom: pick the input link (Driver)"),
+            Self::DriverNotGrounded(link) => {
+                write!(
+                    f,
+                    "the input link {link} needs a ground pivot to turn about"
+                )
+            }
+            Self::Invalid(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl Sketch {
+    /// An empty drawing in millimetres, at 60 rpm.
+    pub fn new(name: &str) -> Self {
+        Self {
+            name: name.to_owned(),
+            length_unit: LengthUnit::Millimetre,
+            points: Vec::new(),
+            links: Vec::new(),
+            sliders: Vec::new(),
+            driver: None,
+            speed: Speed::Rpm(60.0),
+            output: None,
+        }
+    }
+
+    /// The Grübler–Kutzbach count.
+    pub fn mobility(&self) -> Mobility {
+        let mut bodies_at = vec![0usize; self.points.len()];
+        for p in self.links.iter().flat_map(|l| &l.points) {
+            bodies_at[*p] += 1;
+        }
+        for s in &self.sliders {
+            bodies_at[s.point] += 1;
+        }
+        for (p, point) in self.points.iter().enumerate() {
+            bodies_at[p] += usize::from(point.ground);
+        }
+        Mobility {
+            moving: self.links.len() + self.sliders.len(),
+            revolutes: bodies_at.iter().map(|k| k.saturating_sub(1)).sum(),
+            prismatics: self.sliders.len(),
+        }
+    }
+
+    /// The scene of a complete drawing (one degree of freedom, a grounded driver),
+    /// starting in the drawn pose; else what is missing.
+    pub fn to_scene(&self) -> Result<SceneFile, SketchProblem> {
+        if self.links.is_empty() {
+            return Err(SketchProblem::NoLinks);
+        }
+        let mobility = self.mobility();
+        if mobility.dof() != 1 {
+            return Err(SketchProblem::Mobility(mobility));
+        }
+        let driver = self.driver.ok_or(SketchProblem::NoDriver)?;
+        let driver_link = &self.links[driver];
+        if !driver_link.points.iter().any(|&p| self.points[p].ground) {
+            return Err(SketchProblem::DriverNotGrounded(driver_link.name.clone()));
+        }
+        let mut scene = self.scene_without_branches(driver);
+        let m = Mechanism::from_scene(&scene).map_err(SketchProblem::Invalid)?;
+        // Every link sits at the world's own coordinates in the drawing.
+        let drawn = vec![LinkMotion::default(); m.links.len()];
+        match ClosedForm::new_without_branches(&m) {
+            Ok(mut closed) => {
+                closed.match_pose(0.0, &drawn);
+                scene.branches = closed.branches(&m).into_iter().collect();
+            }
+            Err(LinkageError::NotDecomposable(_)) => {
+                // Newton starts from the drawing itself.
+                scene.guess = scene.links[1..]
+                    .iter()
+                    .map(|l| (l.name.clone(), (0.0, 0.0, 0.0)))
+                    .collect();
+            }
+            Err(e) => return Err(SketchProblem::Invalid(e)),
+        }
+        self.check_assembles_as_drawn(&scene)?;
+        Ok(scene)
+    }
+
+    /// The scene with every link in world coordinates, its guides' points added.
+    fn scene_without_branches(&self, driver: usize) -> SceneFile {
+        let unit = self.length_unit.to_metres();
+        let xy = |p: Vec2| (p.x / unit, p.y / unit);
+        let mut ground: IndexMap<String, (f64, f64)> = self
+            .points
+            .iter()
+            .filter(|p| p.ground)
+            .map(|p| (p.name.clone(), xy(p.at)))
+            .collect();
+        let mut links: Vec<LinkSpec> = self
+            .links
+            .iter()
+            .map(|l| {
+                link_spec(
+                    &l.name,
+                    l.points
+                        .iter()
+                        .map(|&p| (self.points[p].name.clone(), xy(self.points[p].at))),
+                )
+            })
+            .collect();
+        let mut sliders = Vec::new();
+        for s in &self.sliders {
+            let pin = &self.points[s.point];
+            let through = format!("{} guide", pin.name);
+            let guide = match s.guide {
+                None => {
+                    ground.insert(through.clone(), xy(pin.at));
+                    "ground".to_owned()
+                }
+                Some(l) => {
+                    links[l].points.insert(through.clone(), xy(pin.at));
+                    links[l].name.clone()
+                }
+            };
+            let block = format!("slider {}", pin.name);
+            links.push(link_spec(&block, [(pin.name.clone(), xy(pin.at))]));
+            sliders.push(SliderSpec {
+                slider: block,
+                point: pin.name.clone(),
+                guide,
+                through,
+                angle: s.angle_rad.to_degrees(),
+                relative_angle: 0.0,
+            });
+        }
+        links.insert(
+            0,
+            LinkSpec {
+                ground: true,
+                ..link_spec("ground", ground)
+            },
+        );
+        SceneFile {
+            name: self.name.clone(),
+            description: String::new(),
+            notes: Vec::new(),
+            models: Models::Kinematics,
+            length_unit: self.length_unit,
+            angle_unit: AngleUnit::Degree,
+            links,
+            sliders,
+            driver: DriverSpec {
+                link: self.links[driver].name.clone(),
+                speed: self.speed,
+                start: 0.0,
+            },
+            branches: IndexMap::new(),
+            output: self.output.map(|l| self.links[l].name.clone()),
+            guess: IndexMap::new(),
+            forces: Default::default(),
+            solver: Default::default(),
+        }
+    }
+
+    /// Solves the scene at its start: every point must land where it was drawn.
+    fn check_assembles_as_drawn(&self, scene: &SceneFile) -> Result<(), SketchProblem> {
+        let m = Mechanism::from_scene(scene).map_err(SketchProblem::Invalid)?;
+        let size = m.size_m.max(1e-9);
+        let mut k = Kinematics::new(m).map_err(SketchProblem::Invalid)?;
+        let pose = k.solve(0.0).map_err(SketchProblem::Invalid)?;
+        let m = k.mechanism();
+        for p in &self.points {
+            let Some(i) = m.points.iter().position(|q| q.name == p.name) else {
+                continue;
+            };
+            if (pose.points[i].position - p.at).norm() > 1e-9 * size {
+                return Err(SketchProblem::Invalid(LinkageError::SceneInvalid(format!(
+                    "the chain does not assemble as drawn at {}",
+                    p.name
+                ))));
+            }
+        }
+        Ok(())
+    }
+}
+
+fn link_spec(name: &str, points: impl IntoIterator<Item = (String, (f64, f64))>) -> LinkSpec {
+    LinkSpec {
+        name: name.to_owned(),
+        ground: false,
+        points: points.into_iter().collect(),
+        mass: None,
+        centroid: None,
+        inertia: None,
+    }
+}

@@ -1,0 +1,235 @@
+//! A drawing becomes the same mechanism as the scene it was drawn from: each template
+//! is solved at its start, redrawn as a [`Sketch`] (points at their world places, no
+//! branches, no link coordinates), and the scene the sketch makes must report the
+//! same Grashof class, time ratio, swings and strokes (to 1e-9) as the template.
+
+use linkage::analysis::{Report, report};
+use linkage::scene::{Branch, Speed};
+use linkage::sketch::{Sketch, SketchLink, SketchPoint, SketchProblem, SketchSlider};
+use linkage::{Kinematics, Mechanism, SceneFile, Vec2};
+
+fn template(name: &str) -> SceneFile {
+    let path = format!(
+        "{}/../../assets/templates/{name}.ron",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    SceneFile::parse(&std::fs::read_to_string(path).expect("template")).expect("parses")
+}
+
+/// The template as drawn at its start: world places, links by their points, slider
+/// blocks as sliders on their guides.
+fn drawn(scene: &SceneFile) -> Sketch {
+    let m = Mechanism::from_scene(scene).expect("valid");
+    let mut k = Kinematics::new(m.clone()).expect("solvable");
+    let pose = k.solve(m.driver.start_rad).expect("assembles at start");
+    let mut sketch = Sketch::new(&scene.name);
+    sketch.speed = scene.driver.speed;
+    let on_ground = |p: usize| {
+        m.revolutes
+            .iter()
+            .any(|r| r.point == p && (r.a == m.ground || r.b == m.ground))
+    };
+    sketch.points = m
+        .points
+        .iter()
+        .enumerate()
+        .map(|(p, point)| SketchPoint {
+            name: point.name.clone(),
+            at: pose.points[p].position,
+            ground: on_ground(p),
+        })
+        .collect();
+    let blocks: Vec<usize> = m.sliders.iter().map(|s| s.slider).collect();
+    let mut index_in_sketch = vec![None; m.links.len()];
+    for l in m.moving_links().filter(|l| !blocks.contains(l)) {
+        let points = m.links[l].points.iter().map(|(p, _)| *p).collect();
+        if l == m.driver.link {
+            sketch.driver = Some(sketch.links.len());
+        }
+        if scene.output.as_deref() == Some(m.links[l].name.as_str()) {
+            sketch.output = Some(sketch.links.len());
+        }
+        index_in_sketch[l] = Some(sketch.links.len());
+        sketch.links.push(SketchLink {
+            name: m.links[l].name.clone(),
+            points,
+        });
+    }
+    for s in &m.sliders {
+        let direction = pose.links[s.guide].rotation * s.direction_local;
+        sketch.sliders.push(SketchSlider {
+            point: s.point,
+            guide: index_in_sketch[s.guide],
+            angle_rad: direction.y.atan2(direction.x),
+        });
+    }
+    sketch
+}
+
+fn report_of(scene: &SceneFile) -> Report {
+    let mut k = Kinematics::new(Mechanism::from_scene(scene).expect("valid")).expect("solvable");
+    report(&mut k).expect("report")
+}
+
+fn assert_close(what: &str, a: f64, b: f64) {
+    assert!(
+        (a - b).abs() <= 1e-9 * a.abs().max(1.0),
+        "{what}: {a} vs {b}"
+    );
+}
+
+/// The drawing mirrored in the x-axis: every dyad on its other branch.
+fn mirrored(mut sketch: Sketch) -> Sketch {
+    for p in &mut sketch.points {
+        p.at.y = -p.at.y;
+    }
+    for s in &mut sketch.sliders {
+        s.angle_rad = -s.angle_rad;
+    }
+    sketch
+}
+
+fn assert_same_mechanism(name: &str) {
+    let original = template(name);
+    assert_same_motion(name, &original, &drawn(&original));
+    // Mirrored, each dyad closes on its other branch, which must be read off the
+    // drawing; the motion is the mirror image: the same swings, strokes and K.
+    let mirror = mirrored(drawn(&original))
+        .to_scene()
+        .unwrap_or_else(|e| panic!("{name} mirrored: {e}"));
+    let (a, b) = (report_of(&original), report_of(&mirror));
+    for (point, branch) in &original.branches {
+        if let Some(side) = left_of(branch) {
+            assert_eq!(
+                left_of(&mirror.branches[point]),
+                Some((side.0, side.1, !side.2)),
+                "{name} mirrored: branch at {point}"
+            );
+        }
+    }
+    for (x, y) in a
+        .swings_rad
+        .values()
+        .zip(b.swings_rad.values())
+        .chain(a.strokes_m.values().zip(b.strokes_m.values()))
+    {
+        assert_close(&format!("{name} mirrored: swing or stroke"), *x, *y);
+    }
+    if let (Some(ka), Some(kb)) = (a.time_ratio, b.time_ratio) {
+        assert_close(&format!("{name} mirrored: K"), ka, kb);
+    }
+}
+
+/// An RRR branch as (first end, second end, left of first -> second) with the ends in
+/// name order: `Left(a, c)` and `Right(c, a)` say the same.
+fn left_of(b: &Branch) -> Option<(String, String, bool)> {
+    let (a, c, left) = match b {
+        Branch::Left(a, c) => (a, c, true),
+        Branch::Right(a, c) => (a, c, false),
+        _ => return None,
+    };
+    Some(if a < c {
+        (a.clone(), c.clone(), left)
+    } else {
+        (c.clone(), a.clone(), !left)
+    })
+}
+
+fn assert_same_motion(name: &str, original: &SceneFile, sketch: &Sketch) {
+    let scene = sketch.to_scene().unwrap_or_else(|e| panic!("{name}: {e}"));
+    // The scene it makes is a scene file like any other: it round-trips through RON.
+    let text = scene.to_ron().expect("writes");
+    assert_eq!(SceneFile::parse(&text).expect("reads"), scene);
+    let (a, b) = (report_of(original), report_of(&scene));
+    assert_eq!(
+        a.grashof.as_ref().map(|g| g.class.clone()),
+        b.grashof.as_ref().map(|g| g.class.clone()),
+        "{name}: Grashof class"
+    );
+    assert_eq!(a.time_ratio.is_some(), b.time_ratio.is_some(), "{name}: K");
+    if let (Some(ka), Some(kb)) = (a.time_ratio, b.time_ratio) {
+        assert_close(&format!("{name}: K"), ka, kb);
+    }
+    assert_eq!(a.swings_rad.len(), b.swings_rad.len(), "{name}: rockers");
+    for (x, y) in a.swings_rad.values().zip(b.swings_rad.values()) {
+        assert_close(&format!("{name}: swing"), *x, *y);
+    }
+    assert_eq!(a.strokes_m.len(), b.strokes_m.len(), "{name}: sliders");
+    for (x, y) in a.strokes_m.values().zip(b.strokes_m.values()) {
+        assert_close(&format!("{name}: stroke"), *x, *y);
+    }
+    assert_eq!(a.assembly_range_rad.len(), b.assembly_range_rad.len());
+    for (x, y) in a.assembly_range_rad.iter().zip(&b.assembly_range_rad) {
+        assert_close(&format!("{name}: range start"), x[0], y[0]);
+        assert_close(&format!("{name}: range end"), x[1], y[1]);
+    }
+}
+
+#[test]
+fn a_drawn_four_bar_is_the_template_four_bar() {
+    assert_same_mechanism("four_bar");
+}
+
+#[test]
+fn a_drawn_slider_crank_is_the_template_slider_crank() {
+    assert_same_mechanism("slider_crank");
+}
+
+#[test]
+fn drawn_six_bars_and_the_inverted_slider_crank_are_their_templates() {
+    for name in [
+        "watt_six_bar",
+        "stephenson_six_bar",
+        "inverted_slider_crank",
+    ] {
+        assert_same_mechanism(name);
+    }
+}
+
+#[test]
+fn an_unfinished_drawing_says_what_is_missing() {
+    let mut sketch = Sketch::new("draft");
+    assert_eq!(sketch.to_scene(), Err(SketchProblem::NoLinks));
+    let point = |name: &str, x: f64, y: f64, ground: bool| SketchPoint {
+        name: name.into(),
+        at: Vec2::new(x, y),
+        ground,
+    };
+    sketch.points = vec![
+        point("A", 0.0, 0.0, true),
+        point("B", 0.1, 0.0, false),
+        point("C", 0.3, 0.2, false),
+        point("D", 0.3, 0.0, true),
+    ];
+    let link = |name: &str, points: Vec<usize>| SketchLink {
+        name: name.into(),
+        points,
+    };
+    sketch.links = vec![link("crank", vec![0, 1]), link("coupler", vec![1, 2])];
+    let Err(SketchProblem::Mobility(m)) = sketch.to_scene() else {
+        panic!("open chain")
+    };
+    assert_eq!(m.dof(), 2);
+    assert!(
+        SketchProblem::Mobility(m)
+            .to_string()
+            .starts_with("2 degrees of freedom")
+    );
+    sketch.links.push(link("rocker", vec![2, 3]));
+    assert_eq!(sketch.to_scene(), Err(SketchProblem::NoDriver));
+    sketch.driver = Some(1);
+    assert_eq!(
+        sketch.to_scene(),
+        Err(SketchProblem::DriverNotGrounded("coupler".into()))
+    );
+    sketch.driver = Some(0);
+    sketch.speed = Speed::Rpm(30.0);
+    let scene = sketch.to_scene().expect("a four-bar");
+    assert_eq!(scene.branches.len(), 1);
+    // A brace across the frame locks it.
+    sketch.links.push(link("brace", vec![1, 3]));
+    let Err(SketchProblem::Mobility(m)) = sketch.to_scene() else {
+        panic!("locked")
+    };
+    assert_eq!(m.dof(), 0);
+}
