@@ -116,6 +116,8 @@ pub struct AppState {
     pub dragged_point: Option<String>,
     /// While the driver is turned by hand: its grabbed point's angle from the input.
     pub turning: Option<f64>,
+    /// The mechanism being drawn, while the drawing tools are out.
+    pub builder: Option<crate::builder::Builder>,
 }
 
 impl AppState {
@@ -144,6 +146,7 @@ impl AppState {
             edit_points: false,
             dragged_point: None,
             turning: None,
+            builder: None,
         }
     }
 
@@ -161,6 +164,7 @@ impl AppState {
     /// Opens `session` whatever the current one holds.
     pub fn open_now(&mut self, session: Session) {
         self.pending_open = None;
+        self.builder = None;
         self.session = session;
         self.opened += 1;
         self.fit_pending = true;
@@ -227,7 +231,7 @@ const FRAME_BUDGET_MS: f64 = 10.0;
 const MIN_RUN_SLICE_MS: f64 = 1.0;
 
 /// Ctrl+Z (Cmd+Z on a Mac) undoes; Ctrl+Shift+Z and Ctrl+Y redo.
-fn undo_shortcuts(ui: &egui::Ui, session: &mut Session) {
+fn undo_shortcuts(ui: &egui::Ui, st: &mut AppState) {
     use egui::{Key, KeyboardShortcut, Modifiers};
     let redo = [
         KeyboardShortcut::new(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z),
@@ -238,12 +242,12 @@ fn undo_shortcuts(ui: &egui::Ui, session: &mut Session) {
         .iter()
         .any(|k| ui.ctx().input_mut(|i| i.consume_shortcut(k)))
     {
-        session.redo();
+        ui::drawing::redo_any(st);
     } else if ui
         .ctx()
         .input_mut(|i| i.consume_shortcut(&KeyboardShortcut::new(Modifiers::COMMAND, Key::Z)))
     {
-        session.undo();
+        ui::drawing::undo_any(st);
     }
 }
 
@@ -298,28 +302,9 @@ fn open_or_explain(key: &str) -> Session {
         .unwrap_or_else(|e| panic!("no shipped scene opens: {e}"))
 }
 
-impl eframe::App for LinkageApp {
-    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
-        let started = web_time::Instant::now();
-        let edits_before = (self.state.opened, self.state.session.edit_count());
-        self.state.controls.clear();
-        let dt = f64::from(ui.input(|i| i.stable_dt)).min(0.1);
-        let solver_started = web_time::Instant::now();
-        if self.state.playing {
-            self.state.session.advance(dt, self.state.speed);
-            ui.ctx().request_repaint();
-        }
-        let mut solver_us = solver_started.elapsed().as_secs_f64() * 1e6;
-        // Space plays and pauses, Ctrl+Z undoes, Ctrl+Shift+Z or Ctrl+Y redoes, unless
-        // a text field has the keyboard (it has its own undo).
-        if !ui.ctx().egui_wants_keyboard_input() {
-            if ui.input(|i| i.key_pressed(egui::Key::Space)) {
-                self.state.playing = !self.state.playing;
-            }
-            undo_shortcuts(ui, &mut self.state.session);
-        }
-
-        ui::scene_picker::top_bar(ui, &mut self.state, frame);
+impl LinkageApp {
+    /// The viewer: report strip, controls, polygons, plots and the mechanism view.
+    fn viewer_panels(&mut self, ui: &mut egui::Ui, solver_us: &mut f64) {
         ui::report::strip(ui, &self.state);
         egui::Panel::left("controls")
             .default_size(290.0)
@@ -345,9 +330,72 @@ impl eframe::App for LinkageApp {
             .default_size(230.0)
             .show(ui, |ui| ui::plots::panel(ui, &mut self.state));
         egui::CentralPanel::default_margins().show(ui, |ui| {
-            solver_us +=
+            *solver_us +=
                 ui::viewport::show(ui, &mut self.state, &self.shapes, self.renderer.as_ref());
         });
+    }
+
+    /// While drawing: the tools beside the drawing; the report, plots and polygons
+    /// once the drawing is a mechanism.
+    fn drawing_panels(&mut self, ui: &mut egui::Ui) {
+        let complete = self
+            .state
+            .builder
+            .as_ref()
+            .is_some_and(|b| b.problem.is_none());
+        if complete {
+            ui::report::strip(ui, &self.state);
+        }
+        egui::Panel::left("controls")
+            .default_size(290.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical()
+                    .show(ui, |ui| ui::builder_panel::panel(ui, &mut self.state));
+            });
+        if complete {
+            egui::Panel::right("polygons")
+                .default_size(360.0)
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical()
+                        .show(ui, |ui| ui::polygons::panel(ui, &mut self.state));
+                });
+            egui::Panel::bottom("plots")
+                .default_size(230.0)
+                .show(ui, |ui| ui::plots::panel(ui, &mut self.state));
+        }
+        egui::CentralPanel::default_margins().show(ui, |ui| {
+            ui::builder_canvas::show(ui, &mut self.state, &self.shapes, self.renderer.as_ref());
+        });
+    }
+}
+
+impl eframe::App for LinkageApp {
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        let started = web_time::Instant::now();
+        let edits_before = (self.state.opened, self.state.session.edit_count());
+        self.state.controls.clear();
+        let dt = f64::from(ui.input(|i| i.stable_dt)).min(0.1);
+        let solver_started = web_time::Instant::now();
+        if self.state.playing {
+            self.state.session.advance(dt, self.state.speed);
+            ui.ctx().request_repaint();
+        }
+        let mut solver_us = solver_started.elapsed().as_secs_f64() * 1e6;
+        // Space plays and pauses, Ctrl+Z undoes, Ctrl+Shift+Z or Ctrl+Y redoes, unless
+        // a text field has the keyboard (it has its own undo).
+        if !ui.ctx().egui_wants_keyboard_input() {
+            if ui.input(|i| i.key_pressed(egui::Key::Space)) {
+                self.state.playing = !self.state.playing;
+            }
+            undo_shortcuts(ui, &mut self.state);
+        }
+
+        ui::scene_picker::top_bar(ui, &mut self.state, frame);
+        if self.state.builder.is_some() {
+            self.drawing_panels(ui);
+        } else {
+            self.viewer_panels(ui, &mut solver_us);
+        }
 
         let edited = (self.state.opened, self.state.session.edit_count()) != edits_before;
         if !edited && !ui.input(|i| i.pointer.any_down()) {

@@ -4,6 +4,7 @@
 //! (wasm32, started by [`start_web`]).
 
 mod app;
+pub mod builder;
 pub mod catalog;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod file_dialog;

@@ -10,7 +10,7 @@ use super::view::Camera;
 use crate::session::Session;
 
 /// Colours, gamma-space RGBA.
-mod colour {
+pub(super) mod colour {
     pub const LINK: [f32; 4] = [0.28, 0.47, 0.72, 1.0];
     pub const PLATE: [f32; 4] = [0.36, 0.55, 0.78, 0.85];
     pub const DRIVER: [f32; 4] = [0.82, 0.52, 0.18, 1.0];
@@ -57,6 +57,31 @@ pub struct VectorScales {
     pub acceleration: f64,
 }
 
+/// A ground pivot at `c` (view-local m): a support triangle on a hatched base.
+pub(super) fn ground_pivot(push: &mut impl FnMut(Option<Shape>), c: Vec2, pin: f32, bar: f32) {
+    let base_y = c.y - 2.6 * pin;
+    let (l, rgt) = (
+        Vec2::new(c.x - 2.0 * pin, base_y),
+        Vec2::new(c.x + 2.0 * pin, base_y),
+    );
+    push(Shape::new(
+        Kind::Ground,
+        [c, l, rgt],
+        0.25 * bar,
+        colour::GROUND,
+        [1.4 * pin, 0.0],
+    ));
+    for side in [l, rgt] {
+        push(Shape::new(
+            Kind::Bar,
+            [c, side, c],
+            0.35 * bar,
+            colour::GROUND,
+            [0.0; 2],
+        ));
+    }
+}
+
 /// Fills `out` with the shapes of the session's current pose.
 pub fn build(
     out: &mut Vec<Shape>,
@@ -85,33 +110,7 @@ pub fn build(
         .iter()
         .filter(|r| r.a == m.ground || r.b == m.ground)
     {
-        let c = cam.local(at(r.point));
-        let base_y = c.y - 2.6 * pin;
-        let (l, rgt) = (
-            Vec2::new(c.x - 2.0 * pin, base_y),
-            Vec2::new(c.x + 2.0 * pin, base_y),
-        );
-        push(Shape::new(
-            Kind::Ground,
-            [c, l, rgt],
-            0.25 * bar,
-            colour::GROUND,
-            [1.4 * pin, 0.0],
-        ));
-        push(Shape::new(
-            Kind::Bar,
-            [c, l, c],
-            0.35 * bar,
-            colour::GROUND,
-            [0.0; 2],
-        ));
-        push(Shape::new(
-            Kind::Bar,
-            [c, rgt, c],
-            0.35 * bar,
-            colour::GROUND,
-            [0.0; 2],
-        ));
+        ground_pivot(&mut push, cam.local(at(r.point)), pin, bar);
     }
 
     // Guides fixed to ground: two rails over the slider's travel, hatched outside.

@@ -7,6 +7,7 @@
 
 pub mod build;
 pub mod shape;
+pub mod sketch_shapes;
 pub mod view;
 
 #[cfg(all(target_arch = "wasm32", feature = "webgl", not(feature = "webgpu")))]

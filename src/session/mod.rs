@@ -77,8 +77,8 @@ pub struct Session {
     /// Undo and redo.
     history: History,
     /// The scene as last opened or saved: it differs from `scene` when there are
-    /// unsaved edits.
-    saved: SceneFile,
+    /// unsaved edits (`None`: never saved, a drawing).
+    saved: Option<SceneFile>,
     /// The scene packed for a link, made when first asked for after an edit.
     share: std::cell::OnceCell<Result<String, linkage::share::ShareError>>,
 }
@@ -99,7 +99,15 @@ impl Session {
     /// The parse error with line and column, or why the mechanism does not assemble.
     pub fn open_text(source: SceneSource, text: &str) -> Result<Self, String> {
         let scene = SceneFile::parse(text).map_err(|e| e.to_string())?;
-        let saved = scene.clone();
+        Self::open_scene(source, scene)
+    }
+
+    /// Opens a scene (a drawing's, or one parsed from a file).
+    ///
+    /// # Errors
+    /// Why the mechanism does not assemble.
+    pub fn open_scene(source: SceneSource, scene: SceneFile) -> Result<Self, String> {
+        let saved = Some(scene.clone());
         let built = Built::new(&scene, None)?;
         let lengths = length_params(&scene);
         let mut session = Self {
@@ -588,12 +596,17 @@ impl Session {
     /// Whether the scene has edits not saved to a file (or, for a shipped scene, not
     /// in it).
     pub fn is_dirty(&self) -> bool {
-        self.scene != self.saved
+        self.saved.as_ref() != Some(&self.scene)
     }
 
     /// Notes that the scene as it is now has been saved.
     pub fn mark_saved(&mut self) {
-        self.saved = self.scene.clone();
+        self.saved = Some(self.scene.clone());
+    }
+
+    /// Notes that the scene was never saved (a drawing): it counts as unsaved work.
+    pub fn mark_unsaved(&mut self) {
+        self.saved = None;
     }
 
     /// The edited scene packed for a link (`linkage::share`), or why it does not fit.

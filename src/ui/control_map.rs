@@ -43,6 +43,8 @@ pub enum ControlKind {
     History,
     /// One template in the open New… menu.
     TemplateItem,
+    /// A drawing tool (Pivot, Link, ...) or action (Done, Undo, ...).
+    DrawTool,
 }
 
 /// One control as drawn this frame.

@@ -1,10 +1,13 @@
 //! The panels, one file each.
 
 pub mod accuracy;
+pub mod builder_canvas;
+pub mod builder_panel;
 pub mod centres;
 pub mod construction;
 pub mod control_map;
 pub mod controls;
+pub mod drawing;
 pub mod files;
 pub mod plots;
 pub mod point_drag;

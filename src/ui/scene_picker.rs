@@ -65,20 +65,7 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
             if ui.button("Reset edits").clicked() {
                 st.session.reset();
             }
-            let undo = ui
-                .add_enabled(st.session.can_undo(), egui::Button::new("Undo"))
-                .on_hover_text("Ctrl+Z");
-            st.controls.note(ui, ControlKind::History, "Undo", &undo);
-            if undo.clicked() {
-                st.session.undo();
-            }
-            let redo = ui
-                .add_enabled(st.session.can_redo(), egui::Button::new("Redo"))
-                .on_hover_text("Ctrl+Shift+Z or Ctrl+Y");
-            st.controls.note(ui, ControlKind::History, "Redo", &redo);
-            if redo.clicked() {
-                st.session.redo();
-            }
+            history_buttons(ui, st);
             if st.session.is_dirty() {
                 ui.label("(edited)").on_hover_text(
                     "The scene has edits not saved to a file: Save scene… keeps them",
@@ -121,11 +108,45 @@ fn template_names() -> &'static [String] {
     })
 }
 
-/// "New…": a scene started from a template (four-bar, slider-crank, inverted
+/// Undo and Redo: of the drawing while drawing, else of the scene's edits.
+fn history_buttons(ui: &mut egui::Ui, st: &mut AppState) {
+    let (can_undo, can_redo) = match &st.builder {
+        Some(b) => (b.can_undo(), b.can_redo()),
+        None => (st.session.can_undo(), st.session.can_redo()),
+    };
+    let undo = ui
+        .add_enabled(can_undo, egui::Button::new("Undo"))
+        .on_hover_text("Ctrl+Z");
+    st.controls.note(ui, ControlKind::History, "Undo", &undo);
+    let redo = ui
+        .add_enabled(can_redo, egui::Button::new("Redo"))
+        .on_hover_text("Ctrl+Shift+Z or Ctrl+Y");
+    st.controls.note(ui, ControlKind::History, "Redo", &redo);
+    if undo.clicked() {
+        crate::ui::drawing::undo_any(st);
+    }
+    if redo.clicked() {
+        crate::ui::drawing::redo_any(st);
+    }
+}
+
+/// The New… menu's item that starts a drawing from nothing.
+const EMPTY_DRAWING: &str = "Empty: draw your own";
+
+/// "New…": an empty drawing, or a scene started from a template (four-bar, slider-crank, inverted
 /// slider-crank, Watt and Stephenson six-bars), named after it, to edit and save.
 fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
     let mut chosen = None;
+    let mut empty = false;
     let menu = ui.menu_button("New…", |ui| {
+        let item = ui.button(EMPTY_DRAWING);
+        let placed = !ui.is_sizing_pass() && ui.clip_rect().contains_rect(item.rect);
+        st.controls
+            .note_rect(ControlKind::TemplateItem, EMPTY_DRAWING, item.rect, placed);
+        if item.clicked() {
+            empty = true;
+            ui.close();
+        }
         for (t, name) in crate::catalog::TEMPLATES.iter().zip(template_names()) {
             let item = ui.button(name);
             // The menu's first frame only sizes it, somewhere else: not clickable yet.
@@ -140,6 +161,9 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
     });
     st.controls
         .note(ui, ControlKind::FileButton, "New…", &menu.response);
+    if empty {
+        crate::ui::drawing::start(st);
+    }
     if let Some(t) = chosen {
         match Session::open_text(SceneSource::File(format!("{}.ron", t.key)), t.text) {
             Ok(s) => st.open(s),

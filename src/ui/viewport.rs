@@ -8,6 +8,36 @@ use crate::app::AppState;
 use crate::render::Renderer;
 use crate::render::build::build;
 use crate::render::shape::SharedShapes;
+use crate::render::view::Camera;
+
+/// Pans the camera by a drag (where `pan`) and zooms it by the wheel or a pinch,
+/// about the pointer.
+pub fn navigate(
+    ui: &egui::Ui,
+    response: &egui::Response,
+    rect: egui::Rect,
+    camera: &mut Camera,
+    pan: bool,
+) {
+    if pan && response.dragged() {
+        camera.pan(response.drag_delta());
+    }
+    if response.hovered() {
+        let (zoom, scroll, pointer) = ui.input(|i| {
+            (
+                i.zoom_delta(),
+                i.smooth_scroll_delta.y,
+                i.pointer.hover_pos(),
+            )
+        });
+        let factor = f64::from(zoom) * (f64::from(scroll) / 400.0).exp();
+        if let Some(p) = pointer
+            && (factor - 1.0).abs() > 1e-6
+        {
+            camera.zoom_at(factor, p, rect);
+        }
+    }
+}
 
 /// Draws the view with `renderer` (`None`: a message says there is no GPU); returns
 /// the µs spent building its shapes.
@@ -24,26 +54,9 @@ pub fn show(
         st.fit_pending = false;
     }
     let moving_point = crate::ui::point_drag::handle(ui, &response, rect, st);
-    if response.dragged() && !moving_point {
-        st.camera.pan(response.drag_delta());
-    }
+    navigate(ui, &response, rect, &mut st.camera, !moving_point);
     if response.double_clicked() {
         st.fit_pending = true;
-    }
-    if response.hovered() {
-        let (zoom, scroll, pointer) = ui.input(|i| {
-            (
-                i.zoom_delta(),
-                i.smooth_scroll_delta.y,
-                i.pointer.hover_pos(),
-            )
-        });
-        let factor = f64::from(zoom) * (f64::from(scroll) / 400.0).exp();
-        if let Some(p) = pointer
-            && (factor - 1.0).abs() > 1e-6
-        {
-            st.camera.zoom_at(factor, p, rect);
-        }
     }
 
     let ppp = ui.ctx().pixels_per_point();

@@ -1,0 +1,326 @@
+//! The edits a drawing takes, as values: the canvas turns clicks and drags into
+//! these, and [`apply`] makes the next drawing from them, or says why not.
+
+use linkage::Vec2;
+use linkage::sketch::{Sketch, SketchLink, SketchPoint, SketchSlider};
+
+/// One end of a new link: a point already drawn, or a new one at a place (m).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum End {
+    /// An existing point, by index.
+    Point(usize),
+    /// A new moving point at this world place.
+    New(Vec2),
+}
+
+/// One change to a drawing.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SketchEdit {
+    /// A new ground pivot at a world place.
+    AddPivot(Vec2),
+    /// Fixes an existing point to the frame, or frees it.
+    SetGround {
+        /// The point.
+        point: usize,
+        /// Fixed or free.
+        ground: bool,
+    },
+    /// A binary link between two ends.
+    AddLink(End, End),
+    /// One more point on a link (a plate when it had two).
+    AddPointToLink {
+        /// The link.
+        link: usize,
+        /// The point added.
+        end: End,
+    },
+    /// A slider block pinned at a point, on a ground guide through it.
+    AddSlider {
+        /// The block's pin.
+        point: usize,
+        /// The guide's direction, rad.
+        angle_rad: f64,
+    },
+    /// The input link.
+    SetDriver(usize),
+    /// A point to a new world place.
+    MovePoint {
+        /// The point.
+        point: usize,
+        /// Where to, m.
+        to: Vec2,
+    },
+    /// A point, with the links left with fewer than two points and its sliders.
+    DeletePoint(usize),
+    /// A link, with the points it alone carried.
+    DeleteLink(usize),
+}
+
+/// Why an edit was not made.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Refusal {
+    /// Both ends of a link at one point.
+    SameEnds,
+    /// The two points are already on one link.
+    AlreadyJoined(String),
+    /// The point already carries a slider.
+    AlreadySlider(String),
+    /// The driver must turn about a ground pivot.
+    DriverNotGrounded(String),
+    /// A place that is not a finite number.
+    NotFinite,
+}
+
+impl std::fmt::Display for Refusal {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::SameEnds => f.write_str("a link needs two different points"),
+            Self::AlreadyJoined(link) => write!(f, "those points are already on {link}"),
+            Self::AlreadySlider(p) => write!(f, "{p} already slides on a guide"),
+            Self::DriverNotGrounded(link) => write!(
+                f,
+                "{link} has no ground pivot: the input link must turn about one"
+            ),
+            Self::NotFinite => f.write_str("that place is not a finite number"),
+        }
+    }
+}
+
+/// The drawing after `edit`, or why it is refused (`sketch` is left as it was).
+pub fn apply(sketch: &Sketch, edit: SketchEdit) -> Result<Sketch, Refusal> {
+    let mut next = sketch.clone();
+    match edit {
+        SketchEdit::AddPivot(at) => {
+            finite(at)?;
+            add_point(&mut next, at, true);
+        }
+        SketchEdit::SetGround { point, ground } => next.points[point].ground = ground,
+        SketchEdit::AddLink(a, b) => add_link(&mut next, a, b)?,
+        SketchEdit::AddPointToLink { link, end } => {
+            let p = resolve(&mut next, end)?;
+            if next.links[link].points.contains(&p) {
+                return Err(Refusal::AlreadyJoined(next.links[link].name.clone()));
+            }
+            next.links[link].points.push(p);
+        }
+        SketchEdit::AddSlider { point, angle_rad } => {
+            if next.sliders.iter().any(|s| s.point == point) {
+                return Err(Refusal::AlreadySlider(next.points[point].name.clone()));
+            }
+            next.sliders.push(SketchSlider {
+                point,
+                guide: None,
+                angle_rad,
+            });
+        }
+        SketchEdit::SetDriver(link) => {
+            let l = &next.links[link];
+            if !l.points.iter().any(|&p| next.points[p].ground) {
+                return Err(Refusal::DriverNotGrounded(l.name.clone()));
+            }
+            next.driver = Some(link);
+        }
+        SketchEdit::MovePoint { point, to } => {
+            finite(to)?;
+            next.points[point].at = to;
+        }
+        SketchEdit::DeletePoint(point) => delete_point(&mut next, point),
+        SketchEdit::DeleteLink(link) => delete_link(&mut next, link),
+    }
+    Ok(next)
+}
+
+fn finite(at: Vec2) -> Result<(), Refusal> {
+    if at.x.is_finite() && at.y.is_finite() {
+        Ok(())
+    } else {
+        Err(Refusal::NotFinite)
+    }
+}
+
+/// The first unused name of `A`..`Z`, then `A1`..`Z1`, ...
+fn next_point_name(sketch: &Sketch) -> String {
+    (0..)
+        .map(|i: usize| {
+            let letter = char::from(b'A' + (i % 26) as u8);
+            match i / 26 {
+                0 => letter.to_string(),
+                round => format!("{letter}{round}"),
+            }
+        })
+        .find(|name| sketch.points.iter().all(|p| &p.name != name))
+        .unwrap_or_default()
+}
+
+/// The first unused `link N`.
+fn next_link_name(sketch: &Sketch) -> String {
+    (1..)
+        .map(|i: usize| format!("link {i}"))
+        .find(|name| sketch.links.iter().all(|l| &l.name != name))
+        .unwrap_or_default()
+}
+
+fn add_point(sketch: &mut Sketch, at: Vec2, ground: bool) -> usize {
+    let name = next_point_name(sketch);
+    sketch.points.push(SketchPoint { name, at, ground });
+    sketch.points.len() - 1
+}
+
+fn resolve(sketch: &mut Sketch, end: End) -> Result<usize, Refusal> {
+    match end {
+        End::Point(p) => Ok(p),
+        End::New(at) => {
+            finite(at)?;
+            Ok(add_point(sketch, at, false))
+        }
+    }
+}
+
+fn add_link(sketch: &mut Sketch, a: End, b: End) -> Result<(), Refusal> {
+    if a == b {
+        return Err(Refusal::SameEnds);
+    }
+    if let (End::Point(p), End::Point(q)) = (a, b)
+        && let Some(l) = sketch
+            .links
+            .iter()
+            .find(|l| l.points.contains(&p) && l.points.contains(&q))
+    {
+        return Err(Refusal::AlreadyJoined(l.name.clone()));
+    }
+    let p = resolve(sketch, a)?;
+    let q = resolve(sketch, b)?;
+    let name = next_link_name(sketch);
+    sketch.links.push(SketchLink {
+        name,
+        points: vec![p, q],
+    });
+    Ok(())
+}
+
+/// Removes a point; links left with one point go, and so do its sliders.
+fn delete_point(sketch: &mut Sketch, point: usize) {
+    sketch.sliders.retain(|s| s.point != point);
+    for link in &mut sketch.links {
+        link.points.retain(|&p| p != point);
+    }
+    let short: Vec<usize> = (0..sketch.links.len())
+        .filter(|&l| sketch.links[l].points.len() < 2)
+        .collect();
+    for l in short.into_iter().rev() {
+        remove_link(sketch, l);
+    }
+    remove_point(sketch, point);
+}
+
+/// Removes a link, then the moving points no link or slider holds any more.
+fn delete_link(sketch: &mut Sketch, link: usize) {
+    remove_link(sketch, link);
+    let held = |s: &Sketch, p: usize| {
+        s.points[p].ground
+            || s.links.iter().any(|l| l.points.contains(&p))
+            || s.sliders.iter().any(|sl| sl.point == p)
+    };
+    for p in (0..sketch.points.len()).rev() {
+        if !held(sketch, p) {
+            remove_point(sketch, p);
+        }
+    }
+}
+
+/// Removes link `link`, renumbering the driver, the output and the guides.
+fn remove_link(sketch: &mut Sketch, link: usize) {
+    sketch.links.remove(link);
+    let shift = |l: Option<usize>| match l {
+        Some(l) if l == link => None,
+        Some(l) if l > link => Some(l - 1),
+        other => other,
+    };
+    sketch.driver = shift(sketch.driver);
+    sketch.output = shift(sketch.output);
+    sketch.sliders.retain(|s| s.guide != Some(link));
+    for s in &mut sketch.sliders {
+        s.guide = shift(s.guide);
+    }
+}
+
+/// Removes point `point` (no link or slider may hold it), renumbering the rest.
+fn remove_point(sketch: &mut Sketch, point: usize) {
+    sketch.points.remove(point);
+    let shift = |p: &mut usize| {
+        if *p > point {
+            *p -= 1;
+        }
+    };
+    for link in &mut sketch.links {
+        link.points.iter_mut().for_each(shift);
+    }
+    for s in &mut sketch.sliders {
+        shift(&mut s.point);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn at(x: f64, y: f64) -> Vec2 {
+        Vec2::new(x, y)
+    }
+
+    #[test]
+    fn a_four_bar_drawn_edit_by_edit_has_one_degree_of_freedom() {
+        let mut s = Sketch::new("drawn");
+        for edit in [
+            SketchEdit::AddPivot(at(0.0, 0.0)),
+            SketchEdit::AddPivot(at(0.3, 0.0)),
+            SketchEdit::AddLink(End::Point(0), End::New(at(0.0, 0.1))),
+            SketchEdit::AddLink(End::Point(2), End::New(at(0.2, 0.3))),
+            SketchEdit::AddLink(End::Point(3), End::Point(1)),
+            SketchEdit::SetDriver(0),
+        ] {
+            s = apply(&s, edit).expect("applies");
+        }
+        let names: Vec<&str> = s.points.iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, ["A", "B", "C", "D"]);
+        assert_eq!(s.mobility().dof(), 1);
+        assert!(s.to_scene().is_ok());
+        assert_eq!(
+            apply(&s, SketchEdit::AddLink(End::Point(2), End::Point(0))),
+            Err(Refusal::AlreadyJoined("link 1".into()))
+        );
+        assert_eq!(
+            apply(&s, SketchEdit::SetDriver(1)),
+            Err(Refusal::DriverNotGrounded("link 2".into()))
+        );
+    }
+
+    #[test]
+    fn deleting_a_point_takes_its_links_and_renumbers_the_rest() {
+        let mut s = Sketch::new("drawn");
+        for edit in [
+            SketchEdit::AddPivot(at(0.0, 0.0)),
+            SketchEdit::AddLink(End::Point(0), End::New(at(0.1, 0.0))),
+            SketchEdit::AddLink(End::Point(1), End::New(at(0.2, 0.0))),
+            SketchEdit::AddSlider {
+                point: 2,
+                angle_rad: 0.0,
+            },
+            SketchEdit::SetDriver(0),
+        ] {
+            s = apply(&s, edit).expect("applies");
+        }
+        // B goes: both links lose an end, and C is held only by its slider.
+        let after = apply(&s, SketchEdit::DeletePoint(1)).expect("applies");
+        assert!(after.links.is_empty());
+        assert_eq!(after.driver, None);
+        assert_eq!(after.points.len(), 2);
+        assert_eq!(after.sliders[0].point, 1);
+        assert_eq!(after.points[1].name, "C");
+        // Deleting the crank instead keeps B (the rod holds it).
+        let after = apply(&s, SketchEdit::DeleteLink(0)).expect("applies");
+        assert_eq!(after.links.len(), 1);
+        assert_eq!(after.links[0].points, [1, 2]);
+        assert_eq!(after.driver, None);
+    }
+}

@@ -1,0 +1,204 @@
+//! Building one's own mechanism: the drawing being made (a [`Sketch`]), its undo and
+//! redo history, the tool in hand and the first end of a link being drawn. The
+//! canvas (`ui::builder_canvas`) turns pointer events into [`edit::SketchEdit`]
+//! values; [`Builder::apply`] makes them. Whenever the drawing is a complete
+//! mechanism the app opens it as its session, so the report, the plots and the
+//! polygons follow the drawing as it grows.
+
+pub mod edit;
+
+use linkage::SceneFile;
+use linkage::sketch::{Sketch, SketchProblem};
+
+use edit::{End, Refusal, SketchEdit};
+
+/// What a click on the canvas does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tool {
+    /// Places a ground pivot (or fixes a point to ground).
+    Pivot,
+    /// Draws a link between two points, or adds a point to a link.
+    Link,
+    /// Puts a slider block on a point, on a horizontal ground guide.
+    Slider,
+    /// Picks the input link.
+    Driver,
+    /// Drags points.
+    Move,
+    /// Deletes a point or a link.
+    Delete,
+}
+
+impl Tool {
+    /// Every tool, in the panel's order.
+    pub const ALL: [Tool; 6] = [
+        Tool::Pivot,
+        Tool::Link,
+        Tool::Slider,
+        Tool::Driver,
+        Tool::Move,
+        Tool::Delete,
+    ];
+
+    /// The tool's button label.
+    pub fn label(self) -> &'static str {
+        match self {
+            Tool::Pivot => "Pivot",
+            Tool::Link => "Link",
+            Tool::Slider => "Slider",
+            Tool::Driver => "Driver",
+            Tool::Move => "Move",
+            Tool::Delete => "Delete",
+        }
+    }
+
+    /// What to do with it, in a line.
+    pub fn hint(self) -> &'static str {
+        match self {
+            Tool::Pivot => "click to place a ground pivot, or on a point to fix it",
+            Tool::Link => {
+                "click two points (or empty places) to join them; click a link, then a \
+                 place, to add a point to it"
+            }
+            Tool::Slider => "click a point to put a slider block there on a horizontal guide",
+            Tool::Driver => "click the link that turns about a ground pivot: the input",
+            Tool::Move => "drag a point; it snaps to the 10 mm grid and to other points",
+            Tool::Delete => "click a point or a link to delete it",
+        }
+    }
+}
+
+/// The first click of a two-click edit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Pending {
+    /// A link's first end.
+    LinkFrom(End),
+    /// The link a point is being added to.
+    OnLink(usize),
+}
+
+/// The drawing being built and how.
+pub struct Builder {
+    sketch: Sketch,
+    undo: Vec<Sketch>,
+    redo: Vec<Sketch>,
+    /// Whether a drag's edits are being merged into one undo step.
+    gesture_open: bool,
+    /// The tool in hand.
+    pub tool: Tool,
+    /// The first click of a link, if made.
+    pub pending: Option<Pending>,
+    /// The point being dragged (move tool).
+    pub dragged: Option<usize>,
+    /// Why the last edit was refused, until the next one.
+    pub refusal: Option<Refusal>,
+    /// Why the drawing is not yet a mechanism (`None`: it is one), as of the last
+    /// [`Builder::refresh`].
+    pub problem: Option<SketchProblem>,
+    /// Fit the view to the drawing at the next frame.
+    pub fit_pending: bool,
+}
+
+impl Builder {
+    /// Starts from `sketch` (empty for a new drawing).
+    pub fn new(sketch: Sketch) -> Self {
+        Self {
+            sketch,
+            undo: Vec::new(),
+            redo: Vec::new(),
+            gesture_open: false,
+            tool: Tool::Pivot,
+            pending: None,
+            dragged: None,
+            refusal: None,
+            problem: Some(SketchProblem::NoLinks),
+            fit_pending: true,
+        }
+    }
+
+    /// The drawing.
+    pub fn sketch(&self) -> &Sketch {
+        &self.sketch
+    }
+
+    /// The scene of the drawing when it is a mechanism; else notes why not in
+    /// [`Builder::problem`].
+    pub fn refresh(&mut self) -> Option<SceneFile> {
+        match self.sketch.to_scene() {
+            Ok(scene) => {
+                self.problem = None;
+                Some(scene)
+            }
+            Err(why) => {
+                self.problem = Some(why);
+                None
+            }
+        }
+    }
+
+    /// Makes `edit`; returns whether the drawing changed. A refused edit leaves the
+    /// drawing and says why ([`Builder::refusal`]). Edits during a gesture (a drag)
+    /// are one undo step.
+    pub fn apply(&mut self, edit: SketchEdit) -> bool {
+        match edit::apply(&self.sketch, edit) {
+            Ok(next) if next == self.sketch => false,
+            Ok(next) => {
+                if !self.gesture_open {
+                    self.undo.push(self.sketch.clone());
+                    self.redo.clear();
+                }
+                self.gesture_open =
+                    matches!(edit, SketchEdit::MovePoint { .. }) && self.dragged.is_some();
+                self.sketch = next;
+                self.refusal = None;
+                true
+            }
+            Err(why) => {
+                self.refusal = Some(why);
+                false
+            }
+        }
+    }
+
+    /// Ends a drag: the next edit is a new undo step.
+    pub fn end_gesture(&mut self) {
+        self.gesture_open = false;
+        self.dragged = None;
+    }
+
+    /// Takes back the last edit; returns whether there was one.
+    pub fn undo(&mut self) -> bool {
+        self.travel(true)
+    }
+
+    /// Makes the last undone edit again; returns whether there was one.
+    pub fn redo(&mut self) -> bool {
+        self.travel(false)
+    }
+
+    /// Whether there is an edit to take back.
+    pub fn can_undo(&self) -> bool {
+        !self.undo.is_empty()
+    }
+
+    /// Whether there is an undone edit to make again.
+    pub fn can_redo(&self) -> bool {
+        !self.redo.is_empty()
+    }
+
+    fn travel(&mut self, back: bool) -> bool {
+        self.end_gesture();
+        self.pending = None;
+        let (from, to) = if back {
+            (&mut self.undo, &mut self.redo)
+        } else {
+            (&mut self.redo, &mut self.undo)
+        };
+        let Some(sketch) = from.pop() else {
+            return false;
+        };
+        to.push(std::mem::replace(&mut self.sketch, sketch));
+        self.refusal = None;
+        true
+    }
+}

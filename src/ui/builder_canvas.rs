@@ -1,0 +1,320 @@
+//! The mechanism view while drawing: clicks and drags become edits of the drawing,
+//! by the tool in hand; places snap to a 10 mm grid and onto points near the
+//! pointer. The drawing is drawn by the GPU renderer over a light grid, with point
+//! names beside it and a rubber band from a link's first end to the pointer.
+
+use eframe::egui::{self, Align2, Color32, FontId, Pos2, Rect, Sense, Stroke};
+use linkage::Vec2;
+use linkage::sketch::Sketch;
+
+use crate::app::AppState;
+use crate::builder::edit::{End, SketchEdit};
+use crate::builder::{Pending, Tool};
+use crate::render::Renderer;
+use crate::render::shape::SharedShapes;
+use crate::render::sketch_shapes::build_sketch;
+use crate::ui::drawing;
+use crate::ui::viewport::navigate;
+
+/// How near a point (points) a click must be to take it.
+const GRAB_PT: f32 = 10.0;
+/// Grid lines per metre (10 mm apart).
+const GRID_PER_M: f64 = 100.0;
+/// What an empty drawing shows: 0.5 m by 0.4 m about the origin's right.
+const EMPTY_VIEW_M: [f64; 4] = [-0.1, -0.15, 0.4, 0.25];
+
+/// Draws the drawing and turns the pointer into its edits.
+pub fn show(
+    ui: &mut egui::Ui,
+    st: &mut AppState,
+    shapes: &SharedShapes,
+    renderer: Option<&Renderer>,
+) {
+    let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+    st.controls.view = Some([rect.min.x, rect.min.y, rect.max.x, rect.max.y]);
+    let Some(b) = st.builder.as_mut() else {
+        return;
+    };
+    if b.fit_pending && rect.width() > 1.0 {
+        st.camera.fit(bounds(b.sketch()), rect);
+        b.fit_pending = false;
+    }
+    let dragging_point = pointer(ui, &response, rect, st);
+    navigate(ui, &response, rect, &mut st.camera, !dragging_point);
+    draw(ui, rect, st, shapes, renderer);
+}
+
+/// The drawing's box, or a default view when it has fewer than two points.
+fn bounds(sketch: &Sketch) -> [f64; 4] {
+    if sketch.points.len() < 2 {
+        return EMPTY_VIEW_M;
+    }
+    sketch.points.iter().fold(
+        [
+            f64::INFINITY,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NEG_INFINITY,
+        ],
+        |b, p| {
+            [
+                b[0].min(p.at.x),
+                b[1].min(p.at.y),
+                b[2].max(p.at.x),
+                b[3].max(p.at.y),
+            ]
+        },
+    )
+}
+
+/// Handles this frame's clicks and drags; returns whether a point is being dragged
+/// (then the view does not pan).
+fn pointer(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut AppState) -> bool {
+    let Some(b) = st.builder.as_ref() else {
+        return false;
+    };
+    let tool = b.tool;
+    if tool == Tool::Move {
+        return drag_point(ui, response, rect, st);
+    }
+    if response.clicked()
+        && let Some(at) = response.interact_pointer_pos()
+        && let Some(edit) = click(st, at, rect)
+    {
+        drawing::edit(st, edit);
+    }
+    false
+}
+
+/// The edit a click at `at` makes with the tool in hand (a link's first click only
+/// notes its end).
+fn click(st: &mut AppState, at: Pos2, rect: Rect) -> Option<SketchEdit> {
+    let cam = st.camera;
+    let b = st.builder.as_mut()?;
+    let mut pending = b.pending.take();
+    let sketch = b.sketch();
+    let near = point_near(sketch, &cam, at, rect);
+    let place = snapped(&cam, at, rect);
+    let end = near.map_or(End::New(place), End::Point);
+    let edit = match b.tool {
+        Tool::Pivot => Some(match near {
+            Some(point) => SketchEdit::SetGround {
+                point,
+                ground: true,
+            },
+            None => SketchEdit::AddPivot(place),
+        }),
+        Tool::Link => match pending.take() {
+            None => {
+                pending = Some(match (near, link_near(sketch, &cam, at, rect)) {
+                    (None, Some(link)) => Pending::OnLink(link),
+                    _ => Pending::LinkFrom(end),
+                });
+                None
+            }
+            Some(Pending::LinkFrom(from)) => Some(SketchEdit::AddLink(from, end)),
+            Some(Pending::OnLink(link)) => Some(SketchEdit::AddPointToLink { link, end }),
+        },
+        Tool::Slider => near.map(|point| SketchEdit::AddSlider {
+            point,
+            angle_rad: 0.0,
+        }),
+        Tool::Driver => link_at(sketch, &cam, at, rect).map(SketchEdit::SetDriver),
+        Tool::Delete => match near {
+            Some(p) => Some(SketchEdit::DeletePoint(p)),
+            None => link_near(sketch, &cam, at, rect).map(SketchEdit::DeleteLink),
+        },
+        Tool::Move => None,
+    };
+    b.pending = pending;
+    edit
+}
+
+/// The move tool: the point under the press follows the pointer, snapped; the drag
+/// is one undo step.
+fn drag_point(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut AppState) -> bool {
+    let cam = st.camera;
+    let Some(b) = st.builder.as_mut() else {
+        return false;
+    };
+    if response.drag_started()
+        && let Some(at) = ui
+            .input(|i| i.pointer.press_origin())
+            .or_else(|| response.interact_pointer_pos())
+    {
+        b.dragged = point_near(b.sketch(), &cam, at, rect);
+    }
+    if response.drag_stopped() || !ui.input(|i| i.pointer.any_down()) {
+        b.end_gesture();
+        return false;
+    }
+    let Some(point) = b.dragged else {
+        return false;
+    };
+    if let Some(at) = response.interact_pointer_pos() {
+        let to = snapped(&cam, at, rect);
+        if b.sketch().points[point].at != to {
+            drawing::edit(st, SketchEdit::MovePoint { point, to });
+        }
+    }
+    true
+}
+
+/// The pointer's world place on the grid.
+fn snapped(cam: &crate::render::view::Camera, at: Pos2, rect: Rect) -> Vec2 {
+    let w = cam.to_world(at, rect);
+    // Divided, not multiplied by 0.01: each place is the double nearest k / 100.
+    Vec2::new(
+        (w[0] * GRID_PER_M).round() / GRID_PER_M,
+        (w[1] * GRID_PER_M).round() / GRID_PER_M,
+    )
+}
+
+fn screen(cam: &crate::render::view::Camera, p: Vec2, rect: Rect) -> Pos2 {
+    cam.to_screen([p.x, p.y], rect)
+}
+
+/// The point within [`GRAB_PT`] of `at`, the nearest.
+fn point_near(
+    sketch: &Sketch,
+    cam: &crate::render::view::Camera,
+    at: Pos2,
+    rect: Rect,
+) -> Option<usize> {
+    sketch
+        .points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (screen(cam, p.at, rect).distance(at), i))
+        .filter(|(d, _)| *d <= GRAB_PT)
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, i)| i)
+}
+
+/// The link whose outline passes within [`GRAB_PT`] of `at`, the nearest.
+fn link_near(
+    sketch: &Sketch,
+    cam: &crate::render::view::Camera,
+    at: Pos2,
+    rect: Rect,
+) -> Option<usize> {
+    let distance = |a: Pos2, b: Pos2| {
+        let ab = b - a;
+        let t = ((at - a).dot(ab) / ab.length_sq().max(1e-6)).clamp(0.0, 1.0);
+        (a + t * ab).distance(at)
+    };
+    sketch
+        .links
+        .iter()
+        .enumerate()
+        .flat_map(|(l, link)| {
+            let pts: Vec<Pos2> = link
+                .points
+                .iter()
+                .map(|&p| screen(cam, sketch.points[p].at, rect))
+                .collect();
+            let n = pts.len();
+            (0..n)
+                .map(move |i| (distance(pts[i], pts[(i + 1) % n]), l))
+                .collect::<Vec<_>>()
+        })
+        .filter(|(d, _)| *d <= GRAB_PT)
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, l)| l)
+}
+
+/// The link under `at`, or one through the point under it (the first).
+fn link_at(
+    sketch: &Sketch,
+    cam: &crate::render::view::Camera,
+    at: Pos2,
+    rect: Rect,
+) -> Option<usize> {
+    link_near(sketch, cam, at, rect).or_else(|| {
+        let p = point_near(sketch, cam, at, rect)?;
+        sketch.links.iter().position(|l| l.points.contains(&p))
+    })
+}
+
+/// The grid, the drawing (GPU), the names, and a link's rubber band.
+fn draw(
+    ui: &egui::Ui,
+    rect: Rect,
+    st: &AppState,
+    shapes: &SharedShapes,
+    renderer: Option<&Renderer>,
+) {
+    let Some(b) = st.builder.as_ref() else {
+        return;
+    };
+    let painter = ui.painter_at(rect);
+    painter.rect_filled(rect, 0.0, Color32::from_rgb(246, 246, 242));
+    grid(&painter, rect, &st.camera);
+    let marked = match b.pending {
+        Some(Pending::LinkFrom(End::Point(p))) => Some(p),
+        _ => b.dragged,
+    };
+    if let Ok(mut list) = shapes.lock() {
+        build_sketch(&mut list, b.sketch(), &st.camera, marked);
+    }
+    if let Some(renderer) = renderer {
+        let view = st.camera.uniform(rect, ui.ctx().pixels_per_point());
+        painter.add(renderer.paint_callback(rect, view, shapes));
+    }
+    let font = FontId::proportional(13.0);
+    for p in &b.sketch().points {
+        let s = screen(&st.camera, p.at, rect);
+        painter.text(
+            s + egui::vec2(8.0, -8.0),
+            Align2::LEFT_BOTTOM,
+            &p.name,
+            font.clone(),
+            Color32::BLACK,
+        );
+    }
+    let from = match b.pending {
+        Some(Pending::LinkFrom(End::Point(p))) => {
+            Some(screen(&st.camera, b.sketch().points[p].at, rect))
+        }
+        Some(Pending::LinkFrom(End::New(at))) => Some(screen(&st.camera, at, rect)),
+        _ => None,
+    };
+    if let (Some(from), Some(to)) = (from, ui.input(|i| i.pointer.hover_pos())) {
+        painter.line_segment(
+            [from, to],
+            Stroke::new(1.5, Color32::from_rgb(180, 60, 140)),
+        );
+    }
+    painter.text(
+        rect.left_top() + egui::vec2(8.0, 8.0),
+        Align2::LEFT_TOP,
+        format!("{}: {}", b.tool.label(), b.tool.hint()),
+        FontId::proportional(12.0),
+        Color32::DARK_GRAY,
+    );
+}
+
+/// Light lines every 10 mm (every 50 mm darker), or coarser where they would crowd.
+fn grid(painter: &egui::Painter, rect: Rect, cam: &crate::render::view::Camera) {
+    let mut step = 1.0 / GRID_PER_M;
+    while step * cam.points_per_m < 8.0 {
+        step *= 5.0;
+    }
+    let lo = cam.to_world(rect.left_bottom(), rect);
+    let hi = cam.to_world(rect.right_top(), rect);
+    let line = |i: i64| {
+        let major = i % 5 == 0;
+        Stroke::new(
+            if major { 0.8 } else { 0.4 },
+            Color32::from_gray(if major { 205 } else { 225 }),
+        )
+    };
+    for i in (lo[0] / step).floor() as i64..=(hi[0] / step).ceil() as i64 {
+        let x = screen(cam, Vec2::new(i as f64 * step, 0.0), rect).x;
+        painter.vline(x, rect.y_range(), line(i));
+    }
+    for i in (lo[1] / step).floor() as i64..=(hi[1] / step).ceil() as i64 {
+        let y = screen(cam, Vec2::new(0.0, i as f64 * step), rect).y;
+        painter.hline(rect.x_range(), y, line(i));
+    }
+}

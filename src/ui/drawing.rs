@@ -1,0 +1,88 @@
+//! The app's side of building a mechanism: starting a drawing, making its edits,
+//! undo and redo, and opening the drawing as the session each time it is a complete
+//! mechanism (so the analyses follow it), unsaved until the user saves it.
+
+use linkage::sketch::Sketch;
+
+use crate::app::AppState;
+use crate::builder::Builder;
+use crate::builder::edit::SketchEdit;
+use crate::session::{SceneSource, Session};
+
+/// The file name a drawing is saved and shared under until the user names one.
+const DRAWING_FILE: &str = "my_mechanism.ron";
+
+/// Starts an empty drawing (the current scene stays open until the drawing is a
+/// mechanism, then the drawing replaces it: so not over unsaved edits).
+pub fn start(st: &mut AppState) {
+    if st.session.is_dirty() {
+        st.status = Some(
+            "the scene has unsaved edits: save it or reset its edits before drawing a new one"
+                .into(),
+        );
+        return;
+    }
+    st.builder = Some(Builder::new(Sketch::new("My mechanism")));
+    st.playing = false;
+    st.edit_points = false;
+}
+
+/// Makes `edit` on the drawing.
+pub fn edit(st: &mut AppState, edit: SketchEdit) {
+    if st.builder.as_mut().is_some_and(|b| b.apply(edit)) {
+        sync(st);
+    }
+}
+
+/// Takes back the drawing's last edit.
+pub fn undo(st: &mut AppState) {
+    if st.builder.as_mut().is_some_and(Builder::undo) {
+        sync(st);
+    }
+}
+
+/// Makes the drawing's last undone edit again.
+pub fn redo(st: &mut AppState) {
+    if st.builder.as_mut().is_some_and(Builder::redo) {
+        sync(st);
+    }
+}
+
+/// Undo: of the drawing while drawing, else of the scene's edits.
+pub fn undo_any(st: &mut AppState) {
+    if st.builder.is_some() {
+        undo(st);
+    } else {
+        st.session.undo();
+    }
+}
+
+/// Redo: of the drawing while drawing, else of the scene's edits.
+pub fn redo_any(st: &mut AppState) {
+    if st.builder.is_some() {
+        redo(st);
+    } else {
+        st.session.redo();
+    }
+}
+
+/// Leaves the drawing tools; the last complete drawing stays open as the scene.
+pub fn finish(st: &mut AppState) {
+    st.builder = None;
+    st.fit_pending = true;
+}
+
+/// Opens the drawing as the session when it is a mechanism.
+fn sync(st: &mut AppState) {
+    let Some(scene) = st.builder.as_mut().and_then(Builder::refresh) else {
+        return;
+    };
+    match Session::open_scene(SceneSource::File(DRAWING_FILE.into()), scene) {
+        Ok(mut session) => {
+            session.mark_unsaved();
+            st.session = session;
+            st.opened += 1;
+        }
+        Err(why) => st.status = Some(format!("the drawing does not solve: {why}")),
+    }
+}

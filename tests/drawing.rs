@@ -1,0 +1,255 @@
+//! Building a mechanism from nothing, as a user does: New… > Empty, then clicks on
+//! the canvas with the drawing tools. The drawn four-bar and slider-crank must report
+//! what the same mechanisms written by hand as scene files report (Grashof class, K,
+//! swings and strokes to 1e-9); undo goes back to the empty drawing and redo to the
+//! end, exactly.
+
+use eframe::egui;
+use egui_kittest::Harness;
+use linkage::analysis::{Report, report};
+use linkage::{Kinematics, Mechanism, SceneFile};
+use linkage_lab::ui::control_map::ControlKind;
+use linkage_lab::{LinkageApp, StartOptions};
+
+mod common;
+
+fn harness() -> Harness<'static, LinkageApp> {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1500.0, 950.0))
+        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
+    h.run();
+    h.run();
+    h
+}
+
+/// A press and a release at `at`, a frame each.
+fn click(h: &mut Harness<'static, LinkageApp>, at: egui::Pos2) {
+    h.event(egui::Event::PointerMoved(at));
+    for pressed in [true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: at,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::default(),
+        });
+        h.run();
+    }
+    h.run();
+}
+
+/// Clicks the control of `kind` labelled `label`, as drawn last frame.
+fn click_control(h: &mut Harness<'static, LinkageApp>, kind: ControlKind, label: &str) {
+    let entry = h
+        .state()
+        .state
+        .controls
+        .of_kind(kind)
+        .find(|e| e.label == label && e.visible)
+        .unwrap_or_else(|| panic!("no {kind:?} {label:?} on screen"))
+        .clone();
+    let [x0, y0, x1, y1] = entry.rect;
+    click(h, egui::pos2(0.5 * (x0 + x1), 0.5 * (y0 + y1)));
+}
+
+/// Clicks the canvas at world place `(x, y)` (mm).
+fn click_mm(h: &mut Harness<'static, LinkageApp>, x: f64, y: f64) {
+    let st = &h.state().state;
+    let [x0, y0, x1, y1] = st.controls.view.expect("the canvas is drawn");
+    let rect = egui::Rect::from_min_max(egui::pos2(x0, y0), egui::pos2(x1, y1));
+    let at = st.camera.to_screen([x * 1e-3, y * 1e-3], rect);
+    click(h, at);
+}
+
+fn start_drawing(h: &mut Harness<'static, LinkageApp>) {
+    click_control(h, ControlKind::FileButton, "New…");
+    h.run();
+    click_control(h, ControlKind::TemplateItem, "Empty: draw your own");
+    assert!(
+        h.state().state.builder.is_some(),
+        "the drawing tools are out"
+    );
+}
+
+fn tool(h: &mut Harness<'static, LinkageApp>, label: &str) {
+    click_control(h, ControlKind::DrawTool, label);
+}
+
+fn report_of(scene: &SceneFile) -> Report {
+    let mut k = Kinematics::new(Mechanism::from_scene(scene).expect("valid")).expect("solves");
+    report(&mut k).expect("report")
+}
+
+fn assert_close(what: &str, a: f64, b: f64) {
+    assert!(
+        (a - b).abs() <= 1e-9 * a.abs().max(1.0),
+        "{what}: {a} vs {b}"
+    );
+}
+
+/// The app's scene (the drawing) reports what `by_hand` does.
+fn assert_reports_as(h: &Harness<'static, LinkageApp>, by_hand: &str) {
+    let st = &h.state().state;
+    let b = st.builder.as_ref().expect("drawing");
+    assert_eq!(b.problem, None, "the drawing is a mechanism");
+    let hand = SceneFile::parse(by_hand).expect("the hand-written scene parses");
+    let (drawn, hand) = (report_of(st.session.scene()), report_of(&hand));
+    assert_eq!(
+        drawn.grashof.as_ref().map(|g| g.class.clone()),
+        hand.grashof.as_ref().map(|g| g.class.clone())
+    );
+    let (kd, kh) = (drawn.time_ratio.expect("K"), hand.time_ratio.expect("K"));
+    assert_close("K", kd, kh);
+    assert_eq!(drawn.swings_rad.len(), hand.swings_rad.len());
+    for (a, b) in drawn.swings_rad.values().zip(hand.swings_rad.values()) {
+        assert_close("swing", *a, *b);
+    }
+    assert_eq!(drawn.strokes_m.len(), hand.strokes_m.len());
+    for (a, b) in drawn.strokes_m.values().zip(hand.strokes_m.values()) {
+        assert_close("stroke", *a, *b);
+    }
+}
+
+/// Undo to the empty drawing, then redo to the end: the same drawing and scene.
+fn assert_undo_redo_exact(h: &mut Harness<'static, LinkageApp>) {
+    let st = &h.state().state;
+    let (sketch, scene) = (
+        st.builder.as_ref().expect("drawing").sketch().clone(),
+        st.session.scene().clone(),
+    );
+    let mut steps = 0;
+    while h
+        .state()
+        .state
+        .builder
+        .as_ref()
+        .is_some_and(|b| b.can_undo())
+    {
+        click_control(h, ControlKind::History, "Undo");
+        steps += 1;
+        assert!(steps < 100, "undo ends");
+    }
+    let b = h.state().state.builder.as_ref().expect("drawing");
+    assert!(b.sketch().points.is_empty() && b.sketch().links.is_empty());
+    for _ in 0..steps {
+        click_control(h, ControlKind::History, "Redo");
+    }
+    let st = &h.state().state;
+    assert_eq!(st.builder.as_ref().expect("drawing").sketch(), &sketch);
+    assert_eq!(st.session.scene(), &scene);
+}
+
+/// Draws the four-bar of the tests: pivots A and B, the crank A-C, the coupler C-D
+/// and the rocker D-B.
+fn draw_four_bar(h: &mut Harness<'static, LinkageApp>) {
+    let h = &mut *h;
+    start_drawing(h);
+    tool(h, "Pivot");
+    click_mm(h, 0.0, 0.0);
+    click_mm(h, 300.0, 0.0);
+    tool(h, "Link");
+    click_mm(h, 0.0, 0.0);
+    click_mm(h, 0.0, 50.0);
+    click_mm(h, 0.0, 50.0);
+    click_mm(h, 200.0, 200.0);
+    click_mm(h, 200.0, 200.0);
+    click_mm(h, 300.0, 0.0);
+    let problem = h
+        .state()
+        .state
+        .builder
+        .as_ref()
+        .and_then(|b| b.problem.clone());
+    assert_eq!(
+        problem.map(|p| p.to_string()).as_deref(),
+        Some("1 degree of freedom: pick the input link (Driver)")
+    );
+    tool(h, "Driver");
+    click_mm(h, 0.0, 25.0);
+}
+
+#[test]
+fn a_four_bar_drawn_by_pointer_reports_as_its_scene_file() {
+    let mut h = harness();
+    draw_four_bar(&mut h);
+    // The same four-bar by hand: link coordinates, lengths worked out, the crank
+    // upright at the start, the branch named.
+    let rocker = (100.0f64 * 100.0 + 200.0 * 200.0).sqrt();
+    let coupler = (200.0f64 * 200.0 + 150.0 * 150.0).sqrt();
+    let by_hand = format!(
+        r#"Scene(
+            name: "four-bar by hand", models: Kinematics, length_unit: Millimetre,
+            links: [
+                (name: "ground", ground: true, points: {{"A": (0.0, 0.0), "D": (300.0, 0.0)}}),
+                (name: "crank", points: {{"A": (0.0, 0.0), "B": (50.0, 0.0)}}),
+                (name: "coupler", points: {{"B": (0.0, 0.0), "C": ({coupler}, 0.0)}}),
+                (name: "rocker", points: {{"D": (0.0, 0.0), "C": ({rocker}, 0.0)}}),
+            ],
+            driver: (link: "crank", speed: Rpm(60.0), start: 90.0),
+            branches: {{"C": Left("B", "D")}},
+            output: Some("rocker"),
+        )"#
+    );
+    assert_reports_as(&h, &by_hand);
+    assert_undo_redo_exact(&mut h);
+    // Done: back to the viewer over the drawn mechanism, unsaved.
+    tool(&mut h, "Done");
+    let st = &h.state().state;
+    assert!(st.builder.is_none());
+    assert!(st.session.is_dirty(), "a drawing is unsaved work");
+}
+
+#[test]
+fn a_slider_crank_drawn_by_pointer_reports_as_its_scene_file() {
+    let mut h = harness();
+    start_drawing(&mut h);
+    tool(&mut h, "Pivot");
+    click_mm(&mut h, 0.0, 0.0);
+    tool(&mut h, "Link");
+    click_mm(&mut h, 0.0, 0.0);
+    click_mm(&mut h, 0.0, 50.0);
+    click_mm(&mut h, 0.0, 50.0);
+    click_mm(&mut h, 200.0, -30.0);
+    tool(&mut h, "Slider");
+    click_mm(&mut h, 200.0, -30.0);
+    tool(&mut h, "Driver");
+    click_mm(&mut h, 0.0, 25.0);
+    let rod = (200.0f64 * 200.0 + 80.0 * 80.0).sqrt();
+    let by_hand = format!(
+        r#"Scene(
+            name: "slider-crank by hand", models: Kinematics, length_unit: Millimetre,
+            links: [
+                (name: "ground", ground: true, points: {{"A": (0.0, 0.0), "G": (0.0, -30.0)}}),
+                (name: "crank", points: {{"A": (0.0, 0.0), "B": (50.0, 0.0)}}),
+                (name: "rod", points: {{"B": (0.0, 0.0), "C": ({rod}, 0.0)}}),
+                (name: "slider", points: {{"C": (0.0, 0.0)}}),
+            ],
+            sliders: [(slider: "slider", point: "C", guide: "ground", through: "G", angle: 0.0)],
+            driver: (link: "crank", speed: Rpm(60.0), start: 90.0),
+            branches: {{"C": Along}},
+            output: Some("slider"),
+        )"#
+    );
+    // The hand-written scene is the drawing: C starts at (200, -30) mm.
+    let hand = SceneFile::parse(&by_hand).expect("parses");
+    let mut k = Kinematics::new(Mechanism::from_scene(&hand).expect("valid")).expect("solves");
+    let c = k.mechanism().point_index("C").expect("C");
+    let at = k.solve(90f64.to_radians()).expect("assembles").points[c].position;
+    assert!(
+        (at.x - 0.2).abs() < 1e-12 && (at.y + 0.03).abs() < 1e-12,
+        "{at:?}"
+    );
+    assert_reports_as(&h, &by_hand);
+    assert_undo_redo_exact(&mut h);
+}
+
+/// What the user sees with the four-bar drawn: the tools, the count, the drawing on
+/// its grid, and the analyses of the drawn mechanism.
+#[test]
+fn drawing_snapshot() {
+    let mut h = common::app_harness();
+    h.run();
+    h.run();
+    draw_four_bar(&mut h);
+    h.run();
+    h.snapshot("drawn_four_bar");
+}
