@@ -110,6 +110,8 @@ pub struct AppState {
     pub construction: ui::construction::ConstructionView,
     /// A scene waiting to replace one with unsaved edits, until the user says so.
     pub pending_open: Option<Box<Session>>,
+    /// A new drawing waiting, likewise.
+    pub pending_drawing: bool,
     /// Whether dragging in the view moves points (else it pans).
     pub edit_points: bool,
     /// The point being dragged, by name.
@@ -143,6 +145,7 @@ impl AppState {
             polygons_wide: false,
             construction: Default::default(),
             pending_open: None,
+            pending_drawing: false,
             edit_points: false,
             dragged_point: None,
             turning: None,

@@ -38,6 +38,20 @@ struct Published<'a> {
     pose_finite: bool,
     /// Whether the GPU renderer of the mechanism view started.
     renderer: bool,
+    /// The view's camera: the world point at the view's centre (m) and points per
+    /// metre, so that a test can click at a world place.
+    camera: [f64; 3],
+    /// The drawing, while the drawing tools are out.
+    drawing: Option<PublishedDrawing>,
+}
+
+/// A drawing as the test hook shows it.
+#[derive(serde::Serialize)]
+struct PublishedDrawing {
+    points: usize,
+    links: usize,
+    /// Whether it is a mechanism (then it is the open scene).
+    complete: bool,
 }
 
 /// A joint as the test hook shows it.
@@ -91,6 +105,16 @@ pub fn publish_controls(st: &crate::app::AppState, frame: u64, renderer: bool) {
             p.position.x.is_finite() && p.position.y.is_finite() && p.velocity.x.is_finite()
         }),
         renderer,
+        camera: [
+            st.camera.center_m[0],
+            st.camera.center_m[1],
+            st.camera.points_per_m,
+        ],
+        drawing: st.builder.as_ref().map(|b| PublishedDrawing {
+            points: b.sketch().points.len(),
+            links: b.sketch().links.len(),
+            complete: b.problem.is_none(),
+        }),
     };
     let json = serde_json::to_string(&published).unwrap_or_default();
     CONTROLS.with(|c| *c.borrow_mut() = json);

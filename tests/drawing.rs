@@ -242,6 +242,27 @@ fn a_slider_crank_drawn_by_pointer_reports_as_its_scene_file() {
     assert_undo_redo_exact(&mut h);
 }
 
+/// A new drawing over a scene with unsaved edits asks first; keeping them keeps the
+/// scene, dropping them starts the drawing.
+#[test]
+fn a_drawing_over_unsaved_edits_asks_first() {
+    let mut h = harness();
+    let length = h.state().state.session.lengths()[0].original;
+    h.state_mut().state.session.set_length(0, 1.01 * length);
+    assert!(h.state().state.session.is_dirty());
+    click_control(&mut h, ControlKind::FileButton, "New…");
+    h.run();
+    click_control(&mut h, ControlKind::TemplateItem, "Empty: draw your own");
+    assert!(h.state().state.builder.is_none(), "not before the answer");
+    click_control(&mut h, ControlKind::FileButton, "Keep editing");
+    assert!(h.state().state.builder.is_none() && h.state().state.session.is_dirty());
+    click_control(&mut h, ControlKind::FileButton, "New…");
+    h.run();
+    click_control(&mut h, ControlKind::TemplateItem, "Empty: draw your own");
+    click_control(&mut h, ControlKind::FileButton, "Drop the edits and open");
+    assert!(h.state().state.builder.is_some(), "the drawing started");
+}
+
 /// What the user sees with the four-bar drawn: the tools, the count, the drawing on
 /// its grid, and the analyses of the drawn mechanism.
 #[test]

@@ -12,16 +12,20 @@ use crate::session::{SceneSource, Session};
 /// The file name a drawing is saved and shared under until the user names one.
 const DRAWING_FILE: &str = "my_mechanism.ron";
 
-/// Starts an empty drawing (the current scene stays open until the drawing is a
-/// mechanism, then the drawing replaces it: so not over unsaved edits).
+/// Starts an empty drawing. The current scene stays open until the drawing is a
+/// mechanism, then the drawing replaces it: over unsaved edits the user is asked
+/// first (`ui::scene_picker`'s question).
 pub fn start(st: &mut AppState) {
     if st.session.is_dirty() {
-        st.status = Some(
-            "the scene has unsaved edits: save it or reset its edits before drawing a new one"
-                .into(),
-        );
+        st.pending_drawing = true;
         return;
     }
+    start_now(st);
+}
+
+/// Starts an empty drawing whatever the current scene holds.
+pub fn start_now(st: &mut AppState) {
+    st.pending_drawing = false;
     st.builder = Some(Builder::new(Sketch::new("My mechanism")));
     st.playing = false;
     st.edit_points = false;

@@ -174,13 +174,12 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
 
 /// Asks before a scene with unsaved edits is replaced by the one waiting.
 fn discard_question(ctx: &egui::Context, st: &mut AppState) {
-    let Some(waiting) = st.pending_open.as_ref() else {
-        return;
+    let next = match (&st.pending_open, st.pending_drawing) {
+        (Some(waiting), _) => format!("Open \"{}\"", waiting.scene().name),
+        (None, true) => "Start a new drawing".to_owned(),
+        (None, false) => return,
     };
-    let (current, next) = (
-        st.session.scene().name.clone(),
-        waiting.scene().name.clone(),
-    );
+    let current = st.session.scene().name.clone();
     let mut answer = None;
     egui::Window::new("Unsaved edits")
         .collapsible(false)
@@ -188,14 +187,15 @@ fn discard_question(ctx: &egui::Context, st: &mut AppState) {
         .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
         .show(ctx, |ui| {
             ui.label(format!(
-                "\"{current}\" has edits that are not saved. Open \"{next}\" and drop them?"
+                "\"{current}\" has edits that are not saved. {next} and drop them?"
             ));
             ui.horizontal(|ui| {
-                if ui.button("Drop the edits and open").clicked() {
-                    answer = Some(true);
-                }
-                if ui.button("Keep editing").clicked() {
-                    answer = Some(false);
+                for (label, drop) in [("Drop the edits and open", true), ("Keep editing", false)] {
+                    let r = ui.button(label);
+                    st.controls.note(ui, ControlKind::FileButton, label, &r);
+                    if r.clicked() {
+                        answer = Some(drop);
+                    }
                 }
             });
         });
@@ -203,9 +203,14 @@ fn discard_question(ctx: &egui::Context, st: &mut AppState) {
         Some(true) => {
             if let Some(s) = st.pending_open.take() {
                 st.open_now(*s);
+            } else if std::mem::take(&mut st.pending_drawing) {
+                crate::ui::drawing::start_now(st);
             }
         }
-        Some(false) => st.pending_open = None,
+        Some(false) => {
+            st.pending_open = None;
+            st.pending_drawing = false;
+        }
         None => {}
     }
 }
