@@ -188,6 +188,8 @@ pub struct LinkageApp {
     exit_after_frames: Option<u64>,
     #[cfg(target_arch = "wasm32")]
     url: crate::web::UrlSync,
+    #[cfg(target_arch = "wasm32")]
+    drawing_store: crate::web::DrawingStore,
 }
 
 impl LinkageApp {
@@ -208,6 +210,12 @@ impl LinkageApp {
         let mut state = AppState::new(session);
         state.status = why_not;
         state.playing = start.play;
+        #[cfg(target_arch = "wasm32")]
+        match crate::web::stored_drawing() {
+            Some(Ok(sketch)) => ui::drawing::resume(&mut state, sketch),
+            Some(Err(why)) => state.status = Some(why),
+            None => {}
+        }
         Self {
             state,
             shapes: SharedShapes::default(),
@@ -216,6 +224,8 @@ impl LinkageApp {
             exit_after_frames: start.exit_after_frames,
             #[cfg(target_arch = "wasm32")]
             url: crate::web::UrlSync::default(),
+            #[cfg(target_arch = "wasm32")]
+            drawing_store: crate::web::DrawingStore::default(),
         }
     }
 
@@ -422,6 +432,7 @@ impl eframe::App for LinkageApp {
             if let Some(why) = self.url.update(&self.state.session) {
                 self.state.status = Some(why);
             }
+            self.drawing_store.update(self.state.builder.as_ref());
             crate::web::publish_controls(
                 &self.state,
                 self.frames_drawn + 1,

@@ -289,3 +289,52 @@ pub fn pick_file(slot: &Upload, ctx: &eframe::egui::Context) -> Result<(), Strin
     input.click();
     Ok(())
 }
+
+/// The local-storage key of the drawing being made.
+const DRAWING_KEY: &str = "linkage-lab.drawing";
+
+fn local_storage() -> Option<web_sys::Storage> {
+    web_sys::window()?.local_storage().ok().flatten()
+}
+
+/// Keeps the drawing in the browser's local storage while the drawing tools are
+/// out, with the page's address, so that a reload of that address goes on with an
+/// unfinished drawing; forgets it when the tools are put away.
+#[derive(Default)]
+pub struct DrawingStore {
+    /// The drawing's revision and the address last stored.
+    stored: Option<(u64, String)>,
+}
+
+impl DrawingStore {
+    /// Stores the drawing if it or the address changed, or forgets it.
+    pub fn update(&mut self, builder: Option<&crate::builder::Builder>) {
+        let Some(storage) = local_storage() else {
+            return;
+        };
+        match builder {
+            Some(b) => {
+                let now = (b.revision(), fragment());
+                if self.stored.as_ref() != Some(&now) {
+                    let text = crate::builder::stored::to_text(b.sketch());
+                    // A full or refused store only loses the reload's copy.
+                    let _ = storage.set_item(DRAWING_KEY, &format!("{}\n{text}", now.1));
+                    self.stored = Some(now);
+                }
+            }
+            None if self.stored.is_some() => {
+                let _ = storage.remove_item(DRAWING_KEY);
+                self.stored = None;
+            }
+            None => {}
+        }
+    }
+}
+
+/// The drawing an earlier load of this same address kept, or why it cannot be read;
+/// `None` when there is none for this address (a shared link opens what it names).
+pub fn stored_drawing() -> Option<Result<linkage::sketch::Sketch, String>> {
+    let text = local_storage()?.get_item(DRAWING_KEY).ok().flatten()?;
+    let (address, drawing) = text.split_once('\n')?;
+    (address == fragment()).then(|| crate::builder::stored::from_text(drawing))
+}

@@ -6,6 +6,7 @@
 //! polygons follow the drawing as it grows.
 
 pub mod edit;
+pub mod stored;
 
 use linkage::SceneFile;
 use linkage::sketch::{Sketch, SketchProblem};
@@ -97,6 +98,8 @@ pub struct Builder {
     pub problem: Option<SketchProblem>,
     /// Fit the view to the drawing at the next frame.
     pub fit_pending: bool,
+    /// Counts the drawing's changes (to store it only when it changed).
+    revision: u64,
 }
 
 impl Builder {
@@ -113,7 +116,13 @@ impl Builder {
             refusal: None,
             problem: Some(SketchProblem::NoLinks),
             fit_pending: true,
+            revision: 0,
         }
+    }
+
+    /// How many times the drawing changed (edits, undo and redo).
+    pub fn revision(&self) -> u64 {
+        self.revision
     }
 
     /// The drawing.
@@ -151,6 +160,7 @@ impl Builder {
                     matches!(edit, SketchEdit::MovePoint { .. }) && self.dragged.is_some();
                 self.sketch = next;
                 self.refusal = None;
+                self.revision += 1;
                 true
             }
             Err(why) => {
@@ -199,6 +209,7 @@ impl Builder {
         };
         to.push(std::mem::replace(&mut self.sketch, sketch));
         self.refusal = None;
+        self.revision += 1;
         true
     }
 }

@@ -25,8 +25,15 @@ pub fn start(st: &mut AppState) {
 
 /// Starts an empty drawing whatever the current scene holds.
 pub fn start_now(st: &mut AppState) {
+    resume(st, Sketch::new("My mechanism"));
+}
+
+/// Goes on with `sketch` (a drawing kept over a reload), opening it as the scene
+/// when it is a mechanism.
+pub fn resume(st: &mut AppState, sketch: Sketch) {
     st.pending_drawing = false;
-    st.builder = Some(Builder::new(Sketch::new("My mechanism")));
+    st.builder = Some(Builder::new(sketch));
+    sync(st);
     st.playing = false;
     st.edit_points = false;
 }

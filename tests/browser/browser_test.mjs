@@ -353,6 +353,30 @@ if (menu) {
   }
 }
 
+// An unfinished drawing (two pivots, no links) survives a reload: the page keeps it
+// in local storage with its address.
+let unfinishedPoints = 0;
+const again = await entry(page, 'FileButton', 'New…');
+if (again) {
+  await page.mouse.click(...middle(again));
+  const empty = await entry(page, 'TemplateItem', 'Empty: draw your own');
+  if (empty) await page.mouse.click(...middle(empty));
+  for (let i = 0; i < 30 && !(await appState(page)).drawing; i++) await page.waitForTimeout(100);
+  if (!(await appState(page)).drawing) {
+    const dropping = await entry(page, 'FileButton', 'Drop the edits and open');
+    if (dropping) await page.mouse.click(...middle(dropping));
+    for (let i = 0; i < 30 && !(await appState(page)).drawing; i++) await page.waitForTimeout(100);
+  }
+  await useTool('Pivot');
+  for (const xy of [[0, 0], [300, 0]]) await clickMm(xy);
+  const before = (await appState(page)).drawing?.points;
+  if (before !== 2) fail(`two pivots placed, the drawing has ${before} points`);
+  await page.waitForTimeout(500);
+  await page.reload({ waitUntil: 'load' });
+  unfinishedPoints = (await afterReload(page)).drawing?.points ?? 0;
+  if (unfinishedPoints !== 2) fail(`after a reload the unfinished drawing has ${unfinishedPoints} points, not 2`);
+}
+
 if (errors.length) fail(`console errors:\n  ${errors.join('\n  ')}`);
 console.log(JSON.stringify({
   url, build, first_frame_ms: firstFrameMs, canvas_drawn_fraction: Number(coverage.toFixed(3)),
@@ -362,6 +386,7 @@ console.log(JSON.stringify({
   pixels_changed_by_upload: reopened, link_chars: page.url().length,
   built_four_bar_joints: built.joints?.length ?? 0,
   drawn_four_bar_joints: drawn.joints?.length ?? 0,
+  unfinished_drawing_points_after_reload: unfinishedPoints,
   console_errors: errors.length,
 }));
 await browser.close();
