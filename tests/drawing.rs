@@ -5,7 +5,9 @@
 //! end, exactly.
 
 use eframe::egui;
+use egui::accesskit::Role;
 use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable as _;
 use linkage::analysis::{Report, report};
 use linkage::{Kinematics, Mechanism, SceneFile};
 use linkage_lab::ui::control_map::ControlKind;
@@ -240,6 +242,67 @@ fn a_slider_crank_drawn_by_pointer_reports_as_its_scene_file() {
     );
     assert_reports_as(&h, &by_hand);
     assert_undo_redo_exact(&mut h);
+}
+
+/// A link renamed in the side panel (click its name, type, Enter) and picked as the
+/// output: the scene and its report use the new name; a taken name is refused.
+#[test]
+fn a_drawn_link_is_renamed_and_made_the_output() {
+    let mut h = harness();
+    draw_four_bar(&mut h);
+    let rename = |h: &mut Harness<'static, LinkageApp>, from: &str, to: &str| {
+        h.get_by_role_and_label(Role::Button, from).click();
+        h.run();
+        h.run();
+        h.event(egui::Event::Key {
+            key: egui::Key::A,
+            physical_key: None,
+            pressed: true,
+            repeat: false,
+            modifiers: egui::Modifiers::COMMAND,
+        });
+        h.event(egui::Event::Text(to.into()));
+        h.event(egui::Event::Key {
+            key: egui::Key::Enter,
+            physical_key: None,
+            pressed: true,
+            repeat: false,
+            modifiers: egui::Modifiers::default(),
+        });
+        h.run();
+        h.run();
+    };
+    rename(&mut h, "link 3", "rocker");
+    let scene = h.state().state.session.scene().clone();
+    assert!(
+        scene.links.iter().any(|l| l.name == "rocker"),
+        "{:?}",
+        scene.links
+    );
+    rename(&mut h, "link 1", "rocker");
+    let b = h.state().state.builder.as_ref().expect("drawing");
+    assert_eq!(
+        b.refusal.as_ref().map(|r| r.to_string()).as_deref(),
+        Some("the name rocker is taken")
+    );
+    assert_eq!(b.sketch().links[0].name, "link 1");
+    // The rocker's row is the third.
+    h.get_all_by_label("output")
+        .nth(2)
+        .expect("three links")
+        .click();
+    h.run();
+    h.run();
+    assert_eq!(
+        h.state().state.session.scene().output.as_deref(),
+        Some("rocker")
+    );
+    let report = report_of(h.state().state.session.scene());
+    assert!(
+        report.swings_rad.contains_key("rocker"),
+        "{:?}",
+        report.swings_rad
+    );
 }
 
 /// A new drawing over a scene with unsaved edits asks first; keeping them keeps the

@@ -13,8 +13,17 @@ pub enum End {
     New(Vec2),
 }
 
+/// What a name belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Named {
+    /// A point, by index.
+    Point(usize),
+    /// A link, by index.
+    Link(usize),
+}
+
 /// One change to a drawing.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum SketchEdit {
     /// A new ground pivot at a world place.
     AddPivot(Vec2),
@@ -54,10 +63,16 @@ pub enum SketchEdit {
     DeletePoint(usize),
     /// A link, with the points it alone carried.
     DeleteLink(usize),
+    /// A new name for a point or a link.
+    Rename(Named, String),
+    /// The input speed, rpm (positive counter-clockwise).
+    SetSpeedRpm(f64),
+    /// The main output for the time ratio (`None`: the last link).
+    SetOutput(Option<usize>),
 }
 
 /// Why an edit was not made.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Refusal {
     /// Both ends of a link at one point.
     SameEnds,
@@ -69,6 +84,10 @@ pub enum Refusal {
     DriverNotGrounded(String),
     /// A place that is not a finite number.
     NotFinite,
+    /// A name that is empty or already another's.
+    Name(String),
+    /// A speed that is zero or not finite.
+    Speed(f64),
 }
 
 impl std::fmt::Display for Refusal {
@@ -82,6 +101,12 @@ impl std::fmt::Display for Refusal {
                 "{link} has no ground pivot: the input link must turn about one"
             ),
             Self::NotFinite => f.write_str("that place is not a finite number"),
+            Self::Name(name) if name.trim().is_empty() => f.write_str("a name cannot be empty"),
+            Self::Name(name) => write!(f, "the name {name} is taken"),
+            Self::Speed(rpm) => write!(
+                f,
+                "{rpm} rpm cannot drive: the speed must be a finite number other than 0"
+            ),
         }
     }
 }
@@ -126,6 +151,14 @@ pub fn apply(sketch: &Sketch, edit: SketchEdit) -> Result<Sketch, Refusal> {
         }
         SketchEdit::DeletePoint(point) => delete_point(&mut next, point),
         SketchEdit::DeleteLink(link) => delete_link(&mut next, link),
+        SketchEdit::Rename(what, name) => rename(&mut next, what, name)?,
+        SketchEdit::SetSpeedRpm(rpm) => {
+            if !(rpm.is_finite() && rpm != 0.0) {
+                return Err(Refusal::Speed(rpm));
+            }
+            next.speed = linkage::scene::Speed::Rpm(rpm);
+        }
+        SketchEdit::SetOutput(link) => next.output = link,
     }
     Ok(next)
 }
@@ -195,6 +228,35 @@ fn add_link(sketch: &mut Sketch, a: End, b: End) -> Result<(), Refusal> {
         name,
         points: vec![p, q],
     });
+    Ok(())
+}
+
+/// Renames a point or a link; names are unique among points and among links (a
+/// slider's block and guide point take theirs from its pin: "slider C", "C guide").
+fn rename(sketch: &mut Sketch, what: Named, name: String) -> Result<(), Refusal> {
+    let name = name.trim().to_owned();
+    let taken = match what {
+        Named::Point(p) => sketch
+            .points
+            .iter()
+            .enumerate()
+            .any(|(i, q)| i != p && q.name == name),
+        Named::Link(l) => {
+            name == "ground"
+                || sketch
+                    .links
+                    .iter()
+                    .enumerate()
+                    .any(|(i, k)| i != l && k.name == name)
+        }
+    };
+    if name.is_empty() || taken || name.contains('\n') {
+        return Err(Refusal::Name(name));
+    }
+    match what {
+        Named::Point(p) => sketch.points[p].name = name,
+        Named::Link(l) => sketch.links[l].name = name,
+    }
     Ok(())
 }
 

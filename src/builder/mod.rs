@@ -63,7 +63,9 @@ impl Tool {
             }
             Tool::Slider => "click a point to put a slider block there on a horizontal guide",
             Tool::Driver => "click the link that turns about a ground pivot: the input",
-            Tool::Move => "drag a point; it snaps to the 10 mm grid and to other points",
+            Tool::Move => {
+                "drag a point; it snaps to the 10 mm grid and into line with other points"
+            }
             Tool::Delete => "click a point or a link to delete it",
         }
     }
@@ -100,6 +102,8 @@ pub struct Builder {
     pub fit_pending: bool,
     /// Counts the drawing's changes (to store it only when it changed).
     revision: u64,
+    /// A name being typed in the side panel, and whose.
+    pub naming: Option<(edit::Named, String)>,
 }
 
 impl Builder {
@@ -117,6 +121,7 @@ impl Builder {
             problem: Some(SketchProblem::NoLinks),
             fit_pending: true,
             revision: 0,
+            naming: None,
         }
     }
 
@@ -149,6 +154,7 @@ impl Builder {
     /// drawing and says why ([`Builder::refusal`]). Edits during a gesture (a drag)
     /// are one undo step.
     pub fn apply(&mut self, edit: SketchEdit) -> bool {
+        let is_move = matches!(edit, SketchEdit::MovePoint { .. });
         match edit::apply(&self.sketch, edit) {
             Ok(next) if next == self.sketch => false,
             Ok(next) => {
@@ -156,8 +162,7 @@ impl Builder {
                     self.undo.push(self.sketch.clone());
                     self.redo.clear();
                 }
-                self.gesture_open =
-                    matches!(edit, SketchEdit::MovePoint { .. }) && self.dragged.is_some();
+                self.gesture_open = is_move && self.dragged.is_some();
                 self.sketch = next;
                 self.refusal = None;
                 self.revision += 1;

@@ -18,6 +18,8 @@ use crate::ui::viewport::navigate;
 
 /// How near a point (points) a click must be to take it.
 const GRAB_PT: f32 = 10.0;
+/// How near another point's x or y (points) a dragged point snaps into line with it.
+const ALIGN_PT: f32 = 6.0;
 /// Grid lines per metre (10 mm apart).
 const GRID_PER_M: f64 = 100.0;
 /// What an empty drawing shows: 0.5 m by 0.4 m about the origin's right.
@@ -152,7 +154,7 @@ fn drag_point(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut App
         return false;
     };
     if let Some(at) = response.interact_pointer_pos() {
-        let to = snapped(&cam, at, rect);
+        let to = aligned(b.sketch(), point, snapped(&cam, at, rect), &cam, at, rect);
         if b.sketch().points[point].at != to {
             drawing::edit(st, SketchEdit::MovePoint { point, to });
         }
@@ -168,6 +170,33 @@ fn snapped(cam: &crate::render::view::Camera, at: Pos2, rect: Rect) -> Vec2 {
         (w[0] * GRID_PER_M).round() / GRID_PER_M,
         (w[1] * GRID_PER_M).round() / GRID_PER_M,
     )
+}
+
+/// `to` moved into line with any other point whose x or y is within [`ALIGN_PT`] of
+/// the pointer: a drag lines points up horizontally and vertically.
+fn aligned(
+    sketch: &Sketch,
+    moving: usize,
+    mut to: Vec2,
+    cam: &crate::render::view::Camera,
+    at: Pos2,
+    rect: Rect,
+) -> Vec2 {
+    for (_, p) in sketch
+        .points
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| *i != moving)
+    {
+        let s = screen(cam, p.at, rect);
+        if (s.x - at.x).abs() <= ALIGN_PT {
+            to.x = p.at.x;
+        }
+        if (s.y - at.y).abs() <= ALIGN_PT {
+            to.y = p.at.y;
+        }
+    }
+    to
 }
 
 fn screen(cam: &crate::render::view::Camera, p: Vec2, rect: Rect) -> Pos2 {

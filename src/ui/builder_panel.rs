@@ -1,14 +1,16 @@
 //! The side panel while drawing: the tools, what the drawing still lacks (with its
-//! Grübler count), every point's coordinates to type, and Done.
+//! Grübler count), Done, every point's coordinates to type, names to change, the
+//! output link and the input speed.
 
 use eframe::egui;
 use linkage::Vec2;
 
 use crate::app::AppState;
-use crate::builder::Tool;
-use crate::builder::edit::SketchEdit;
+use crate::builder::edit::{Named, SketchEdit};
+use crate::builder::{Builder, Tool};
 use crate::ui::control_map::ControlKind;
 use crate::ui::drawing;
+use linkage::scene::Speed;
 
 /// Draws the panel; its edits go to the drawing.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
@@ -34,6 +36,8 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     let action = actions(ui, st);
     ui.separator();
     points(ui, st);
+    ui.separator();
+    links(ui, st);
     if let (Some(tool), Some(b)) = (chosen, st.builder.as_mut()) {
         b.tool = tool;
         b.pending = None;
@@ -80,16 +84,18 @@ fn actions(ui: &mut egui::Ui, st: &mut AppState) -> bool {
 
 /// Every point with its coordinates (mm) to type, and whether it is a ground pivot.
 fn points(ui: &mut egui::Ui, st: &mut AppState) {
-    let Some(b) = st.builder.as_ref() else {
+    let Some(b) = st.builder.as_mut() else {
         return;
     };
     let unit = b.sketch().length_unit.to_metres();
     let mut edits = Vec::new();
+    ui.strong("Points");
     egui::Grid::new("drawing points")
         .num_columns(4)
         .show(ui, |ui| {
-            for (p, point) in b.sketch().points.iter().enumerate() {
-                ui.label(&point.name);
+            for p in 0..b.sketch().points.len() {
+                name_cell(ui, b, Named::Point(p), &mut edits);
+                let point = &b.sketch().points[p];
                 let mut xy = [point.at.x / unit, point.at.y / unit];
                 let mut changed = false;
                 for v in &mut xy {
@@ -110,5 +116,84 @@ fn points(ui: &mut egui::Ui, st: &mut AppState) {
         });
     for e in edits {
         drawing::edit(st, e);
+    }
+}
+
+/// Every link's name, which one is the output for the time ratio, and the input
+/// speed.
+fn links(ui: &mut egui::Ui, st: &mut AppState) {
+    let Some(b) = st.builder.as_mut() else {
+        return;
+    };
+    let mut edits = Vec::new();
+    ui.strong("Links");
+    egui::Grid::new("drawing links")
+        .num_columns(3)
+        .show(ui, |ui| {
+            let output = b.sketch().output;
+            for l in 0..b.sketch().links.len() {
+                name_cell(ui, b, Named::Link(l), &mut edits);
+                let role = if b.sketch().driver == Some(l) {
+                    "input"
+                } else {
+                    ""
+                };
+                ui.label(role);
+                if ui.radio(output == Some(l), "output").clicked() {
+                    edits.push(SketchEdit::SetOutput(Some(l)));
+                }
+                ui.end_row();
+            }
+        });
+    let Speed::Rpm(mut rpm) = b.sketch().speed else {
+        return;
+    };
+    ui.horizontal(|ui| {
+        ui.label("input speed");
+        if ui
+            .add(egui::DragValue::new(&mut rpm).speed(1.0).suffix(" rpm"))
+            .changed()
+        {
+            edits.push(SketchEdit::SetSpeedRpm(rpm));
+        }
+    });
+    for e in edits {
+        drawing::edit(st, e);
+    }
+}
+
+/// A point's or link's name: a button that, clicked, becomes a text field; Enter or
+/// leaving the field renames.
+fn name_cell(ui: &mut egui::Ui, b: &mut Builder, what: Named, edits: &mut Vec<SketchEdit>) {
+    let current = match what {
+        Named::Point(p) => b.sketch().points[p].name.clone(),
+        Named::Link(l) => b.sketch().links[l].name.clone(),
+    };
+    match &mut b.naming {
+        Some((named, text)) if *named == what => {
+            let r = ui.add(egui::TextEdit::singleline(text).desired_width(70.0));
+            let label = format!("new name of {current}");
+            r.widget_info(|| {
+                egui::WidgetInfo::labeled(egui::accesskit::Role::TextInput, true, &label)
+            });
+            if !r.has_focus() && !r.lost_focus() {
+                r.request_focus();
+            }
+            if r.lost_focus() {
+                if *text != current {
+                    edits.push(SketchEdit::Rename(what, text.clone()));
+                }
+                b.naming = None;
+            }
+        }
+        _ => {
+            if ui
+                .button(&current)
+                .on_hover_text("click to rename")
+                .clicked()
+            {
+                b.naming = Some((what, current));
+            }
+        }
     }
 }

@@ -58,8 +58,8 @@ if (coverage < 0.2) fail(`canvas looks blank: ${(coverage * 100).toFixed(1)} % d
 // coloured links, vectors and traces inside the view, where egui draws grey text only.
 const loadedState = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
 if (!loadedState.renderer) fail(`the ${build} build's mechanism renderer did not start`);
-const drawn = colouredIn(before, loadedState.controls.view);
-if (drawn < 500) fail(`the mechanism view shows ${drawn} coloured pixels: the GPU draw is missing`);
+const gpuPixels = colouredIn(before, loadedState.controls.view);
+if (gpuPixels < 500) fail(`the mechanism view shows ${gpuPixels} coloured pixels: the GPU draw is missing`);
 
 // Drag the crank-angle slider (found through the app's control map) in small steps.
 const crank = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()))
