@@ -96,8 +96,8 @@ fn assert_reports_as(h: &Harness<'static, LinkageApp>, by_hand: &str) {
     let hand = SceneFile::parse(by_hand).expect("the hand-written scene parses");
     let (drawn, hand) = (report_of(st.session.scene()), report_of(&hand));
     assert_eq!(
-        drawn.grashof.as_ref().map(|g| g.class.clone()),
-        hand.grashof.as_ref().map(|g| g.class.clone())
+        drawn.grashof.as_ref().map(|g| g.class),
+        hand.grashof.as_ref().map(|g| g.class)
     );
     let (kd, kh) = (drawn.time_ratio.expect("K"), hand.time_ratio.expect("K"));
     assert_close("K", kd, kh);

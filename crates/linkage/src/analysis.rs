@@ -240,11 +240,48 @@ pub struct TransmissionAngle {
     pub group: String,
 }
 
+/// The Grashof class of a four-bar loop, by which link is shortest (JSON: the words
+/// [`std::fmt::Display`] shows).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum GrashofClass {
+    /// Grashof, the input shortest: it turns fully, the output rocks.
+    #[serde(rename = "crank-rocker")]
+    CrankRocker,
+    /// Grashof, the ground shortest: both side links turn fully.
+    #[serde(rename = "double-crank (drag link)")]
+    DoubleCrank,
+    /// Grashof, the coupler shortest: both side links rock.
+    #[serde(rename = "double-rocker (Grashof, coupler shortest)")]
+    DoubleRocker,
+    /// Grashof, the output shortest: the output turns fully, the input rocks.
+    #[serde(rename = "rocker-crank")]
+    RockerCrank,
+    /// s + l = p + q: the chain can fold flat and change its assembly mode.
+    #[serde(rename = "change-point")]
+    ChangePoint,
+    /// Not Grashof: no link turns fully.
+    #[serde(rename = "triple-rocker (non-Grashof)")]
+    TripleRocker,
+}
+
+impl std::fmt::Display for GrashofClass {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::CrankRocker => "crank-rocker",
+            Self::DoubleCrank => "double-crank (drag link)",
+            Self::DoubleRocker => "double-rocker (Grashof, coupler shortest)",
+            Self::RockerCrank => "rocker-crank",
+            Self::ChangePoint => "change-point",
+            Self::TripleRocker => "triple-rocker (non-Grashof)",
+        })
+    }
+}
+
 /// Grashof classification of a four-bar loop.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Grashof {
-    /// crank-rocker, double-crank, rocker-crank, double-rocker, change-point, triple-rocker.
-    pub class: String,
+    /// The class.
+    pub class: GrashofClass,
     /// s + l ≤ p + q.
     pub grashof: bool,
     /// s + l = p + q (within 1e-9 relative).
@@ -543,19 +580,19 @@ pub fn grashof(k: &Kinematics) -> Option<Grashof> {
         .min_by(|&x, &y| lengths[x].total_cmp(&lengths[y]))
         .unwrap_or(0);
     let class = if change_point {
-        "change-point"
+        GrashofClass::ChangePoint
     } else if sl > pq {
-        "triple-rocker (non-Grashof)"
+        GrashofClass::TripleRocker
     } else {
         match shortest {
-            0 => "double-crank (drag link)",
-            1 => "crank-rocker",
-            2 => "double-rocker (Grashof, coupler shortest)",
-            _ => "rocker-crank",
+            0 => GrashofClass::DoubleCrank,
+            1 => GrashofClass::CrankRocker,
+            2 => GrashofClass::DoubleRocker,
+            _ => GrashofClass::RockerCrank,
         }
     };
     Some(Grashof {
-        class: class.into(),
+        class,
         grashof: sl <= pq || change_point,
         change_point,
         s_plus_l_m: sl,

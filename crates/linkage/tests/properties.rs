@@ -270,7 +270,10 @@ fn grashof_crank_rockers_turn_fully() {
                 let r = linkage::analysis::report(&mut k)
                     .map_err(|e| TestCaseError::fail(e.to_string()))?;
                 prop_assert!(r.full_rotation);
-                prop_assert_eq!(r.grashof.map(|g| g.class), Some("crank-rocker".to_string()));
+                prop_assert_eq!(
+                    r.grashof.map(|g| g.class),
+                    Some(linkage::analysis::GrashofClass::CrankRocker)
+                );
                 Ok(())
             },
         )

@@ -142,8 +142,8 @@ fn assert_same_motion(name: &str, original: &SceneFile, sketch: &Sketch) {
     assert_eq!(SceneFile::parse(&text).expect("reads"), scene);
     let (a, b) = (report_of(original), report_of(&scene));
     assert_eq!(
-        a.grashof.as_ref().map(|g| g.class.clone()),
-        b.grashof.as_ref().map(|g| g.class.clone()),
+        a.grashof.as_ref().map(|g| g.class),
+        b.grashof.as_ref().map(|g| g.class),
         "{name}: Grashof class"
     );
     assert_eq!(a.time_ratio.is_some(), b.time_ratio.is_some(), "{name}: K");
