@@ -239,6 +239,28 @@ const entry = async (p, kind, label) => {
 const middle = (e) => [0.5 * (e.rect[0] + e.rect[2]), 0.5 * (e.rect[1] + e.rect[3])];
 const samePlaces = (a, b) => a.length === b.length && a.every((j, k) => j.name === b[k].name
   && Math.abs(j.world[0] - b[k].world[0]) < 1e-9 && Math.abs(j.world[1] - b[k].world[1]) < 1e-9);
+const places = (st) => JSON.stringify((st.joints ?? []).map((j) => [j.name, ...j.world.map((v) => Number(v.toFixed(6)))]));
+/** A mechanism built in the page (`built`: the app's state then) survives a reload
+ * of its address (once that carries `wantUrl`), and the address opened in a new page
+ * shows the same one: every joint where it was, to 1e-9 m. */
+const keptAndShared = async (built, what, wantUrl) => {
+  let url = '';
+  for (let i = 0; i < 50 && !url.includes(wantUrl); i++) {
+    await page.waitForTimeout(100);
+    url = page.url();
+  }
+  await page.reload({ waitUntil: 'load' });
+  const kept = await afterReload(page);
+  if (kept.scene_name !== built.scene_name || !samePlaces(kept.joints ?? [], built.joints)) {
+    fail(`after a reload ${what} is not the same: ${kept.scene_name} ${places(kept)}, built ${built.scene_name} ${places(built)} (${url.slice(0, 80)})`);
+  }
+  const other = await browser.newPage({ viewport: { width: 1500, height: 950 }, deviceScaleFactor: 1 });
+  other.on('pageerror', (e) => errors.push(`pageerror (${what}'s link): ${e.message}`));
+  await other.goto(url, { waitUntil: 'load' });
+  const seen = await afterReload(other);
+  if (!samePlaces(seen.joints ?? [], built.joints)) fail(`${what}'s link opens another mechanism: ${places(seen)}, built ${places(built)}`);
+  await other.close();
+};
 let built = {};
 const newMenu = await entry(page, 'FileButton', 'New…');
 if (!newMenu) fail('no New… menu');
@@ -267,23 +289,7 @@ else {
   const moved = built.joints.find((j) => j.name === 'C');
   if (Math.hypot(moved.world[0] - c.world[0], moved.world[1] - c.world[1]) < 1e-3) fail(`dragging C did not move it: ${built.message ?? ''}`);
   if (!built.dirty) fail('the built four-bar is not marked as edited');
-  let url = '';
-  for (let i = 0; i < 50 && !url.includes('file=four_bar.ron&doc=1.'); i++) {
-    await page.waitForTimeout(100);
-    url = page.url();
-  }
-  await page.reload({ waitUntil: 'load' });
-  const kept = await afterReload(page);
-  const places = (st) => JSON.stringify((st.joints ?? []).map((j) => [j.name, ...j.world.map((v) => Number(v.toFixed(6)))]));
-  if (kept.scene_name !== 'Four-bar (template)' || !samePlaces(kept.joints, built.joints)) {
-    fail(`after a reload the built four-bar is not the same: ${kept.scene_name} ${places(kept)}, built ${built.scene_name} ${places(built)} (${url.slice(0, 80)})`);
-  }
-  const other = await browser.newPage({ viewport: { width: 1500, height: 950 }, deviceScaleFactor: 1 });
-  other.on('pageerror', (e) => errors.push(`pageerror (four-bar link): ${e.message}`));
-  await other.goto(url, { waitUntil: 'load' });
-  const seen = await afterReload(other);
-  if (!samePlaces(seen.joints ?? [], built.joints)) fail(`the four-bar link opens another mechanism: ${places(seen)}, built ${places(built)}`);
-  await other.close();
+  await keptAndShared(built, 'the built four-bar', 'file=four_bar.ron&doc=1.');
 }
 
 // A four-bar drawn from nothing: New… → Empty, then clicks with the drawing tools at
@@ -336,20 +342,7 @@ if (menu) {
     const at = (st, name) => st.joints?.find((j) => j.name === name)?.world ?? [NaN, NaN];
     const off = want.map(([n, x, y]) => Math.hypot(at(drawn, n)[0] - x, at(drawn, n)[1] - y));
     if (drawn.drawing || off.some((d) => !(d < 1e-9))) fail(`the drawn four-bar is not as drawn: ${JSON.stringify(drawn.joints)}`);
-    let url = '';
-    for (let i = 0; i < 50 && !url.includes('doc=1.'); i++) {
-      await page.waitForTimeout(100);
-      url = page.url();
-    }
-    await page.reload({ waitUntil: 'load' });
-    const kept = await afterReload(page);
-    if (!samePlaces(kept.joints ?? [], drawn.joints)) fail(`after a reload the drawn four-bar is not the same (${url.slice(0, 80)})`);
-    const other = await browser.newPage({ viewport: { width: 1500, height: 950 }, deviceScaleFactor: 1 });
-    other.on('pageerror', (e) => errors.push(`pageerror (drawn four-bar link): ${e.message}`));
-    await other.goto(url, { waitUntil: 'load' });
-    const seen = await afterReload(other);
-    if (!samePlaces(seen.joints ?? [], drawn.joints)) fail('the drawn four-bar\'s link opens another mechanism');
-    await other.close();
+    await keptAndShared(drawn, 'the drawn four-bar', 'doc=1.');
   }
 }
 
