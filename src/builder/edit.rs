@@ -50,6 +50,15 @@ pub enum SketchEdit {
         /// The guide's direction, rad.
         angle_rad: f64,
     },
+    /// A slider's guide: ground (`None`) or a link, and its direction as drawn.
+    SetGuide {
+        /// The slider, by index.
+        slider: usize,
+        /// The link carrying the guide; `None`: ground.
+        guide: Option<usize>,
+        /// The guide's direction, rad.
+        angle_rad: f64,
+    },
     /// The input link.
     SetDriver(usize),
     /// A point to a new world place.
@@ -88,6 +97,8 @@ pub enum Refusal {
     Name(String),
     /// A speed that is zero or not finite.
     Speed(f64),
+    /// A guide on a link through the slider's own pin.
+    GuideThroughPin(String),
 }
 
 impl std::fmt::Display for Refusal {
@@ -100,9 +111,13 @@ impl std::fmt::Display for Refusal {
                 f,
                 "{link} has no ground pivot: the input link must turn about one"
             ),
-            Self::NotFinite => f.write_str("that place is not a finite number"),
+            Self::NotFinite => f.write_str("that is not a finite number"),
             Self::Name(name) if name.trim().is_empty() => f.write_str("a name cannot be empty"),
             Self::Name(name) => write!(f, "the name {name} is taken"),
+            Self::GuideThroughPin(link) => write!(
+                f,
+                "{link} carries the slider's pin: its guide must be on another link or ground"
+            ),
             Self::Speed(rpm) => write!(
                 f,
                 "{rpm} rpm cannot drive: the speed must be a finite number other than 0"
@@ -137,6 +152,21 @@ pub fn apply(sketch: &Sketch, edit: SketchEdit) -> Result<Sketch, Refusal> {
                 guide: None,
                 angle_rad,
             });
+        }
+        SketchEdit::SetGuide {
+            slider,
+            guide,
+            angle_rad,
+        } => {
+            if !angle_rad.is_finite() {
+                return Err(Refusal::NotFinite);
+            }
+            let pin = next.sliders[slider].point;
+            if let Some(l) = guide.filter(|&l| next.links[l].points.contains(&pin)) {
+                return Err(Refusal::GuideThroughPin(next.links[l].name.clone()));
+            }
+            next.sliders[slider].guide = guide;
+            next.sliders[slider].angle_rad = angle_rad;
         }
         SketchEdit::SetDriver(link) => {
             let l = &next.links[link];
@@ -355,6 +385,48 @@ mod tests {
             apply(&s, SketchEdit::SetDriver(1)),
             Err(Refusal::DriverNotGrounded("link 2".into()))
         );
+    }
+
+    #[test]
+    fn an_inverted_slider_crank_drawn_with_a_guide_on_a_link() {
+        // Crank A-B, rocker D-E with the block at B sliding along it.
+        let mut s = Sketch::new("drawn");
+        for edit in [
+            SketchEdit::AddPivot(at(0.0, 0.0)),
+            SketchEdit::AddPivot(at(0.2, 0.0)),
+            SketchEdit::AddLink(End::Point(0), End::New(at(0.0, 0.1))),
+            SketchEdit::AddLink(End::Point(1), End::New(at(-0.2, 0.2))),
+            SketchEdit::AddSlider {
+                point: 2,
+                angle_rad: 0.0,
+            },
+            SketchEdit::SetDriver(0),
+        ] {
+            s = apply(&s, edit).expect("applies");
+        }
+        assert_eq!(
+            apply(
+                &s,
+                SketchEdit::SetGuide {
+                    slider: 0,
+                    guide: Some(0),
+                    angle_rad: 0.0
+                }
+            ),
+            Err(Refusal::GuideThroughPin("link 1".into()))
+        );
+        // The guide along the rocker D-E, through B as drawn.
+        let (d, e) = (s.points[1].at, s.points[3].at);
+        let along = (e.y - d.y).atan2(e.x - d.x);
+        let guided = SketchEdit::SetGuide {
+            slider: 0,
+            guide: Some(1),
+            angle_rad: along,
+        };
+        s = apply(&s, guided).expect("applies");
+        let scene = s.to_scene().expect("an inverted slider-crank");
+        assert_eq!(scene.sliders[0].guide, "link 2");
+        assert!(scene.links[2].points.contains_key("C guide"));
     }
 
     #[test]

@@ -61,7 +61,10 @@ impl Tool {
                 "click two points (or empty places) to join them; click a link, then a \
                  place, to add a point to it"
             }
-            Tool::Slider => "click a point to put a slider block there on a horizontal guide",
+            Tool::Slider => {
+                "click a point to put a slider block there, on a horizontal ground guide \
+                 (the panel turns the guide or puts it on a link)"
+            }
             Tool::Driver => "click the link that turns about a ground pivot: the input",
             Tool::Move => {
                 "drag a point; it snaps to the 10 mm grid and into line with other points"

@@ -1,6 +1,6 @@
 //! The side panel while drawing: the tools, what the drawing still lacks (with its
 //! Grübler count), Done, every point's coordinates to type, names to change, the
-//! output link and the input speed.
+//! output link, the input speed, and each slider's guide and its direction.
 
 use eframe::egui;
 use linkage::Vec2;
@@ -38,6 +38,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     points(ui, st);
     ui.separator();
     links(ui, st);
+    sliders(ui, st);
     if let (Some(tool), Some(b)) = (chosen, st.builder.as_mut()) {
         b.tool = tool;
         b.pending = None;
@@ -157,6 +158,58 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
             edits.push(SketchEdit::SetSpeedRpm(rpm));
         }
     });
+    for e in edits {
+        drawing::edit(st, e);
+    }
+}
+
+/// Every slider's guide: ground or a link, and its direction (deg).
+fn sliders(ui: &mut egui::Ui, st: &mut AppState) {
+    let Some(b) = st.builder.as_ref() else {
+        return;
+    };
+    let sketch = b.sketch();
+    if sketch.sliders.is_empty() {
+        return;
+    }
+    let mut edits = Vec::new();
+    ui.separator();
+    ui.strong("Sliders");
+    egui::Grid::new("drawing sliders")
+        .num_columns(3)
+        .show(ui, |ui| {
+            for (i, s) in sketch.sliders.iter().enumerate() {
+                let pin = &sketch.points[s.point].name;
+                ui.label(format!("block at {pin}"));
+                let name_of =
+                    |g: Option<usize>| g.map_or("ground", |l| sketch.links[l].name.as_str());
+                let mut guide = s.guide;
+                egui::ComboBox::from_id_salt(("guide", i))
+                    .selected_text(format!("on {}", name_of(guide)))
+                    .show_ui(ui, |ui| {
+                        let choices = std::iter::once(None).chain(
+                            (0..sketch.links.len())
+                                .filter(|&l| !sketch.links[l].points.contains(&s.point))
+                                .map(Some),
+                        );
+                        for g in choices {
+                            ui.selectable_value(&mut guide, g, name_of(g));
+                        }
+                    });
+                let mut deg = s.angle_rad.to_degrees();
+                let turned = ui
+                    .add(egui::DragValue::new(&mut deg).speed(1.0).suffix("°"))
+                    .changed();
+                if guide != s.guide || turned {
+                    edits.push(SketchEdit::SetGuide {
+                        slider: i,
+                        guide,
+                        angle_rad: deg.to_radians(),
+                    });
+                }
+                ui.end_row();
+            }
+        });
     for e in edits {
         drawing::edit(st, e);
     }
