@@ -6,6 +6,9 @@
 //! curves on screen). The report follows in the first frame without an edit
 //! (`report`, measured apart); the dynamic run follows off the frame.
 //!
+//! A drawn four-bar's point dragged with the drawing tools is measured too: each move
+//! remakes the scene from the drawing and opens it.
+//!
 //! `cargo bench --bench edit`; the target is 4 ms per edit (a 60 Hz frame with room
 //! for drawing).
 
@@ -145,5 +148,46 @@ fn edits(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, edits);
+/// A drawn four-bar with its coupler pin dragged (the drawing tools' Move): the
+/// drawing's edit, and the scene it makes opened as the session, every frame.
+fn drawing_drag(c: &mut Criterion) {
+    use linkage::Vec2;
+    use linkage::sketch::Sketch;
+    use linkage_lab::builder::edit::{End, SketchEdit};
+    use linkage_lab::ui::drawing;
+
+    let first = scene_files().into_iter().next().expect("a scene");
+    let mut st = linkage_lab::AppState::new(open(&first));
+    drawing::resume(&mut st, Sketch::new("drawn"));
+    let at = |x: f64, y: f64| Vec2::new(x, y);
+    for e in [
+        SketchEdit::AddPivot(at(0.0, 0.0)),
+        SketchEdit::AddPivot(at(0.3, 0.0)),
+        SketchEdit::AddLink(End::Point(0), End::New(at(0.0, 0.05))),
+        SketchEdit::AddLink(End::Point(2), End::New(at(0.2, 0.2))),
+        SketchEdit::AddLink(End::Point(3), End::Point(1)),
+        SketchEdit::SetDriver(0),
+    ] {
+        drawing::edit(&mut st, e);
+    }
+    let complete =
+        |st: &linkage_lab::AppState| st.builder.as_ref().is_some_and(|b| b.problem.is_none());
+    assert!(complete(&st), "the drawing is a four-bar");
+    // One gesture: the drag's moves are one undo step, so the history does not grow.
+    if let Some(b) = st.builder.as_mut() {
+        b.dragged = Some(3);
+    }
+    let mut flip = false;
+    c.bench_function("edit/drawing/point dragged", |b| {
+        b.iter(|| {
+            flip = !flip;
+            let to = if flip { at(0.21, 0.2) } else { at(0.2, 0.2) };
+            drawing::edit(&mut st, SketchEdit::MovePoint { point: 3, to });
+            black_box(st.session.polygons());
+        });
+    });
+    assert!(complete(&st));
+}
+
+criterion_group!(benches, edits, drawing_drag);
 criterion_main!(benches);
