@@ -176,16 +176,15 @@ fn sliders(ui: &mut egui::Ui, st: &mut AppState) {
     ui.separator();
     ui.strong("Sliders");
     egui::Grid::new("drawing sliders")
-        .num_columns(3)
+        .num_columns(2)
         .show(ui, |ui| {
             for (i, s) in sketch.sliders.iter().enumerate() {
                 let pin = &sketch.points[s.point].name;
-                ui.label(format!("block at {pin}"));
                 let name_of =
                     |g: Option<usize>| g.map_or("ground", |l| sketch.links[l].name.as_str());
                 let mut guide = s.guide;
-                egui::ComboBox::from_id_salt(("guide", i))
-                    .selected_text(format!("on {}", name_of(guide)))
+                egui::ComboBox::new(("guide", i), format!("guide of {pin}"))
+                    .selected_text(name_of(guide))
                     .show_ui(ui, |ui| {
                         let choices = std::iter::once(None).chain(
                             (0..sketch.links.len())
