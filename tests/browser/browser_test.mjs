@@ -227,10 +227,18 @@ await shared.close();
 // A four-bar built in the page: New… → the four-bar template, "move points", C
 // dragged to a new place; a reload keeps the edited mechanism, and its address opened
 // in a new page shows the same one (every joint where it was, to 1e-9 m).
+// A control where two different frames drew it in the same place: a frame's layout
+// can move it (a status line that grows as the edit of the same frame lands), and at
+// SwiftShader's 2 frames a second a click aimed by one frame lands in the next.
 const entry = async (p, kind, label) => {
+  let seen;
   for (let i = 0; i < 100; i++) {
-    const e = (await appState(p)).controls?.entries?.find((c) => c.kind === kind && (label === undefined || c.label === label));
-    if (e?.visible) return e;
+    const st = await appState(p);
+    const e = st.controls?.entries?.find((c) => c.kind === kind && (label === undefined || c.label === label));
+    if (e?.visible) {
+      if (seen && st.frame > seen.frame && seen.e.rect.every((v, k) => Math.abs(v - e.rect[k]) < 0.5)) return e;
+      if (!seen || st.frame > seen.frame) seen = { e, frame: st.frame };
+    } else seen = undefined;
     await p.mouse.move(20 + (i % 2), 10); // an idle app draws on a pointer move
     await p.waitForTimeout(100);
   }
