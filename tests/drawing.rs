@@ -337,3 +337,75 @@ fn drawing_snapshot() {
     h.run();
     h.snapshot("drawn_four_bar");
 }
+
+/// A six-bar from a template, edited by dragging a joint with "move points" on: the
+/// joint lands under the pointer (to the 1 mm grid), the output's swing changes, and
+/// one undo restores the template exactly.
+#[test]
+fn a_six_bar_template_edited_by_dragging_a_joint() {
+    let mut h = harness();
+    click_control(&mut h, ControlKind::FileButton, "New…");
+    h.run();
+    click_control(&mut h, ControlKind::TemplateItem, "Watt six-bar (template)");
+    assert_eq!(
+        h.state().state.session.scene().name,
+        "Watt six-bar (template)"
+    );
+    // By its accessible name: kittest's pointer does not toggle a checkbox that
+    // carries a hover text.
+    h.get_by_label("move points").click();
+    h.run();
+    h.run();
+    assert!(h.state().state.edit_points);
+    let template = h.state().state.session.scene().clone();
+    let swing = |h: &Harness<'static, LinkageApp>| {
+        report_of(h.state().state.session.scene()).swings_rad["output"]
+    };
+    let before = swing(&h);
+    let st = &h.state().state;
+    let [x0, y0, x1, y1] = st.controls.view.expect("the view is drawn");
+    let rect = egui::Rect::from_min_max(egui::pos2(x0, y0), egui::pos2(x1, y1));
+    let e = st.session.mechanism().point_index("E").expect("E");
+    let q = st.session.pose().points[e].position;
+    let from = st.camera.to_screen([q.x, q.y], rect);
+    let to = from + egui::vec2(12.0, -10.0);
+    h.event(egui::Event::PointerMoved(from));
+    h.event(egui::Event::PointerButton {
+        pos: from,
+        button: egui::PointerButton::Primary,
+        pressed: true,
+        modifiers: egui::Modifiers::default(),
+    });
+    h.run();
+    for k in 1..=4 {
+        h.event(egui::Event::PointerMoved(
+            from + (to - from) * (k as f32 / 4.0),
+        ));
+        h.run();
+    }
+    h.event(egui::Event::PointerButton {
+        pos: to,
+        button: egui::PointerButton::Primary,
+        pressed: false,
+        modifiers: egui::Modifiers::default(),
+    });
+    h.run();
+    h.run();
+    let st = &h.state().state;
+    assert_eq!(st.session.message(), None);
+    let q = st.session.pose().points[e].position;
+    let landed = st.camera.to_screen([q.x, q.y], rect);
+    assert!(
+        landed.distance(to) < 3.0,
+        "E at {landed:?}, the pointer at {to:?}"
+    );
+    let after = swing(&h);
+    assert!(
+        (after - before).abs() > 1e-4,
+        "the output's swing {before} -> {after}"
+    );
+    h.get_by_label("Undo").click();
+    h.run();
+    h.run();
+    assert_eq!(h.state().state.session.scene(), &template);
+}
