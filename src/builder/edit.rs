@@ -2,6 +2,7 @@
 //! these, and [`apply`] makes the next drawing from them, or says why not.
 
 use linkage::Vec2;
+use linkage::scene::Models;
 use linkage::sketch::{Sketch, SketchLink, SketchPoint, SketchSlider};
 
 /// One end of a new link: a point already drawn, or a new one at a place (m).
@@ -78,6 +79,21 @@ pub enum SketchEdit {
     SetSpeedRpm(f64),
     /// The main output for the time ratio (`None`: the last link).
     SetOutput(Option<usize>),
+    /// Kinematics only, or kinetostatics with the masses and gravity.
+    SetModels(Models),
+    /// A body's mass, kg (`None`: massless).
+    SetMass(Body, Option<f64>),
+    /// Gravity on or off.
+    SetGravity(bool),
+}
+
+/// A body that can carry a mass.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Body {
+    /// A link, by index.
+    Link(usize),
+    /// A slider's block, by the slider's index.
+    Block(usize),
 }
 
 /// Why an edit was not made.
@@ -99,6 +115,8 @@ pub enum Refusal {
     Speed(f64),
     /// A guide on a link through the slider's own pin.
     GuideThroughPin(String),
+    /// A mass that is not a positive finite number.
+    Mass(f64),
 }
 
 impl std::fmt::Display for Refusal {
@@ -117,6 +135,10 @@ impl std::fmt::Display for Refusal {
             Self::GuideThroughPin(link) => write!(
                 f,
                 "{link} carries the slider's pin: its guide must be on another link or ground"
+            ),
+            Self::Mass(kg) => write!(
+                f,
+                "{kg} kg is not a mass: give a positive number, or none for a massless link"
             ),
             Self::Speed(rpm) => write!(
                 f,
@@ -151,6 +173,7 @@ pub fn apply(sketch: &Sketch, edit: SketchEdit) -> Result<Sketch, Refusal> {
                 point,
                 guide: None,
                 angle_rad,
+                mass_kg: None,
             });
         }
         SketchEdit::SetGuide {
@@ -189,6 +212,17 @@ pub fn apply(sketch: &Sketch, edit: SketchEdit) -> Result<Sketch, Refusal> {
             next.speed = linkage::scene::Speed::Rpm(rpm);
         }
         SketchEdit::SetOutput(link) => next.output = link,
+        SketchEdit::SetModels(models) => next.models = models,
+        SketchEdit::SetGravity(on) => next.gravity = on,
+        SketchEdit::SetMass(body, kg) => {
+            if let Some(kg) = kg.filter(|kg| !(kg.is_finite() && *kg > 0.0)) {
+                return Err(Refusal::Mass(kg));
+            }
+            match body {
+                Body::Link(l) => next.links[l].mass_kg = kg,
+                Body::Block(b) => next.sliders[b].mass_kg = kg,
+            }
+        }
     }
     Ok(next)
 }
@@ -257,6 +291,7 @@ fn add_link(sketch: &mut Sketch, a: End, b: End) -> Result<(), Refusal> {
     sketch.links.push(SketchLink {
         name,
         points: vec![p, q],
+        mass_kg: None,
     });
     Ok(())
 }

@@ -3,23 +3,25 @@
 //! index, since stored text is user input like any other.
 
 use linkage::Vec2;
-use linkage::scene::{LengthUnit, Speed};
+use linkage::scene::{LengthUnit, Models, Speed};
 use linkage::sketch::{Sketch, SketchLink, SketchPoint, SketchSlider};
 use serde::{Deserialize, Serialize};
 
-/// The stored form: points as `(name, x m, y m, ground)`, links as `(name, points)`,
-/// sliders as `(point, guide link, angle rad)`.
+/// The stored form: points as `(name, x m, y m, ground)`, links as `(name, points,
+/// mass kg)`, sliders as `(point, guide link, angle rad, mass kg)`.
 #[derive(Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct StoredSketch {
     name: String,
     length_unit: LengthUnit,
     points: Vec<(String, f64, f64, bool)>,
-    links: Vec<(String, Vec<usize>)>,
-    sliders: Vec<(usize, Option<usize>, f64)>,
+    links: Vec<(String, Vec<usize>, Option<f64>)>,
+    sliders: Vec<(usize, Option<usize>, f64, Option<f64>)>,
     driver: Option<usize>,
     output: Option<usize>,
     speed: Speed,
+    models: Models,
+    gravity: bool,
 }
 
 /// The drawing as RON text.
@@ -35,16 +37,18 @@ pub fn to_text(sketch: &Sketch) -> String {
         links: sketch
             .links
             .iter()
-            .map(|l| (l.name.clone(), l.points.clone()))
+            .map(|l| (l.name.clone(), l.points.clone(), l.mass_kg))
             .collect(),
         sliders: sketch
             .sliders
             .iter()
-            .map(|s| (s.point, s.guide, s.angle_rad))
+            .map(|s| (s.point, s.guide, s.angle_rad, s.mass_kg))
             .collect(),
         driver: sketch.driver,
         output: sketch.output,
         speed: sketch.speed,
+        models: sketch.models,
+        gravity: sketch.gravity,
     };
     // Plain strings, numbers and options: writing cannot fail.
     ron::to_string(&stored).unwrap_or_default()
@@ -70,7 +74,12 @@ pub fn from_text(text: &str) -> Result<Sketch, String> {
         .points
         .iter()
         .any(|p| !(p.1.is_finite() && p.2.is_finite()))
-        || s.sliders.iter().any(|sl| !sl.2.is_finite());
+        || s.sliders.iter().any(|sl| !sl.2.is_finite())
+        || s.links
+            .iter()
+            .filter_map(|l| l.2)
+            .chain(s.sliders.iter().filter_map(|sl| sl.3))
+            .any(|kg| !(kg.is_finite() && kg > 0.0));
     if bad_point || bad_link || not_finite {
         return Err("a stored drawing names a point or link it does not have".into());
     }
@@ -89,27 +98,34 @@ pub fn from_text(text: &str) -> Result<Sketch, String> {
         links: s
             .links
             .into_iter()
-            .map(|(name, points)| SketchLink { name, points })
+            .map(|(name, points, mass_kg)| SketchLink {
+                name,
+                points,
+                mass_kg,
+            })
             .collect(),
         sliders: s
             .sliders
             .into_iter()
-            .map(|(point, guide, angle_rad)| SketchSlider {
+            .map(|(point, guide, angle_rad, mass_kg)| SketchSlider {
                 point,
                 guide,
                 angle_rad,
+                mass_kg,
             })
             .collect(),
         driver: s.driver,
         output: s.output,
         speed: s.speed,
+        models: s.models,
+        gravity: s.gravity,
     })
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::builder::edit::{End, SketchEdit, apply};
+    use crate::builder::edit::{Body, End, SketchEdit, apply};
 
     #[test]
     fn a_drawing_reads_back_as_written_and_damage_is_refused() {
@@ -123,6 +139,9 @@ mod tests {
                 angle_rad: 0.0,
             },
             SketchEdit::SetDriver(0),
+            SketchEdit::SetModels(Models::Kinetostatics),
+            SketchEdit::SetMass(Body::Block(0), Some(120.0)),
+            SketchEdit::SetGravity(true),
         ] {
             s = apply(&s, edit).expect("applies");
         }

@@ -6,11 +6,11 @@ use eframe::egui;
 use linkage::Vec2;
 
 use crate::app::AppState;
-use crate::builder::edit::{Named, SketchEdit};
+use crate::builder::edit::{Body, Named, SketchEdit};
 use crate::builder::{Builder, Tool};
 use crate::ui::control_map::ControlKind;
 use crate::ui::drawing;
-use linkage::scene::Speed;
+use linkage::scene::{Models, Speed};
 
 /// Draws the panel; its edits go to the drawing.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
@@ -37,6 +37,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     ui.separator();
     points(ui, st);
     ui.separator();
+    model(ui, st);
     links(ui, st);
     sliders(ui, st);
     if let (Some(tool), Some(b)) = (chosen, st.builder.as_mut()) {
@@ -129,9 +130,16 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
     let mut edits = Vec::new();
     ui.strong("Links");
     egui::Grid::new("drawing links")
-        .num_columns(3)
+        .num_columns(4)
         .show(ui, |ui| {
-            let output = b.sketch().output;
+            // Without a pick, the scene's output is its last link: slider blocks come
+            // after the links, so with sliders it is the last block (none of these).
+            let sketch = b.sketch();
+            let output = sketch.output.or_else(|| {
+                (sketch.sliders.is_empty() && !sketch.links.is_empty())
+                    .then(|| sketch.links.len() - 1)
+            });
+            let masses = sketch.models != Models::Kinematics;
             for l in 0..b.sketch().links.len() {
                 name_cell(ui, b, Named::Link(l), &mut edits);
                 let role = if b.sketch().driver == Some(l) {
@@ -142,6 +150,9 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
                 ui.label(role);
                 if ui.radio(output == Some(l), "output").clicked() {
                     edits.push(SketchEdit::SetOutput(Some(l)));
+                }
+                if masses {
+                    mass_cell(ui, Body::Link(l), b.sketch().links[l].mass_kg, &mut edits);
                 }
                 ui.end_row();
             }
@@ -163,6 +174,53 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
     }
 }
 
+/// What the drawn scene computes: kinematics, or kinetostatics with masses (set per
+/// link and block in their rows) and gravity.
+fn model(ui: &mut egui::Ui, st: &mut AppState) {
+    let Some(b) = st.builder.as_ref() else {
+        return;
+    };
+    let (mut models, mut gravity) = (b.sketch().models, b.sketch().gravity);
+    let mut edits = Vec::new();
+    ui.horizontal(|ui| {
+        ui.label("computes");
+        for (m, label) in [
+            (Models::Kinematics, "kinematics"),
+            (Models::Kinetostatics, "kinetostatics"),
+        ] {
+            if ui.radio_value(&mut models, m, label).changed() {
+                edits.push(SketchEdit::SetModels(models));
+            }
+        }
+    });
+    if models != Models::Kinematics
+        && ui
+            .checkbox(&mut gravity, "gravity (9.81 m/s² down)")
+            .changed()
+    {
+        edits.push(SketchEdit::SetGravity(gravity));
+    }
+    for e in edits {
+        drawing::edit(st, e);
+    }
+}
+
+/// A body's mass in kg; 0 is massless.
+fn mass_cell(ui: &mut egui::Ui, body: Body, kg: Option<f64>, edits: &mut Vec<SketchEdit>) {
+    let mut value = kg.unwrap_or(0.0);
+    if ui
+        .add(
+            egui::DragValue::new(&mut value)
+                .range(0.0..=1e6)
+                .speed(0.1)
+                .suffix(" kg"),
+        )
+        .changed()
+    {
+        edits.push(SketchEdit::SetMass(body, (value > 0.0).then_some(value)));
+    }
+}
+
 /// Every slider's guide: ground or a link, and its direction (deg).
 fn sliders(ui: &mut egui::Ui, st: &mut AppState) {
     let Some(b) = st.builder.as_ref() else {
@@ -176,7 +234,7 @@ fn sliders(ui: &mut egui::Ui, st: &mut AppState) {
     ui.separator();
     ui.strong("Sliders");
     egui::Grid::new("drawing sliders")
-        .num_columns(2)
+        .num_columns(3)
         .show(ui, |ui| {
             for (i, s) in sketch.sliders.iter().enumerate() {
                 let pin = &sketch.points[s.point].name;
@@ -205,6 +263,9 @@ fn sliders(ui: &mut egui::Ui, st: &mut AppState) {
                         guide,
                         angle_rad: deg.to_radians(),
                     });
+                }
+                if sketch.models != Models::Kinematics {
+                    mass_cell(ui, Body::Block(i), s.mass_kg, &mut edits);
                 }
                 ui.end_row();
             }

@@ -12,7 +12,7 @@ use crate::error::LinkageError;
 use crate::model::Mechanism;
 use crate::motion::{LinkMotion, Vec2};
 use crate::scene::{
-    AngleUnit, DriverSpec, LengthUnit, LinkSpec, Models, SceneFile, SliderSpec, Speed,
+    AngleUnit, DriverSpec, ForcesSpec, LengthUnit, LinkSpec, Models, SceneFile, SliderSpec, Speed,
 };
 
 /// A point of the drawing.
@@ -33,6 +33,9 @@ pub struct SketchLink {
     pub name: String,
     /// Its points; two make a binary link, three or more a plate.
     pub points: Vec<usize>,
+    /// Mass, kg (`None`: massless), for kinetostatics; see [`Sketch::to_scene`] for
+    /// where its centroid and inertia come from.
+    pub mass_kg: Option<f64>,
 }
 
 /// A slider block pinned at `point`, sliding on a guide line through the point's
@@ -45,6 +48,8 @@ pub struct SketchSlider {
     pub guide: Option<usize>,
     /// The guide's direction in the world as drawn, rad.
     pub angle_rad: f64,
+    /// The block's mass, kg (`None`: massless), a point mass at its pin.
+    pub mass_kg: Option<f64>,
 }
 
 /// A drawing of a mechanism.
@@ -67,6 +72,10 @@ pub struct Sketch {
     /// The main output for the time ratio (an index into [`Sketch::links`]); `None`:
     /// the scene's default, its last link (slider blocks come after the links).
     pub output: Option<usize>,
+    /// What the scene computes: kinematics, or kinetostatics with the masses.
+    pub models: Models,
+    /// Gravity, 9.81 m/s² down the drawing's y-axis, on every mass.
+    pub gravity: bool,
 }
 
 /// The Grübler–Kutzbach count of a drawing.
@@ -147,6 +156,8 @@ impl Sketch {
             driver: None,
             speed: Speed::Rpm(60.0),
             output: None,
+            models: Models::Kinematics,
+            gravity: false,
         }
     }
 
@@ -170,7 +181,10 @@ impl Sketch {
     }
 
     /// The scene of a complete drawing (one degree of freedom, a grounded driver),
-    /// starting in the drawn pose; else what is missing.
+    /// starting in the drawn pose; else what is missing. A link with a mass has its
+    /// centroid at the mean of its points and the inertia of a uniform body there:
+    /// a bar between its two points (m L²/12), or the triangle of its first three
+    /// points (m (a² + b² + c²)/36); a slider block's mass sits at its pin.
     pub fn to_scene(&self) -> Result<SceneFile, SketchProblem> {
         if self.links.is_empty() {
             return Err(SketchProblem::NoLinks);
@@ -220,12 +234,19 @@ impl Sketch {
             .links
             .iter()
             .map(|l| {
-                link_spec(
-                    &l.name,
-                    l.points
-                        .iter()
-                        .map(|&p| (self.points[p].name.clone(), xy(self.points[p].at))),
-                )
+                let points = l
+                    .points
+                    .iter()
+                    .map(|&p| (self.points[p].name.clone(), xy(self.points[p].at)));
+                let mut spec = link_spec(&l.name, points);
+                if let Some(kg) = l.mass_kg {
+                    let at: Vec<Vec2> = l.points.iter().map(|&p| self.points[p].at).collect();
+                    let centroid = at.iter().sum::<Vec2>() / at.len().max(1) as f64;
+                    spec.mass = Some(kg);
+                    spec.centroid = Some(xy(centroid));
+                    spec.inertia = Some(uniform_inertia(kg, &at));
+                }
+                spec
             })
             .collect();
         let mut sliders = Vec::new();
@@ -243,7 +264,12 @@ impl Sketch {
                 }
             };
             let block = format!("slider {}", pin.name);
-            links.push(link_spec(&block, [(pin.name.clone(), xy(pin.at))]));
+            let mut spec = link_spec(&block, [(pin.name.clone(), xy(pin.at))]);
+            if let Some(kg) = s.mass_kg {
+                spec.mass = Some(kg);
+                spec.centroid = Some(xy(pin.at));
+            }
+            links.push(spec);
             sliders.push(SliderSpec {
                 slider: block,
                 point: pin.name.clone(),
@@ -264,7 +290,7 @@ impl Sketch {
             name: self.name.clone(),
             description: String::new(),
             notes: Vec::new(),
-            models: Models::Kinematics,
+            models: self.models,
             length_unit: self.length_unit,
             angle_unit: AngleUnit::Degree,
             links,
@@ -277,7 +303,10 @@ impl Sketch {
             branches: IndexMap::new(),
             output: self.output.map(|l| self.links[l].name.clone()),
             guess: IndexMap::new(),
-            forces: Default::default(),
+            forces: ForcesSpec {
+                gravity: self.gravity.then_some((0.0, -9.81)),
+                ..Default::default()
+            },
             solver: Default::default(),
         }
     }
@@ -301,6 +330,19 @@ impl Sketch {
             }
         }
         Ok(())
+    }
+}
+
+/// The moment of inertia about the centroid of a uniform bar through two points, or
+/// of a uniform triangle through the first three, kg·m².
+fn uniform_inertia(kg: f64, at: &[Vec2]) -> f64 {
+    match at {
+        [a, b] => kg * (b - a).norm_squared() / 12.0,
+        [a, b, c, ..] => {
+            let sides = (b - a).norm_squared() + (c - b).norm_squared() + (a - c).norm_squared();
+            kg * sides / 36.0
+        }
+        _ => 0.0,
     }
 }
 
