@@ -409,3 +409,71 @@ fn a_six_bar_template_edited_by_dragging_a_joint() {
     h.run();
     assert_eq!(h.state().state.session.scene(), &template);
 }
+
+/// Two fingers on the drawing: moved together they pan the view, spread apart they
+/// zoom it about their centre, and neither edits the drawing. (egui turns touches
+/// into the pointer and the zoom the view already follows: no touch code of ours.)
+#[test]
+fn two_fingers_pan_and_zoom_the_drawing() {
+    let mut h = harness();
+    draw_four_bar(&mut h);
+    let st = &h.state().state;
+    let [x0, y0, x1, y1] = st.controls.view.expect("the canvas is drawn");
+    let centre = egui::pos2(0.5 * (x0 + x1), 0.5 * (y0 + y1));
+    let (camera, sketch) = (
+        st.camera,
+        st.builder.as_ref().expect("drawing").sketch().clone(),
+    );
+    let touch = |h: &mut Harness<'static, LinkageApp>, id: u64, phase, pos| {
+        h.event(egui::Event::Touch {
+            device_id: egui::TouchDeviceId(1),
+            id: egui::TouchId(id),
+            phase,
+            pos,
+            force: None,
+        });
+    };
+    use egui::TouchPhase::{End, Move, Start};
+    let fingers = |offset: egui::Vec2, spread: f32| {
+        [
+            centre + offset - egui::vec2(spread, 0.0),
+            centre + offset + egui::vec2(spread, 0.0),
+        ]
+    };
+    let [a, b] = fingers(egui::Vec2::ZERO, 40.0);
+    touch(&mut h, 1, Start, a);
+    touch(&mut h, 2, Start, b);
+    h.run();
+    for k in 1..=5 {
+        let [a, b] = fingers(egui::vec2(10.0 * k as f32, 0.0), 40.0);
+        touch(&mut h, 1, Move, a);
+        touch(&mut h, 2, Move, b);
+        h.run();
+    }
+    let panned = h.state().state.camera;
+    assert!(
+        panned.center_m[0] < camera.center_m[0],
+        "the view follows the fingers right"
+    );
+    // Fingers moved together keep their spread: no zoom beyond rounding.
+    assert!((panned.points_per_m / camera.points_per_m - 1.0).abs() < 1e-3);
+    let rect = egui::Rect::from_min_max(egui::pos2(x0, y0), egui::pos2(x1, y1));
+    let pinch_centre = centre + egui::vec2(50.0, 0.0);
+    let under = panned.to_world(pinch_centre, rect);
+    for k in 1..=5 {
+        let [a, b] = fingers(egui::vec2(50.0, 0.0), 40.0 + 8.0 * k as f32);
+        touch(&mut h, 1, Move, a);
+        touch(&mut h, 2, Move, b);
+        h.run();
+    }
+    let [a, b] = fingers(egui::vec2(50.0, 0.0), 80.0);
+    touch(&mut h, 1, End, a);
+    touch(&mut h, 2, End, b);
+    h.run();
+    let st = &h.state().state;
+    assert!(
+        st.camera.points_per_m > 1.5 * camera.points_per_m,
+        "spread fingers zoom in"
+    );
+    assert_eq!(st.builder.as_ref().expect("drawing").sketch(), &sketch);
+}
