@@ -411,8 +411,8 @@ fn a_six_bar_template_edited_by_dragging_a_joint() {
 }
 
 /// Two fingers on the drawing: moved together they pan the view, spread apart they
-/// zoom it about their centre, and neither edits the drawing. (egui turns touches
-/// into the pointer and the zoom the view already follows: no touch code of ours.)
+/// zoom it about their centre (egui alone zooms about the first finger: the picture
+/// slid away under the pinch), and neither edits the drawing.
 #[test]
 fn two_fingers_pan_and_zoom_the_drawing() {
     let mut h = harness();
@@ -474,6 +474,12 @@ fn two_fingers_pan_and_zoom_the_drawing() {
     assert!(
         st.camera.points_per_m > 1.5 * camera.points_per_m,
         "spread fingers zoom in"
+    );
+    // About the fingers' centre: what was under it stays under it (to a point).
+    let stays = st.camera.to_screen(under, rect);
+    assert!(
+        stays.distance(pinch_centre) < 1.0,
+        "{stays:?} vs {pinch_centre:?}"
     );
     assert_eq!(st.builder.as_ref().expect("drawing").sketch(), &sketch);
 }

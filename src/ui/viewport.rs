@@ -10,8 +10,8 @@ use crate::render::build::build;
 use crate::render::shape::SharedShapes;
 use crate::render::view::Camera;
 
-/// Pans the camera by a drag (where `pan`) and zooms it by the wheel or a pinch,
-/// about the pointer.
+/// Pans the camera by a drag (where `pan`) or two fingers, and zooms it by the wheel
+/// about the pointer or by a pinch about the fingers' centre.
 pub fn navigate(
     ui: &egui::Ui,
     response: &egui::Response,
@@ -19,6 +19,18 @@ pub fn navigate(
     camera: &mut Camera,
     pan: bool,
 ) {
+    // Two or more fingers on the view: their centre pans and their spread zooms about
+    // it. egui would zoom about its pointer (the first finger) and pan by that
+    // finger's drag: the picture would slide away under the pinch.
+    if let Some(touch) = ui.input(|i| i.multi_touch())
+        && rect.contains(touch.center_pos)
+    {
+        camera.pan(touch.translation_delta);
+        if (touch.zoom_delta - 1.0).abs() > 1e-6 {
+            camera.zoom_at(f64::from(touch.zoom_delta), touch.center_pos, rect);
+        }
+        return;
+    }
     if pan && response.dragged() {
         camera.pan(response.drag_delta());
     }
