@@ -483,3 +483,69 @@ fn two_fingers_pan_and_zoom_the_drawing() {
     );
     assert_eq!(st.builder.as_ref().expect("drawing").sketch(), &sketch);
 }
+
+/// The open scene as a drawing (New… > This scene as a drawing): a template becomes
+/// a drawing of the same mechanism, which then takes structural edits (a link
+/// deleted leaves 2 degrees of freedom); a scene with springs is refused with why.
+#[test]
+fn a_template_becomes_a_drawing_and_takes_structural_edits() {
+    let mut h = harness();
+    click_control(&mut h, ControlKind::FileButton, "New…");
+    h.run();
+    click_control(&mut h, ControlKind::TemplateItem, "Four-bar (template)");
+    let template = h.state().state.session.scene().clone();
+    click_control(&mut h, ControlKind::FileButton, "New…");
+    h.run();
+    click_control(&mut h, ControlKind::TemplateItem, "This scene as a drawing");
+    let st = &h.state().state;
+    let b = st.builder.as_ref().expect("drawing");
+    assert_eq!(b.problem, None, "the template is a complete drawing");
+    let (a, d) = (report_of(&template), report_of(st.session.scene()));
+    assert_close("K", a.time_ratio.expect("K"), d.time_ratio.expect("K"));
+    assert_close("swing", a.swings_rad["rocker"], d.swings_rad["rocker"]);
+    // The rocker deleted: an open chain of 2 degrees of freedom.
+    tool(&mut h, "Delete");
+    let st = &h.state().state;
+    let sketch = st.builder.as_ref().expect("drawing").sketch();
+    let at = |name: &str| {
+        sketch
+            .points
+            .iter()
+            .find(|p| p.name == name)
+            .expect("point")
+            .at
+    };
+    let (c, dp) = (at("C"), at("D"));
+    click_mm(&mut h, 500.0 * (c.x + dp.x), 500.0 * (c.y + dp.y));
+    let b = h.state().state.builder.as_ref().expect("drawing");
+    assert_eq!(b.sketch().links.len(), 2);
+    assert_eq!(b.sketch().mobility().dof(), 2);
+    // The flipper has a spring: it stays a scene.
+    click_control(&mut h, ControlKind::ScenePicker, "Scene");
+    h.run();
+    let flipper = h
+        .state()
+        .state
+        .controls
+        .of_kind(ControlKind::SceneItem)
+        .find(|e| e.label.contains("flipper") || e.label.contains("Flipper"))
+        .map(|e| e.label.clone());
+    if let Some(label) = flipper {
+        click_control(&mut h, ControlKind::SceneItem, &label);
+        if h.state().state.pending_open.is_some() {
+            click_control(&mut h, ControlKind::FileButton, "Drop the edits and open");
+        }
+        click_control(&mut h, ControlKind::FileButton, "New…");
+        h.run();
+        click_control(&mut h, ControlKind::TemplateItem, "This scene as a drawing");
+        let st = &h.state().state;
+        assert!(st.builder.is_none());
+        let status = st.status.clone().unwrap_or_default();
+        assert!(
+            status.starts_with("this scene cannot become a drawing"),
+            "{status}"
+        );
+    } else {
+        panic!("no flipper in the scene picker");
+    }
+}

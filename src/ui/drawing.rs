@@ -28,6 +28,16 @@ pub fn start_now(st: &mut AppState) {
     resume(st, Sketch::new("My mechanism"));
 }
 
+/// The open scene, in its current pose, as a drawing to edit (add and delete links,
+/// sliders, points), or the reason it cannot be one in the status line.
+pub fn draw_current(st: &mut AppState) {
+    let s = &st.session;
+    match Sketch::from_pose(s.scene(), s.mechanism(), s.pose()) {
+        Ok(sketch) => resume(st, sketch),
+        Err(why) => st.status = Some(format!("this scene cannot become a drawing: {why}")),
+    }
+}
+
 /// Goes on with `sketch` (a drawing kept over a reload), opening it as the scene
 /// when it is a mechanism.
 pub fn resume(st: &mut AppState, sketch: Sketch) {

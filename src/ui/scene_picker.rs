@@ -132,12 +132,15 @@ fn history_buttons(ui: &mut egui::Ui, st: &mut AppState) {
 
 /// The New… menu's item that starts a drawing from nothing.
 const EMPTY_DRAWING: &str = "Empty: draw your own";
+/// The New… menu's item that turns the open scene into a drawing to edit.
+const AS_DRAWING: &str = "This scene as a drawing";
 
 /// "New…": an empty drawing, or a scene started from a template (four-bar, slider-crank, inverted
 /// slider-crank, Watt and Stephenson six-bars), named after it, to edit and save.
 fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
     let mut chosen = None;
     let mut empty = false;
+    let mut as_drawing = false;
     let menu = ui.menu_button("New…", |ui| {
         let item = ui.button(EMPTY_DRAWING);
         let placed = !ui.is_sizing_pass() && ui.clip_rect().contains_rect(item.rect);
@@ -145,6 +148,14 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
             .note_rect(ControlKind::TemplateItem, EMPTY_DRAWING, item.rect, placed);
         if item.clicked() {
             empty = true;
+            ui.close();
+        }
+        let item = ui.button(AS_DRAWING);
+        let placed = !ui.is_sizing_pass() && ui.clip_rect().contains_rect(item.rect);
+        st.controls
+            .note_rect(ControlKind::TemplateItem, AS_DRAWING, item.rect, placed);
+        if item.clicked() {
+            as_drawing = true;
             ui.close();
         }
         for (t, name) in crate::catalog::TEMPLATES.iter().zip(template_names()) {
@@ -163,6 +174,9 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
         .note(ui, ControlKind::FileButton, "New…", &menu.response);
     if empty {
         crate::ui::drawing::start(st);
+    }
+    if as_drawing {
+        crate::ui::drawing::draw_current(st);
     }
     if let Some(t) = chosen {
         match Session::open_text(SceneSource::File(format!("{}.ron", t.key)), t.text) {
