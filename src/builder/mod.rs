@@ -158,6 +158,10 @@ impl Builder {
     /// are one undo step.
     pub fn apply(&mut self, edit: SketchEdit) -> bool {
         let is_move = matches!(edit, SketchEdit::MovePoint { .. });
+        // Indices shift when something goes: a name being typed would land elsewhere.
+        if matches!(edit, SketchEdit::DeletePoint(_) | SketchEdit::DeleteLink(_)) {
+            self.naming = None;
+        }
         match edit::apply(&self.sketch, edit) {
             Ok(next) if next == self.sketch => false,
             Ok(next) => {
@@ -207,6 +211,7 @@ impl Builder {
     fn travel(&mut self, back: bool) -> bool {
         self.end_gesture();
         self.pending = None;
+        self.naming = None;
         let (from, to) = if back {
             (&mut self.undo, &mut self.redo)
         } else {
