@@ -2,11 +2,14 @@
 //! points, sliders on guides, perhaps a driver; complete or not. An editor builds
 //! one click by click; [`Sketch::to_scene`] turns a complete one into a scene whose
 //! start pose is the drawing: every link's coordinates are the world's at input 0,
-//! and each dyad's assembly branch is read off the drawing.
+//! and each dyad's assembly branch is read off the drawing. [`Sketch::from_pose`]
+//! (`from_scene.rs`) goes the other way.
 
 use indexmap::IndexMap;
 
 use crate::Kinematics;
+
+mod from_scene;
 use crate::closed_form::ClosedForm;
 use crate::error::LinkageError;
 use crate::model::Mechanism;
@@ -14,6 +17,7 @@ use crate::motion::{LinkMotion, Vec2};
 use crate::scene::{
     AngleUnit, DriverSpec, ForcesSpec, LengthUnit, LinkSpec, Models, SceneFile, SliderSpec, Speed,
 };
+pub use from_scene::NotDrawable;
 
 /// A point of the drawing.
 #[derive(Clone, Debug, PartialEq)]
@@ -144,134 +148,7 @@ impl std::fmt::Display for SketchProblem {
     }
 }
 
-/// Why a scene cannot become a drawing.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum NotDrawable {
-    /// Springs, dampers, point forces, torques or stops: a drawing carries masses and
-    /// gravity only, so they would be lost.
-    Forces,
-    /// Forward dynamics (a drawing computes kinematics or kinetostatics).
-    Dynamics,
-    /// A slider block that carries more than its pin.
-    BlockCarriesPoints(String),
-}
-
-impl std::fmt::Display for NotDrawable {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::Forces => f.write_str(
-                "its springs, dampers or forces would be lost: a drawing carries masses and gravity only",
-            ),
-            Self::Dynamics => f.write_str("it runs forward dynamics: a drawing computes kinematics or kinetostatics"),
-            Self::BlockCarriesPoints(block) => {
-                write!(f, "its slider block {block} carries more than its pin")
-            }
-        }
-    }
-}
-
 impl Sketch {
-    /// The drawing of `scene` in `pose` (a solved pose of `m`, the scene's
-    /// mechanism): every point where it is, links by their points, slider blocks as
-    /// sliders on their guides, the driver, output, speed, masses and gravity. Masses
-    /// become uniform bodies (see [`Sketch::to_scene`]); a guide's line keeps its
-    /// direction, through the block's pin.
-    pub fn from_pose(
-        scene: &SceneFile,
-        m: &Mechanism,
-        pose: &crate::Solution,
-    ) -> Result<Self, NotDrawable> {
-        let f = &scene.forces;
-        if !(f.springs.is_empty()
-            && f.dampers.is_empty()
-            && f.point_forces.is_empty()
-            && f.torques.is_empty()
-            && f.stops.is_empty())
-        {
-            return Err(NotDrawable::Forces);
-        }
-        if scene.models == Models::Dynamics {
-            return Err(NotDrawable::Dynamics);
-        }
-        let blocks: Vec<usize> = m.sliders.iter().map(|s| s.slider).collect();
-        if let Some(&b) = blocks.iter().find(|&&b| m.links[b].points.len() > 1) {
-            return Err(NotDrawable::BlockCarriesPoints(m.links[b].name.clone()));
-        }
-        let mut sketch = Sketch::new(&scene.name);
-        sketch.length_unit = scene.length_unit;
-        sketch.speed = scene.driver.speed;
-        sketch.models = scene.models;
-        sketch.gravity = f.gravity.is_some();
-        // A guide's point on ground that is no joint is made again by `to_scene`: not
-        // a pivot to draw.
-        let through_only: Vec<usize> = m
-            .sliders
-            .iter()
-            .filter(|s| s.guide == m.ground)
-            .filter_map(|s| {
-                let ground_points = &m.links[m.ground].points;
-                ground_points
-                    .iter()
-                    .find(|(_, at)| *at == s.through_local)
-                    .map(|(p, _)| *p)
-            })
-            .filter(|&p| m.revolutes.iter().all(|r| r.point != p))
-            .collect();
-        let moving: Vec<usize> = m.moving_links().filter(|l| !blocks.contains(l)).collect();
-        let on_moving = |p: usize| {
-            moving
-                .iter()
-                .any(|&l| m.links[l].points.iter().any(|(q, _)| *q == p))
-                || m.sliders.iter().any(|s| s.point == p)
-        };
-        let on_ground = |p: usize| {
-            m.links[m.ground].points.iter().any(|(q, _)| *q == p) && !through_only.contains(&p)
-        };
-        let mut index = vec![None; m.points.len()];
-        for p in (0..m.points.len()).filter(|&p| on_moving(p) || on_ground(p)) {
-            index[p] = Some(sketch.points.len());
-            sketch.points.push(SketchPoint {
-                name: m.points[p].name.clone(),
-                at: pose.points[p].position,
-                ground: on_ground(p),
-            });
-        }
-        let mut link_index = vec![None; m.links.len()];
-        for &l in &moving {
-            let name = &m.links[l].name;
-            if l == m.driver.link {
-                sketch.driver = Some(sketch.links.len());
-            }
-            if scene.output.as_deref() == Some(name.as_str()) {
-                sketch.output = Some(sketch.links.len());
-            }
-            link_index[l] = Some(sketch.links.len());
-            let points = m.links[l]
-                .points
-                .iter()
-                .filter_map(|(p, _)| index[*p])
-                .collect();
-            sketch.links.push(SketchLink {
-                name: name.clone(),
-                points,
-                mass_kg: m.links[l].mass_kg,
-            });
-        }
-        for s in &m.sliders {
-            let direction = pose.links[s.guide].rotation * s.direction_local;
-            let Some(point) = index[s.point] else {
-                continue;
-            };
-            sketch.sliders.push(SketchSlider {
-                point,
-                guide: link_index[s.guide],
-                angle_rad: direction.y.atan2(direction.x),
-                mass_kg: m.links[s.slider].mass_kg,
-            });
-        }
-        Ok(sketch)
-    }
-
     /// An empty drawing in millimetres, at 60 rpm.
     pub fn new(name: &str) -> Self {
         Self {
