@@ -5,11 +5,11 @@
 //! and each dyad's assembly branch is read off the drawing. [`Sketch::from_pose`]
 //! (`from_scene.rs`) goes the other way.
 
+mod from_scene;
+
 use indexmap::IndexMap;
 
 use crate::Kinematics;
-
-mod from_scene;
 use crate::closed_form::ClosedForm;
 use crate::error::LinkageError;
 use crate::model::Mechanism;
