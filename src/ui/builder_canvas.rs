@@ -13,6 +13,7 @@ use crate::builder::{Pending, Tool};
 use crate::render::Renderer;
 use crate::render::shape::SharedShapes;
 use crate::render::sketch_shapes::build_sketch;
+use crate::render::view::Camera;
 use crate::ui::drawing;
 use crate::ui::viewport::navigate;
 
@@ -163,7 +164,7 @@ fn drag_point(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut App
 }
 
 /// The pointer's world place on the grid.
-fn snapped(cam: &crate::render::view::Camera, at: Pos2, rect: Rect) -> Vec2 {
+fn snapped(cam: &Camera, at: Pos2, rect: Rect) -> Vec2 {
     let w = cam.to_world(at, rect);
     // Divided, not multiplied by 0.01: each place is the double nearest k / 100.
     Vec2::new(
@@ -178,7 +179,7 @@ fn aligned(
     sketch: &Sketch,
     moving: usize,
     mut to: Vec2,
-    cam: &crate::render::view::Camera,
+    cam: &Camera,
     at: Pos2,
     rect: Rect,
 ) -> Vec2 {
@@ -199,66 +200,49 @@ fn aligned(
     to
 }
 
-fn screen(cam: &crate::render::view::Camera, p: Vec2, rect: Rect) -> Pos2 {
+fn screen(cam: &Camera, p: Vec2, rect: Rect) -> Pos2 {
     cam.to_screen([p.x, p.y], rect)
 }
 
-/// The point within [`GRAB_PT`] of `at`, the nearest.
-fn point_near(
-    sketch: &Sketch,
-    cam: &crate::render::view::Camera,
-    at: Pos2,
-    rect: Rect,
-) -> Option<usize> {
-    sketch
-        .points
-        .iter()
-        .enumerate()
-        .map(|(i, p)| (screen(cam, p.at, rect).distance(at), i))
+/// The item of the nearest of `distances` (points on screen) within [`GRAB_PT`].
+fn nearest<T>(distances: impl Iterator<Item = (f32, T)>) -> Option<T> {
+    distances
         .filter(|(d, _)| *d <= GRAB_PT)
         .min_by(|a, b| a.0.total_cmp(&b.0))
-        .map(|(_, i)| i)
+        .map(|(_, item)| item)
+}
+
+/// The point within [`GRAB_PT`] of `at`, the nearest.
+fn point_near(sketch: &Sketch, cam: &Camera, at: Pos2, rect: Rect) -> Option<usize> {
+    nearest(
+        sketch
+            .points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| (screen(cam, p.at, rect).distance(at), i)),
+    )
 }
 
 /// The link whose outline passes within [`GRAB_PT`] of `at`, the nearest.
-fn link_near(
-    sketch: &Sketch,
-    cam: &crate::render::view::Camera,
-    at: Pos2,
-    rect: Rect,
-) -> Option<usize> {
+fn link_near(sketch: &Sketch, cam: &Camera, at: Pos2, rect: Rect) -> Option<usize> {
     let distance = |a: Pos2, b: Pos2| {
         let ab = b - a;
         let t = ((at - a).dot(ab) / ab.length_sq().max(1e-6)).clamp(0.0, 1.0);
         (a + t * ab).distance(at)
     };
-    sketch
-        .links
-        .iter()
-        .enumerate()
-        .flat_map(|(l, link)| {
-            let pts: Vec<Pos2> = link
-                .points
-                .iter()
-                .map(|&p| screen(cam, sketch.points[p].at, rect))
-                .collect();
-            let n = pts.len();
-            (0..n)
-                .map(move |i| (distance(pts[i], pts[(i + 1) % n]), l))
-                .collect::<Vec<_>>()
-        })
-        .filter(|(d, _)| *d <= GRAB_PT)
-        .min_by(|a, b| a.0.total_cmp(&b.0))
-        .map(|(_, l)| l)
+    nearest(sketch.links.iter().enumerate().flat_map(|(l, link)| {
+        let pts: Vec<Pos2> = link
+            .points
+            .iter()
+            .map(|&p| screen(cam, sketch.points[p].at, rect))
+            .collect();
+        let n = pts.len();
+        (0..n).map(move |i| (distance(pts[i], pts[(i + 1) % n]), l))
+    }))
 }
 
 /// The link under `at`, or one through the point under it (the first).
-fn link_at(
-    sketch: &Sketch,
-    cam: &crate::render::view::Camera,
-    at: Pos2,
-    rect: Rect,
-) -> Option<usize> {
+fn link_at(sketch: &Sketch, cam: &Camera, at: Pos2, rect: Rect) -> Option<usize> {
     link_near(sketch, cam, at, rect).or_else(|| {
         let p = point_near(sketch, cam, at, rect)?;
         sketch.links.iter().position(|l| l.points.contains(&p))
@@ -324,7 +308,7 @@ fn draw(
 }
 
 /// Light lines every 10 mm (every 50 mm darker), or coarser where they would crowd.
-fn grid(painter: &egui::Painter, rect: Rect, cam: &crate::render::view::Camera) {
+fn grid(painter: &egui::Painter, rect: Rect, cam: &Camera) {
     let mut step = 1.0 / GRID_PER_M;
     while step * cam.points_per_m < 8.0 {
         step *= 5.0;

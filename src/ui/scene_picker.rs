@@ -142,31 +142,11 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
     let mut empty = false;
     let mut as_drawing = false;
     let menu = ui.menu_button("New…", |ui| {
-        let item = ui.button(EMPTY_DRAWING);
-        let placed = !ui.is_sizing_pass() && ui.clip_rect().contains_rect(item.rect);
-        st.controls
-            .note_rect(ControlKind::TemplateItem, EMPTY_DRAWING, item.rect, placed);
-        if item.clicked() {
-            empty = true;
-            ui.close();
-        }
-        let item = ui.button(AS_DRAWING);
-        let placed = !ui.is_sizing_pass() && ui.clip_rect().contains_rect(item.rect);
-        st.controls
-            .note_rect(ControlKind::TemplateItem, AS_DRAWING, item.rect, placed);
-        if item.clicked() {
-            as_drawing = true;
-            ui.close();
-        }
+        empty = menu_item(ui, st, EMPTY_DRAWING);
+        as_drawing = menu_item(ui, st, AS_DRAWING);
         for (t, name) in crate::catalog::TEMPLATES.iter().zip(template_names()) {
-            let item = ui.button(name);
-            // The menu's first frame only sizes it, somewhere else: not clickable yet.
-            let placed = !ui.is_sizing_pass() && ui.clip_rect().contains_rect(item.rect);
-            st.controls
-                .note_rect(ControlKind::TemplateItem, name, item.rect, placed);
-            if item.clicked() {
+            if menu_item(ui, st, name) {
                 chosen = Some(t);
-                ui.close();
             }
         }
     });
@@ -184,6 +164,21 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
             Err(e) => st.status = Some(format!("template {}: {e}", t.key)),
         }
     }
+}
+
+/// One item of the New… menu, noted in the control map; returns whether it was
+/// clicked (the menu then closes).
+fn menu_item(ui: &mut egui::Ui, st: &mut AppState, label: &str) -> bool {
+    let item = ui.button(label);
+    // The menu's first frame only sizes it, somewhere else: not clickable yet.
+    let placed = !ui.is_sizing_pass() && ui.clip_rect().contains_rect(item.rect);
+    st.controls
+        .note_rect(ControlKind::TemplateItem, label, item.rect, placed);
+    let clicked = item.clicked();
+    if clicked {
+        ui.close();
+    }
+    clicked
 }
 
 /// Asks before a scene with unsaved edits is replaced by the one waiting.
