@@ -17,7 +17,7 @@ use std::path::PathBuf;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use linkage::analysis::report;
-use linkage_lab::session::{SceneSource, Session};
+use linkage_lab::session::{SceneEdit, SceneSource, Session};
 
 /// Every scene file in `assets/scenes`, read from the directory.
 fn scene_files() -> Vec<PathBuf> {
@@ -49,7 +49,10 @@ fn refusable_length(path: &PathBuf) -> Option<(usize, f64)> {
     for i in 0..s.lengths().len() {
         let v = s.lengths()[i].value(s.scene())?;
         for factor in [100.0, 0.01] {
-            s.set_length(i, v * factor);
+            s.apply(SceneEdit::Length {
+                index: i,
+                value: v * factor,
+            });
             if s.message().is_some() {
                 return Some((i, v * factor));
             }
@@ -73,7 +76,9 @@ fn edits(c: &mut Criterion) {
             b.iter(|| {
                 flip = !flip;
                 let x = if flip { 1.01 * v } else { v };
-                edit(&mut s, |s| s.set_length(0, x));
+                edit(&mut s, |s| {
+                    s.apply(SceneEdit::Length { index: 0, value: x })
+                });
             });
         });
         assert!(s.message().is_none(), "{key}: {:?}", s.message());
@@ -93,7 +98,12 @@ fn edits(c: &mut Criterion) {
             (m.points[p].name.clone(), [q.x, q.y])
         };
         let step = 0.01 * dragged.mechanism().size_m;
-        edit(&mut dragged, |s| s.move_point(&name, [at[0] + step, at[1]]));
+        edit(&mut dragged, |s| {
+            s.apply(SceneEdit::MovePoint {
+                name: String::from(&name),
+                to_m: [at[0] + step, at[1]],
+            })
+        });
         assert!(
             dragged.message().is_none(),
             "{key}: {:?}",
@@ -103,7 +113,12 @@ fn edits(c: &mut Criterion) {
             b.iter(|| {
                 flip = !flip;
                 let to = if flip { [at[0] + step, at[1]] } else { at };
-                edit(&mut dragged, |s| s.move_point(&name, to));
+                edit(&mut dragged, |s| {
+                    s.apply(SceneEdit::MovePoint {
+                        name: String::from(&name),
+                        to_m: to,
+                    })
+                });
             });
         });
         group.bench_function(format!("{key}/report"), |b| {
@@ -112,10 +127,22 @@ fn edits(c: &mut Criterion) {
         if let Some((i, bad)) = refusable_length(&path) {
             let mut s = open(&path);
             // Checked before, not after: a filtered run (`-- NAME`) skips the bench.
-            edit(&mut s, |s| s.set_length(i, bad));
+            edit(&mut s, |s| {
+                s.apply(SceneEdit::Length {
+                    index: i,
+                    value: bad,
+                })
+            });
             assert!(s.message().is_some(), "{key}: refused");
             group.bench_function(format!("{key}/length refused"), |b| {
-                b.iter(|| edit(&mut s, |s| s.set_length(i, bad)));
+                b.iter(|| {
+                    edit(&mut s, |s| {
+                        s.apply(SceneEdit::Length {
+                            index: i,
+                            value: bad,
+                        })
+                    })
+                });
             });
         }
         if let Some(k) = s.scene().forces.springs.first().map(|sp| sp.k_n_per_m) {
@@ -124,7 +151,10 @@ fn edits(c: &mut Criterion) {
                 b.iter(|| {
                     flip = !flip;
                     edit(&mut s, |s| {
-                        s.set_spring_k(0, if flip { 1.1 * k } else { k })
+                        s.apply(SceneEdit::SpringK {
+                            index: 0,
+                            n_per_m: if flip { 1.1 * k } else { k },
+                        })
                     });
                 });
             });
@@ -140,7 +170,12 @@ fn edits(c: &mut Criterion) {
             group.bench_function(format!("{key}/mass"), |b| {
                 b.iter(|| {
                     flip = !flip;
-                    edit(&mut s, |s| s.set_mass(i, if flip { 1.1 * m } else { m }));
+                    edit(&mut s, |s| {
+                        s.apply(SceneEdit::Mass {
+                            index: i,
+                            kg: if flip { 1.1 * m } else { m },
+                        })
+                    });
                 });
             });
         }

@@ -10,6 +10,7 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use linkage::analysis::{Report, report};
 use linkage::{Kinematics, Mechanism, SceneFile};
+use linkage_lab::session::SceneEdit;
 use linkage_lab::ui::control_map::ControlKind;
 use linkage_lab::{LinkageApp, StartOptions};
 
@@ -311,7 +312,10 @@ fn a_drawn_link_is_renamed_and_made_the_output() {
 fn a_drawing_over_unsaved_edits_asks_first() {
     let mut h = harness();
     let length = h.state().state.session.lengths()[0].original;
-    h.state_mut().state.session.set_length(0, 1.01 * length);
+    h.state_mut().state.session.apply(SceneEdit::Length {
+        index: 0,
+        value: 1.01 * length,
+    });
     assert!(h.state().state.session.is_dirty());
     click_control(&mut h, ControlKind::FileButton, "New…");
     h.run();

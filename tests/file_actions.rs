@@ -14,7 +14,7 @@ use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use linkage_lab::file_dialog::{ParentWindow, PathAnswer, PathChooser, PathRequest, Reply};
-use linkage_lab::session::SceneSource;
+use linkage_lab::session::{SceneEdit, SceneSource};
 use linkage_lab::ui::files::FileAction;
 use linkage_lab::{LinkageApp, StartOptions};
 
@@ -104,7 +104,10 @@ fn save_writes_a_scene_that_reopens_to_the_same_mechanism() {
         let first = session.lengths()[0]
             .value(session.scene())
             .expect("a length");
-        session.set_length(0, 1.02 * first);
+        session.apply(SceneEdit::Length {
+            index: 0,
+            value: 1.02 * first,
+        });
         assert_eq!(session.message(), None, "a 2 % longer link assembles");
         assert_ne!(session.scene(), session.original(), "edited");
         session.scene().clone()
@@ -246,7 +249,9 @@ fn every_scene_exports_the_sheet_the_cli_draws_with_instant_centres() {
     for scene in linkage_lab::catalog::BUILTIN_SCENES {
         let mut s = linkage_lab::session::Session::open_builtin(scene.key).expect("opens");
         let [lo, hi] = s.input_range_deg();
-        s.set_input_deg(lo + 0.37 * (hi - lo));
+        s.apply(SceneEdit::Input {
+            deg: lo + 0.37 * (hi - lo),
+        });
         assert!(s.message().is_none(), "{}: {:?}", scene.key, s.message());
         assert_eq!(
             s.sheet_svg(true),

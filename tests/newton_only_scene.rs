@@ -2,7 +2,7 @@
 //! app's session: the crank slider spans the traced assembly range, moving it past a
 //! fold is refused naming that range, and the pose shown stays the last valid one.
 
-use linkage_lab::session::{SceneSource, Session};
+use linkage_lab::session::{SceneEdit, SceneSource, Session};
 
 #[test]
 fn a_newton_only_scene_offers_its_traced_range_and_refuses_past_its_folds() {
@@ -26,10 +26,12 @@ fn a_newton_only_scene_offers_its_traced_range_and_refuses_past_its_folds() {
         (lo - a).abs() < 1e-3 && (hi - lo - width).abs() < 1e-3,
         "slider {lo}..{hi}, traced {a} + {width}"
     );
-    s.set_input_deg(0.5 * (lo + hi));
+    s.apply(SceneEdit::Input {
+        deg: 0.5 * (lo + hi),
+    });
     assert!(s.message().is_none(), "{:?}", s.message());
     let kept = s.pose().input_rad;
-    s.set_input_deg(a - 60.0);
+    s.apply(SceneEdit::Input { deg: a - 60.0 });
     let msg = s.message().expect("refused past the fold");
     let want = format!("reachable input range: {a:.2}..{:.2} deg", a + width);
     assert!(msg.contains(&want), "{msg}");

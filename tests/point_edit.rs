@@ -6,7 +6,8 @@
 
 use eframe::egui;
 use egui_kittest::Harness;
-use linkage_lab::session::Session;
+use linkage_lab::session::notice::{Notice, PointRefusal};
+use linkage_lab::session::{SceneEdit, Session};
 use linkage_lab::{LinkageApp, StartOptions};
 
 fn joints(s: &Session) -> Vec<(String, [f64; 2])> {
@@ -34,14 +35,17 @@ fn a_moved_point_lands_where_put_and_the_other_joints_stay() {
         let (_, at) = before.iter().find(|(n, _)| n == point).expect("joint");
         let size = s.mechanism().size_m;
         let to = [at[0] + 0.01 * size, at[1] - 0.02 * size];
-        s.move_point(point, to);
+        s.apply(SceneEdit::MovePoint {
+            name: String::from(point),
+            to_m: to,
+        });
         assert_eq!(s.message(), None, "{scene}");
         for ((name, was), (_, now)) in before.iter().zip(joints(&s)) {
             let want = if name == point { to } else { *was };
             let off = (now[0] - want[0]).hypot(now[1] - want[1]);
             assert!(off <= 1e-9 * size, "{scene}: {name} is {off:e} m off");
         }
-        s.undo();
+        s.apply(SceneEdit::Undo);
         assert_eq!(joints(&s), before, "{scene}: undo");
     }
 }
@@ -63,7 +67,21 @@ fn a_place_on_the_other_branch_is_refused() {
     let t = ((c[0] - b[0]) * u[0] + (c[1] - b[1]) * u[1]) / (u[0] * u[0] + u[1] * u[1]);
     let foot = [b[0] + t * u[0], b[1] + t * u[1]];
     let mirror = [2.0 * foot[0] - c[0], 2.0 * foot[1] - c[1]];
-    s.move_point("C", mirror);
+    s.apply(SceneEdit::MovePoint {
+        name: String::from("C"),
+        to_m: mirror,
+    });
+    assert!(
+        matches!(
+            s.notice(),
+            Some(Notice::PointRefused {
+                why: PointRefusal::OtherBranch,
+                ..
+            })
+        ),
+        "{:?}",
+        s.notice()
+    );
     let msg = s.message().expect("refused");
     assert!(msg.starts_with("C cannot go to ("), "{msg}");
     assert!(msg.contains("other branch"), "{msg}");
@@ -73,7 +91,10 @@ fn a_place_on_the_other_branch_is_refused() {
     let mut cutter = Session::open_builtin("die_cutter").expect("opens");
     let e = cutter.mechanism().point_index("E").expect("E");
     let q = cutter.pose().points[e].position;
-    cutter.move_point("E", [q.x + 0.01, q.y]);
+    cutter.apply(SceneEdit::MovePoint {
+        name: String::from("E"),
+        to_m: [q.x + 0.01, q.y],
+    });
     assert!(
         cutter
             .message()
@@ -82,11 +103,20 @@ fn a_place_on_the_other_branch_is_refused() {
         "{:?}",
         cutter.message()
     );
-    cutter.move_point("E", [q.x, q.y + 0.01]);
+    cutter.apply(SceneEdit::MovePoint {
+        name: String::from("E"),
+        to_m: [q.x, q.y + 0.01],
+    });
     assert_eq!(cutter.message(), None, "along the guide it moves");
-    s.move_point("Q", [0.0, 0.0]);
+    s.apply(SceneEdit::MovePoint {
+        name: String::from("Q"),
+        to_m: [0.0, 0.0],
+    });
     assert_eq!(s.message().as_deref(), Some("there is no point named Q"));
-    s.move_point("B", [f64::NAN, 0.0]);
+    s.apply(SceneEdit::MovePoint {
+        name: String::from("B"),
+        to_m: [f64::NAN, 0.0],
+    });
     assert!(s.message().expect("refused").contains("not finite"));
 }
 
@@ -136,7 +166,7 @@ fn dragging_a_joint_moves_it_and_dragging_elsewhere_pans() {
         "C at {landed:?}, pointer at {to:?}"
     );
     // One undo takes the whole drag back.
-    h.state_mut().state.session.undo();
+    h.state_mut().state.session.apply(SceneEdit::Undo);
     assert_eq!(h.state().state.session.scene(), &scene);
 
     // A slow frame: the press and 20 points of motion arrive together. The joint is
@@ -156,7 +186,7 @@ fn dragging_a_joint_moves_it_and_dragging_elsewhere_pans() {
         &scene,
         "a quick drag moves C too"
     );
-    h.state_mut().state.session.undo();
+    h.state_mut().state.session.apply(SceneEdit::Undo);
 
     // A drag on empty space pans.
     let camera = h.state().state.camera;

@@ -8,7 +8,7 @@
 use eframe::egui;
 use egui_kittest::{Harness, SnapshotOptions};
 use linkage_lab::AppState;
-use linkage_lab::session::Session;
+use linkage_lab::session::{SceneEdit, Session};
 
 /// Scene, crank angles (deg): the paper-cup feed, both die cutters, the flipper.
 const SHOTS: [(&str, [f64; 3]); 4] = [
@@ -26,7 +26,7 @@ struct Pane {
 
 fn pane(scene: &str, deg: f64) -> Harness<'static, Pane> {
     let mut session = Session::open_builtin(scene).expect("a shipped scene opens");
-    session.set_input_deg(deg);
+    session.apply(SceneEdit::Input { deg });
     assert!(
         session.message().is_none(),
         "{scene} at {deg}°: {:?}",

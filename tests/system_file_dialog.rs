@@ -157,8 +157,8 @@ fn open_and_export_ask_for_their_file_types() {
 
 #[test]
 fn closing_the_dialog_is_a_cancel() {
-    // zenity prints nothing and exits 1 on cancel; a person takes longer than 250 ms.
-    let dir = fake_zenity("cancel", "", 1, 0.5);
+    // zenity prints nothing and exits 1 on cancel; a person takes longer than 600 ms.
+    let dir = fake_zenity("cancel", "", 1, 1.0);
     let answer = run_child("open", &[&dir], true);
     assert_eq!(answer, format!("{:?}", PathAnswer::Cancelled));
     std::fs::remove_dir_all(dir).expect("clean up");

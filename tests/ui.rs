@@ -146,6 +146,45 @@ fn main_view_snapshot() {
 }
 
 #[test]
+fn an_edit_shows_in_the_view_in_the_frame_that_makes_it() {
+    let mut h = harness();
+    for key in ["slider_crank", "die_cutter"] {
+        open_scene(&mut h, key);
+        let before = h.state().state.session.generation();
+        h.get_by_role_and_label(Role::Slider, CRANK_LABEL)
+            .set_value_accesskit(77.0);
+        h.step();
+        let st = &h.state().state;
+        let now = (st.session.generation(), st.session.input_rad());
+        assert!((now.1.to_degrees() - 77.0).abs() < 1e-9, "{key}: {now:?}");
+        assert_eq!(
+            st.view_drawn,
+            Some(now),
+            "{key}: the crank, in the same frame"
+        );
+        let label = st.session.lengths()[0].label.clone();
+        let v = st.session.lengths()[0]
+            .value(st.session.scene())
+            .expect("a length");
+        h.get_by_role_and_label(Role::Slider, &label)
+            .set_value_accesskit(1.01 * v);
+        h.step();
+        let st = &h.state().state;
+        assert!(st.session.generation() > before, "{key}: rebuilt");
+        let now = (st.session.generation(), st.session.input_rad());
+        assert_eq!(
+            st.view_drawn,
+            Some(now),
+            "{key}: a length, in the same frame"
+        );
+        assert!(
+            st.edits.is_empty(),
+            "{key}: every edit asked for is applied"
+        );
+    }
+}
+
+#[test]
 fn a_dragged_slider_moves_the_pose_each_frame_and_the_report_follows_when_it_stops() {
     let mut h = harness();
     open_scene(&mut h, "slider_crank");

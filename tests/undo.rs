@@ -7,7 +7,7 @@ use eframe::egui;
 use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
-use linkage_lab::session::Session;
+use linkage_lab::session::{SceneEdit, Session};
 use linkage_lab::{LinkageApp, StartOptions};
 
 fn harness() -> Harness<'static, LinkageApp> {
@@ -25,38 +25,46 @@ fn a_drag_is_one_step_and_undo_redo_walk_the_whole_history_exactly() {
     let opened = s.scene().clone();
     // A drag: three edits of one length without the gesture ending.
     for v in [60.0, 61.0, 62.0] {
-        s.set_length(1, v);
+        s.apply(SceneEdit::Length { index: 1, value: v });
     }
     let dragged = s.scene().clone();
     s.end_gesture();
-    s.flip_branch("C");
+    s.apply(SceneEdit::FlipBranch {
+        point: String::from("C"),
+    });
     s.end_gesture();
     let flipped = s.scene().clone();
     assert_ne!(flipped, dragged);
     assert!(s.is_dirty());
 
-    s.undo();
+    s.apply(SceneEdit::Undo);
     assert_eq!(s.scene(), &dragged);
-    s.undo();
+    s.apply(SceneEdit::Undo);
     assert_eq!(s.scene(), &opened, "one undo takes the whole drag back");
     assert!(!s.can_undo() && !s.is_dirty());
-    s.redo();
-    s.redo();
+    s.apply(SceneEdit::Redo);
+    s.apply(SceneEdit::Redo);
     assert_eq!(s.scene(), &flipped);
     assert!(!s.can_redo());
     // A new edit after an undo drops what was undone.
-    s.undo();
+    s.apply(SceneEdit::Undo);
     s.end_gesture();
-    s.set_length(1, 70.0);
+    s.apply(SceneEdit::Length {
+        index: 1,
+        value: 70.0,
+    });
     assert!(!s.can_redo());
 }
 
 #[test]
 fn a_refused_edit_is_not_an_undo_step() {
     let mut s = Session::open_builtin("slider_crank").expect("opens");
-    s.set_input_deg(90.0);
+    s.apply(SceneEdit::Input { deg: 90.0 });
     // A rod of 10 mm cannot reach the guide from a crank of 50 mm standing upright.
-    s.set_length(1, 10.0);
+    s.apply(SceneEdit::Length {
+        index: 1,
+        value: 10.0,
+    });
     assert!(s.message().is_some(), "an unassemblable length is refused");
     assert!(!s.can_undo());
 }
@@ -65,7 +73,10 @@ fn a_refused_edit_is_not_an_undo_step() {
 fn buttons_and_shortcuts_undo_and_redo() {
     let mut h = harness();
     let opened = h.state().state.session.scene().clone();
-    h.state_mut().state.session.set_length(0, 500.0);
+    h.state_mut().state.session.apply(SceneEdit::Length {
+        index: 0,
+        value: 500.0,
+    });
     h.run();
     let edited = h.state().state.session.scene().clone();
     assert_ne!(edited, opened);
@@ -98,7 +109,10 @@ fn buttons_and_shortcuts_undo_and_redo() {
 #[test]
 fn opening_another_scene_over_unsaved_edits_asks_first() {
     let mut h = harness();
-    h.state_mut().state.session.set_length(0, 500.0);
+    h.state_mut().state.session.apply(SceneEdit::Length {
+        index: 0,
+        value: 500.0,
+    });
     h.run();
     let edited = h.state().state.session.scene().clone();
     let other = Session::open_builtin("slider_crank").expect("opens");

@@ -3,7 +3,9 @@
 //! limit of a refused length is the root of that margin, found by regula falsi
 //! (Illinois): about ten evaluations instead of forty full rebuilds by bisection.
 
-use linkage::{Kinematics, Mechanism, SceneFile};
+use std::fmt;
+
+use linkage::{Kinematics, LinkageError, Mechanism, SceneFile};
 
 use super::Built;
 use super::params::LengthParam;
@@ -15,24 +17,48 @@ const MAX_EVALUATIONS: usize = 100;
 /// Relative width at which the limit counts as found: far below what a slider sets.
 const LIMIT_RTOL: f64 = 1e-12;
 
+/// Why a scene does not build at an input.
+#[derive(Clone, Debug, PartialEq)]
+pub enum NotAssembled {
+    /// The scene is not a valid mechanism, or the solver failed.
+    Solver(LinkageError),
+    /// A closed-form group does not close.
+    Open {
+        /// The group, named by its points.
+        group: String,
+        /// Its closure margin (negative: how far from closing).
+        margin: f64,
+    },
+}
+
+impl fmt::Display for NotAssembled {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Solver(e) => write!(f, "{e}"),
+            Self::Open { group, margin } => {
+                write!(f, "the {group} does not close (margin {margin:.3e})")
+            }
+        }
+    }
+}
+
 /// Builds `scene` at `input` with what an edit shows at once, or says why not: for a
 /// closed-form chain that does not close, which group, without solving.
 ///
 /// # Errors
-/// Why the scene does not build or assemble at `input`, in words.
-pub(crate) fn try_assemble(scene: &SceneFile, input: f64) -> Result<Built, String> {
-    let mech = Mechanism::from_scene(scene).map_err(|e| e.to_string())?;
-    let mut kin = Kinematics::new(mech).map_err(|e| e.to_string())?;
+/// Why the scene does not build or assemble at `input`.
+pub(crate) fn try_assemble(scene: &SceneFile, input: f64) -> Result<Built, NotAssembled> {
+    let mech = Mechanism::from_scene(scene).map_err(NotAssembled::Solver)?;
+    let mut kin = Kinematics::new(mech).map_err(NotAssembled::Solver)?;
     if let Some(c) = kin.closure(input)
         && !c.assembles
     {
-        return Err(format!(
-            "the {} does not close (margin {:.3e})",
-            kin.group_name(c.group),
-            c.margin
-        ));
+        return Err(NotAssembled::Open {
+            group: kin.group_name(c.group),
+            margin: c.margin,
+        });
     }
-    Built::at(kin, input).map_err(|e| e.to_string())
+    Built::at(kin, input).map_err(NotAssembled::Solver)
 }
 
 /// The value of `param` nearest `bad`, between `good` (where `scene` assembles at

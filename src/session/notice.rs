@@ -2,6 +2,11 @@
 
 use std::fmt;
 
+use linkage::LinkageError;
+
+use super::limit::NotAssembled;
+use super::params::LengthError;
+
 /// A refused edit or a failed action.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Notice {
@@ -15,13 +20,64 @@ pub enum Notice {
         unit: &'static str,
         /// The input angle held, deg.
         input_deg: f64,
-        /// The cause (which group does not close, or the solver's error).
-        why: String,
+        /// Which group does not close, or the solver's error.
+        why: NotAssembled,
         /// The nearest value towards `value` that still assembles, if one was found.
         limit: Option<f64>,
     },
-    /// Anything else, already in words.
-    Text(String),
+    /// A length that is no length (not positive, or its points gone).
+    LengthInvalid(LengthError),
+    /// A value outside its valid range (or not a number).
+    InvalidValue {
+        /// What it is, with its unit ("spring constant (N/m)").
+        what: &'static str,
+        /// The value asked for.
+        value: f64,
+        /// The valid range in words.
+        valid: &'static str,
+    },
+    /// The crank cannot go to the angle asked for.
+    InputRefused(LinkageError),
+    /// A point cannot go where it was dragged.
+    PointRefused {
+        /// The point's name.
+        name: String,
+        /// Where it was asked to go, scene units.
+        to: [f64; 2],
+        /// The scene's length unit.
+        unit: &'static str,
+        /// Why not.
+        why: PointRefusal,
+    },
+    /// The scene an edit made does not build or solve.
+    EditRefused {
+        /// The edit, in words ("flipping the branch at C").
+        what: String,
+        /// The solver's error.
+        why: LinkageError,
+    },
+    /// Undo or redo holds a scene that does not build here.
+    HistoryRefused {
+        /// Undo (else redo).
+        undo: bool,
+        /// The solver's error.
+        why: LinkageError,
+    },
+}
+
+/// Why a point cannot go where it was dragged.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PointRefusal {
+    /// The place is not finite.
+    NotFinite,
+    /// No link carries a point of that name.
+    NoSuchPoint,
+    /// The chain does not assemble with the point there.
+    NotAssembled(NotAssembled),
+    /// The point slides on a guide and was dragged off its line.
+    OffGuide,
+    /// The chain assembles there only on the other branch.
+    OtherBranch,
 }
 
 impl fmt::Display for Notice {
@@ -49,7 +105,45 @@ impl fmt::Display for Notice {
                 f,
                 "{label} = {value:.4} {unit}: {why}; the last valid pose stays."
             ),
-            Self::Text(text) => f.write_str(text),
+            Self::LengthInvalid(why) => write!(f, "{why}"),
+            Self::InvalidValue { what, value, valid } => {
+                write!(f, "{what} = {value} is invalid: {valid}; nothing changed")
+            }
+            Self::InputRefused(why) => write!(f, "{why}"),
+            Self::PointRefused { name, why, .. } if *why == PointRefusal::NoSuchPoint => {
+                write!(f, "there is no point named {name}")
+            }
+            Self::PointRefused {
+                name,
+                to,
+                unit,
+                why,
+            } => write!(
+                f,
+                "{name} cannot go to ({:.2}, {:.2}) {unit}: {why}",
+                to[0], to[1]
+            ),
+            Self::EditRefused { what, why } => write!(f, "{what}: {why}"),
+            Self::HistoryRefused { undo, why } => {
+                let what = if *undo { "undo" } else { "redo" };
+                write!(f, "cannot {what}: {why}")
+            }
+        }
+    }
+}
+
+impl fmt::Display for PointRefusal {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NotFinite => f.write_str("the place is not finite"),
+            Self::NoSuchPoint => f.write_str("no link carries such a point"),
+            Self::NotAssembled(why) => write!(f, "{why}"),
+            Self::OffGuide => {
+                f.write_str("it slides on a guide, so it can move only along the guide's line")
+            }
+            Self::OtherBranch => f.write_str(
+                "the chain assembles there only on its other branch (flip the branch first)",
+            ),
         }
     }
 }

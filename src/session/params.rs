@@ -36,21 +36,19 @@ impl LengthParam {
     ///
     /// # Errors
     /// A length that is not finite and positive, named with the valid range.
-    pub fn apply(&self, scene: &mut SceneFile, length: f64) -> Result<(), String> {
+    pub fn apply(&self, scene: &mut SceneFile, length: f64) -> Result<(), LengthError> {
         let range = self.range();
         if !(length.is_finite() && length > 0.0) {
-            return Err(format!(
-                "{} = {length} is invalid: it must be a positive length ({:.4} to {:.4} on the slider)",
-                self.label,
-                range.start(),
-                range.end()
-            ));
+            return Err(LengthError::NotPositive {
+                label: self.label.clone(),
+                value: length,
+                range: [*range.start(), *range.end()],
+            });
         }
         let Some(((ax, ay), (bx, by))) = self.ends(scene) else {
-            return Err(format!(
-                "{}: the scene no longer has these points",
-                self.label
-            ));
+            return Err(LengthError::PointsGone {
+                label: self.label.clone(),
+            });
         };
         let old = (bx - ax).hypot(by - ay);
         let scale = length / old;
@@ -166,8 +164,49 @@ mod tests {
         let mut s = scene("slider_crank");
         let p = &length_params(&s)[0];
         for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
-            let msg = p.apply(&mut s, bad).expect_err("refused");
-            assert!(msg.contains("positive length"), "{msg}");
+            let why = p.apply(&mut s, bad).expect_err("refused");
+            assert!(
+                matches!(why, LengthError::NotPositive { range, .. } if range[0] < range[1]),
+                "{why:?}"
+            );
+            assert!(why.to_string().contains("positive length"), "{why}");
+        }
+    }
+}
+
+/// Why a length cannot be set.
+#[derive(Clone, Debug, PartialEq)]
+pub enum LengthError {
+    /// Not a positive finite number.
+    NotPositive {
+        /// The length's slider label.
+        label: String,
+        /// The value asked for.
+        value: f64,
+        /// The slider's range.
+        range: [f64; 2],
+    },
+    /// The scene no longer has the length's points.
+    PointsGone {
+        /// The length's slider label.
+        label: String,
+    },
+}
+
+impl std::fmt::Display for LengthError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::NotPositive {
+                label,
+                value,
+                range: [lo, hi],
+            } => write!(
+                f,
+                "{label} = {value} is invalid: it must be a positive length ({lo:.4} to {hi:.4} on the slider)"
+            ),
+            Self::PointsGone { label } => {
+                write!(f, "{label}: the scene no longer has these points")
+            }
         }
     }
 }

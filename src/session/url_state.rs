@@ -7,7 +7,7 @@
 use linkage::dynamics::Method;
 
 use super::dynamic_run::IntegratorChoice;
-use super::{SceneSource, Session};
+use super::{SceneEdit, SceneSource, Session};
 
 /// The state a URL fragment carries.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -166,26 +166,34 @@ pub fn open(st: &UrlState) -> Result<Session, String> {
         (None, None) => return Err("the URL names no scene".into()),
     };
     for point in &st.flips {
-        s.flip_branch(point);
+        s.apply(SceneEdit::FlipBranch {
+            point: point.clone(),
+        });
     }
     for (label, v) in &st.lengths {
         if let Some(i) = s.lengths().iter().position(|p| &p.label == label) {
-            s.set_length(i, *v);
+            s.apply(SceneEdit::Length {
+                index: i,
+                value: *v,
+            });
         }
     }
     for &(i, k) in &st.springs {
-        s.set_spring_k(i, k);
+        s.apply(SceneEdit::SpringK {
+            index: i,
+            n_per_m: k,
+        });
     }
     for (name, m) in &st.masses {
         if let Some(i) = s.scene().links.iter().position(|l| &l.name == name) {
-            s.set_mass(i, *m);
+            s.apply(SceneEdit::Mass { index: i, kg: *m });
         }
     }
     if let Some(choice) = st.integrator {
-        s.set_integrator(choice);
+        s.apply(SceneEdit::Integrator(choice));
     }
     if let Some(x) = st.input_deg {
-        s.set_input_deg(x);
+        s.apply(SceneEdit::Input { deg: x });
     }
     Ok(s)
 }
@@ -236,8 +244,11 @@ mod tests {
             .text;
         let mut s =
             Session::open_text(SceneSource::File("my shaper.ron".into()), text).expect("opens");
-        s.set_length(0, s.lengths()[0].value(s.scene()).expect("a length") * 1.05);
-        s.set_input_deg(77.0);
+        s.apply(SceneEdit::Length {
+            index: 0,
+            value: s.lengths()[0].value(s.scene()).expect("a length") * 1.05,
+        });
+        s.apply(SceneEdit::Input { deg: 77.0 });
         assert_eq!(s.message(), None);
         let fragment = encode(&s);
         assert!(
@@ -262,14 +273,20 @@ mod tests {
             .iter()
             .position(|p| p.label == "BC")
             .expect("BC");
-        s.set_length(bc, 0.21);
-        s.set_spring_k(0, 2000.0);
-        s.set_input_deg(50.0);
-        s.set_integrator(IntegratorChoice {
+        s.apply(SceneEdit::Length {
+            index: bc,
+            value: 0.21,
+        });
+        s.apply(SceneEdit::SpringK {
+            index: 0,
+            n_per_m: 2000.0,
+        });
+        s.apply(SceneEdit::Input { deg: 50.0 });
+        s.apply(SceneEdit::Integrator(IntegratorChoice {
             method: Method::Rk4,
             step: 2e-4,
             ..IntegratorChoice::default()
-        });
+        }));
         assert_eq!(s.message(), None);
         let fragment = encode(&s);
         let back = open(&decode(&fragment)).expect("reopens");

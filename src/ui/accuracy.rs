@@ -139,7 +139,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         }
     }
     if changed || choice.method != st.session.integrator().method {
-        st.session.set_integrator(choice);
+        st.edit(crate::session::SceneEdit::Integrator(choice));
     }
 }
 

@@ -6,7 +6,7 @@ use linkage::scene::Models;
 
 use crate::app::AppState;
 use crate::session::params::{mass_range, spring_range};
-use crate::session::unit_label;
+use crate::session::{SceneEdit, unit_label};
 use crate::ui::control_map::ControlKind;
 
 /// Label of the crank-angle slider (UI tests find it by this).
@@ -41,7 +41,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         .note(ui, ControlKind::Crank, CRANK_LABEL, &crank);
     if crank.changed() {
         st.playing = false;
-        st.session.set_input_deg(input);
+        st.edit(SceneEdit::Input { deg: input });
     }
 
     if let Some(Ok(run)) = st.session.dynamics() {
@@ -52,7 +52,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             .note(ui, ControlKind::RunTime, "run time (s)", &r);
         if r.changed() {
             st.playing = false;
-            st.session.set_time_s(t);
+            st.edit(SceneEdit::RunTime { s: t });
         }
     }
 
@@ -70,7 +70,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         let r = ui.add(egui::Slider::new(&mut v, p.range()).text(&p.label));
         st.controls.note(ui, ControlKind::Length, &p.label, &r);
         if r.changed() {
-            st.session.set_length(i, v);
+            st.edit(SceneEdit::Length { index: i, value: v });
         }
     }
 
@@ -97,7 +97,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             let r = ui.add(egui::Slider::new(&mut k, spring_range(orig)).text(&label));
             st.controls.note(ui, ControlKind::Spring, &label, &r);
             if r.changed() {
-                st.session.set_spring_k(i, k);
+                st.edit(SceneEdit::SpringK {
+                    index: i,
+                    n_per_m: k,
+                });
             }
         }
     }
@@ -118,7 +121,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
                 let r = ui.add(egui::Slider::new(&mut m, mass_range(orig)).text(&label));
                 st.controls.note(ui, ControlKind::Mass, &label, &r);
                 if r.changed() {
-                    st.session.set_mass(i, m);
+                    st.edit(SceneEdit::Mass { index: i, kg: m });
                 }
             }
         }
@@ -134,7 +137,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             let r = ui.checkbox(&mut on, &label);
             st.controls.note(ui, ControlKind::Branch, &label, &r);
             if r.changed() {
-                st.session.flip_branch(&point);
+                st.edit(SceneEdit::FlipBranch { point });
             }
         }
     }

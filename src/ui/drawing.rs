@@ -7,7 +7,7 @@ use linkage::sketch::Sketch;
 use crate::app::AppState;
 use crate::builder::Builder;
 use crate::builder::edit::SketchEdit;
-use crate::session::{SceneSource, Session};
+use crate::session::{SceneEdit, SceneSource, Session};
 
 /// The file name a drawing is saved and shared under until the user names one.
 const DRAWING_FILE: &str = "my_mechanism.ron";
@@ -74,7 +74,7 @@ pub fn undo_any(st: &mut AppState) {
     if st.builder.is_some() {
         undo(st);
     } else {
-        st.session.undo();
+        st.edit(SceneEdit::Undo);
     }
 }
 
@@ -83,7 +83,7 @@ pub fn redo_any(st: &mut AppState) {
     if st.builder.is_some() {
         redo(st);
     } else {
-        st.session.redo();
+        st.edit(SceneEdit::Redo);
     }
 }
 

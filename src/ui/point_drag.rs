@@ -9,6 +9,7 @@
 use eframe::egui::{self, Pos2, Rect};
 
 use crate::app::AppState;
+use crate::session::SceneEdit;
 
 /// How near a joint (points) a press must be to grab it.
 const GRAB_PT: f32 = 10.0;
@@ -62,7 +63,7 @@ pub fn handle(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut App
         };
         let current = point_position(st, &name);
         if current.is_none_or(|c| (c[0] - to[0]).hypot(c[1] - to[1]) > 1e-12) {
-            st.session.move_point(&name, to);
+            st.edit(SceneEdit::MovePoint { name, to_m: to });
         }
     }
     true
@@ -101,7 +102,9 @@ fn turn_to(st: &mut AppState, at: Pos2, rect: Rect, offset: f64) {
     let now = st.session.input_rad();
     let step = (pointed - now + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
         - std::f64::consts::PI;
-    st.session.set_input_deg((now + step).to_degrees());
+    st.edit(SceneEdit::Input {
+        deg: (now + step).to_degrees(),
+    });
 }
 
 /// The joint within [`GRAB_PT`] of `at`, the nearest.

@@ -27,7 +27,7 @@ pub fn strip(ui: &mut egui::Ui, st: &AppState) {
 }
 
 /// The report's entries in a row, or why there is none.
-fn entries(ui: &mut egui::Ui, report: &Result<Report, String>) {
+fn entries(ui: &mut egui::Ui, report: &Result<Report, linkage::LinkageError>) {
     let r = match report {
         Ok(r) => r,
         Err(e) => {

@@ -63,7 +63,7 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
             }
             new_menu(ui, st);
             if ui.button("Reset edits").clicked() {
-                st.session.reset();
+                st.edit(crate::session::SceneEdit::Reset);
             }
             history_buttons(ui, st);
             if st.session.is_dirty() {

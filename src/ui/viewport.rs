@@ -66,6 +66,8 @@ pub fn show(
         st.fit_pending = false;
     }
     let moving_point = crate::ui::point_drag::handle(ui, &response, rect, st);
+    // A dragged point or a crank turned by hand shows where the pointer is now.
+    st.apply_edits();
     navigate(ui, &response, rect, &mut st.camera, !moving_point);
     if response.double_clicked() {
         st.fit_pending = true;
@@ -84,6 +86,7 @@ pub fn show(
         );
     }
     let build_us = started.elapsed().as_secs_f64() * 1e6;
+    st.view_drawn = Some((st.session.generation(), st.session.input_rad()));
 
     let painter = ui.painter_at(rect);
     painter.rect_filled(rect, 0.0, egui::Color32::from_rgb(246, 246, 242));

@@ -1,0 +1,47 @@
+//! What the session writes for the user: the sweep as CSV and the sheet of the
+//! current position as SVG.
+
+use linkage::sweep::{csv_header, csv_row, sweep};
+
+use super::Session;
+use super::curves;
+
+impl Session {
+    /// The current mechanism's sweep as CSV, in the `linkage sweep` format (same
+    /// header, SI units, velocities at the scene's crank speed).
+    ///
+    /// # Errors
+    /// The sweep's error, as text.
+    pub fn sweep_csv(&self) -> Result<String, String> {
+        let mut k = self.kinematics().clone();
+        let sw = sweep(&mut k, curves::CURVE_STEPS).map_err(|e| e.to_string())?;
+        let m = k.mechanism();
+        let mut out = csv_header(m).join(",");
+        out.push('\n');
+        for (s, angles) in sw.solutions.iter().zip(&sw.angles) {
+            let row: Vec<String> = csv_row(m, s, angles).iter().map(f64::to_string).collect();
+            out.push_str(&row.join(","));
+            out.push('\n');
+        }
+        Ok(out)
+    }
+
+    /// The sheet of the current position (pose, polygons, tables; instant centres if
+    /// `centres`) as SVG: what `linkage diagram` writes for the same scene and input.
+    pub fn sheet_svg(&self, centres: bool) -> String {
+        let m = self.mechanism();
+        let pose = self.pose();
+        let found = linkage::instant_centres::instant_centres(m, pose);
+        let position = linkage_diagram::svg::Position {
+            mechanism: m,
+            solution: pose,
+            equations: self.polygons(),
+            centres: Some(&found),
+        };
+        let parts = linkage_diagram::svg::Parts {
+            centres,
+            ..Default::default()
+        };
+        linkage_diagram::svg::sheet(&position, parts)
+    }
+}
