@@ -2,8 +2,10 @@
 //! these, and [`apply`] makes the next drawing from them, or says why not.
 
 use linkage::Vec2;
-use linkage::scene::Models;
-use linkage::sketch::{Sketch, SketchLink, SketchPoint, SketchSlider};
+use linkage::scene::{ForceWhen, Models};
+use linkage::sketch::{
+    Sketch, SketchDamper, SketchForce, SketchLink, SketchPoint, SketchSlider, SketchSpring,
+};
 
 /// One end of a new link: a point already drawn, or a new one at a place (m).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -85,7 +87,58 @@ pub enum SketchEdit {
     SetMass(Body, Option<f64>),
     /// Gravity on or off.
     SetGravity(bool),
+    /// A spring between two points, 1000 N/m, unstretched as drawn.
+    AddSpring(usize, usize),
+    /// A linear damper between two points, 10 N·s/m.
+    AddDamper(usize, usize),
+    /// A force of 100 N down the drawing at a point.
+    AddForce(usize),
+    /// A spring's stiffness, N/m, and free length, m (`None`: as drawn).
+    SetSpring {
+        /// The spring, by index.
+        spring: usize,
+        /// Stiffness, N/m.
+        k_n_per_m: f64,
+        /// Free length, m.
+        free_length_m: Option<f64>,
+    },
+    /// A damper's coefficient, N·s/m.
+    SetDamper {
+        /// The damper, by index.
+        damper: usize,
+        /// Coefficient, N·s/m.
+        c_n_s_per_m: f64,
+    },
+    /// A point force's vector, N, and when it acts.
+    SetForce {
+        /// The force, by index.
+        force: usize,
+        /// The vector, N.
+        force_n: Vec2,
+        /// Always, or on the working stroke only.
+        when: ForceWhen,
+    },
+    /// A spring, damper or force removed.
+    DeleteElement(Element),
 }
+
+/// A force element of a drawing, by index.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Element {
+    /// A spring.
+    Spring(usize),
+    /// A damper.
+    Damper(usize),
+    /// A point force.
+    Force(usize),
+}
+
+/// Stiffness of a new spring, N/m.
+pub const NEW_SPRING_N_PER_M: f64 = 1000.0;
+/// Coefficient of a new damper, N·s/m.
+pub const NEW_DAMPER_N_S_PER_M: f64 = 10.0;
+/// A new point force, N: 100 N down the drawing.
+pub const NEW_FORCE_N: [f64; 2] = [0.0, -100.0];
 
 /// A body that can carry a mass.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -117,6 +170,8 @@ pub enum Refusal {
     GuideThroughPin(String),
     /// A mass that is not a positive finite number.
     Mass(f64),
+    /// A stiffness, free length or damping coefficient that is negative or not finite.
+    Coefficient(f64),
 }
 
 impl std::fmt::Display for Refusal {
@@ -143,6 +198,10 @@ impl std::fmt::Display for Refusal {
             Self::Speed(rpm) => write!(
                 f,
                 "{rpm} rpm cannot drive: the speed must be a finite number other than 0"
+            ),
+            Self::Coefficient(v) => write!(
+                f,
+                "{v} is invalid: a stiffness, free length or damping must be finite and >= 0"
             ),
         }
     }
@@ -214,6 +273,55 @@ pub fn apply(sketch: &Sketch, edit: SketchEdit) -> Result<Sketch, Refusal> {
         SketchEdit::SetOutput(link) => next.output = link,
         SketchEdit::SetModels(models) => next.models = models,
         SketchEdit::SetGravity(on) => next.gravity = on,
+        SketchEdit::AddSpring(a, b) => {
+            two_points(a, b)?;
+            next.springs.push(SketchSpring {
+                a,
+                b,
+                k_n_per_m: NEW_SPRING_N_PER_M,
+                free_length_m: None,
+            });
+        }
+        SketchEdit::AddDamper(a, b) => {
+            two_points(a, b)?;
+            next.dampers.push(SketchDamper {
+                a,
+                b,
+                c_n_s_per_m: NEW_DAMPER_N_S_PER_M,
+            });
+        }
+        SketchEdit::AddForce(point) => next.forces.push(SketchForce {
+            point,
+            force_n: Vec2::new(NEW_FORCE_N[0], NEW_FORCE_N[1]),
+            when: ForceWhen::Always,
+        }),
+        SketchEdit::SetSpring {
+            spring,
+            k_n_per_m,
+            free_length_m,
+        } => {
+            coefficient(k_n_per_m)?;
+            free_length_m.map(coefficient).transpose()?;
+            let s = &mut next.springs[spring];
+            (s.k_n_per_m, s.free_length_m) = (k_n_per_m, free_length_m);
+        }
+        SketchEdit::SetDamper {
+            damper,
+            c_n_s_per_m,
+        } => next.dampers[damper].c_n_s_per_m = coefficient(c_n_s_per_m)?,
+        SketchEdit::SetForce {
+            force,
+            force_n,
+            when,
+        } => {
+            finite(force_n)?;
+            (next.forces[force].force_n, next.forces[force].when) = (force_n, when);
+        }
+        SketchEdit::DeleteElement(element) => match element {
+            Element::Spring(i) => drop(next.springs.remove(i)),
+            Element::Damper(i) => drop(next.dampers.remove(i)),
+            Element::Force(i) => drop(next.forces.remove(i)),
+        },
         SketchEdit::SetMass(body, kg) => {
             if let Some(kg) = kg.filter(|kg| !(kg.is_finite() && *kg > 0.0)) {
                 return Err(Refusal::Mass(kg));
@@ -225,6 +333,23 @@ pub fn apply(sketch: &Sketch, edit: SketchEdit) -> Result<Sketch, Refusal> {
         }
     }
     Ok(next)
+}
+
+fn two_points(a: usize, b: usize) -> Result<(), Refusal> {
+    if a == b {
+        Err(Refusal::SameEnds)
+    } else {
+        Ok(())
+    }
+}
+
+/// `v` if it is a finite number >= 0.
+fn coefficient(v: f64) -> Result<f64, Refusal> {
+    if v.is_finite() && v >= 0.0 {
+        Ok(v)
+    } else {
+        Err(Refusal::Coefficient(v))
+    }
 }
 
 fn finite(at: Vec2) -> Result<(), Refusal> {
@@ -292,6 +417,8 @@ fn add_link(sketch: &mut Sketch, a: End, b: End) -> Result<(), Refusal> {
         name,
         points: vec![p, q],
         mass_kg: None,
+        centroid: None,
+        inertia_kg_m2: None,
     });
     Ok(())
 }
@@ -325,9 +452,13 @@ fn rename(sketch: &mut Sketch, what: Named, name: String) -> Result<(), Refusal>
     Ok(())
 }
 
-/// Removes a point; links left with one point go, and so do its sliders.
+/// Removes a point; links left with one point go, and so do its sliders and the
+/// force elements at it.
 fn delete_point(sketch: &mut Sketch, point: usize) {
     sketch.sliders.retain(|s| s.point != point);
+    sketch.springs.retain(|s| s.a != point && s.b != point);
+    sketch.dampers.retain(|d| d.a != point && d.b != point);
+    sketch.forces.retain(|f| f.point != point);
     for link in &mut sketch.links {
         link.points.retain(|&p| p != point);
     }
@@ -350,7 +481,7 @@ fn delete_link(sketch: &mut Sketch, link: usize) {
     };
     for p in (0..sketch.points.len()).rev() {
         if !held(sketch, p) {
-            remove_point(sketch, p);
+            delete_point(sketch, p);
         }
     }
 }
@@ -384,6 +515,17 @@ fn remove_point(sketch: &mut Sketch, point: usize) {
     }
     for s in &mut sketch.sliders {
         shift(&mut s.point);
+    }
+    for s in &mut sketch.springs {
+        shift(&mut s.a);
+        shift(&mut s.b);
+    }
+    for d in &mut sketch.dampers {
+        shift(&mut d.a);
+        shift(&mut d.b);
+    }
+    for f in &mut sketch.forces {
+        shift(&mut f.point);
     }
 }
 
@@ -491,5 +633,44 @@ mod tests {
         assert_eq!(after.links.len(), 1);
         assert_eq!(after.links[0].points, [1, 2]);
         assert_eq!(after.driver, None);
+    }
+
+    #[test]
+    fn force_elements_follow_their_points_and_refuse_bad_numbers() {
+        let mut s = Sketch::new("loads");
+        for edit in [
+            SketchEdit::AddPivot(at(0.0, 0.0)),
+            SketchEdit::AddPivot(at(0.3, 0.0)),
+            SketchEdit::AddLink(End::Point(0), End::New(at(0.0, 0.1))),
+            SketchEdit::AddSpring(2, 1),
+            SketchEdit::AddDamper(0, 2),
+            SketchEdit::AddForce(2),
+            SketchEdit::AddForce(1),
+        ] {
+            s = apply(&s, edit).expect("applies");
+        }
+        assert_eq!(
+            apply(&s, SketchEdit::AddSpring(1, 1)),
+            Err(Refusal::SameEnds)
+        );
+        for bad in [-1.0, f64::NAN, f64::INFINITY] {
+            let spring = SketchEdit::SetSpring {
+                spring: 0,
+                k_n_per_m: bad,
+                free_length_m: None,
+            };
+            assert!(
+                matches!(apply(&s, spring), Err(Refusal::Coefficient(_))),
+                "{bad}"
+            );
+        }
+        // Deleting the first pivot takes the damper at it; the rest are renumbered.
+        let after = apply(&s, SketchEdit::DeletePoint(0)).expect("applies");
+        assert!(after.dampers.is_empty());
+        assert_eq!((after.springs[0].a, after.springs[0].b), (1, 0));
+        let at_points: Vec<usize> = after.forces.iter().map(|f| f.point).collect();
+        assert_eq!(at_points, [1, 0]);
+        let after = apply(&after, SketchEdit::DeleteElement(Element::Force(0))).expect("applies");
+        assert_eq!(after.forces.len(), 1);
     }
 }

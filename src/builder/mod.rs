@@ -26,18 +26,27 @@ pub enum Tool {
     Driver,
     /// Drags points.
     Move,
+    /// Joins two points by a spring.
+    Spring,
+    /// Joins two points by a damper.
+    Damper,
+    /// Puts a force on a point.
+    Force,
     /// Deletes a point or a link.
     Delete,
 }
 
 impl Tool {
     /// Every tool, in the panel's order.
-    pub const ALL: [Tool; 6] = [
+    pub const ALL: [Tool; 9] = [
         Tool::Pivot,
         Tool::Link,
         Tool::Slider,
         Tool::Driver,
         Tool::Move,
+        Tool::Spring,
+        Tool::Damper,
+        Tool::Force,
         Tool::Delete,
     ];
 
@@ -49,6 +58,9 @@ impl Tool {
             Tool::Slider => "Slider",
             Tool::Driver => "Driver",
             Tool::Move => "Move",
+            Tool::Spring => "Spring",
+            Tool::Damper => "Damper",
+            Tool::Force => "Force",
             Tool::Delete => "Delete",
         }
     }
@@ -69,7 +81,16 @@ impl Tool {
             Tool::Move => {
                 "drag a point; it snaps to the 10 mm grid and into line with other points"
             }
-            Tool::Delete => "click a point or a link to delete it",
+            Tool::Spring => {
+                "click two points to join them by a spring (1000 N/m, unstretched as \
+                 drawn; the panel sets both)"
+            }
+            Tool::Damper => "click two points to join them by a damper (10 N s/m)",
+            Tool::Force => "click a point to put a force on it (100 N down; the panel sets it)",
+            Tool::Delete => {
+                "click a point or a link to delete it; springs, dampers and forces go in \
+                 the panel"
+            }
         }
     }
 }
@@ -81,6 +102,13 @@ pub enum Pending {
     LinkFrom(End),
     /// The link a point is being added to.
     OnLink(usize),
+    /// A spring's or damper's first point.
+    ElementFrom {
+        /// A damper (else a spring).
+        damper: bool,
+        /// The first point.
+        point: usize,
+    },
 }
 
 /// The drawing being built and how.

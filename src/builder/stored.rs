@@ -3,12 +3,20 @@
 //! index, since stored text is user input like any other.
 
 use linkage::Vec2;
-use linkage::scene::{LengthUnit, Models, Speed};
-use linkage::sketch::{Sketch, SketchLink, SketchPoint, SketchSlider};
+use linkage::scene::{ForceWhen, LengthUnit, Models, Speed};
+use linkage::sketch::{
+    Sketch, SketchDamper, SketchForce, SketchLink, SketchPoint, SketchSlider, SketchSpring,
+};
 use serde::{Deserialize, Serialize};
 
 /// The stored form: points as `(name, x m, y m, ground)`, links as `(name, points,
-/// mass kg)`, sliders as `(point, guide link, angle rad, mass kg)`.
+/// mass kg)` with their `(centroid m, inertia kg m²)` apart, sliders as `(point,
+/// guide link, angle rad, mass kg)`, springs as `(a, b, k N/m, free length m)`,
+/// dampers as `(a, b, c N s/m)`, forces as `(point, x N, y N, when)`. The fields
+/// after `gravity` came later: a drawing stored without them still reads.
+/// A link's own centroid (x, y m) and inertia (kg m²), each `None` for a uniform body.
+type StoredBody = (Option<(f64, f64)>, Option<f64>);
+
 #[derive(Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 struct StoredSketch {
@@ -22,6 +30,14 @@ struct StoredSketch {
     speed: Speed,
     models: Models,
     gravity: bool,
+    #[serde(default)]
+    bodies: Vec<StoredBody>,
+    #[serde(default)]
+    springs: Vec<(usize, usize, f64, Option<f64>)>,
+    #[serde(default)]
+    dampers: Vec<(usize, usize, f64)>,
+    #[serde(default)]
+    forces: Vec<(usize, f64, f64, ForceWhen)>,
 }
 
 /// The drawing as RON text.
@@ -49,6 +65,26 @@ pub fn to_text(sketch: &Sketch) -> String {
         speed: sketch.speed,
         models: sketch.models,
         gravity: sketch.gravity,
+        bodies: sketch
+            .links
+            .iter()
+            .map(|l| (l.centroid.map(|c| (c.x, c.y)), l.inertia_kg_m2))
+            .collect(),
+        springs: sketch
+            .springs
+            .iter()
+            .map(|s| (s.a, s.b, s.k_n_per_m, s.free_length_m))
+            .collect(),
+        dampers: sketch
+            .dampers
+            .iter()
+            .map(|d| (d.a, d.b, d.c_n_s_per_m))
+            .collect(),
+        forces: sketch
+            .forces
+            .iter()
+            .map(|f| (f.point, f.force_n.x, f.force_n.y, f.when))
+            .collect(),
     };
     // Plain strings, numbers and options: writing cannot fail.
     ron::to_string(&stored).unwrap_or_default()
@@ -57,32 +93,16 @@ pub fn to_text(sketch: &Sketch) -> String {
 /// The drawing from [`to_text`]'s text, or why it is not one.
 pub fn from_text(text: &str) -> Result<Sketch, String> {
     let s: StoredSketch = ron::from_str(text).map_err(|e| format!("a stored drawing: {e}"))?;
-    let n = s.points.len();
-    let links = s.links.len();
-    let bad_point = s
-        .links
-        .iter()
-        .flat_map(|l| &l.1)
-        .chain(s.sliders.iter().map(|sl| &sl.0))
-        .any(|&p| p >= n);
-    let bad_link = [s.driver, s.output]
-        .into_iter()
-        .chain(s.sliders.iter().map(|sl| sl.1))
-        .flatten()
-        .any(|l| l >= links);
-    let not_finite = s
-        .points
-        .iter()
-        .any(|p| !(p.1.is_finite() && p.2.is_finite()))
-        || s.sliders.iter().any(|sl| !sl.2.is_finite())
-        || s.links
-            .iter()
-            .filter_map(|l| l.2)
-            .chain(s.sliders.iter().filter_map(|sl| sl.3))
-            .any(|kg| !(kg.is_finite() && kg > 0.0));
-    if bad_point || bad_link || not_finite {
+    if !indices_valid(&s) {
         return Err("a stored drawing names a point or link it does not have".into());
     }
+    if !values_valid(&s) {
+        return Err(
+            "a stored drawing holds a place, mass or force element that is not a valid number"
+                .into(),
+        );
+    }
+    let bodies = s.bodies.into_iter().chain(std::iter::repeat((None, None)));
     Ok(Sketch {
         name: s.name,
         length_unit: s.length_unit,
@@ -98,11 +118,16 @@ pub fn from_text(text: &str) -> Result<Sketch, String> {
         links: s
             .links
             .into_iter()
-            .map(|(name, points, mass_kg)| SketchLink {
-                name,
-                points,
-                mass_kg,
-            })
+            .zip(bodies)
+            .map(
+                |((name, points, mass_kg), (centroid, inertia))| SketchLink {
+                    name,
+                    points,
+                    mass_kg,
+                    centroid: centroid.map(|(x, y)| Vec2::new(x, y)),
+                    inertia_kg_m2: inertia,
+                },
+            )
             .collect(),
         sliders: s
             .sliders
@@ -119,7 +144,73 @@ pub fn from_text(text: &str) -> Result<Sketch, String> {
         speed: s.speed,
         models: s.models,
         gravity: s.gravity,
+        springs: s
+            .springs
+            .into_iter()
+            .map(|(a, b, k_n_per_m, free_length_m)| SketchSpring {
+                a,
+                b,
+                k_n_per_m,
+                free_length_m,
+            })
+            .collect(),
+        dampers: s
+            .dampers
+            .into_iter()
+            .map(|(a, b, c_n_s_per_m)| SketchDamper { a, b, c_n_s_per_m })
+            .collect(),
+        forces: s
+            .forces
+            .into_iter()
+            .map(|(point, x, y, when)| SketchForce {
+                point,
+                force_n: Vec2::new(x, y),
+                when,
+            })
+            .collect(),
     })
+}
+
+/// Whether every point and link index names one the drawing has.
+fn indices_valid(s: &StoredSketch) -> bool {
+    let n = s.points.len();
+    let links = s.links.len();
+    let points = s
+        .links
+        .iter()
+        .flat_map(|l| l.1.iter().copied())
+        .chain(s.sliders.iter().map(|sl| sl.0))
+        .chain(s.springs.iter().flat_map(|e| [e.0, e.1]))
+        .chain(s.dampers.iter().flat_map(|e| [e.0, e.1]))
+        .chain(s.forces.iter().map(|f| f.0));
+    let link_refs = [s.driver, s.output]
+        .into_iter()
+        .chain(s.sliders.iter().map(|sl| sl.1))
+        .flatten();
+    points.into_iter().all(|p| p < n)
+        && link_refs.into_iter().all(|l| l < links)
+        && s.bodies.len() <= links
+}
+
+/// Whether every place, mass and force element is a valid number.
+fn values_valid(s: &StoredSketch) -> bool {
+    let positive = |v: f64| v.is_finite() && v > 0.0;
+    let at_least_zero = |v: f64| v.is_finite() && v >= 0.0;
+    s.points.iter().all(|p| p.1.is_finite() && p.2.is_finite())
+        && s.sliders.iter().all(|sl| sl.2.is_finite())
+        && s.links
+            .iter()
+            .filter_map(|l| l.2)
+            .chain(s.sliders.iter().filter_map(|sl| sl.3))
+            .all(positive)
+        && s.bodies.iter().all(|(c, i)| {
+            c.is_none_or(|(x, y)| x.is_finite() && y.is_finite()) && i.is_none_or(at_least_zero)
+        })
+        && s.springs
+            .iter()
+            .all(|e| at_least_zero(e.2) && e.3.is_none_or(at_least_zero))
+        && s.dampers.iter().all(|e| at_least_zero(e.2))
+        && s.forces.iter().all(|f| f.1.is_finite() && f.2.is_finite())
 }
 
 #[cfg(test)]
@@ -142,6 +233,14 @@ mod tests {
             SketchEdit::SetModels(Models::Kinetostatics),
             SketchEdit::SetMass(Body::Block(0), Some(120.0)),
             SketchEdit::SetGravity(true),
+            SketchEdit::AddSpring(0, 2),
+            SketchEdit::SetSpring {
+                spring: 0,
+                k_n_per_m: 250.0,
+                free_length_m: Some(0.15),
+            },
+            SketchEdit::AddDamper(1, 2),
+            SketchEdit::AddForce(2),
         ] {
             s = apply(&s, edit).expect("applies");
         }
@@ -151,5 +250,16 @@ mod tests {
         assert_ne!(damaged, text);
         assert!(from_text(&damaged).is_err());
         assert!(from_text("not a drawing").is_err());
+        let bad_spring = text.replace("springs:[(0,2,", "springs:[(0,9,");
+        assert_ne!(bad_spring, text, "{text}");
+        assert!(from_text(&bad_spring).is_err());
+    }
+
+    #[test]
+    fn a_drawing_stored_before_force_elements_still_reads() {
+        let old = r#"(name:"old",length_unit:Millimetre,points:[("A",0.0,0.0,true),("B",0.0,0.1,false)],links:[("link 1",[0,1],None)],sliders:[],driver:Some(0),output:None,speed:Rpm(60.0),models:Kinematics,gravity:false)"#;
+        let s = from_text(old).expect("reads");
+        assert_eq!(s.links.len(), 1);
+        assert!(s.links[0].centroid.is_none() && s.springs.is_empty() && s.forces.is_empty());
     }
 }

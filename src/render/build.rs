@@ -22,6 +22,7 @@ pub(super) mod colour {
     pub const TRACE: [f32; 4] = [0.62, 0.38, 0.85, 1.0];
     pub const VELOCITY: [f32; 4] = [0.1, 0.65, 0.25, 1.0];
     pub const ACCELERATION: [f32; 4] = [0.9, 0.2, 0.15, 1.0];
+    pub const FORCE: [f32; 4] = [0.16, 0.2, 0.62, 1.0];
 }
 
 /// What to draw besides the links.

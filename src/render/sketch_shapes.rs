@@ -84,6 +84,7 @@ pub fn build_sketch(out: &mut Vec<Shape>, sketch: &Sketch, cam: &Camera, marked:
             _ => {}
         }
     }
+    force_elements(&mut push, sketch, &pos, bar, pin);
     for p in 0..sketch.points.len() {
         let c = pos(p);
         push(Shape::new(Kind::Pin, [c, c, c], pin, colour::PIN, [0.0; 2]));
@@ -96,6 +97,58 @@ pub fn build_sketch(out: &mut Vec<Shape>, sketch: &Sketch, cam: &Camera, marked:
             1.6 * pin,
             colour::MARK,
             [0.0; 2],
+        ));
+    }
+}
+
+/// Springs as coils, dampers as a rod through a cylinder, and point forces as arrows
+/// of one length (in points) pointing at their point.
+fn force_elements(
+    push: &mut impl FnMut(Option<Shape>),
+    sketch: &Sketch,
+    pos: &impl Fn(usize) -> Vec2,
+    bar: f32,
+    pin: f32,
+) {
+    for s in &sketch.springs {
+        let (a, b) = (pos(s.a), pos(s.b));
+        push(Shape::new(
+            Kind::Spring,
+            [a, b, a],
+            0.25 * bar,
+            colour::SPRING,
+            [9.0, 1.1 * pin],
+        ));
+    }
+    for d in &sketch.dampers {
+        let (a, b) = (pos(d.a), pos(d.b));
+        let mid = 0.5 * (a + b);
+        push(Shape::new(
+            Kind::Line,
+            [a, b, a],
+            0.3 * bar,
+            colour::SPRING,
+            [0.0; 2],
+        ));
+        push(Shape::new(
+            Kind::Block,
+            [mid, mid + (b - a).normalize_or_zero(), mid],
+            0.2 * bar,
+            colour::SPRING,
+            [2.0 * pin, 0.8 * pin],
+        ));
+    }
+    for f in &sketch.forces {
+        let tip = pos(f.point);
+        let d = Vec2::new(f.force_n.x as f32, f.force_n.y as f32).normalize_or_zero();
+        // 8 pins long, ending at the pin's edge.
+        let (from, to) = (tip - d * 9.0 * pin, tip - d * pin);
+        push(Shape::new(
+            Kind::Arrow,
+            [from, to, from],
+            0.3 * bar,
+            colour::FORCE,
+            [2.2 * pin, 0.0],
         ));
     }
 }

@@ -370,8 +370,13 @@ fn branch_words(b: &linkage::scene::Branch) -> String {
 
 /// The scene's length unit as shown on sliders.
 pub fn unit_label(scene: &SceneFile) -> &'static str {
+    unit_label_of(scene.length_unit)
+}
+
+/// A length unit as shown.
+pub fn unit_label_of(unit: linkage::scene::LengthUnit) -> &'static str {
     use linkage::scene::LengthUnit;
-    match scene.length_unit {
+    match unit {
         LengthUnit::Metre => "m",
         LengthUnit::Millimetre => "mm",
     }

@@ -108,7 +108,7 @@ fn click(st: &mut AppState, at: Pos2, rect: Rect) -> Option<SketchEdit> {
             None => SketchEdit::AddPivot(place),
         }),
         Tool::Link => match pending.take() {
-            None => {
+            None | Some(Pending::ElementFrom { .. }) => {
                 pending = Some(match (near, link_near(sketch, &cam, at, rect)) {
                     (None, Some(link)) => Pending::OnLink(link),
                     _ => Pending::LinkFrom(end),
@@ -127,6 +127,23 @@ fn click(st: &mut AppState, at: Pos2, rect: Rect) -> Option<SketchEdit> {
             Some(p) => Some(SketchEdit::DeletePoint(p)),
             None => link_near(sketch, &cam, at, rect).map(SketchEdit::DeleteLink),
         },
+        Tool::Spring | Tool::Damper => {
+            let damper = b.tool == Tool::Damper;
+            match (pending.take(), near) {
+                (Some(Pending::ElementFrom { point: a, .. }), Some(point)) if damper => {
+                    Some(SketchEdit::AddDamper(a, point))
+                }
+                (Some(Pending::ElementFrom { point: a, .. }), Some(point)) => {
+                    Some(SketchEdit::AddSpring(a, point))
+                }
+                (_, Some(point)) => {
+                    pending = Some(Pending::ElementFrom { damper, point });
+                    None
+                }
+                (_, None) => None,
+            }
+        }
+        Tool::Force => near.map(SketchEdit::AddForce),
         Tool::Move => None,
     };
     b.pending = pending;

@@ -40,6 +40,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     model(ui, st);
     links(ui, st);
     sliders(ui, st);
+    crate::ui::builder_forces::panel(ui, st);
     if let (Some(tool), Some(b)) = (chosen, st.builder.as_mut()) {
         b.tool = tool;
         b.pending = None;
@@ -174,8 +175,8 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
     }
 }
 
-/// What the drawn scene computes: kinematics, or kinetostatics with masses (set per
-/// link and block in their rows) and gravity.
+/// What the drawn scene computes: kinematics, or kinetostatics or dynamics with
+/// masses (set per link and block in their rows), gravity and the force elements.
 fn model(ui: &mut egui::Ui, st: &mut AppState) {
     let Some(b) = st.builder.as_ref() else {
         return;
@@ -187,6 +188,7 @@ fn model(ui: &mut egui::Ui, st: &mut AppState) {
         for (m, label) in [
             (Models::Kinematics, "kinematics"),
             (Models::Kinetostatics, "kinetostatics"),
+            (Models::Dynamics, "dynamics"),
         ] {
             if ui.radio_value(&mut models, m, label).changed() {
                 edits.push(SketchEdit::SetModels(models));

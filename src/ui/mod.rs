@@ -2,6 +2,7 @@
 
 pub mod accuracy;
 pub mod builder_canvas;
+pub mod builder_forces;
 pub mod builder_panel;
 pub mod centres;
 pub mod construction;

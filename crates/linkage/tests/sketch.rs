@@ -108,7 +108,10 @@ fn assert_same_motion(name: &str, original: &SceneFile, sketch: &Sketch) {
     );
     assert_eq!(a.time_ratio.is_some(), b.time_ratio.is_some(), "{name}: K");
     if let (Some(ka), Some(kb)) = (a.time_ratio, b.time_ratio) {
-        assert_close(&format!("{name}: K"), ka, kb);
+        // At a toggle (the die cutter's) the output's rate vanishes to third order, so
+        // its root, and K with it, is known to about (1e-16)^(1/3) rad only.
+        let tolerance = if a.toggles.is_empty() { 1e-9 } else { 1e-5 };
+        assert!((ka - kb).abs() <= tolerance * ka, "{name}: K {ka} vs {kb}");
     }
     assert_eq!(a.swings_rad.len(), b.swings_rad.len(), "{name}: rockers");
     for (x, y) in a.swings_rad.values().zip(b.swings_rad.values()) {
@@ -165,6 +168,8 @@ fn an_unfinished_drawing_says_what_is_missing() {
         name: name.into(),
         points,
         mass_kg: None,
+        centroid: None,
+        inertia_kg_m2: None,
     };
     sketch.links = vec![link("crank", vec![0, 1]), link("coupler", vec![1, 2])];
     let Err(SketchProblem::Mobility(m)) = sketch.to_scene() else {
@@ -195,9 +200,9 @@ fn an_unfinished_drawing_says_what_is_missing() {
     assert_eq!(m.dof(), 0);
 }
 
-/// The die cutter's kinetostatics (its 120 kg die on the vertical guide, gravity; the
-/// paper's 2 MN cutting force left out: a drawing carries masses and gravity, not
-/// point forces) drawn: the same input torque at every 15 degrees, to 1e-9.
+/// The die cutter's kinetostatics (its 120 kg die on the vertical guide, gravity, and
+/// the paper's 2 MN cutting force on the working stroke) drawn: the same input torque
+/// at every 15 degrees, to 1e-9.
 #[test]
 fn a_drawn_die_cutter_needs_the_same_input_torque() {
     use linkage::kinetostatics::Kinetostatics;
@@ -205,10 +210,13 @@ fn a_drawn_die_cutter_needs_the_same_input_torque() {
         "{}/../../assets/scenes/die_cutter.ron",
         env!("CARGO_MANIFEST_DIR")
     );
-    let mut original =
+    let original =
         SceneFile::parse(&std::fs::read_to_string(path).expect("scene")).expect("parses");
-    original.forces.point_forces.clear();
     assert_eq!(original.forces.gravity, Some((0.0, -9.81)));
+    assert!(
+        !original.forces.point_forces.is_empty(),
+        "the cutting force"
+    );
     let drawn_scene = drawn(&original).to_scene().expect("a mechanism");
     let torque = |scene: &SceneFile, x: f64| {
         let mut k = Kinematics::new(Mechanism::from_scene(scene).expect("valid")).expect("solves");
@@ -249,6 +257,8 @@ fn drawn_masses_are_uniform_bodies() {
         name: name.into(),
         points,
         mass_kg,
+        centroid: None,
+        inertia_kg_m2: None,
     };
     sketch.links = vec![
         link("crank", vec![0, 1], Some(2.0)),
@@ -291,6 +301,8 @@ fn a_drawn_triad_six_bar_solves_by_newton_from_the_drawing() {
         name: name.into(),
         points,
         mass_kg: None,
+        centroid: None,
+        inertia_kg_m2: None,
     };
     let mut sketch = Sketch::new("triad");
     sketch.points = vec![
@@ -361,18 +373,82 @@ fn every_shipped_scene_is_drawn_as_itself_or_refused_with_the_reason() {
             }
             Err(why) => {
                 let f = &scene.forces;
-                let forces = !(f.springs.is_empty()
-                    && f.point_forces.is_empty()
-                    && f.dampers.is_empty()
-                    && f.torques.is_empty()
-                    && f.stops.is_empty());
-                assert!(
-                    (why == NotDrawable::Forces && forces) || why == NotDrawable::Dynamics,
-                    "{name}: {why}"
-                );
+                let lost = !(f.torques.is_empty() && f.stops.is_empty());
+                assert!(why == NotDrawable::Forces && lost, "{name}: {why}");
             }
         }
     }
     drawn_ok.sort();
-    assert_eq!(drawn_ok, ["paper_cup_feed", "quick_return", "slider_crank"]);
+    assert_eq!(
+        drawn_ok,
+        [
+            "die_cutter",
+            "die_cutter_as_printed",
+            "paper_cup_feed",
+            "quick_return",
+            "slider_crank"
+        ]
+    );
+}
+
+/// The gravity flipper without its end stop (a drawing carries no stops) drawn in a
+/// pose other than its start: the same reduced model, J(q) and M(q), at every 5
+/// degrees of its range, to 1e-9. That holds only if the drawing carries the spring
+/// (with the free length it had at the start), the workpiece's point force, gravity,
+/// and each link's own centroid and inertia.
+#[test]
+fn a_drawn_flipper_has_the_same_reduced_model() {
+    use linkage::dynamics::ForceModel;
+    let path = format!(
+        "{}/../../assets/scenes/gravity_flipper.ron",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let mut original =
+        SceneFile::parse(&std::fs::read_to_string(path).expect("scene")).expect("parses");
+    let m = Mechanism::from_scene(&original).expect("valid");
+    assert_eq!(
+        Sketch::from_pose(
+            &original,
+            &m,
+            &Kinematics::new(m.clone())
+                .expect("k")
+                .solve(m.driver.start_rad)
+                .expect("pose")
+        ),
+        Err(NotDrawable::Forces),
+        "its stop is refused"
+    );
+    original.forces.stops.clear();
+    let m = Mechanism::from_scene(&original).expect("valid");
+    let mut k = Kinematics::new(m.clone()).expect("solvable");
+    let elsewhere = m.driver.start_rad - 10f64.to_radians();
+    let pose = k.solve(elsewhere).expect("assembles");
+    let sketch = Sketch::from_pose(&original, &m, &pose).expect("drawable");
+    assert!(
+        sketch.springs[0].free_length_m.is_some(),
+        "the start's free length"
+    );
+    let drawn_scene = sketch.to_scene().expect("a mechanism");
+    let reduced = |scene: &SceneFile, at: &[f64]| -> Vec<[f64; 2]> {
+        let mut k = Kinematics::new(Mechanism::from_scene(scene).expect("valid")).expect("k");
+        let s0 = k.solve(k.mechanism().driver.start_rad).expect("start");
+        let model = ForceModel::new(k.mechanism(), &s0).expect("model");
+        at.iter()
+            .map(|&x| {
+                let mut unit = k.empty_solution();
+                k.solve_into(x, 1.0, &mut unit).expect("solves");
+                let r = model.reduce(&unit, 0.0);
+                [r.j, r.moment()]
+            })
+            .collect()
+    };
+    // Every 5 degrees of the original's range; the drawing's input 0 is `elsewhere`.
+    let inputs: Vec<f64> = (8..=22).map(|i| f64::from(i * 5).to_radians()).collect();
+    let a = reduced(&original, &inputs);
+    let shifted: Vec<f64> = inputs.iter().map(|x| x - elsewhere).collect();
+    let b = reduced(&drawn_scene, &shifted);
+    for (i, (a, b)) in a.iter().zip(&b).enumerate() {
+        assert_close(&format!("J at step {i}"), a[0], b[0]);
+        assert_close(&format!("M at step {i}"), a[1], b[1]);
+    }
 }

@@ -1,32 +1,37 @@
 //! A scene in one of its poses as a drawing: what "This scene as a drawing" opens,
 //! to add and delete links and sliders in a mechanism one did not draw.
 
-use super::{Sketch, SketchLink, SketchPoint, SketchSlider};
+use super::{
+    Sketch, SketchDamper, SketchForce, SketchLink, SketchPoint, SketchSlider, SketchSpring,
+};
 use crate::Solution;
 use crate::model::Mechanism;
-use crate::scene::{Models, SceneFile};
+use crate::motion::Vec2;
+use crate::scene::{DamperSpec, FreeLength, SceneFile};
 
 /// Why a scene cannot become a drawing.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum NotDrawable {
-    /// Springs, dampers, point forces, torques or stops: a drawing carries masses and
-    /// gravity only, so they would be lost.
+    /// Torques, end stops or rotational dampers: a drawing carries springs, linear
+    /// dampers and point forces only, so they would be lost.
     Forces,
-    /// Forward dynamics (a drawing computes kinematics or kinetostatics).
-    Dynamics,
     /// A slider block that carries more than its pin.
     BlockCarriesPoints(String),
+    /// A force element at a point the drawing does not have (a guide's own point).
+    PointNotDrawn(String),
 }
 
 impl std::fmt::Display for NotDrawable {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Self::Forces => f.write_str(
-                "its springs, dampers or forces would be lost: a drawing carries masses and gravity only",
+                "its torques, end stops or rotational dampers would be lost: a drawing carries springs, linear dampers and point forces",
             ),
-            Self::Dynamics => f.write_str("it runs forward dynamics: a drawing computes kinematics or kinetostatics"),
             Self::BlockCarriesPoints(block) => {
                 write!(f, "its slider block {block} carries more than its pin")
+            }
+            Self::PointNotDrawn(point) => {
+                write!(f, "a force element acts at {point}, which a drawing does not have")
             }
         }
     }
@@ -34,10 +39,10 @@ impl std::fmt::Display for NotDrawable {
 
 impl Sketch {
     /// The drawing of `scene` in `pose` (a solved pose of `m`, the scene's
-    /// mechanism): every point where it is, links by their points, slider blocks as
-    /// sliders on their guides, the driver, output, speed, masses and gravity. Masses
-    /// become uniform bodies (see [`Sketch::to_scene`]); a guide's line keeps its
-    /// direction, through the block's pin.
+    /// mechanism): every point where it is, links by their points with their masses,
+    /// centroids and inertias, slider blocks as sliders on their guides, the driver,
+    /// output, speed, gravity, springs, linear dampers and point forces. A guide's
+    /// line keeps its direction, through the block's pin.
     pub fn from_pose(
         scene: &SceneFile,
         m: &Mechanism,
@@ -54,23 +59,23 @@ impl Sketch {
         let index = add_points(&mut sketch, m, pose, &moving);
         let mut link_index = vec![None; m.links.len()];
         for &l in &moving {
-            let name = &m.links[l].name;
+            let link = &m.links[l];
             if l == m.driver.link {
                 sketch.driver = Some(sketch.links.len());
             }
-            if scene.output.as_deref() == Some(name.as_str()) {
+            if scene.output.as_deref() == Some(link.name.as_str()) {
                 sketch.output = Some(sketch.links.len());
             }
             link_index[l] = Some(sketch.links.len());
-            let points = m.links[l]
-                .points
-                .iter()
-                .filter_map(|(p, _)| index[*p])
-                .collect();
+            let placed = &pose.links[l];
             sketch.links.push(SketchLink {
-                name: name.clone(),
-                points,
-                mass_kg: m.links[l].mass_kg,
+                name: link.name.clone(),
+                points: link.points.iter().filter_map(|(p, _)| index[*p]).collect(),
+                mass_kg: link.mass_kg,
+                centroid: link
+                    .centroid_m
+                    .map(|c| placed.origin.position + placed.rotation * c),
+                inertia_kg_m2: link.inertia_kg_m2,
             });
         }
         for s in &m.sliders {
@@ -85,25 +90,88 @@ impl Sketch {
                 mass_kg: m.links[s.slider].mass_kg,
             });
         }
+        add_force_elements(&mut sketch, scene, m, pose)?;
         Ok(sketch)
     }
 }
 
-/// What a drawing cannot carry: force elements, dynamics, blocks with more points.
+/// The scene's springs, linear dampers and point forces, on the drawing's points. A
+/// spring unstretched at the scene's start stays so where `pose` is the start; from
+/// any other pose its free length is the one at the start.
+fn add_force_elements(
+    sketch: &mut Sketch,
+    scene: &SceneFile,
+    m: &Mechanism,
+    pose: &Solution,
+) -> Result<(), NotDrawable> {
+    let find = |name: &str| {
+        sketch
+            .points
+            .iter()
+            .position(|p| p.name == name)
+            .ok_or_else(|| NotDrawable::PointNotDrawn(name.to_owned()))
+    };
+    let at_start = (pose.input_rad - m.driver.start_rad).abs() < 1e-12;
+    let mut start = None;
+    let mut springs = Vec::new();
+    for s in &scene.forces.springs {
+        let (a, b) = (find(&s.a)?, find(&s.b)?);
+        let free_length_m = match s.free_length {
+            FreeLength::Length(l) => Some(l * scene.length_unit.to_metres()),
+            FreeLength::UnstretchedAtStart if at_start => None,
+            FreeLength::UnstretchedAtStart => {
+                let start: &Solution = start.get_or_insert_with(|| solve_at_start(m, pose));
+                let at = |name: &str| m.point_index(name).map(|p| start.points[p].position);
+                at(&s.a).zip(at(&s.b)).map(|(p, q)| (p - q).norm())
+            }
+        };
+        springs.push(SketchSpring {
+            a,
+            b,
+            k_n_per_m: s.k_n_per_m,
+            free_length_m,
+        });
+    }
+    let mut dampers = Vec::new();
+    for d in &scene.forces.dampers {
+        if let DamperSpec::Linear { a, b, c_n_s_per_m } = d {
+            dampers.push(SketchDamper {
+                a: find(a)?,
+                b: find(b)?,
+                c_n_s_per_m: *c_n_s_per_m,
+            });
+        }
+    }
+    let mut forces = Vec::new();
+    for f in &scene.forces.point_forces {
+        forces.push(SketchForce {
+            point: find(&f.point)?,
+            force_n: Vec2::new(f.force_n.0, f.force_n.1),
+            when: f.when,
+        });
+    }
+    (sketch.springs, sketch.dampers, sketch.forces) = (springs, dampers, forces);
+    Ok(())
+}
+
+/// The scene's start pose, or `pose` where the start does not solve (the chain was
+/// opened elsewhere): the best free length there is.
+fn solve_at_start(m: &Mechanism, pose: &Solution) -> Solution {
+    crate::Kinematics::new(m.clone())
+        .and_then(|mut k| k.solve(m.driver.start_rad))
+        .unwrap_or_else(|_| pose.clone())
+}
+
+/// What a drawing cannot carry: torques, stops, rotational dampers, blocks with more
+/// points.
 fn check_drawable(scene: &SceneFile, m: &Mechanism) -> Result<(), NotDrawable> {
     let f = &scene.forces;
-    let forces = [
-        f.springs.is_empty(),
-        f.dampers.is_empty(),
-        f.point_forces.is_empty(),
-        f.torques.is_empty(),
-        f.stops.is_empty(),
-    ];
-    if forces.contains(&false) {
+    let rotational = f
+        .dampers
+        .iter()
+        .any(|d| matches!(d, DamperSpec::Rotational { .. }));
+    if rotational || !f.torques.is_empty() || !f.stops.is_empty() {
         return Err(NotDrawable::Forces);
-    }
-    if scene.models == Models::Dynamics {
-        return Err(NotDrawable::Dynamics);
     }
     match m
         .sliders

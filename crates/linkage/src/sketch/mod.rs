@@ -15,7 +15,8 @@ use crate::error::LinkageError;
 use crate::model::Mechanism;
 use crate::motion::{LinkMotion, Vec2};
 use crate::scene::{
-    AngleUnit, DriverSpec, ForcesSpec, LengthUnit, LinkSpec, Models, SceneFile, SliderSpec, Speed,
+    AngleUnit, DamperSpec, DriverSpec, ForceWhen, ForcesSpec, FreeLength, LengthUnit, LinkSpec,
+    Models, PointForceSpec, SceneFile, SliderSpec, Speed, SpringSpec,
 };
 pub use from_scene::NotDrawable;
 
@@ -37,9 +38,13 @@ pub struct SketchLink {
     pub name: String,
     /// Its points; two make a binary link, three or more a plate.
     pub points: Vec<usize>,
-    /// Mass, kg (`None`: massless), for kinetostatics; see [`Sketch::to_scene`] for
-    /// where its centroid and inertia come from.
+    /// Mass, kg (`None`: massless), for kinetostatics and dynamics.
     pub mass_kg: Option<f64>,
+    /// Centroid in the world as drawn, m; `None`: the mean of its points.
+    pub centroid: Option<Vec2>,
+    /// Moment of inertia about the centroid, kg·m²; `None`: a uniform body's (see
+    /// [`Sketch::to_scene`]).
+    pub inertia_kg_m2: Option<f64>,
 }
 
 /// A slider block pinned at `point`, sliding on a guide line through the point's
@@ -54,6 +59,41 @@ pub struct SketchSlider {
     pub angle_rad: f64,
     /// The block's mass, kg (`None`: massless), a point mass at its pin.
     pub mass_kg: Option<f64>,
+}
+
+/// A linear spring between two points (indices into [`Sketch::points`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SketchSpring {
+    /// One end.
+    pub a: usize,
+    /// The other end.
+    pub b: usize,
+    /// Stiffness, N/m.
+    pub k_n_per_m: f64,
+    /// Free length, m; `None`: unstretched as drawn.
+    pub free_length_m: Option<f64>,
+}
+
+/// A linear viscous damper between two points.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SketchDamper {
+    /// One end.
+    pub a: usize,
+    /// The other end.
+    pub b: usize,
+    /// Coefficient, N·s/m.
+    pub c_n_s_per_m: f64,
+}
+
+/// A constant force at a point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SketchForce {
+    /// Where it acts.
+    pub point: usize,
+    /// The force in the world, N.
+    pub force_n: Vec2,
+    /// Always, or only while the point moves against it (a working stroke).
+    pub when: ForceWhen,
 }
 
 /// A drawing of a mechanism.
@@ -76,10 +116,17 @@ pub struct Sketch {
     /// The main output for the time ratio (an index into [`Sketch::links`]); `None`:
     /// the scene's default, its last link (slider blocks come after the links).
     pub output: Option<usize>,
-    /// What the scene computes: kinematics, or kinetostatics with the masses.
+    /// What the scene computes: kinematics, kinetostatics or dynamics, with the
+    /// masses and force elements.
     pub models: Models,
     /// Gravity, 9.81 m/s² down the drawing's y-axis, on every mass.
     pub gravity: bool,
+    /// Springs.
+    pub springs: Vec<SketchSpring>,
+    /// Dampers.
+    pub dampers: Vec<SketchDamper>,
+    /// Point forces.
+    pub forces: Vec<SketchForce>,
 }
 
 /// The Grübler–Kutzbach count of a drawing.
@@ -162,6 +209,9 @@ impl Sketch {
             output: None,
             models: Models::Kinematics,
             gravity: false,
+            springs: Vec::new(),
+            dampers: Vec::new(),
+            forces: Vec::new(),
         }
     }
 
@@ -185,10 +235,11 @@ impl Sketch {
     }
 
     /// The scene of a complete drawing (one degree of freedom, a grounded driver),
-    /// starting in the drawn pose; else what is missing. A link with a mass has its
-    /// centroid at the mean of its points and the inertia of a uniform body there:
-    /// a bar between its two points (m L²/12), or the triangle of its first three
-    /// points (m (a² + b² + c²)/36); a slider block's mass sits at its pin.
+    /// starting in the drawn pose; else what is missing. A link with a mass and no
+    /// centroid or inertia of its own has its centroid at the mean of its points and
+    /// the inertia of a uniform body there: a bar between its two points (m L²/12),
+    /// or the triangle of its first three points (m (a² + b² + c²)/36); a slider
+    /// block's mass sits at its pin.
     pub fn to_scene(&self) -> Result<SceneFile, SketchProblem> {
         if self.links.is_empty() {
             return Err(SketchProblem::NoLinks);
@@ -245,10 +296,11 @@ impl Sketch {
                 let mut spec = link_spec(&l.name, points);
                 if let Some(kg) = l.mass_kg {
                     let at: Vec<Vec2> = l.points.iter().map(|&p| self.points[p].at).collect();
-                    let centroid = at.iter().sum::<Vec2>() / at.len().max(1) as f64;
+                    let mean = at.iter().sum::<Vec2>() / at.len().max(1) as f64;
                     spec.mass = Some(kg);
-                    spec.centroid = Some(xy(centroid));
-                    spec.inertia = Some(uniform_inertia(kg, &at));
+                    spec.centroid = Some(xy(l.centroid.unwrap_or(mean)));
+                    spec.inertia =
+                        Some(l.inertia_kg_m2.unwrap_or_else(|| uniform_inertia(kg, &at)));
                 }
                 spec
             })
@@ -307,11 +359,48 @@ impl Sketch {
             branches: IndexMap::new(),
             output: self.output.map(|l| self.links[l].name.clone()),
             guess: IndexMap::new(),
-            forces: ForcesSpec {
-                gravity: self.gravity.then_some((0.0, -9.81)),
-                ..Default::default()
-            },
+            forces: self.forces_spec(),
             solver: Default::default(),
+        }
+    }
+
+    /// Gravity and the force elements, by point name, lengths in the scene's unit.
+    fn forces_spec(&self) -> ForcesSpec {
+        let unit = self.length_unit.to_metres();
+        let name = |p: usize| self.points[p].name.clone();
+        ForcesSpec {
+            gravity: self.gravity.then_some((0.0, -9.81)),
+            springs: self
+                .springs
+                .iter()
+                .map(|s| SpringSpec {
+                    a: name(s.a),
+                    b: name(s.b),
+                    k_n_per_m: s.k_n_per_m,
+                    free_length: s.free_length_m.map_or(FreeLength::UnstretchedAtStart, |m| {
+                        FreeLength::Length(m / unit)
+                    }),
+                })
+                .collect(),
+            dampers: self
+                .dampers
+                .iter()
+                .map(|d| DamperSpec::Linear {
+                    a: name(d.a),
+                    b: name(d.b),
+                    c_n_s_per_m: d.c_n_s_per_m,
+                })
+                .collect(),
+            point_forces: self
+                .forces
+                .iter()
+                .map(|f| PointForceSpec {
+                    point: name(f.point),
+                    force_n: (f.force_n.x, f.force_n.y),
+                    when: f.when,
+                })
+                .collect(),
+            ..Default::default()
         }
     }
 

@@ -1,0 +1,155 @@
+//! The drawing's force elements in the side panel, where the drawing computes forces
+//! (kinetostatics or dynamics): each spring's stiffness and free length, each
+//! damper's coefficient, each point force's vector and when it acts, and a button to
+//! remove each. The Spring, Damper and Force tools place them on the canvas.
+
+use eframe::egui;
+use linkage::Vec2;
+use linkage::scene::{ForceWhen, Models};
+use linkage::sketch::Sketch;
+
+use crate::app::AppState;
+use crate::builder::edit::{Element, SketchEdit};
+use crate::ui::drawing;
+
+/// The springs, dampers and point forces, each editable.
+pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
+    let Some(b) = st.builder.as_ref() else {
+        return;
+    };
+    let sketch = b.sketch();
+    let none = sketch.springs.is_empty() && sketch.dampers.is_empty() && sketch.forces.is_empty();
+    if sketch.models == Models::Kinematics || none {
+        return;
+    }
+    let mut edits = Vec::new();
+    ui.separator();
+    ui.strong("Springs, dampers, forces");
+    egui::Grid::new("drawing force elements")
+        .num_columns(5)
+        .show(ui, |ui| {
+            springs(ui, sketch, &mut edits);
+            dampers(ui, sketch, &mut edits);
+            forces(ui, sketch, &mut edits);
+        });
+    for e in edits {
+        drawing::edit(st, e);
+    }
+}
+
+fn ends(sketch: &Sketch, a: usize, b: usize) -> String {
+    format!("{}–{}", sketch.points[a].name, sketch.points[b].name)
+}
+
+/// A stiffness in N/m, and a free length: unstretched as drawn, or typed (in the
+/// drawing's length unit).
+fn springs(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
+    let unit = sketch.length_unit.to_metres();
+    let unit_label = crate::session::unit_label_of(sketch.length_unit);
+    for (i, s) in sketch.springs.iter().enumerate() {
+        ui.label(format!("spring {}", ends(sketch, s.a, s.b)));
+        let mut k = s.k_n_per_m;
+        let stiffness = ui.add(
+            egui::DragValue::new(&mut k)
+                .range(0.0..=1e9)
+                .speed(0.01 * s.k_n_per_m.max(1.0))
+                .suffix(" N/m"),
+        );
+        let mut as_drawn = s.free_length_m.is_none();
+        let drawn_length = (sketch.points[s.a].at - sketch.points[s.b].at).norm();
+        let toggled = ui.checkbox(&mut as_drawn, "free as drawn").changed();
+        let mut free = s.free_length_m.unwrap_or(drawn_length) / unit;
+        let typed = !as_drawn
+            && ui
+                .add(
+                    egui::DragValue::new(&mut free)
+                        .range(0.0..=1e9)
+                        .speed(0.5)
+                        .suffix(format!(" {unit_label}")),
+                )
+                .changed();
+        if as_drawn {
+            ui.label("");
+        }
+        if stiffness.changed() || toggled || typed {
+            edits.push(SketchEdit::SetSpring {
+                spring: i,
+                k_n_per_m: k,
+                free_length_m: (!as_drawn).then_some(free * unit),
+            });
+        }
+        remove(ui, Element::Spring(i), edits);
+        ui.end_row();
+    }
+}
+
+/// A coefficient in N·s/m.
+fn dampers(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
+    for (i, d) in sketch.dampers.iter().enumerate() {
+        ui.label(format!("damper {}", ends(sketch, d.a, d.b)));
+        let mut c = d.c_n_s_per_m;
+        if ui
+            .add(
+                egui::DragValue::new(&mut c)
+                    .range(0.0..=1e9)
+                    .speed(0.01 * d.c_n_s_per_m.max(1.0))
+                    .suffix(" N s/m"),
+            )
+            .changed()
+        {
+            edits.push(SketchEdit::SetDamper {
+                damper: i,
+                c_n_s_per_m: c,
+            });
+        }
+        ui.label("");
+        ui.label("");
+        remove(ui, Element::Damper(i), edits);
+        ui.end_row();
+    }
+}
+
+/// The force's x and y, N, and whether it acts only on the working stroke (while
+/// its point moves against it, as a cutting force does).
+fn forces(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
+    for (i, f) in sketch.forces.iter().enumerate() {
+        ui.label(format!("force at {}", sketch.points[f.point].name));
+        let (mut x, mut y) = (f.force_n.x, f.force_n.y);
+        let mut working = f.when == ForceWhen::WorkingStroke;
+        let speed = 0.01 * f.force_n.norm().max(10.0);
+        let xr = ui.add(
+            egui::DragValue::new(&mut x)
+                .speed(speed)
+                .prefix("x ")
+                .suffix(" N"),
+        );
+        let yr = ui.add(
+            egui::DragValue::new(&mut y)
+                .speed(speed)
+                .prefix("y ")
+                .suffix(" N"),
+        );
+        let wr = ui
+            .checkbox(&mut working, "working stroke only")
+            .on_hover_text("acts only while its point moves against it, as a cutting force");
+        if xr.changed() || yr.changed() || wr.changed() {
+            edits.push(SketchEdit::SetForce {
+                force: i,
+                force_n: Vec2::new(x, y),
+                when: if working {
+                    ForceWhen::WorkingStroke
+                } else {
+                    ForceWhen::Always
+                },
+            });
+        }
+        remove(ui, Element::Force(i), edits);
+        ui.end_row();
+    }
+}
+
+fn remove(ui: &mut egui::Ui, element: Element, edits: &mut Vec<SketchEdit>) {
+    if ui.button("remove").clicked() {
+        edits.push(SketchEdit::DeleteElement(element));
+    }
+}
