@@ -50,9 +50,12 @@ pub fn resume(st: &mut AppState, sketch: Sketch) {
 
 /// Makes `edit` on the drawing.
 pub fn edit(st: &mut AppState, edit: SketchEdit) {
+    // Timed with the frame's other edits: a drag on the canvas is an edit per frame.
+    let started = web_time::Instant::now();
     if st.builder.as_mut().is_some_and(|b| b.apply(edit)) {
         sync(st);
     }
+    st.edit_ms += started.elapsed().as_secs_f64() * 1e3;
 }
 
 /// Takes back the drawing's last edit.

@@ -244,6 +244,27 @@ const entry = async (p, kind, label) => {
   }
   return undefined;
 };
+/** Drags with the mouse from `from` along `path` (screen points), a step per frame
+ * or so; returns the CPU of each edit frame seen ([frame ms, edit ms], the app's own
+ * performance.now() figures) — at SwiftShader's few frames a second nearly every one. */
+const dragTimed = async (p, from, path) => {
+  await p.mouse.move(...from);
+  await p.mouse.down();
+  let frames = (await appState(p)).edit_timing.frames;
+  const seen = [];
+  for (const at of path) {
+    await p.mouse.move(...at);
+    await p.waitForTimeout(60);
+    const t = (await appState(p)).edit_timing;
+    if (t.frames > frames) seen.push([Number(t.last_ms.toFixed(2)), Number(t.last_edit_ms.toFixed(2))]);
+    frames = t.frames;
+  }
+  // The last place lands before the release: SwiftShader may take 500 ms a frame.
+  await p.waitForTimeout(600);
+  await p.mouse.up();
+  return seen;
+};
+const dragFrames = {};
 const middle = (e) => [0.5 * (e.rect[0] + e.rect[2]), 0.5 * (e.rect[1] + e.rect[3])];
 const samePlaces = (a, b) => a.length === b.length && a.every((j, k) => j.name === b[k].name
   && Math.abs(j.world[0] - b[k].world[0]) < 1e-9 && Math.abs(j.world[1] - b[k].world[1]) < 1e-9);
@@ -285,13 +306,8 @@ else {
   const before = await appState(page);
   const c = before.joints.find((j) => j.name === 'C');
   const [cx, cy] = c.screen;
-  await page.mouse.move(cx, cy);
-  await page.mouse.down();
-  for (let k = 1; k <= 8; k++) {
-    await page.mouse.move(cx + 5 * k, cy - 3 * k);
-    await page.waitForTimeout(60);
-  }
-  await page.mouse.up();
+  const path = Array.from({ length: 8 }, (_, i) => [cx + 5 * (i + 1), cy - 3 * (i + 1)]);
+  dragFrames.viewer_point = await dragTimed(page, [cx, cy], path);
   await page.waitForTimeout(500);
   built = await appState(page);
   const moved = built.joints.find((j) => j.name === 'C');
@@ -343,6 +359,13 @@ if (menu) {
     for (let i = 0; i < 30 && !(await appState(page)).drawing?.complete; i++) await page.waitForTimeout(100);
     const st = await appState(page);
     if (!st.drawing?.complete) fail(`the drawn four-bar is not a mechanism: ${JSON.stringify(st.drawing)}`);
+    // The Move tool: D dragged out along x and back to where it was drawn (the grid
+    // is 10 mm), an edit per frame that remakes and reopens the mechanism.
+    await useTool('Move');
+    const d = toScreen(await appState(page), [200, 200]);
+    const out = Array.from({ length: 6 }, (_, i) => toScreen(st, [200 + 10 * (i + 1), 200]));
+    dragFrames.drawing_point = await dragTimed(page, d, [...out, ...out.reverse().slice(1), d]);
+    await page.waitForTimeout(300);
     await useTool('Done');
     for (let i = 0; i < 30 && (await appState(page)).drawing; i++) await page.waitForTimeout(100);
     drawn = await appState(page);
@@ -385,6 +408,7 @@ console.log(JSON.stringify({
   fps_playing: Number(fps.toFixed(1)), csv_download_rows: csvRows,
   scene_download_bytes: saved.text.length, sheet_download_bytes: sheetBytes, sheet_png_width: pngWidth,
   pixels_changed_by_upload: reopened, link_chars: page.url().length,
+  editor_drag_frames_ms: dragFrames,
   built_four_bar_joints: built.joints?.length ?? 0,
   drawn_four_bar_joints: drawn.joints?.length ?? 0,
   unfinished_drawing_points_after_reload: unfinishedPoints,
