@@ -10,34 +10,15 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use linkage::analysis::{Report, report};
 use linkage::{Kinematics, Mechanism, SceneFile};
+use linkage_lab::LinkageApp;
 use linkage_lab::session::SceneEdit;
 use linkage_lab::ui::control_map::ControlKind;
-use linkage_lab::{LinkageApp, StartOptions};
 
 mod common;
+use common::click;
 
 fn harness() -> Harness<'static, LinkageApp> {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1500.0, 950.0))
-        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
-    h.run();
-    h.run();
-    h
-}
-
-/// A press and a release at `at`, a frame each.
-fn click(h: &mut Harness<'static, LinkageApp>, at: egui::Pos2) {
-    h.event(egui::Event::PointerMoved(at));
-    for pressed in [true, false] {
-        h.event(egui::Event::PointerButton {
-            pos: at,
-            button: egui::PointerButton::Primary,
-            pressed,
-            modifiers: egui::Modifiers::default(),
-        });
-        h.run();
-    }
-    h.run();
+    common::stateful_harness()
 }
 
 /// Clicks the control of `kind` labelled `label`, as drawn last frame.

@@ -5,10 +5,11 @@
 //! a drag elsewhere pans.
 
 use eframe::egui;
-use egui_kittest::Harness;
 use linkage_lab::session::notice::{Notice, PointRefusal};
 use linkage_lab::session::{SceneEdit, Session};
-use linkage_lab::{LinkageApp, StartOptions};
+
+mod common;
+use common::pointer;
 
 fn joints(s: &Session) -> Vec<(String, [f64; 2])> {
     let m = s.mechanism();
@@ -120,26 +121,9 @@ fn a_place_on_the_other_branch_is_refused() {
     assert!(s.message().expect("refused").contains("not finite"));
 }
 
-fn pointer(h: &mut Harness<'static, LinkageApp>, at: egui::Pos2, pressed: Option<bool>) {
-    h.event(egui::Event::PointerMoved(at));
-    if let Some(pressed) = pressed {
-        h.event(egui::Event::PointerButton {
-            pos: at,
-            button: egui::PointerButton::Primary,
-            pressed,
-            modifiers: egui::Modifiers::default(),
-        });
-    }
-    h.run();
-}
-
 #[test]
 fn dragging_a_joint_moves_it_and_dragging_elsewhere_pans() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1500.0, 950.0))
-        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
-    h.run();
-    h.run();
+    let mut h = common::stateful_harness();
     h.state_mut().state.edit_points = true;
     h.run();
     let [x0, y0, x1, y1] = h.state().state.controls.view.expect("the view is drawn");
@@ -200,11 +184,7 @@ fn dragging_a_joint_moves_it_and_dragging_elsewhere_pans() {
 
 #[test]
 fn dragging_the_crank_pin_turns_the_crank() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1500.0, 950.0))
-        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
-    h.run();
-    h.run();
+    let mut h = common::stateful_harness();
     let [x0, y0, x1, y1] = h.state().state.controls.view.expect("the view is drawn");
     let rect = egui::Rect::from_min_max(egui::pos2(x0, y0), egui::pos2(x1, y1));
     let st = &h.state().state;

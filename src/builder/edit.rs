@@ -120,6 +120,16 @@ pub enum SketchEdit {
     },
     /// A spring, damper or force removed.
     DeleteElement(Element),
+    /// A link's own centroid (world, as drawn, m) and inertia (kg·m²); `None`: a
+    /// uniform body's.
+    SetBody {
+        /// The link.
+        link: usize,
+        /// Its centroid.
+        centroid: Option<Vec2>,
+        /// Its moment of inertia about the centroid.
+        inertia_kg_m2: Option<f64>,
+    },
 }
 
 /// A force element of a drawing, by index.
@@ -316,6 +326,16 @@ pub fn apply(sketch: &Sketch, edit: SketchEdit) -> Result<Sketch, Refusal> {
         } => {
             finite(force_n)?;
             (next.forces[force].force_n, next.forces[force].when) = (force_n, when);
+        }
+        SketchEdit::SetBody {
+            link,
+            centroid,
+            inertia_kg_m2,
+        } => {
+            centroid.map(finite).transpose()?;
+            inertia_kg_m2.map(coefficient).transpose()?;
+            let l = &mut next.links[link];
+            (l.centroid, l.inertia_kg_m2) = (centroid, inertia_kg_m2);
         }
         SketchEdit::DeleteElement(element) => match element {
             Element::Spring(i) => drop(next.springs.remove(i)),
@@ -664,6 +684,15 @@ mod tests {
                 "{bad}"
             );
         }
+        let body = |centroid, inertia_kg_m2| SketchEdit::SetBody {
+            link: 0,
+            centroid,
+            inertia_kg_m2,
+        };
+        assert!(apply(&s, body(Some(at(f64::NAN, 0.0)), None)).is_err());
+        assert!(apply(&s, body(None, Some(-1.0))).is_err());
+        let own = apply(&s, body(Some(at(0.0, 0.05)), Some(0.2))).expect("applies");
+        assert_eq!(own.links[0].centroid, Some(at(0.0, 0.05)));
         // Deleting the first pivot takes the damper at it; the rest are renumbered.
         let after = apply(&s, SketchEdit::DeletePoint(0)).expect("applies");
         assert!(after.dampers.is_empty());

@@ -10,7 +10,7 @@ use linkage::{Kinematics, LinkageError};
 use super::curves::{Curves, ModelCurves};
 use super::derived::{Derived, Shown};
 use super::dynamic_run::{DynamicRun, IntegratorChoice};
-use super::run_job::RunJob;
+use super::run_job::{RunError, RunJob};
 
 /// The most of a frame a dynamic run computed on the UI thread (the browser) may
 /// take, ms: the rest of the frame draws in well under the other 11 ms of a 60 Hz
@@ -25,7 +25,7 @@ pub struct Analyses {
     /// Torque or J(q), M(q) curves, made when shown, in a frame without an edit.
     model_curves: Derived<ModelCurves>,
     /// The finished dynamic run (dynamic scenes, once computed).
-    dynamics: Option<Result<DynamicRun, String>>,
+    dynamics: Option<Result<DynamicRun, RunError>>,
     /// The dynamic run being computed off the frame.
     job: Option<RunJob>,
     integrator: IntegratorChoice,
@@ -88,12 +88,12 @@ impl Analyses {
     }
 
     /// The finished dynamic run, if there is one.
-    pub fn dynamics(&self) -> Option<&Result<DynamicRun, String>> {
+    pub fn dynamics(&self) -> Option<&Result<DynamicRun, RunError>> {
         self.dynamics.as_ref()
     }
 
     /// The finished dynamic run, to be played.
-    pub fn dynamics_mut(&mut self) -> Option<&mut Result<DynamicRun, String>> {
+    pub fn dynamics_mut(&mut self) -> Option<&mut Result<DynamicRun, RunError>> {
         self.dynamics.as_mut()
     }
 

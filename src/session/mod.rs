@@ -45,7 +45,7 @@ pub use edit::SceneEdit;
 use notice::Notice;
 use params::{LengthParam, length_params};
 use pose::Pose;
-use run_job::RunJob;
+use run_job::{RunError, RunJob};
 use topology::Topology;
 
 /// The viewer's state over one scene.
@@ -198,7 +198,7 @@ impl Session {
 
     /// The dynamic run: `None` for scenes that model no dynamics, and while the run is
     /// being computed ([`Session::run_progress`]).
-    pub fn dynamics(&self) -> Option<&Result<DynamicRun, String>> {
+    pub fn dynamics(&self) -> Option<&Result<DynamicRun, RunError>> {
         self.analyses.dynamics()
     }
 

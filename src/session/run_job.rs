@@ -3,13 +3,40 @@
 //! in slices of a few milliseconds per frame. Either way the result is exactly the
 //! one `simulate` gives: slicing a run does not change its steps.
 
-use linkage::Kinematics;
 use linkage::dynamics::Run;
+use linkage::{Kinematics, LinkageError};
 
 use super::dynamic_run::{DynamicRun, IntegratorChoice, settings_for};
 
 /// Steps taken between two looks at the clock (a step costs microseconds).
 const STEPS_PER_CHUNK: usize = 16;
+
+/// Why a dynamic run has no result.
+#[derive(Clone, Debug, PartialEq)]
+pub enum RunError {
+    /// The solver stopped it (it cannot start, or a step failed).
+    Solver(LinkageError),
+    /// The worker thread ended without a result.
+    ThreadEnded,
+    /// A newer edit dropped it.
+    Cancelled,
+    /// A sliced run asked for its result before its end.
+    Unfinished,
+    /// Its result was already taken.
+    Finished,
+}
+
+impl std::fmt::Display for RunError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Solver(e) => write!(f, "{e}"),
+            Self::ThreadEnded => f.write_str("the run's thread ended"),
+            Self::Cancelled => f.write_str("cancelled"),
+            Self::Unfinished => f.write_str("the run did not finish"),
+            Self::Finished => f.write_str("the run's result was already taken"),
+        }
+    }
+}
 
 /// A dynamic run being computed.
 pub struct RunJob {
@@ -22,7 +49,7 @@ enum Inner {
     #[cfg(not(target_arch = "wasm32"))]
     Thread(worker::Worker),
     /// The run advanced a slice per call of [`RunJob::poll`] (the browser).
-    Sliced(Box<Result<Run, String>>),
+    Sliced(Box<Result<Run, RunError>>),
 }
 
 impl RunJob {
@@ -66,7 +93,7 @@ impl RunJob {
 
     /// Advances the run: a sliced run by steps for at most `budget_ms` of this thread's
     /// time, a threaded one not at all. The result once the run has finished.
-    pub fn poll(&mut self, budget_ms: f64) -> Option<Result<DynamicRun, String>> {
+    pub fn poll(&mut self, budget_ms: f64) -> Option<Result<DynamicRun, RunError>> {
         let choice = self.choice;
         match &mut self.inner {
             #[cfg(not(target_arch = "wasm32"))]
@@ -80,7 +107,7 @@ impl RunJob {
                     Ok(false) => None,
                     Err(e) => Some(Err(e)),
                     Ok(true) => {
-                        let done = std::mem::replace(run.as_mut(), Err("taken".into()));
+                        let done = std::mem::replace(run.as_mut(), Err(RunError::Finished));
                         Some(done.map(|r| DynamicRun::from_simulation(choice, r.finish())))
                     }
                 }
@@ -89,30 +116,30 @@ impl RunJob {
     }
 
     /// Waits for the result (blocks; a sliced run is run to its end here).
-    pub fn wait(mut self) -> Result<DynamicRun, String> {
+    pub fn wait(mut self) -> Result<DynamicRun, RunError> {
         #[cfg(not(target_arch = "wasm32"))]
         if let Inner::Thread(w) = &mut self.inner {
             return w.join();
         }
         // Without a time budget a sliced run goes on to its end or its error.
         self.poll(f64::INFINITY)
-            .unwrap_or_else(|| Err("the run did not finish".into()))
+            .unwrap_or(Err(RunError::Unfinished))
     }
 }
 
-fn start_run(k: &Kinematics, choice: IntegratorChoice) -> Result<Run, String> {
-    Run::start(k, &settings_for(choice)).map_err(|e| e.to_string())
+fn start_run(k: &Kinematics, choice: IntegratorChoice) -> Result<Run, RunError> {
+    Run::start(k, &settings_for(choice)).map_err(RunError::Solver)
 }
 
 /// Steps `run` until it finishes or `budget_ms` of wall time is spent (no step at all
 /// for a budget of 0: a frame that has none left).
-fn advance_for(run: &mut Run, budget_ms: f64) -> Result<bool, String> {
+fn advance_for(run: &mut Run, budget_ms: f64) -> Result<bool, RunError> {
     if budget_ms.is_nan() || budget_ms <= 0.0 {
         return Ok(false);
     }
     let clock = web_time::Instant::now();
     loop {
-        if run.advance(STEPS_PER_CHUNK).map_err(|e| e.to_string())? {
+        if run.advance(STEPS_PER_CHUNK).map_err(RunError::Solver)? {
             return Ok(true);
         }
         if clock.elapsed().as_secs_f64() * 1e3 >= budget_ms {
@@ -131,11 +158,11 @@ mod worker {
 
     use linkage::Kinematics;
 
-    use super::{DynamicRun, IntegratorChoice, STEPS_PER_CHUNK, start_run};
+    use super::{DynamicRun, IntegratorChoice, RunError, STEPS_PER_CHUNK, start_run};
 
     /// A run on its own thread.
     pub struct Worker {
-        result: Receiver<Result<DynamicRun, String>>,
+        result: Receiver<Result<DynamicRun, RunError>>,
         cancel: Arc<AtomicBool>,
         /// Simulated time reached, as f64 bits.
         progress: Arc<AtomicU64>,
@@ -163,18 +190,16 @@ mod worker {
             f64::from_bits(self.progress.load(Ordering::Relaxed))
         }
 
-        pub fn try_result(&mut self) -> Option<Result<DynamicRun, String>> {
+        pub fn try_result(&mut self) -> Option<Result<DynamicRun, RunError>> {
             match self.result.try_recv() {
                 Ok(r) => Some(r),
                 Err(TryRecvError::Empty) => None,
-                Err(TryRecvError::Disconnected) => Some(Err("the run's thread ended".into())),
+                Err(TryRecvError::Disconnected) => Some(Err(RunError::ThreadEnded)),
             }
         }
 
-        pub fn join(&mut self) -> Result<DynamicRun, String> {
-            self.result
-                .recv()
-                .unwrap_or_else(|_| Err("the run's thread ended".into()))
+        pub fn join(&mut self) -> Result<DynamicRun, RunError> {
+            self.result.recv().unwrap_or(Err(RunError::ThreadEnded))
         }
     }
 
@@ -189,11 +214,11 @@ mod worker {
         choice: IntegratorChoice,
         cancel: &AtomicBool,
         progress: &AtomicU64,
-    ) -> Result<DynamicRun, String> {
+    ) -> Result<DynamicRun, RunError> {
         let mut run = start_run(k, choice)?;
-        while !run.advance(STEPS_PER_CHUNK).map_err(|e| e.to_string())? {
+        while !run.advance(STEPS_PER_CHUNK).map_err(RunError::Solver)? {
             if cancel.load(Ordering::Relaxed) {
-                return Err("cancelled".into());
+                return Err(RunError::Cancelled);
             }
             progress.store(run.time_s().to_bits(), Ordering::Relaxed);
         }

@@ -135,7 +135,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             }
         }
         Some(Err(e)) => {
-            ui.colored_label(ui.visuals().error_fg_color, e);
+            ui.colored_label(ui.visuals().error_fg_color, e.to_string());
         }
     }
     if changed || choice.method != st.session.integrator().method {

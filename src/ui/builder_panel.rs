@@ -40,6 +40,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     model(ui, st);
     links(ui, st);
     sliders(ui, st);
+    crate::ui::builder_bodies::panel(ui, st);
     crate::ui::builder_forces::panel(ui, st);
     if let (Some(tool), Some(b)) = (chosen, st.builder.as_mut()) {
         b.tool = tool;
@@ -158,8 +159,10 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
                 ui.end_row();
             }
         });
-    let Speed::Rpm(mut rpm) = b.sketch().speed else {
-        return;
+    // Shown in rpm whatever the scene wrote; an edit writes rpm.
+    let mut rpm = match b.sketch().speed {
+        Speed::Rpm(rpm) => rpm,
+        Speed::RadPerSecond(w) => w * 60.0 / std::f64::consts::TAU,
     };
     ui.horizontal(|ui| {
         ui.label("input speed");

@@ -1,6 +1,7 @@
 //! The panels, one file each.
 
 pub mod accuracy;
+pub mod builder_bodies;
 pub mod builder_canvas;
 pub mod builder_forces;
 pub mod builder_panel;

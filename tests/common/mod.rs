@@ -1,6 +1,9 @@
-//! What the rendering UI tests share: the app as a user opens it, in a kittest
-//! harness drawing through wgpu (Mesa's lavapipe in CI), timings hidden so that the
-//! pixels repeat.
+//! What the UI tests share: the app as a user opens it, in a kittest harness drawing
+//! through wgpu (Mesa's lavapipe in CI) with timings hidden so that the pixels
+//! repeat, or without a GPU for tests that read state only; and pointer events.
+
+// Each test binary compiles this module and uses a part of it.
+#![allow(dead_code)]
 
 use eframe::egui;
 use egui_kittest::Harness;
@@ -14,4 +17,47 @@ pub fn app_harness() -> Harness<'static, LinkageApp> {
         .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
     h.state_mut().state.show_timings = false;
     h
+}
+
+/// The app at its default scene, 1500×950, with no GPU renderer (the view draws no
+/// mechanism), after two frames: for tests that read state, not pixels.
+pub fn stateful_harness() -> Harness<'static, LinkageApp> {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1500.0, 950.0))
+        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
+    h.run();
+    h.run();
+    h
+}
+
+/// The pointer moved to `at`, then pressed (`Some(true)`), released (`Some(false)`)
+/// or neither; then frames until the app settles.
+pub fn pointer(h: &mut Harness<'static, LinkageApp>, at: egui::Pos2, pressed: Option<bool>) {
+    h.event(egui::Event::PointerMoved(at));
+    if let Some(pressed) = pressed {
+        h.event(egui::Event::PointerButton {
+            pos: at,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::default(),
+        });
+    }
+    h.run();
+}
+
+/// A press and a release at `at`, each in its own frame (the pointer moved there
+/// once: a second move between them, even to the same place, loses egui's click on
+/// a menu button).
+pub fn click(h: &mut Harness<'static, LinkageApp>, at: egui::Pos2) {
+    h.event(egui::Event::PointerMoved(at));
+    for pressed in [true, false] {
+        h.event(egui::Event::PointerButton {
+            pos: at,
+            button: egui::PointerButton::Primary,
+            pressed,
+            modifiers: egui::Modifiers::default(),
+        });
+        h.run();
+    }
+    h.run();
 }

@@ -285,6 +285,15 @@ fn drawn_masses_are_uniform_bodies() {
         3.0 * 0.01 / 12.0,
     );
     assert_eq!(scene.links[3].mass, None);
+    // A link's own centroid (world, m) and inertia go through as they are (the
+    // scene writes millimetres, and link coordinates are the world's at input 0).
+    sketch.links[0].centroid = Some(Vec2::new(0.01, 0.03));
+    sketch.links[0].inertia_kg_m2 = Some(0.5);
+    let scene = sketch.to_scene().expect("still a four-bar");
+    let (cx, cy) = scene.links[1].centroid.expect("centroid");
+    assert_close("own centroid x", cx, 10.0);
+    assert_close("own centroid y", cy, 30.0);
+    assert_eq!(scene.links[1].inertia, Some(0.5));
 }
 
 /// A chain with no dyad decomposition (a triad six-bar: a floating plate held by

@@ -288,19 +288,17 @@ impl Sketch {
         let mut links: Vec<LinkSpec> = self
             .links
             .iter()
-            .map(|l| {
+            .enumerate()
+            .map(|(index, l)| {
                 let points = l
                     .points
                     .iter()
                     .map(|&p| (self.points[p].name.clone(), xy(self.points[p].at)));
                 let mut spec = link_spec(&l.name, points);
-                if let Some(kg) = l.mass_kg {
-                    let at: Vec<Vec2> = l.points.iter().map(|&p| self.points[p].at).collect();
-                    let mean = at.iter().sum::<Vec2>() / at.len().max(1) as f64;
-                    spec.mass = Some(kg);
-                    spec.centroid = Some(xy(l.centroid.unwrap_or(mean)));
-                    spec.inertia =
-                        Some(l.inertia_kg_m2.unwrap_or_else(|| uniform_inertia(kg, &at)));
+                if let Some((centroid, inertia)) = self.body(index) {
+                    spec.mass = l.mass_kg;
+                    spec.centroid = Some(xy(centroid));
+                    spec.inertia = Some(inertia);
                 }
                 spec
             })
@@ -362,6 +360,20 @@ impl Sketch {
             forces: self.forces_spec(),
             solver: Default::default(),
         }
+    }
+
+    /// The centroid (in the world as drawn, m) and the moment of inertia about it
+    /// (kg·m²) the scene gives link `link`: its own where set, else a uniform body's
+    /// (see [`Sketch::to_scene`]); `None` for a massless link.
+    pub fn body(&self, link: usize) -> Option<(Vec2, f64)> {
+        let l = self.links.get(link)?;
+        let kg = l.mass_kg?;
+        let at: Vec<Vec2> = l.points.iter().map(|&p| self.points[p].at).collect();
+        let mean = at.iter().sum::<Vec2>() / at.len().max(1) as f64;
+        Some((
+            l.centroid.unwrap_or(mean),
+            l.inertia_kg_m2.unwrap_or_else(|| uniform_inertia(kg, &at)),
+        ))
     }
 
     /// Gravity and the force elements, by point name, lengths in the scene's unit.

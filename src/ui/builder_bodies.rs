@@ -1,0 +1,79 @@
+//! Each massive link's body in the side panel, where the drawing computes forces: a
+//! uniform body (its centroid at the mean of its points, a bar's or a triangle's
+//! inertia), or its own centroid and inertia typed, as a real part has.
+
+use eframe::egui;
+use linkage::Vec2;
+use linkage::scene::Models;
+
+use crate::app::AppState;
+use crate::builder::edit::SketchEdit;
+use crate::ui::drawing;
+
+/// One row per link with a mass: "uniform", or its centroid (x, y) and inertia.
+pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
+    let Some(b) = st.builder.as_ref() else {
+        return;
+    };
+    let sketch = b.sketch();
+    let massive: Vec<usize> = (0..sketch.links.len())
+        .filter(|&l| sketch.links[l].mass_kg.is_some())
+        .collect();
+    if sketch.models == Models::Kinematics || massive.is_empty() {
+        return;
+    }
+    let unit = sketch.length_unit.to_metres();
+    let unit_label = crate::session::unit_label_of(sketch.length_unit);
+    let mut edits = Vec::new();
+    ui.separator();
+    ui.strong("Bodies");
+    egui::Grid::new("drawing bodies")
+        .num_columns(5)
+        .show(ui, |ui| {
+            for l in massive {
+                let link = &sketch.links[l];
+                let Some((centroid, inertia)) = sketch.body(l) else {
+                    continue;
+                };
+                ui.label(&link.name);
+                let mut uniform = link.centroid.is_none() && link.inertia_kg_m2.is_none();
+                let toggled = ui
+                    .checkbox(&mut uniform, "uniform")
+                    .on_hover_text(
+                        "centroid at the mean of its points, a uniform bar's or plate's inertia",
+                    )
+                    .changed();
+                let (mut x, mut y, mut i) = (centroid.x / unit, centroid.y / unit, inertia);
+                let mut typed = false;
+                if uniform {
+                    ui.label("");
+                    ui.label("");
+                    ui.label("");
+                } else {
+                    for (v, axis) in [(&mut x, "x "), (&mut y, "y ")] {
+                        let r = egui::DragValue::new(v)
+                            .speed(0.5)
+                            .prefix(axis)
+                            .suffix(format!(" {unit_label}"));
+                        typed |= ui.add(r).changed();
+                    }
+                    let r = egui::DragValue::new(&mut i)
+                        .range(0.0..=1e9)
+                        .speed(1e-3 * inertia.max(1e-6))
+                        .suffix(" kg m²");
+                    typed |= ui.add(r).changed();
+                }
+                if toggled || typed {
+                    edits.push(SketchEdit::SetBody {
+                        link: l,
+                        centroid: (!uniform).then(|| Vec2::new(x * unit, y * unit)),
+                        inertia_kg_m2: (!uniform).then_some(i),
+                    });
+                }
+                ui.end_row();
+            }
+        });
+    for e in edits {
+        drawing::edit(st, e);
+    }
+}
