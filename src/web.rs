@@ -26,7 +26,8 @@ struct Published<'a> {
     edit_timing: crate::app::EditTiming,
     /// Whether a dynamic run is still being computed.
     run_pending: bool,
-    /// Current input angle, deg.
+    /// Current input angle, deg: the value that `--input-deg` turns back into exactly
+    /// the angle on screen ([`degrees_exactly`]).
     input_deg: f64,
     /// The scene's name.
     scene_name: &'a str,
@@ -87,6 +88,18 @@ fn joints(st: &crate::app::AppState) -> Vec<PublishedJoint<'_>> {
         .collect()
 }
 
+/// The angle in degrees whose `to_radians` is exactly `rad`, where one is within an
+/// ulp of `rad.to_degrees()` (that alone misses by an ulp about one time in twenty,
+/// and the browser test's CLI sheet at a one-ulp different angle can place a label
+/// differently): the CLI given it draws the very pose on screen.
+fn degrees_exactly(rad: f64) -> f64 {
+    let deg = rad.to_degrees();
+    [deg, deg.next_up(), deg.next_down()]
+        .into_iter()
+        .find(|d| d.to_radians() == rad)
+        .unwrap_or(deg)
+}
+
 /// Keeps this frame's controls for [`controls_json`]; `renderer`: whether the view's
 /// GPU renderer started.
 pub fn publish_controls(st: &crate::app::AppState, frame: u64, renderer: bool) {
@@ -97,7 +110,7 @@ pub fn publish_controls(st: &crate::app::AppState, frame: u64, renderer: bool) {
         message: st.session.message(),
         edit_timing: st.edit_timing,
         run_pending: st.session.run_progress().is_some(),
-        input_deg: st.session.input_rad().to_degrees(),
+        input_deg: degrees_exactly(st.session.input_rad()),
         scene_name: &st.session.scene().name,
         dirty: st.session.is_dirty(),
         joints: joints(st),
