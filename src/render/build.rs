@@ -58,6 +58,18 @@ pub struct VectorScales {
     pub acceleration: f64,
 }
 
+/// A spring from `a` to `b` (view-local m), or none where not finite: a coil with a fixed number of turns, so
+/// that it visibly stretches.
+pub(super) fn coil(a: Vec2, b: Vec2, bar: f32, pin: f32) -> Option<Shape> {
+    Shape::new(
+        Kind::Spring,
+        [a, b, a],
+        0.25 * bar,
+        colour::SPRING,
+        [9.0, 1.1 * pin],
+    )
+}
+
 /// A ground pivot at `c` (view-local m): a support triangle on a hatched base.
 pub(super) fn ground_pivot(push: &mut impl FnMut(Option<Shape>), c: Vec2, pin: f32, bar: f32) {
     let base_y = c.y - 2.6 * pin;
@@ -223,14 +235,7 @@ pub fn build(
     // Springs: a coil with a fixed number of turns, so it visibly stretches.
     for sp in &s.scene().forces.springs {
         if let (Some(a), Some(b)) = (m.point_index(&sp.a), m.point_index(&sp.b)) {
-            let (a, b) = (cam.local(at(a)), cam.local(at(b)));
-            push(Shape::new(
-                Kind::Spring,
-                [a, b, a],
-                0.25 * bar,
-                colour::SPRING,
-                [9.0, 1.1 * pin],
-            ));
+            push(coil(cam.local(at(a)), cam.local(at(b)), bar, pin));
         }
     }
 

@@ -5,7 +5,7 @@
 use glam::Vec2;
 use linkage::sketch::Sketch;
 
-use super::build::{colour, ground_pivot};
+use super::build::{coil, colour, ground_pivot};
 use super::shape::{Kind, Shape};
 use super::view::Camera;
 
@@ -111,14 +111,7 @@ fn force_elements(
     pin: f32,
 ) {
     for s in &sketch.springs {
-        let (a, b) = (pos(s.a), pos(s.b));
-        push(Shape::new(
-            Kind::Spring,
-            [a, b, a],
-            0.25 * bar,
-            colour::SPRING,
-            [9.0, 1.1 * pin],
-        ));
+        push(coil(pos(s.a), pos(s.b), bar, pin));
     }
     for d in &sketch.dampers {
         let (a, b) = (pos(d.a), pos(d.b));

@@ -30,17 +30,22 @@ pub fn stateful_harness() -> Harness<'static, LinkageApp> {
     h
 }
 
+/// The primary button pressed or released at `at` (no frame run).
+fn button(h: &mut Harness<'static, LinkageApp>, at: egui::Pos2, pressed: bool) {
+    h.event(egui::Event::PointerButton {
+        pos: at,
+        button: egui::PointerButton::Primary,
+        pressed,
+        modifiers: egui::Modifiers::default(),
+    });
+}
+
 /// The pointer moved to `at`, then pressed (`Some(true)`), released (`Some(false)`)
 /// or neither; then frames until the app settles.
 pub fn pointer(h: &mut Harness<'static, LinkageApp>, at: egui::Pos2, pressed: Option<bool>) {
     h.event(egui::Event::PointerMoved(at));
     if let Some(pressed) = pressed {
-        h.event(egui::Event::PointerButton {
-            pos: at,
-            button: egui::PointerButton::Primary,
-            pressed,
-            modifiers: egui::Modifiers::default(),
-        });
+        button(h, at, pressed);
     }
     h.run();
 }
@@ -51,12 +56,7 @@ pub fn pointer(h: &mut Harness<'static, LinkageApp>, at: egui::Pos2, pressed: Op
 pub fn click(h: &mut Harness<'static, LinkageApp>, at: egui::Pos2) {
     h.event(egui::Event::PointerMoved(at));
     for pressed in [true, false] {
-        h.event(egui::Event::PointerButton {
-            pos: at,
-            button: egui::PointerButton::Primary,
-            pressed,
-            modifiers: egui::Modifiers::default(),
-        });
+        button(h, at, pressed);
         h.run();
     }
     h.run();
