@@ -345,6 +345,11 @@ fn synth(what: SynthCommand) -> Result<String, String> {
             }
             json_text(&serde_json::to_value(&d).map_err(|e| e.to_string())?)
         }
+        SynthCommand::Function {
+            points,
+            ground,
+            scene_out,
+        } => crate::synth_function::run(&points, ground, scene_out.as_deref()),
         SynthCommand::DieCutter {
             stroke_mm,
             k,

@@ -10,6 +10,7 @@ mod diagram;
 mod kinetostatics;
 mod plot;
 mod simulate;
+mod synth_function;
 mod tradeoff;
 
 use std::io::{ErrorKind, Write};
@@ -168,6 +169,19 @@ enum SynthCommand {
         /// Which mirror circle A lies on when --arc-deg is given (+1 or -1).
         #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
         side: i8,
+        /// Write the four-bar as a scene file here.
+        #[arg(long)]
+        scene_out: Option<PathBuf>,
+    },
+    /// A four-bar function generator through precision points (Freudenstein: exact for
+    /// three, least squares for more; JSON; --scene-out writes a scene).
+    Function {
+        /// CSV of precision points: `input_deg, output_deg` per row (a header allowed).
+        #[arg(long)]
+        points: PathBuf,
+        /// Ground AD, m.
+        #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
+        ground: f64,
         /// Write the four-bar as a scene file here.
         #[arg(long)]
         scene_out: Option<PathBuf>,

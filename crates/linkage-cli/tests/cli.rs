@@ -443,3 +443,67 @@ fn a_newton_only_chain_at_outside_its_range_names_it_and_sweep_covers_it() {
     assert!((inputs[0] - lo.rem_euclid(std::f64::consts::TAU)).abs() < 1e-6 * width);
     assert!((inputs[49] - inputs[0] - width).abs() < 1e-6 * width);
 }
+
+/// `synth function` through three angle pairs of a known crank-rocker (AB 0.4, BC 0.9,
+/// CD 0.7, AD 1.0 m): it gives back the lengths, and the scene it writes puts C, at
+/// each precision point, where the rocker angle says (`linkage at`).
+#[test]
+fn synth_function_designs_a_generator_through_its_points() {
+    let (a, b, c, d) = (0.4f64, 0.9f64, 0.7f64, 1.0f64);
+    let rocker = |theta: f64| {
+        let (bx, by) = (a * theta.cos(), a * theta.sin());
+        let (dx, dy) = (d - bx, -by);
+        let dist = dx.hypot(dy);
+        let along = (b * b - c * c + dist * dist) / (2.0 * dist);
+        let up = (b * b - along * along).sqrt();
+        let (ux, uy) = (dx / dist, dy / dist);
+        (bx + along * ux - up * uy, by + along * uy + up * ux)
+    };
+    let dir = std::env::temp_dir().join(format!("linkage-cli-fn-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let csv = dir.join("points.csv");
+    let mut rows = String::from("input_deg,output_deg\n");
+    for t in [40.0f64, 55.0, 70.0] {
+        let (cx, cy) = rocker(t.to_radians());
+        rows += &format!("{t},{}\n", cy.atan2(cx - d).to_degrees());
+    }
+    std::fs::write(&csv, rows).expect("csv");
+    let out_scene = dir.join("fn.ron");
+    let (ok, out, err) = linkage(&[
+        "synth",
+        "function",
+        "--points",
+        csv.to_str().expect("path"),
+        "--scene-out",
+        out_scene.to_str().expect("path"),
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    for (key, want) in [("crank_m", a), ("coupler_m", b), ("rocker_m", c)] {
+        let got = v[key].as_f64().expect(key);
+        assert!((got - want).abs() < 1e-9, "{key}: {got}");
+    }
+    assert!(v["error_at_points_deg"].as_f64().expect("error") < 1e-9);
+    for t in [40.0f64, 55.0, 70.0] {
+        let (ok, at, err) = linkage(&[
+            "at",
+            out_scene.to_str().expect("path"),
+            "--input-deg",
+            &t.to_string(),
+        ]);
+        assert!(ok, "{err}");
+        let s: serde_json::Value = serde_json::from_str(&at).expect("json");
+        let p = &s["points"]["C"]["position"];
+        let (cx, cy) = rocker(t.to_radians());
+        let (x, y) = (p[0].as_f64().expect("x"), p[1].as_f64().expect("y"));
+        assert!(
+            (x - cx).abs() < 1e-9 && (y - cy).abs() < 1e-9,
+            "at {t}: ({x}, {y}) vs ({cx}, {cy})"
+        );
+    }
+    // A row that is no pair of numbers is named by its line.
+    std::fs::write(&csv, "input_deg,output_deg\n40,10\n55,x\n70,30\n").expect("csv");
+    let (ok, _, err) = linkage(&["synth", "function", "--points", csv.to_str().expect("path")]);
+    assert!(!ok && err.contains("line 3"), "{err}");
+    let _ = std::fs::remove_dir_all(dir);
+}

@@ -1,10 +1,13 @@
-//! Synthesis of a crank-rocker from rocker length, swing and time ratio K
+//! Dimensional synthesis: function generation by Freudenstein's equation
+//! ([`function`]), and here a crank-rocker from rocker length, swing and time ratio K
 //! (the construction of the die-cutter paper): with the rocker's two limit
 //! positions C1, C2 about D, the crank pivot A lies on the circle through C1 and C2
 //! on which the chord C1C2 subtends θ = π(K − 1)/(K + 1); at the limits A, B, C are
 //! collinear, so AB = (AC_far − AC_near)/2 and BC = (AC_far + AC_near)/2. The place
 //! of A on that circle is the free choice: by default the one with the best minimum
 //! transmission angle.
+
+pub mod function;
 
 use indexmap::IndexMap;
 use serde::Serialize;

@@ -1,0 +1,277 @@
+//! Function generation: a four-bar whose output rocker angle φ follows a prescribed
+//! function of its input crank angle θ, by Freudenstein's equation. With the ground
+//! pivots A at the origin and D at (d, 0), crank AB = a at θ, coupler BC = b and
+//! rocker DC = c at φ, the loop closes exactly when
+//!
+//! K1 cos φ − K2 cos θ + K3 = cos(θ − φ),
+//! K1 = d/a, K2 = d/c, K3 = (a² − b² + c² + d²)/(2ac),
+//!
+//! which is linear in K1, K2, K3: three precision points (θᵢ, φᵢ) give them exactly,
+//! more give them by least squares (of the equation's residual). The linkage then
+//! matches the function at the precision points; between them it misses by the
+//! structural error, which [`structural_error`] measures on the solved linkage.
+
+use indexmap::IndexMap;
+use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
+use serde::Serialize;
+
+use crate::error::{LinkageError, Result};
+use crate::scene::{
+    AngleUnit, Branch, DriverSpec, ForcesSpec, LengthUnit, LinkSpec, Models, SceneFile, SolverSpec,
+    Speed,
+};
+
+/// A prescribed input and output angle pair, rad.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct PrecisionPoint {
+    /// Crank angle θ, rad (from A→D).
+    pub input_rad: f64,
+    /// Rocker angle φ, rad (from A→D).
+    pub output_rad: f64,
+}
+
+/// A four-bar for function generation. A negative crank or rocker length means the
+/// link points the other way: the vector from its pivot is `length · (cos, sin)` of
+/// the prescribed angle, as Freudenstein's equation has it.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct FunctionFourBar {
+    /// Freudenstein's K1 = d/a, K2 = d/c, K3.
+    pub k: [f64; 3],
+    /// Crank a (signed), coupler b, rocker c (signed), ground d.
+    pub lengths: [f64; 4],
+}
+
+/// The Chebyshev spacing of `n` precision points over `[x0, x1]`: the nodes of the
+/// degree-n Chebyshev polynomial, which make the largest structural error of a
+/// polynomial-like fit least.
+pub fn chebyshev_spacing(x0: f64, x1: f64, n: usize) -> Vec<f64> {
+    (1..=n)
+        .map(|j| {
+            let t = std::f64::consts::PI * (2 * j - 1) as f64 / (2 * n) as f64;
+            0.5 * (x0 + x1) - 0.5 * (x1 - x0) * t.cos()
+        })
+        .collect()
+}
+
+/// The four-bar with ground `ground_m` through `points`: exact for three points,
+/// least squares for more.
+///
+/// # Errors
+/// Fewer than three points, a value that is not finite, points that do not fix the
+/// constants (two with the same angles), or constants that make no linkage (a
+/// zero-length crank or rocker, or a coupler whose square is not positive).
+pub fn freudenstein(points: &[PrecisionPoint], ground_m: f64) -> Result<FunctionFourBar> {
+    check(points, ground_m)?;
+    let row = |p: &PrecisionPoint| {
+        (
+            [p.output_rad.cos(), -p.input_rad.cos(), 1.0],
+            (p.input_rad - p.output_rad).cos(),
+        )
+    };
+    let k = if points.len() == 3 {
+        let mut m = Matrix3::zeros();
+        let mut rhs = Vector3::zeros();
+        for (i, p) in points.iter().enumerate() {
+            let (r, y) = row(p);
+            m.set_row(i, &nalgebra::RowVector3::from(r));
+            rhs[i] = y;
+        }
+        m.lu().solve(&rhs).map(|k| [k[0], k[1], k[2]])
+    } else {
+        let n = points.len();
+        let mut m = DMatrix::zeros(n, 3);
+        let mut rhs = DVector::zeros(n);
+        for (i, p) in points.iter().enumerate() {
+            let (r, y) = row(p);
+            for (j, v) in r.into_iter().enumerate() {
+                m[(i, j)] = v;
+            }
+            rhs[i] = y;
+        }
+        // QR keeps the least-squares solve as well conditioned as the points allow.
+        let qr = m.qr();
+        let qty = qr.q().transpose() * rhs;
+        qr.r()
+            .solve_upper_triangular(&qty)
+            .map(|k| [k[0], k[1], k[2]])
+    };
+    let k = k
+        .filter(|k| k.iter().all(|v| v.is_finite()))
+        .ok_or_else(|| LinkageError::InvalidParameter {
+            name: "precision points".into(),
+            value: points.len() as f64,
+            valid: "points whose angles fix K1, K2 and K3 (no two alike)".into(),
+        })?;
+    lengths(k, ground_m)
+}
+
+fn check(points: &[PrecisionPoint], ground_m: f64) -> Result<()> {
+    if points.len() < 3 {
+        return Err(LinkageError::InvalidParameter {
+            name: "precision points".into(),
+            value: points.len() as f64,
+            valid: "at least 3".into(),
+        });
+    }
+    if !(ground_m.is_finite() && ground_m > 0.0) {
+        return Err(LinkageError::InvalidParameter {
+            name: "ground length".into(),
+            value: ground_m,
+            valid: "a positive length".into(),
+        });
+    }
+    match points
+        .iter()
+        .flat_map(|p| [p.input_rad, p.output_rad])
+        .find(|v| !v.is_finite())
+    {
+        Some(v) => Err(LinkageError::InvalidParameter {
+            name: "precision point angle".into(),
+            value: v,
+            valid: "a finite angle".into(),
+        }),
+        None => Ok(()),
+    }
+}
+
+/// The link lengths of Freudenstein's constants with ground `d`.
+fn lengths(k: [f64; 3], d: f64) -> Result<FunctionFourBar> {
+    let [k1, k2, k3] = k;
+    let tiny = 1e-12;
+    if k1.abs() < tiny || k2.abs() < tiny {
+        return Err(LinkageError::SceneInvalid(format!(
+            "K1 = {k1:.6e}, K2 = {k2:.6e}: the crank or rocker would be infinitely long"
+        )));
+    }
+    let (a, c) = (d / k1, d / k2);
+    let b2 = a * a + c * c + d * d - 2.0 * a * c * k3;
+    if b2.is_nan() || b2 <= tiny * d * d {
+        return Err(LinkageError::SceneInvalid(format!(
+            "K1 = {k1:.6}, K2 = {k2:.6}, K3 = {k3:.6} give a coupler length squared of {b2:.6e}: no four-bar meets these points"
+        )));
+    }
+    Ok(FunctionFourBar {
+        k,
+        lengths: [a, b2.sqrt(), c, d],
+    })
+}
+
+impl FunctionFourBar {
+    /// Crank pin B and rocker pin C at crank angle `input_rad` and rocker angle
+    /// `output_rad`, m (A at the origin, D at (d, 0)).
+    pub fn pins(&self, input_rad: f64, output_rad: f64) -> ([f64; 2], [f64; 2]) {
+        let [a, _, c, d] = self.lengths;
+        (
+            [a * input_rad.cos(), a * input_rad.sin()],
+            [d + c * output_rad.cos(), c * output_rad.sin()],
+        )
+    }
+
+    /// Whether C lies left of the line from B to D at these angles: the assembly
+    /// branch (the scene's `Left("B", "D")`).
+    pub fn c_left_of_bd(&self, input_rad: f64, output_rad: f64) -> bool {
+        let ([bx, by], [cx, cy]) = self.pins(input_rad, output_rad);
+        let d = self.lengths[3];
+        (d - bx) * (cy - by) - (-by) * (cx - bx) > 0.0
+    }
+
+    /// The rocker angle at crank angle `input_rad` on the branch `left` (see
+    /// [`FunctionFourBar::c_left_of_bd`]), or `None` where the chain does not close.
+    /// Closed form: C = D + c(cos φ, sin φ) at distance b from B gives
+    /// P cos φ + Q sin φ = R.
+    pub fn output_at(&self, input_rad: f64, left: bool) -> Option<f64> {
+        let [a, b, c, d] = self.lengths;
+        let (ex, ey) = (d - a * input_rad.cos(), -a * input_rad.sin());
+        let (p, q) = (2.0 * c * ex, 2.0 * c * ey);
+        let r = b * b - ex * ex - ey * ey - c * c;
+        let h = p.hypot(q);
+        if h == 0.0 || (r / h).abs() > 1.0 {
+            return None;
+        }
+        let (base, spread) = (q.atan2(p), (r / h).acos());
+        [base + spread, base - spread]
+            .into_iter()
+            .find(|&phi| self.c_left_of_bd(input_rad, phi) == left)
+    }
+}
+
+/// The structural error of `linkage` at the precision points: the largest
+/// |φ(θᵢ) − φᵢ| on the branch of the first point, rad (angles compared modulo a
+/// turn); `None` where the chain does not close at one of them.
+pub fn structural_error(linkage: &FunctionFourBar, points: &[PrecisionPoint]) -> Option<f64> {
+    let first = points.first()?;
+    let left = linkage.c_left_of_bd(first.input_rad, first.output_rad);
+    points.iter().try_fold(0.0f64, |worst, p| {
+        let phi = linkage.output_at(p.input_rad, left)?;
+        Some(worst.max(angle_between(phi, p.output_rad)))
+    })
+}
+
+/// |x − y| modulo a turn, rad.
+fn angle_between(x: f64, y: f64) -> f64 {
+    let tau = std::f64::consts::TAU;
+    let d = (x - y).rem_euclid(tau);
+    d.min(tau - d)
+}
+
+impl FunctionFourBar {
+    /// The four-bar as a scene (metres, crank at 60 rpm), starting at precision point
+    /// `start` on its branch. The crank's input angle is θ, plus a half turn where
+    /// the crank length is negative; likewise the rocker's angle and φ.
+    pub fn scene(&self, start: PrecisionPoint) -> SceneFile {
+        let [a, b, c, d] = self.lengths;
+        let pts = |list: &[(&str, f64, f64)]| -> IndexMap<String, (f64, f64)> {
+            list.iter()
+                .map(|(n, x, y)| (n.to_string(), (*x, *y)))
+                .collect()
+        };
+        let link = |name: &str, ground: bool, points| LinkSpec {
+            name: name.into(),
+            ground,
+            points,
+            mass: None,
+            centroid: None,
+            inertia: None,
+        };
+        let branch = if self.c_left_of_bd(start.input_rad, start.output_rad) {
+            Branch::Left("B".into(), "D".into())
+        } else {
+            Branch::Right("B".into(), "D".into())
+        };
+        let crank_start = start.input_rad + if a < 0.0 { std::f64::consts::PI } else { 0.0 };
+        let [k1, k2, k3] = self.k;
+        SceneFile {
+            name: "Function generator (Freudenstein)".into(),
+            description: format!(
+                "Four-bar from Freudenstein's equation: K1 = {k1:.6}, K2 = {k2:.6}, K3 = {k3:.6}; AB = {:.6} m, BC = {b:.6} m, CD = {:.6} m, AD = {d:.6} m.",
+                a.abs(),
+                c.abs()
+            ),
+            notes: vec![],
+            models: Models::Kinematics,
+            length_unit: LengthUnit::Metre,
+            angle_unit: AngleUnit::Degree,
+            links: vec![
+                link("ground", true, pts(&[("A", 0.0, 0.0), ("D", d, 0.0)])),
+                link("crank", false, pts(&[("A", 0.0, 0.0), ("B", a.abs(), 0.0)])),
+                link("coupler", false, pts(&[("B", 0.0, 0.0), ("C", b, 0.0)])),
+                link(
+                    "rocker",
+                    false,
+                    pts(&[("D", 0.0, 0.0), ("C", c.abs(), 0.0)]),
+                ),
+            ],
+            sliders: vec![],
+            driver: DriverSpec {
+                link: "crank".into(),
+                speed: Speed::Rpm(60.0),
+                start: crank_start.to_degrees(),
+            },
+            branches: [("C".to_string(), branch)].into_iter().collect(),
+            output: Some("rocker".into()),
+            guess: IndexMap::new(),
+            forces: ForcesSpec::default(),
+            solver: SolverSpec::default(),
+        }
+    }
+}
