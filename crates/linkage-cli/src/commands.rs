@@ -350,6 +350,11 @@ fn synth(what: SynthCommand) -> Result<String, String> {
             ground,
             scene_out,
         } => crate::synth_function::run(&points, ground, scene_out.as_deref()),
+        SynthCommand::Motion {
+            poses,
+            moving,
+            scene_out,
+        } => crate::synth_motion::run(&poses, &moving, scene_out.as_deref()),
         SynthCommand::DieCutter {
             stroke_mm,
             k,

@@ -11,6 +11,7 @@ mod kinetostatics;
 mod plot;
 mod simulate;
 mod synth_function;
+mod synth_motion;
 mod tradeoff;
 
 use std::io::{ErrorKind, Write};
@@ -182,6 +183,19 @@ enum SynthCommand {
         /// Ground AD, m.
         #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
         ground: f64,
+        /// Write the four-bar as a scene file here.
+        #[arg(long)]
+        scene_out: Option<PathBuf>,
+    },
+    /// A four-bar that carries a body through three positions (centre points of two
+    /// moving pivots; JSON with the poles and a check by the solver; --scene-out).
+    Motion {
+        /// CSV of the body's positions: `x_m, y_m, angle_deg` per row (a header allowed).
+        #[arg(long)]
+        poses: PathBuf,
+        /// The moving pivots in the body's frame, m: x1 y1 x2 y2.
+        #[arg(long, num_args = 4, allow_hyphen_values = true, value_names = ["X1", "Y1", "X2", "Y2"])]
+        moving: Vec<f64>,
         /// Write the four-bar as a scene file here.
         #[arg(long)]
         scene_out: Option<PathBuf>,

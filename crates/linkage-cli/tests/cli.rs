@@ -507,3 +507,65 @@ fn synth_function_designs_a_generator_through_its_points() {
     assert!(!ok && err.contains("line 3"), "{err}");
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// `synth motion` through three positions of a body: the scene it writes carries the
+/// body's reference point P through them (`linkage at` at the crank angles it gives).
+#[test]
+fn synth_motion_designs_a_four_bar_through_three_positions() {
+    let dir = std::env::temp_dir().join(format!("linkage-cli-motion-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let csv = dir.join("poses.csv");
+    let poses = [(0.0, 0.0, 0.0), (0.2, 0.1, 20.0), (0.35, 0.3, 45.0)];
+    let rows: String = poses
+        .iter()
+        .map(|(x, y, a)| format!("{x},{y},{a}\n"))
+        .collect();
+    std::fs::write(&csv, format!("x_m,y_m,angle_deg\n{rows}")).expect("csv");
+    let out_scene = dir.join("motion.ron");
+    let (ok, out, err) = linkage(&[
+        "synth",
+        "motion",
+        "--poses",
+        csv.to_str().expect("path"),
+        "--moving",
+        "-0.1",
+        "-0.15",
+        "0.15",
+        "-0.1",
+        "--scene-out",
+        out_scene.to_str().expect("path"),
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    assert!(v["check_miss_m"].as_f64().expect("miss") < 1e-9, "{out}");
+    for (i, (x, y, _)) in poses.iter().enumerate() {
+        let deg = v["crank_input_deg"][i].as_f64().expect("input");
+        let (ok, at, err) = linkage(&[
+            "at",
+            out_scene.to_str().expect("path"),
+            "--input-deg",
+            &deg.to_string(),
+        ]);
+        assert!(ok, "{err}");
+        let s: serde_json::Value = serde_json::from_str(&at).expect("json");
+        let p = &s["points"]["P"]["position"];
+        let (px, py) = (p[0].as_f64().expect("x"), p[1].as_f64().expect("y"));
+        assert!(
+            (px - x).abs() < 1e-9 && (py - y).abs() < 1e-9,
+            "position {i}: ({px}, {py})"
+        );
+    }
+    let (ok, _, err) = linkage(&[
+        "synth",
+        "motion",
+        "--poses",
+        csv.to_str().expect("path"),
+        "--moving",
+        "0",
+        "0",
+        "0",
+        "0",
+    ]);
+    assert!(!ok && err.contains("one place"), "{err}");
+    let _ = std::fs::remove_dir_all(dir);
+}

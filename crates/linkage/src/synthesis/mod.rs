@@ -1,5 +1,6 @@
 //! Dimensional synthesis: function generation by Freudenstein's equation
-//! ([`function`]), and here a crank-rocker from rocker length, swing and time ratio K
+//! ([`function`]), motion generation through three positions ([`motion`]), and here
+//! a crank-rocker from rocker length, swing and time ratio K
 //! (the construction of the die-cutter paper): with the rocker's two limit
 //! positions C1, C2 about D, the crank pivot A lies on the circle through C1 and C2
 //! on which the chord C1C2 subtends θ = π(K − 1)/(K + 1); at the limits A, B, C are
@@ -8,6 +9,7 @@
 //! transmission angle.
 
 pub mod function;
+pub mod motion;
 
 use indexmap::IndexMap;
 use serde::Serialize;

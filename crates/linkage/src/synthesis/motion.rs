@@ -1,0 +1,215 @@
+//! Motion generation through three prescribed positions of a body (Burmester's
+//! construction for three positions): each moving pivot chosen on the body (a
+//! circle point) takes three places in the world, and its fixed pivot (the centre
+//! point) is the centre of the circle through them, so a crank from there carries
+//! it through all three. Two moving pivots give a four-bar whose coupler is the
+//! body. The poles of each pair of positions (the points that stay put from one
+//! to the other) are given for drawing the construction.
+
+use serde::Serialize;
+
+use crate::Kinematics;
+use crate::error::{LinkageError, Result};
+use crate::model::Mechanism;
+use crate::motion::{Vec2, cross};
+use crate::sketch::{Sketch, SketchLink, SketchPoint};
+
+/// A position of the body: where its reference point is and how it is turned.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct BodyPose {
+    /// The reference point in the world, m.
+    pub at: [f64; 2],
+    /// The body's angle, rad (counter-clockwise).
+    pub angle_rad: f64,
+}
+
+impl BodyPose {
+    /// Where the body point `local` (body coordinates, m) is in this position.
+    pub fn place(&self, local: Vec2) -> Vec2 {
+        let (s, c) = self.angle_rad.sin_cos();
+        Vec2::new(
+            self.at[0] + c * local.x - s * local.y,
+            self.at[1] + s * local.x + c * local.y,
+        )
+    }
+}
+
+/// The pole of the displacement from `a` to `b`: the point of the plane that the
+/// body's motion leaves where it is; `None` for a pure translation (at infinity).
+pub fn pole(a: &BodyPose, b: &BodyPose) -> Option<Vec2> {
+    let turn = b.angle_rad - a.angle_rad;
+    let (s, c) = turn.sin_cos();
+    if s.abs() < 1e-12 && c > 0.0 {
+        return None;
+    }
+    // x = pb + R(turn)(x − pa): solve (I − R) x = pb − R pa.
+    let (pa, pb) = (Vec2::new(a.at[0], a.at[1]), Vec2::new(b.at[0], b.at[1]));
+    let rhs = pb - Vec2::new(c * pa.x - s * pa.y, s * pa.x + c * pa.y);
+    let det = (1.0 - c) * (1.0 - c) + s * s;
+    Some(Vec2::new(
+        ((1.0 - c) * rhs.x - s * rhs.y) / det,
+        (s * rhs.x + (1.0 - c) * rhs.y) / det,
+    ))
+}
+
+/// The centre of the circle through `p`, `q`, `r`, or `None` where they are in a
+/// line (the centre is at infinity).
+fn circumcentre(p: Vec2, q: Vec2, r: Vec2) -> Option<Vec2> {
+    let (u, v) = (q - p, r - p);
+    let d = 2.0 * cross(&u, &v);
+    let scale = u.norm_squared().max(v.norm_squared());
+    if d.abs() <= 1e-12 * scale {
+        return None;
+    }
+    let (uu, vv) = (u.norm_squared(), v.norm_squared());
+    Some(p + Vec2::new(v.y * uu - u.y * vv, u.x * vv - v.x * uu) / d)
+}
+
+/// A four-bar whose coupler carries the body through three positions.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MotionFourBar {
+    /// The three positions.
+    pub poses: [BodyPose; 3],
+    /// The moving pivots, in body coordinates, m.
+    pub moving: [[f64; 2]; 2],
+    /// Their fixed pivots (the centre points), m.
+    pub fixed: [[f64; 2]; 2],
+    /// The poles P12, P13, P23 (`None`: a translation), m.
+    pub poles: [Option<[f64; 2]>; 3],
+}
+
+/// The four-bar through `poses` with moving pivots `moving` (body coordinates, m).
+///
+/// # Errors
+/// A value that is not finite, two moving pivots at one place, a moving pivot whose
+/// three places are in a line (its centre point is at infinity: a slider, not a
+/// crank), or a fixed pivot on its own moving pivot.
+pub fn three_positions(poses: [BodyPose; 3], moving: [[f64; 2]; 2]) -> Result<MotionFourBar> {
+    let values = poses
+        .iter()
+        .flat_map(|p| [p.at[0], p.at[1], p.angle_rad])
+        .chain(moving.iter().flatten().copied());
+    if let Some(v) = values.into_iter().find(|v| !v.is_finite()) {
+        return Err(LinkageError::InvalidParameter {
+            name: "pose or moving pivot".into(),
+            value: v,
+            valid: "finite numbers".into(),
+        });
+    }
+    let local = moving.map(|m| Vec2::new(m[0], m[1]));
+    if (local[0] - local[1]).norm() < 1e-12 {
+        return Err(LinkageError::SceneInvalid(
+            "the two moving pivots are at one place".into(),
+        ));
+    }
+    let mut fixed = [[0.0; 2]; 2];
+    for (k, m) in local.iter().enumerate() {
+        let [p, q, r] = poses.map(|pose| pose.place(*m));
+        let centre = circumcentre(p, q, r).ok_or_else(|| {
+            LinkageError::SceneInvalid(format!(
+                "moving pivot {} ({:.6}, {:.6}) passes its three places in a line: its centre point is at infinity",
+                k + 1,
+                m.x,
+                m.y
+            ))
+        })?;
+        if (centre - p).norm() < 1e-9 * (q - p).norm().max(1e-9) {
+            return Err(LinkageError::SceneInvalid(format!(
+                "moving pivot {} stays at one place: it is the pole, not a crank",
+                k + 1
+            )));
+        }
+        fixed[k] = [centre.x, centre.y];
+    }
+    let pole_of = |a: usize, b: usize| pole(&poses[a], &poses[b]).map(|p| [p.x, p.y]);
+    Ok(MotionFourBar {
+        poses,
+        moving,
+        fixed,
+        poles: [pole_of(0, 1), pole_of(0, 2), pole_of(1, 2)],
+    })
+}
+
+impl MotionFourBar {
+    /// The four-bar drawn in the first position: fixed pivots A0, B0, moving pivots
+    /// A, B, the body's reference point P on the coupler, the crank A0A driving.
+    pub fn sketch(&self) -> Sketch {
+        let first = &self.poses[0];
+        let place = |m: [f64; 2]| first.place(Vec2::new(m[0], m[1]));
+        let point = |name: &str, at: Vec2, ground: bool| SketchPoint {
+            name: name.into(),
+            at,
+            ground,
+        };
+        let link = |name: &str, points: Vec<usize>| SketchLink {
+            name: name.into(),
+            points,
+            mass_kg: None,
+            centroid: None,
+            inertia_kg_m2: None,
+        };
+        let mut s = Sketch::new("Three-position motion generator");
+        s.length_unit = crate::scene::LengthUnit::Metre;
+        s.points = vec![
+            point("A0", Vec2::new(self.fixed[0][0], self.fixed[0][1]), true),
+            point("B0", Vec2::new(self.fixed[1][0], self.fixed[1][1]), true),
+            point("A", place(self.moving[0]), false),
+            point("B", place(self.moving[1]), false),
+            point("P", Vec2::new(first.at[0], first.at[1]), false),
+        ];
+        s.links = vec![
+            link("crank", vec![0, 2]),
+            link("coupler", vec![2, 3, 4]),
+            link("rocker", vec![1, 3]),
+        ];
+        s.driver = Some(0);
+        s.output = Some(2);
+        s
+    }
+
+    /// The crank's input angle at position `i` (the scene of [`MotionFourBar::sketch`]
+    /// starts at 0 in the first), rad.
+    pub fn input_at(&self, i: usize) -> f64 {
+        let a0 = Vec2::new(self.fixed[0][0], self.fixed[0][1]);
+        let m = Vec2::new(self.moving[0][0], self.moving[0][1]);
+        let dir = |k: usize| {
+            let d = self.poses[k].place(m) - a0;
+            d.y.atan2(d.x)
+        };
+        dir(i) - dir(0)
+    }
+
+    /// Moves the four-bar (its scene, by the general solver on the branch of the
+    /// first position) to each position; returns the largest miss of the body's
+    /// reference point (m) and angle (rad): zero to round-off, unless a position
+    /// needs the chain's other assembly (a branch defect).
+    ///
+    /// # Errors
+    /// The chain does not build, or does not assemble at a position's crank angle.
+    pub fn check(&self) -> Result<(f64, f64)> {
+        let scene = self.sketch().to_scene().map_err(|e| match e {
+            crate::sketch::SketchProblem::Invalid(e) => e,
+            other => LinkageError::SceneInvalid(other.to_string()),
+        })?;
+        let mut k = Kinematics::new(Mechanism::from_scene(&scene)?)?;
+        let p = k
+            .mechanism()
+            .point_index("P")
+            .ok_or_else(|| LinkageError::SceneInvalid("the coupler point P is missing".into()))?;
+        let coupler = k
+            .mechanism()
+            .link_index("coupler")
+            .ok_or_else(|| LinkageError::SceneInvalid("the coupler is missing".into()))?;
+        let mut worst = (0.0f64, 0.0f64);
+        for (i, pose) in self.poses.iter().enumerate() {
+            let s = k.solve(self.input_at(i))?;
+            let at = s.points[p].position;
+            let miss = (at - Vec2::new(pose.at[0], pose.at[1])).norm();
+            let turn = s.links[coupler].angle_rad() - (pose.angle_rad - self.poses[0].angle_rad);
+            let turn = (turn + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
+                - std::f64::consts::PI;
+            worst = (worst.0.max(miss), worst.1.max(turn.abs()));
+        }
+        Ok(worst)
+    }
+}
