@@ -134,6 +134,8 @@ pub struct AppState {
     pub turning: Option<f64>,
     /// The mechanism being drawn, while the drawing tools are out.
     pub builder: Option<crate::builder::Builder>,
+    /// The synthesis window, while open.
+    pub synthesis: Option<ui::synthesis::SynthesisView>,
 }
 
 impl AppState {
@@ -167,6 +169,7 @@ impl AppState {
             dragged_point: None,
             turning: None,
             builder: None,
+            synthesis: None,
         }
     }
 
@@ -451,6 +454,7 @@ impl eframe::App for LinkageApp {
         } else {
             self.viewer_panels(ui, &mut solver_us);
         }
+        ui::synthesis::window(ui.ctx(), &mut self.state);
         // What the panels after the view asked for (the polygons' and plots' own
         // controls, the shortcuts) shows next frame, which `follow_up` asks for.
         self.state.apply_edits();

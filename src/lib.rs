@@ -11,6 +11,7 @@ pub mod file_dialog;
 pub mod fonts;
 pub mod render;
 pub mod session;
+pub mod synthesis;
 pub mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;

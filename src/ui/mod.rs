@@ -16,5 +16,6 @@ pub mod point_drag;
 pub mod polygons;
 pub mod report;
 pub mod scene_picker;
+pub mod synthesis;
 pub mod typeset;
 pub mod viewport;

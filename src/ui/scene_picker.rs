@@ -62,6 +62,15 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
                 }
             }
             new_menu(ui, st);
+            let synthesis = ui.button("Synthesis…");
+            st.controls
+                .note(ui, ControlKind::FileButton, "Synthesis…", &synthesis);
+            if synthesis.clicked() {
+                st.synthesis = match st.synthesis.take() {
+                    Some(_) => None,
+                    None => Some(Default::default()),
+                };
+            }
             if ui.button("Reset edits").clicked() {
                 st.edit(crate::session::SceneEdit::Reset);
             }

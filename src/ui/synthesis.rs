@@ -1,0 +1,153 @@
+//! The synthesis window: design a linkage from requirements and open it as the
+//! scene. Crank-rocker from rocker length, swing and time ratio K; the die cutter's
+//! toggle six-bar from stroke H, K and L; a function generator through precision
+//! points (Freudenstein); a four-bar through three positions of a body (centre
+//! points). Each shows its design table; "Open as scene" opens it (asking first
+//! over unsaved edits), unsaved. The designs are closed form: computed on the click.
+
+use eframe::egui;
+use linkage::SceneFile;
+
+use crate::app::AppState;
+use crate::session::{SceneSource, Session};
+use crate::synthesis::{Design, SynthInputs, SynthKind};
+use crate::ui::control_map::ControlKind;
+
+/// The window's inputs and its last design.
+#[derive(Default)]
+pub struct SynthesisView {
+    /// What to design, from what.
+    pub inputs: SynthInputs,
+    /// The last design, or why there is none.
+    pub result: Option<Result<Design, String>>,
+}
+
+/// The window, while open.
+pub fn window(ctx: &egui::Context, st: &mut AppState) {
+    let Some(mut view) = st.synthesis.take() else {
+        return;
+    };
+    let mut open = true;
+    let mut chosen = None;
+    egui::Window::new("Synthesis")
+        .open(&mut open)
+        .default_pos(egui::pos2(320.0, 80.0))
+        .show(ctx, |ui| {
+            ui.horizontal(|ui| {
+                for kind in SynthKind::ALL {
+                    if ui
+                        .selectable_label(view.inputs.kind == kind, kind.label())
+                        .clicked()
+                    {
+                        view.inputs.kind = kind;
+                        view.result = None;
+                    }
+                }
+            });
+            ui.separator();
+            inputs(ui, &mut view.inputs);
+            let design = ui.button("Design");
+            st.controls
+                .note(ui, ControlKind::FileButton, "Design", &design);
+            if design.clicked() {
+                view.result = Some(crate::synthesis::design(&view.inputs));
+            }
+            chosen = result(ui, st, &view);
+        });
+    if let Some(scene) = chosen {
+        match Session::open_scene(SceneSource::File("synthesized.ron".into()), scene) {
+            Ok(mut session) => {
+                session.mark_unsaved();
+                st.open(session);
+            }
+            Err(e) => view.result = Some(Err(format!("the design does not solve: {e}"))),
+        }
+    }
+    if open {
+        st.synthesis = Some(view);
+    }
+}
+
+/// The inputs of the design chosen.
+fn inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {
+    let number = |ui: &mut egui::Ui, v: &mut f64, label: &str, speed: f64| {
+        ui.horizontal(|ui| {
+            let name = ui.label(label);
+            ui.add(egui::DragValue::new(v).speed(speed))
+                .labelled_by(name.id);
+        });
+    };
+    match view.kind {
+        SynthKind::CrankRocker => {
+            let [cd, swing, k] = &mut view.rocker;
+            number(ui, cd, "rocker CD (mm)", 1.0);
+            number(ui, swing, "swing (deg)", 0.1);
+            number(ui, k, "time ratio K", 0.01);
+        }
+        SynthKind::DieCutter => {
+            let [h, k, l, rpm] = &mut view.die;
+            number(ui, h, "stroke H (mm)", 0.5);
+            number(ui, k, "time ratio K", 0.01);
+            number(ui, l, "CD = CE = L (mm)", 1.0);
+            number(ui, rpm, "crank speed (rpm)", 1.0);
+        }
+        SynthKind::Function => {
+            text_area(
+                ui,
+                &mut view.function_points,
+                "precision points: input deg, output deg",
+            );
+            number(ui, &mut view.function_ground_mm, "ground AD (mm)", 1.0);
+        }
+        SynthKind::Motion => {
+            text_area(ui, &mut view.poses, "positions: x mm, y mm, angle deg");
+            ui.label("moving pivots in the body's frame (mm)");
+            ui.horizontal(|ui| {
+                for (v, axis) in view.moving_mm.iter_mut().zip(["x1", "y1", "x2", "y2"]) {
+                    let name = ui.label(axis);
+                    ui.add(egui::DragValue::new(v).speed(1.0))
+                        .labelled_by(name.id);
+                }
+            });
+        }
+    }
+}
+
+/// A labelled text field for rows of numbers (typed or pasted CSV).
+fn text_area(ui: &mut egui::Ui, text: &mut String, label: &str) {
+    ui.label(label);
+    let r = ui.add(
+        egui::TextEdit::multiline(text)
+            .desired_rows(4)
+            .code_editor(),
+    );
+    r.widget_info(|| {
+        egui::WidgetInfo::labeled(egui::accesskit::Role::MultilineTextInput, true, label)
+    });
+}
+
+/// The design table, or why there is none; returns the scene to open when asked.
+fn result(ui: &mut egui::Ui, st: &mut AppState, view: &SynthesisView) -> Option<SceneFile> {
+    match &view.result {
+        None => None,
+        Some(Err(why)) => {
+            ui.colored_label(ui.visuals().error_fg_color, why);
+            None
+        }
+        Some(Ok(design)) => {
+            egui::Grid::new("design table")
+                .striped(true)
+                .show(ui, |ui| {
+                    for (what, value) in &design.table {
+                        ui.label(what);
+                        ui.label(value);
+                        ui.end_row();
+                    }
+                });
+            let open = ui.button("Open as scene");
+            st.controls
+                .note(ui, ControlKind::FileButton, "Open as scene", &open);
+            open.clicked().then(|| design.scene.clone())
+        }
+    }
+}
