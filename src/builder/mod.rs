@@ -6,6 +6,7 @@
 //! polygons follow the drawing as it grows.
 
 pub mod edit;
+pub mod loads;
 pub mod stored;
 
 use linkage::SceneFile;
