@@ -287,10 +287,8 @@ fn draw(
     if let Ok(mut list) = shapes.lock() {
         build_sketch(&mut list, b.sketch(), &st.camera, marked);
     }
-    if let Some(renderer) = renderer {
-        let view = st.camera.uniform(rect, ui.ctx().pixels_per_point());
-        painter.add(renderer.paint_callback(rect, view, shapes));
-    }
+    let view = st.camera.uniform(rect, ui.ctx().pixels_per_point());
+    crate::ui::viewport::paint_shapes(&painter, rect, view, shapes, renderer);
     let font = FontId::proportional(13.0);
     for p in &b.sketch().points {
         let s = screen(&st.camera, p.at, rect);

@@ -90,17 +90,7 @@ pub fn show(
 
     let painter = ui.painter_at(rect);
     painter.rect_filled(rect, 0.0, egui::Color32::from_rgb(246, 246, 242));
-    if let Some(renderer) = renderer {
-        painter.add(renderer.paint_callback(rect, view, shapes));
-    } else {
-        painter.text(
-            rect.center(),
-            Align2::CENTER_CENTER,
-            "no GPU renderer: the mechanism view needs a GPU or a CPU adapter",
-            FontId::proportional(14.0),
-            egui::Color32::DARK_RED,
-        );
-    }
+    paint_shapes(&painter, rect, view, shapes, renderer);
 
     // Point labels beside each joint.
     let pose = st.session.pose();
@@ -158,4 +148,26 @@ pub fn show(
         );
     }
     build_us
+}
+
+/// The GPU-drawn shapes in `rect`, or, without a renderer, a line saying why the view
+/// is empty (the mechanism view and the drawing canvas both).
+pub fn paint_shapes(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    view: crate::render::shape::ViewUniform,
+    shapes: &SharedShapes,
+    renderer: Option<&Renderer>,
+) {
+    if let Some(renderer) = renderer {
+        painter.add(renderer.paint_callback(rect, view, shapes));
+    } else {
+        painter.text(
+            rect.center(),
+            Align2::CENTER_CENTER,
+            "no GPU renderer: the mechanism view needs a GPU or a CPU adapter",
+            FontId::proportional(14.0),
+            egui::Color32::DARK_RED,
+        );
+    }
 }
