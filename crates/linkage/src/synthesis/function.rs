@@ -11,15 +11,11 @@
 //! matches the function at the precision points; between them it misses by the
 //! structural error, which [`structural_error`] measures on the solved linkage.
 
-use indexmap::IndexMap;
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 use serde::Serialize;
 
 use crate::error::{LinkageError, Result};
-use crate::scene::{
-    AngleUnit, Branch, DriverSpec, ForcesSpec, LengthUnit, LinkSpec, Models, SceneFile, SolverSpec,
-    Speed,
-};
+use crate::scene::SceneFile;
 
 /// A prescribed input and output angle pair, rad.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -220,58 +216,21 @@ impl FunctionFourBar {
     /// the crank length is negative; likewise the rocker's angle and φ.
     pub fn scene(&self, start: PrecisionPoint) -> SceneFile {
         let [a, b, c, d] = self.lengths;
-        let pts = |list: &[(&str, f64, f64)]| -> IndexMap<String, (f64, f64)> {
-            list.iter()
-                .map(|(n, x, y)| (n.to_string(), (*x, *y)))
-                .collect()
-        };
-        let link = |name: &str, ground: bool, points| LinkSpec {
-            name: name.into(),
-            ground,
-            points,
-            mass: None,
-            centroid: None,
-            inertia: None,
-        };
-        let branch = if self.c_left_of_bd(start.input_rad, start.output_rad) {
-            Branch::Left("B".into(), "D".into())
-        } else {
-            Branch::Right("B".into(), "D".into())
-        };
-        let crank_start = start.input_rad + if a < 0.0 { std::f64::consts::PI } else { 0.0 };
+        let half_turn = if a < 0.0 { std::f64::consts::PI } else { 0.0 };
+        let mut scene = super::four_bar(&super::FourBar {
+            pivot_a: [0.0, 0.0],
+            pivot_d: [d, 0.0],
+            lengths_m: [a.abs(), b, c.abs()],
+            start_deg: (start.input_rad + half_turn).to_degrees(),
+            c_left_of_bd: self.c_left_of_bd(start.input_rad, start.output_rad),
+        });
         let [k1, k2, k3] = self.k;
-        SceneFile {
-            name: "Function generator (Freudenstein)".into(),
-            description: format!(
-                "Four-bar from Freudenstein's equation: K1 = {k1:.6}, K2 = {k2:.6}, K3 = {k3:.6}; AB = {:.6} m, BC = {b:.6} m, CD = {:.6} m, AD = {d:.6} m.",
-                a.abs(),
-                c.abs()
-            ),
-            notes: vec![],
-            models: Models::Kinematics,
-            length_unit: LengthUnit::Metre,
-            angle_unit: AngleUnit::Degree,
-            links: vec![
-                link("ground", true, pts(&[("A", 0.0, 0.0), ("D", d, 0.0)])),
-                link("crank", false, pts(&[("A", 0.0, 0.0), ("B", a.abs(), 0.0)])),
-                link("coupler", false, pts(&[("B", 0.0, 0.0), ("C", b, 0.0)])),
-                link(
-                    "rocker",
-                    false,
-                    pts(&[("D", 0.0, 0.0), ("C", c.abs(), 0.0)]),
-                ),
-            ],
-            sliders: vec![],
-            driver: DriverSpec {
-                link: "crank".into(),
-                speed: Speed::Rpm(60.0),
-                start: crank_start.to_degrees(),
-            },
-            branches: [("C".to_string(), branch)].into_iter().collect(),
-            output: Some("rocker".into()),
-            guess: IndexMap::new(),
-            forces: ForcesSpec::default(),
-            solver: SolverSpec::default(),
-        }
+        scene.name = "Function generator (Freudenstein)".into();
+        scene.description = format!(
+            "Four-bar from Freudenstein's equation: K1 = {k1:.6}, K2 = {k2:.6}, K3 = {k3:.6}; AB = {:.6} m, BC = {b:.6} m, CD = {:.6} m, AD = {d:.6} m.",
+            a.abs(),
+            c.abs()
+        );
+        scene
     }
 }
