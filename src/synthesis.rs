@@ -5,7 +5,7 @@
 use linkage::SceneFile;
 use linkage::synthesis::function::{PrecisionPoint, freudenstein, structural_error};
 use linkage::synthesis::motion::{BodyPose, three_positions};
-use linkage::synthesis::{DieCutterSpec, crank_rocker, die_cutter, four_bar_scene};
+use linkage::synthesis::{CrankRocker, DieCutterSpec, crank_rocker, die_cutter, four_bar_scene};
 
 /// Which design.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -120,16 +120,22 @@ fn rocker([cd_mm, swing_deg, k]: [f64; 3]) -> Result<Design, String> {
     )
     .map_err(|e| e.to_string())?;
     Ok(Design {
-        table: vec![
-            row("crank AB", mm(d.crank_m)),
-            row("coupler BC", mm(d.coupler_m)),
-            row("rocker CD", mm(d.rocker_m)),
-            row("ground AD", mm(d.ground_m)),
-            row("crank angle between the limits", deg(d.theta_rad)),
-            row("least transmission angle", deg(d.min_transmission_rad)),
-        ],
+        table: crank_rocker_rows(&d, "rocker CD", "least transmission angle"),
         scene: four_bar_scene(&d, k),
     })
+}
+
+/// The table of a crank-rocker design, its rocker and transmission rows named by
+/// the caller (the die cutter's rocker is also CE, and its angle is ABCD's only).
+fn crank_rocker_rows(d: &CrankRocker, rocker: &str, transmission: &str) -> Vec<(String, String)> {
+    vec![
+        row("crank AB", mm(d.crank_m)),
+        row("coupler BC", mm(d.coupler_m)),
+        row(rocker, mm(d.rocker_m)),
+        row("ground AD", mm(d.ground_m)),
+        row("crank angle between the limits", deg(d.theta_rad)),
+        row(transmission, deg(d.min_transmission_rad)),
+    ]
 }
 
 fn die([h_mm, k, l_mm, rpm]: [f64; 4]) -> Result<Design, String> {
@@ -141,17 +147,7 @@ fn die([h_mm, k, l_mm, rpm]: [f64; 4]) -> Result<Design, String> {
     };
     let (scene, d) = die_cutter(&spec).map_err(|e| e.to_string())?;
     Ok(Design {
-        table: vec![
-            row("crank AB", mm(d.crank_m)),
-            row("coupler BC", mm(d.coupler_m)),
-            row("rocker CD = CE", mm(d.rocker_m)),
-            row("ground AD", mm(d.ground_m)),
-            row("crank angle between the limits", deg(d.theta_rad)),
-            row(
-                "least transmission angle (ABCD)",
-                deg(d.min_transmission_rad),
-            ),
-        ],
+        table: crank_rocker_rows(&d, "rocker CD = CE", "least transmission angle (ABCD)"),
         scene,
     })
 }
@@ -215,7 +211,7 @@ fn motion(poses: &str, moving_mm: [f64; 4]) -> Result<Design, String> {
         .map_err(|v: Vec<BodyPose>| format!("{} positions: three are needed", v.len()))?;
     let [x1, y1, x2, y2] = moving_mm.map(|v| v * 1e-3);
     let d = three_positions(poses, [[x1, y1], [x2, y2]]).map_err(|e| e.to_string())?;
-    let (miss_m, miss_rad) = d.check().map_err(|e| e.to_string())?;
+    let checked = d.check().map_err(|e| e.to_string())?;
     let point = |p: [f64; 2]| format!("({:.3}, {:.3}) mm", p[0] * 1e3, p[1] * 1e3);
     let mut table = vec![
         row("fixed pivot A0", point(d.fixed[0])),
@@ -226,8 +222,14 @@ fn motion(poses: &str, moving_mm: [f64; 4]) -> Result<Design, String> {
     }
     table.push(row(
         "miss when moved there",
-        format!("{:.1e} mm, {:.1e}°", miss_m * 1e3, miss_rad.to_degrees()),
+        format!(
+            "{:.1e} mm, {:.1e}°",
+            checked.miss_m * 1e3,
+            checked.miss_rad.to_degrees()
+        ),
     ));
-    let scene = d.sketch().to_scene().map_err(|e| e.to_string())?;
-    Ok(Design { table, scene })
+    Ok(Design {
+        table,
+        scene: checked.scene,
+    })
 }

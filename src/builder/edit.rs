@@ -357,13 +357,7 @@ fn add_link(sketch: &mut Sketch, a: End, b: End) -> Result<(), Refusal> {
     let p = resolve(sketch, a)?;
     let q = resolve(sketch, b)?;
     let name = next_link_name(sketch);
-    sketch.links.push(SketchLink {
-        name,
-        points: vec![p, q],
-        mass_kg: None,
-        centroid: None,
-        inertia_kg_m2: None,
-    });
+    sketch.links.push(SketchLink::new(&name, vec![p, q]));
     Ok(())
 }
 

@@ -38,10 +38,9 @@ pub fn run(csv: &Path, moving: &[f64], scene_out: Option<&Path>) -> Result<Strin
         ));
     };
     let design = three_positions(poses, [[*x1, *y1], [*x2, *y2]]).map_err(|e| e.to_string())?;
-    let (miss_m, miss_rad) = design.check().map_err(|e| e.to_string())?;
+    let checked = design.check().map_err(|e| e.to_string())?;
     if let Some(path) = scene_out {
-        let scene = design.sketch().to_scene().map_err(|e| e.to_string())?;
-        let text = scene.to_ron().map_err(|e| e.to_string())?;
+        let text = checked.scene.to_ron().map_err(|e| e.to_string())?;
         std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
     let inputs: Vec<f64> = (0..3).map(|i| design.input_at(i).to_degrees()).collect();
@@ -50,7 +49,7 @@ pub fn run(csv: &Path, moving: &[f64], scene_out: Option<&Path>) -> Result<Strin
         "moving_pivots_body_m": design.moving,
         "poles_m": design.poles,
         "crank_input_deg": inputs,
-        "check_miss_m": miss_m,
-        "check_miss_rad": miss_rad,
+        "check_miss_m": checked.miss_m,
+        "check_miss_rad": checked.miss_rad,
     }))
 }

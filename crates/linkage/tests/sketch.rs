@@ -164,13 +164,7 @@ fn an_unfinished_drawing_says_what_is_missing() {
         point("C", 0.3, 0.2, false),
         point("D", 0.3, 0.0, true),
     ];
-    let link = |name: &str, points: Vec<usize>| SketchLink {
-        name: name.into(),
-        points,
-        mass_kg: None,
-        centroid: None,
-        inertia_kg_m2: None,
-    };
+    let link = SketchLink::new;
     sketch.links = vec![link("crank", vec![0, 1]), link("coupler", vec![1, 2])];
     let Err(SketchProblem::Mobility(m)) = sketch.to_scene() else {
         panic!("open chain")
@@ -254,11 +248,8 @@ fn drawn_masses_are_uniform_bodies() {
         point("D", 0.3, 0.0, true),
     ];
     let link = |name: &str, points: Vec<usize>, mass_kg| SketchLink {
-        name: name.into(),
-        points,
         mass_kg,
-        centroid: None,
-        inertia_kg_m2: None,
+        ..SketchLink::new(name, points)
     };
     sketch.links = vec![
         link("crank", vec![0, 1], Some(2.0)),
@@ -306,13 +297,7 @@ fn a_drawn_triad_six_bar_solves_by_newton_from_the_drawing() {
         at: Vec2::new(x, y),
         ground,
     };
-    let link = |name: &str, points: Vec<usize>| SketchLink {
-        name: name.into(),
-        points,
-        mass_kg: None,
-        centroid: None,
-        inertia_kg_m2: None,
-    };
+    let link = SketchLink::new;
     let mut sketch = Sketch::new("triad");
     sketch.points = vec![
         point("A", 0.0, 0.0, true),

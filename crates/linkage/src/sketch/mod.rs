@@ -47,6 +47,20 @@ pub struct SketchLink {
     pub inertia_kg_m2: Option<f64>,
 }
 
+impl SketchLink {
+    /// A massless link named `name` through `points` (a uniform body once it is
+    /// given a mass).
+    pub fn new(name: &str, points: Vec<usize>) -> Self {
+        Self {
+            name: name.to_owned(),
+            points,
+            mass_kg: None,
+            centroid: None,
+            inertia_kg_m2: None,
+        }
+    }
+}
+
 /// A slider block pinned at `point`, sliding on a guide line through the point's
 /// drawn place.
 #[derive(Clone, Debug, PartialEq)]

@@ -65,6 +65,18 @@ fn circumcentre(p: Vec2, q: Vec2, r: Vec2) -> Option<Vec2> {
     Some(p + Vec2::new(v.y * uu - u.y * vv, u.x * vv - v.x * uu) / d)
 }
 
+/// A motion generator's scene and how closely the solver moves it through the
+/// positions.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MotionCheck {
+    /// The four-bar as a scene, starting in the first position.
+    pub scene: crate::SceneFile,
+    /// Largest miss of the body's reference point, m.
+    pub miss_m: f64,
+    /// Largest miss of the body's angle, rad.
+    pub miss_rad: f64,
+}
+
 /// A four-bar whose coupler carries the body through three positions.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct MotionFourBar {
@@ -141,13 +153,6 @@ impl MotionFourBar {
             at,
             ground,
         };
-        let link = |name: &str, points: Vec<usize>| SketchLink {
-            name: name.into(),
-            points,
-            mass_kg: None,
-            centroid: None,
-            inertia_kg_m2: None,
-        };
         let mut s = Sketch::new("Three-position motion generator");
         s.length_unit = crate::scene::LengthUnit::Metre;
         s.points = vec![
@@ -158,9 +163,9 @@ impl MotionFourBar {
             point("P", Vec2::new(first.at[0], first.at[1]), false),
         ];
         s.links = vec![
-            link("crank", vec![0, 2]),
-            link("coupler", vec![2, 3, 4]),
-            link("rocker", vec![1, 3]),
+            SketchLink::new("crank", vec![0, 2]),
+            SketchLink::new("coupler", vec![2, 3, 4]),
+            SketchLink::new("rocker", vec![1, 3]),
         ];
         s.driver = Some(0);
         s.output = Some(2);
@@ -179,14 +184,14 @@ impl MotionFourBar {
         dir(i) - dir(0)
     }
 
-    /// Moves the four-bar (its scene, by the general solver on the branch of the
-    /// first position) to each position; returns the largest miss of the body's
-    /// reference point (m) and angle (rad): zero to round-off, unless a position
-    /// needs the chain's other assembly (a branch defect).
+    /// The four-bar's scene, moved by the general solver (on the branch of the first
+    /// position) to each position: the largest miss of the body's reference point
+    /// and angle, zero to round-off unless a position needs the chain's other
+    /// assembly (a branch defect).
     ///
     /// # Errors
     /// The chain does not build, or does not assemble at a position's crank angle.
-    pub fn check(&self) -> Result<(f64, f64)> {
+    pub fn check(&self) -> Result<MotionCheck> {
         let scene = self.sketch().to_scene().map_err(|e| match e {
             crate::sketch::SketchProblem::Invalid(e) => e,
             other => LinkageError::SceneInvalid(other.to_string()),
@@ -210,6 +215,10 @@ impl MotionFourBar {
                 - std::f64::consts::PI;
             worst = (worst.0.max(miss), worst.1.max(turn.abs()));
         }
-        Ok(worst)
+        Ok(MotionCheck {
+            scene,
+            miss_m: worst.0,
+            miss_rad: worst.1,
+        })
     }
 }
