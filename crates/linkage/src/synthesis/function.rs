@@ -223,6 +223,7 @@ impl FunctionFourBar {
             lengths_m: [a.abs(), b, c.abs()],
             start_deg: (start.input_rad + half_turn).to_degrees(),
             c_left_of_bd: self.c_left_of_bd(start.input_rad, start.output_rad),
+            coupler_point: None,
         });
         let [k1, k2, k3] = self.k;
         scene.name = "Function generator (Freudenstein)".into();

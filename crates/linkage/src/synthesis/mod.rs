@@ -10,6 +10,7 @@
 
 pub mod function;
 pub mod motion;
+pub mod path;
 
 use indexmap::IndexMap;
 use serde::Serialize;
@@ -438,6 +439,7 @@ pub fn four_bar_scene(d: &CrankRocker, k: f64) -> SceneFile {
         lengths_m: [d.crank_m, d.coupler_m, d.rocker_m],
         start_deg: 0.0,
         c_left_of_bd: d.c_left_of_bd,
+        coupler_point: None,
     });
     scene.name = "Synthesized crank-rocker".into();
     scene.description = format!(
@@ -460,6 +462,8 @@ pub(crate) struct FourBar {
     pub start_deg: f64,
     /// Whether C is left of the line B→D (the assembly branch).
     pub c_left_of_bd: bool,
+    /// A coupler point P in the coupler's frame (origin B, x-axis along B→C), m.
+    pub coupler_point: Option<[f64; 2]>,
 }
 
 /// The scene of `f` (metres, each moving link along its own x-axis, the crank AB
@@ -495,11 +499,13 @@ pub(crate) fn four_bar(f: &FourBar) -> SceneFile {
         links: vec![
             link("ground", true, pts(&[("A", ax, ay), ("D", dx, dy)])),
             link("crank", false, pts(&[("A", 0.0, 0.0), ("B", crank, 0.0)])),
-            link(
-                "coupler",
-                false,
-                pts(&[("B", 0.0, 0.0), ("C", coupler, 0.0)]),
-            ),
+            link("coupler", false, {
+                let mut points = pts(&[("B", 0.0, 0.0), ("C", coupler, 0.0)]);
+                if let Some([px, py]) = f.coupler_point {
+                    points.insert("P".into(), (px, py));
+                }
+                points
+            }),
             link("rocker", false, pts(&[("D", 0.0, 0.0), ("C", rocker, 0.0)])),
         ],
         sliders: vec![],

@@ -1,0 +1,133 @@
+//! A path generator found by the search, in world units: its linkage, how closely
+//! it meets the targets, its coupler curve and its scene.
+
+use serde::Serialize;
+
+use super::geometry::{CouplerFourBar, PARAMS};
+use super::problem::Problem;
+use crate::motion::Vec2;
+use crate::scene::SceneFile;
+
+/// A four-bar whose coupler point P passes through (or near) the targets.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PathDesign {
+    /// Crank pivot A, m.
+    pub pivot_a: [f64; 2],
+    /// Rocker pivot D, m.
+    pub pivot_d: [f64; 2],
+    /// Crank AB, m.
+    pub crank_m: f64,
+    /// Coupler BC, m.
+    pub coupler_m: f64,
+    /// Rocker DC, m.
+    pub rocker_m: f64,
+    /// The coupler point P in the coupler's frame (origin B, x-axis along B→C), m.
+    pub coupler_point_m: [f64; 2],
+    /// Whether C is left of the directed line B→D (the assembly branch).
+    pub c_left_of_bd: bool,
+    /// The crank angle (from the x-axis) at which P meets each target, deg.
+    pub crank_deg: Vec<f64>,
+    /// Largest distance of P from a target, m.
+    pub max_error_m: f64,
+    /// Root-mean-square distance of P from the targets, m.
+    pub rms_error_m: f64,
+    /// The largest distance over the targets' size (the diagonal of their bounding box).
+    pub relative_error: f64,
+    /// Whether the crank turns through a whole revolution.
+    pub crank_turns: bool,
+    /// Least transmission angle over the crank's travel through the targets, deg
+    /// (`None` where that travel leaves the branch).
+    pub min_transmission_deg: Option<f64>,
+}
+
+impl PathDesign {
+    /// The design of the normalised four-bar `params` on branch `left`, meeting the
+    /// targets at crank angles `angles` (rad).
+    pub(super) fn new(problem: &Problem, params: &[f64], left: bool, angles: &[f64]) -> Self {
+        let s = problem.scale;
+        let norm = CouplerFourBar::from_params(&params[..PARAMS], left);
+        let world = |p: Vec2| problem.centre + p * s;
+        let misses: Vec<f64> = problem
+            .targets
+            .iter()
+            .zip(angles)
+            .map(|(t, &theta)| {
+                norm.point_at(theta)
+                    .map_or(f64::INFINITY, |p| (p - t).norm() * s)
+            })
+            .collect();
+        let max = misses.iter().cloned().fold(0.0, f64::max);
+        let rms = (misses.iter().map(|m| m * m).sum::<f64>() / misses.len() as f64).sqrt();
+        let travel = norm.travel(angles);
+        Self {
+            pivot_a: world(norm.a).into(),
+            pivot_d: world(norm.d).into(),
+            crank_m: norm.crank * s,
+            coupler_m: norm.coupler * s,
+            rocker_m: norm.rocker * s,
+            coupler_point_m: (norm.point * s).into(),
+            c_left_of_bd: left,
+            crank_deg: angles.iter().map(|a| a.to_degrees()).collect(),
+            max_error_m: max,
+            rms_error_m: rms,
+            relative_error: max / s,
+            crank_turns: norm.crank_turns(),
+            min_transmission_deg: travel
+                .map(|(start, len)| norm.least_transmission_over(start, len).to_degrees()),
+        }
+    }
+
+    /// The linkage in world units.
+    pub fn linkage(&self) -> CouplerFourBar {
+        CouplerFourBar {
+            a: self.pivot_a.into(),
+            d: self.pivot_d.into(),
+            crank: self.crank_m,
+            coupler: self.coupler_m,
+            rocker: self.rocker_m,
+            point: self.coupler_point_m.into(),
+            c_left_of_bd: self.c_left_of_bd,
+        }
+    }
+
+    /// The coupler curve at `samples` crank angles over a revolution, split into
+    /// the pieces over which the loop closes.
+    pub fn curve(&self, samples: usize) -> Vec<Vec<[f64; 2]>> {
+        let m = self.linkage();
+        let start = self.crank_deg.first().map_or(0.0, |d| d.to_radians());
+        let mut pieces: Vec<Vec<[f64; 2]>> = vec![];
+        let mut open = false;
+        for k in 0..=samples {
+            let theta = start + std::f64::consts::TAU * k as f64 / samples.max(1) as f64;
+            match m.point_at(theta) {
+                Some(p) if open => pieces.last_mut().into_iter().for_each(|c| c.push(p.into())),
+                Some(p) => {
+                    pieces.push(vec![p.into()]);
+                    open = true;
+                }
+                None => open = false,
+            }
+        }
+        pieces
+    }
+
+    /// The design as a scene, starting where P meets the first target, with P on
+    /// the coupler.
+    pub fn scene(&self) -> SceneFile {
+        let mut scene = super::super::four_bar(&super::super::FourBar {
+            pivot_a: self.pivot_a,
+            pivot_d: self.pivot_d,
+            lengths_m: [self.crank_m, self.coupler_m, self.rocker_m],
+            start_deg: self.crank_deg.first().copied().unwrap_or(0.0),
+            c_left_of_bd: self.c_left_of_bd,
+            coupler_point: Some(self.coupler_point_m),
+        });
+        scene.name = "Path generator".into();
+        scene.description = format!(
+            "Four-bar whose coupler point P passes through {} targets, missing by at most {:.3e} m.",
+            self.crank_deg.len(),
+            self.max_error_m
+        );
+        scene
+    }
+}

@@ -1,0 +1,183 @@
+//! The global search: differential evolution (current-to-pbest/1 with binomial
+//! crossover, as in JADE) over the problem's search vectors, in generations that
+//! a caller can run a slice at a time. Its random numbers come from SplitMix64,
+//! written here because a search must give the same designs for the same seed on
+//! every platform and release, which `rand`'s generators do not promise.
+
+use super::problem::Problem;
+
+/// SplitMix64 (Steele, Lea and Flood 2014): 64 bits of state, passes BigCrush.
+#[derive(Clone, Debug)]
+pub struct SplitMix(u64);
+
+impl SplitMix {
+    /// A generator seeded with `seed`.
+    pub fn new(seed: u64) -> Self {
+        Self(seed)
+    }
+
+    fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in [0, 1).
+    pub fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
+    }
+
+    /// Uniform in `0..n`.
+    pub fn below(&mut self, n: usize) -> usize {
+        ((self.unit() * n as f64) as usize).min(n - 1)
+    }
+}
+
+/// One population of search vectors with their coarse costs and crank angles.
+#[derive(Clone, Debug)]
+pub struct Population {
+    /// The members.
+    pub members: Vec<Vec<f64>>,
+    /// Their coarse costs.
+    pub costs: Vec<f64>,
+    /// Each member's targets' crank angles.
+    pub angles: Vec<Vec<f64>>,
+}
+
+/// A coarse evaluation: cost and the targets' crank angles.
+type Scored = (f64, Vec<f64>);
+
+fn score_all(problem: &Problem, vectors: &[Vec<f64>]) -> Vec<Scored> {
+    let score = |v: &Vec<f64>| {
+        let mut angles = vec![0.0; problem.targets.len()];
+        let cost = problem.coarse(v, &mut angles);
+        (
+            if cost.is_finite() {
+                cost
+            } else {
+                f64::INFINITY
+            },
+            angles,
+        )
+    };
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        vectors.par_iter().map(score).collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    vectors.iter().map(score).collect()
+}
+
+impl Population {
+    /// `size` members drawn uniformly within the bounds, scored.
+    pub fn random(problem: &Problem, size: usize, rng: &mut SplitMix) -> Self {
+        let bounds = problem.bounds();
+        let members: Vec<Vec<f64>> = (0..size)
+            .map(|_| {
+                bounds
+                    .iter()
+                    .map(|&(lo, hi)| lo + (hi - lo) * rng.unit())
+                    .collect()
+            })
+            .collect();
+        let (costs, angles) = score_all(problem, &members).into_iter().unzip();
+        Self {
+            members,
+            costs,
+            angles,
+        }
+    }
+
+    /// The index of the least cost.
+    pub fn best(&self) -> usize {
+        (0..self.costs.len())
+            .min_by(|&i, &j| self.costs[i].total_cmp(&self.costs[j]))
+            .unwrap_or(0)
+    }
+
+    /// One generation; returns the evaluations it took.
+    pub fn evolve(&mut self, problem: &Problem, rng: &mut SplitMix) -> u64 {
+        let trials = self.trials(problem, rng);
+        let scored = score_all(problem, &trials);
+        for (i, (trial, (cost, angles))) in trials.into_iter().zip(scored).enumerate() {
+            if cost <= self.costs[i] {
+                self.members[i] = trial;
+                self.costs[i] = cost;
+                self.angles[i] = angles;
+            }
+        }
+        self.members.len() as u64
+    }
+
+    /// Mutants crossed with their parents: v = x + F (x_pbest − x) + F (x_r1 − x_r2),
+    /// x_pbest one of the best tenth, F drawn per member from [0.4, 0.9).
+    fn trials(&self, problem: &Problem, rng: &mut SplitMix) -> Vec<Vec<f64>> {
+        let n = self.members.len();
+        let mut ranked: Vec<usize> = (0..n).collect();
+        ranked.sort_by(|&i, &j| self.costs[i].total_cmp(&self.costs[j]));
+        let top = (n / 10).max(2);
+        let bounds = problem.bounds();
+        let dims = bounds.len();
+        (0..n)
+            .map(|i| {
+                let pbest = &self.members[ranked[rng.below(top)]];
+                let r1 = pick_other(rng, n, &[i]);
+                let r2 = pick_other(rng, n, &[i, r1]);
+                let f = 0.4 + 0.5 * rng.unit();
+                let forced = rng.below(dims);
+                let x = &self.members[i];
+                (0..dims)
+                    .map(|d| {
+                        if d != forced && rng.unit() >= 0.9 {
+                            return x[d];
+                        }
+                        let v = x[d]
+                            + f * (pbest[d] - x[d])
+                            + f * (self.members[r1][d] - self.members[r2][d]);
+                        into_bounds(v, x[d], bounds[d])
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+}
+
+/// A member index other than those in `not`.
+fn pick_other(rng: &mut SplitMix, n: usize, not: &[usize]) -> usize {
+    loop {
+        let k = rng.below(n);
+        if !not.contains(&k) {
+            return k;
+        }
+    }
+}
+
+/// A mutant coordinate outside its bounds goes halfway back to its parent's (the
+/// JADE rule), which keeps the search near a bound without piling up on it.
+fn into_bounds(v: f64, parent: f64, (lo, hi): (f64, f64)) -> f64 {
+    if v < lo {
+        0.5 * (lo + parent)
+    } else if v > hi {
+        0.5 * (hi + parent)
+    } else {
+        v
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn splitmix_is_uniform_enough_and_repeatable() {
+        let (mut a, mut b) = (SplitMix::new(7), SplitMix::new(7));
+        let draws: Vec<f64> = (0..10_000).map(|_| a.unit()).collect();
+        assert!(draws.iter().all(|&u| (0.0..1.0).contains(&u)));
+        let mean = draws.iter().sum::<f64>() / draws.len() as f64;
+        assert!((mean - 0.5).abs() < 0.01, "mean {mean}");
+        assert!(draws.iter().all(|&u| u == b.unit()));
+    }
+}

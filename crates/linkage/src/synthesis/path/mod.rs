@@ -1,0 +1,232 @@
+//! Path generation: a four-bar whose coupler point passes through 3 to 20 target
+//! points, with or without prescribed crank angles (timing). A global search
+//! (differential evolution over the pivots, lengths, coupler point and branch,
+//! [`evolution`]) finds basins on a sampled coupler curve; Levenberg–Marquardt
+//! ([`least_squares`]) then meets the targets exactly where the four-bar can.
+//! The user's constraints (a crank that turns, a least transmission angle, a
+//! region for the ground pivots, targets on one branch) are penalties in the
+//! search and are checked exactly on every design kept. Several distinct designs
+//! are kept, ranked by their largest miss.
+//!
+//! With timing, the crank angles given are relative: the search chooses where the
+//! first target is met and the others follow at the given differences.
+
+mod design;
+mod evolution;
+mod geometry;
+mod least_squares;
+mod problem;
+mod search;
+
+pub use design::PathDesign;
+pub use geometry::{CouplerFourBar, PARAMS, Pins};
+pub use search::{PathSearch, Progress};
+
+use serde::Serialize;
+
+use crate::error::{LinkageError, Result};
+use crate::motion::Vec2;
+use problem::{Limits, Problem};
+
+/// Fewest targets a search takes.
+pub const MIN_TARGETS: usize = 3;
+/// Most targets a search takes.
+pub const MAX_TARGETS: usize = 20;
+
+/// The points the coupler point must pass through.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct PathTargets {
+    /// The targets in order, m.
+    pub points_m: Vec<[f64; 2]>,
+    /// The crank angle at each target, deg (only differences matter), when timed.
+    pub crank_deg: Option<Vec<f64>>,
+}
+
+/// What the user asks of the linkage besides meeting the targets.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PathConstraints {
+    /// The crank must turn through a whole revolution.
+    pub crank_turns: bool,
+    /// Least transmission angle over the crank's travel through the targets, deg
+    /// (0 for none).
+    pub min_transmission_deg: f64,
+    /// Where both ground pivots must lie, as lower and upper corners, m; `None`
+    /// for within twice the targets' size of their centroid.
+    pub ground_region_m: Option<[[f64; 2]; 2]>,
+    /// The targets must lie on one assembly branch, reached without a dead point.
+    pub one_branch: bool,
+}
+
+impl Default for PathConstraints {
+    fn default() -> Self {
+        Self {
+            crank_turns: true,
+            min_transmission_deg: 0.0,
+            ground_region_m: None,
+            one_branch: true,
+        }
+    }
+}
+
+/// How long and how hard to search.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct SearchOptions {
+    /// Seed of the search's random numbers: the same seed gives the same designs.
+    pub seed: u64,
+    /// Stop once this many distinct designs are within tolerance.
+    pub solutions: usize,
+    /// A design is within tolerance when its largest miss is at most this share of
+    /// the targets' size.
+    pub tolerance: f64,
+    /// Most evaluations of a candidate linkage.
+    pub max_evaluations: u64,
+    /// Members of the evolving population.
+    pub population: usize,
+}
+
+impl Default for SearchOptions {
+    fn default() -> Self {
+        Self {
+            seed: 1,
+            solutions: 3,
+            tolerance: 1e-6,
+            max_evaluations: 3_000_000,
+            population: 80,
+        }
+    }
+}
+
+fn invalid(name: &str, value: f64, valid: &str) -> LinkageError {
+    LinkageError::InvalidParameter {
+        name: name.into(),
+        value,
+        valid: valid.into(),
+    }
+}
+
+impl PathSearch {
+    /// A search for `targets` under `constraints`; nothing runs until
+    /// [`PathSearch::step`] or [`PathSearch::run`].
+    ///
+    /// # Errors
+    /// Fewer than 3 or more than 20 targets, a value that is not finite, targets
+    /// that all coincide, timing not given for every target, a ground region that
+    /// is empty, a transmission angle outside 0 to 90°, or options that cannot run.
+    pub fn new(
+        targets: &PathTargets,
+        constraints: &PathConstraints,
+        options: SearchOptions,
+    ) -> Result<Self> {
+        check_options(&options)?;
+        let problem = normalise(targets, constraints)?;
+        Ok(Self::start(problem, options))
+    }
+}
+
+fn check_options(o: &SearchOptions) -> Result<()> {
+    if !(o.tolerance > 0.0 && o.tolerance < 1.0) {
+        return Err(invalid(
+            "tolerance",
+            o.tolerance,
+            "between 0 and 1, exclusive",
+        ));
+    }
+    if o.solutions == 0 {
+        return Err(invalid("solutions", 0.0, "at least 1"));
+    }
+    if o.population < 8 {
+        return Err(invalid("population", o.population as f64, "at least 8"));
+    }
+    Ok(())
+}
+
+/// The targets' centroid and size (the diagonal of their bounding box).
+fn frame(points: &[[f64; 2]]) -> Result<(Vec2, f64)> {
+    let n = points.len();
+    if !(MIN_TARGETS..=MAX_TARGETS).contains(&n) {
+        return Err(invalid("number of targets", n as f64, "3 to 20"));
+    }
+    if let Some(bad) = points.iter().flatten().find(|v| !v.is_finite()) {
+        return Err(invalid("target coordinate", *bad, "a finite number"));
+    }
+    let (mut lo, mut hi) = (Vec2::repeat(f64::INFINITY), Vec2::repeat(f64::NEG_INFINITY));
+    let mut centre = Vec2::zeros();
+    for p in points {
+        let p = Vec2::from(*p);
+        lo = lo.inf(&p);
+        hi = hi.sup(&p);
+        centre += p / n as f64;
+    }
+    let size = (hi - lo).norm();
+    if size <= 1e-12 * hi.abs().max().max(lo.abs().max()) || size == 0.0 {
+        return Err(invalid(
+            "size of the targets' spread",
+            size,
+            "more than 0: the targets coincide",
+        ));
+    }
+    Ok((centre, size))
+}
+
+fn normalise(targets: &PathTargets, constraints: &PathConstraints) -> Result<Problem> {
+    let (centre, scale) = frame(&targets.points_m)?;
+    let timing = match &targets.crank_deg {
+        None => None,
+        Some(deg) if deg.len() != targets.points_m.len() => {
+            return Err(invalid(
+                "number of crank angles",
+                deg.len() as f64,
+                "one per target",
+            ));
+        }
+        Some(deg) => {
+            if let Some(bad) = deg.iter().find(|v| !v.is_finite()) {
+                return Err(invalid("crank angle", *bad, "a finite number of degrees"));
+            }
+            Some(deg.iter().map(|d| (d - deg[0]).to_radians()).collect())
+        }
+    };
+    let mu = constraints.min_transmission_deg;
+    if !(0.0..90.0).contains(&mu) {
+        return Err(invalid(
+            "least transmission angle (deg)",
+            mu,
+            "0 to 90, exclusive of 90",
+        ));
+    }
+    let region = match constraints.ground_region_m {
+        None => [Vec2::repeat(-1.5), Vec2::repeat(1.5)],
+        Some([lo, hi]) => {
+            if let Some(bad) = lo.iter().chain(&hi).find(|v| !v.is_finite()) {
+                return Err(invalid("ground region corner", *bad, "a finite number"));
+            }
+            if lo[0] >= hi[0] || lo[1] >= hi[1] {
+                return Err(invalid(
+                    "ground region width",
+                    (hi[0] - lo[0]).min(hi[1] - lo[1]),
+                    "more than 0",
+                ));
+            }
+            [
+                (Vec2::from(lo) - centre) / scale,
+                (Vec2::from(hi) - centre) / scale,
+            ]
+        }
+    };
+    Ok(Problem {
+        targets: targets
+            .points_m
+            .iter()
+            .map(|p| (Vec2::from(*p) - centre) / scale)
+            .collect(),
+        timing,
+        limits: Limits {
+            crank_turns: constraints.crank_turns,
+            min_transmission: mu.to_radians(),
+            region,
+            one_branch: constraints.one_branch,
+        },
+        centre,
+        scale,
+    })
+}
