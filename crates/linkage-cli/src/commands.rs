@@ -350,6 +350,7 @@ fn synth(what: SynthCommand) -> Result<String, String> {
             ground,
             scene_out,
         } => crate::synth_function::run(&points, ground, scene_out.as_deref()),
+        SynthCommand::Path(args) => crate::synth_path::run(&args),
         SynthCommand::Motion {
             poses,
             moving,

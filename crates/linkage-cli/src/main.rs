@@ -12,6 +12,7 @@ mod plot;
 mod simulate;
 mod synth_function;
 mod synth_motion;
+mod synth_path;
 mod tradeoff;
 
 use std::io::{ErrorKind, Write};
@@ -200,6 +201,10 @@ enum SynthCommand {
         #[arg(long)]
         scene_out: Option<PathBuf>,
     },
+    /// A four-bar whose coupler point passes through 3 to 20 target points (a global
+    /// search polished by least squares; JSON with the designs ranked by their
+    /// largest miss and the time taken; the same designs for the same seed).
+    Path(PathSearchArgs),
     /// The die cutter's toggle six-bar from stroke H, K and CD = CE = L (scene RON on stdout).
     DieCutter {
         /// Stroke H, mm.
@@ -218,6 +223,47 @@ enum SynthCommand {
         #[arg(long, allow_hyphen_values = true, num_args = 2, value_names = ["AB_MM", "BC_MM"])]
         as_printed: Option<Vec<f64>>,
     },
+}
+
+/// The arguments of `linkage synth path`.
+#[derive(clap::Args, Debug)]
+struct PathSearchArgs {
+    /// CSV of targets: `x_m, y_m` per row, or `x_m, y_m, crank_deg` with --timed
+    /// (a header allowed).
+    #[arg(long)]
+    points: PathBuf,
+    /// The third column prescribes the crank angle at each target (only the
+    /// differences matter).
+    #[arg(long)]
+    timed: bool,
+    /// Seed of the search.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Write the best design as a scene file here.
+    #[arg(long, alias = "scene-out")]
+    out: Option<PathBuf>,
+    /// Stop after this many distinct designs within tolerance.
+    #[arg(long, default_value_t = 3)]
+    solutions: usize,
+    /// Within tolerance: the largest miss is at most this share of the targets' size.
+    #[arg(long, default_value_t = 1e-6)]
+    tolerance: f64,
+    /// Most evaluations of a candidate linkage.
+    #[arg(long, default_value_t = 3_000_000)]
+    max_evaluations: u64,
+    /// Let the crank rock instead of turning through a whole revolution.
+    #[arg(long)]
+    rocking_crank: bool,
+    /// Least transmission angle over the crank's travel through the targets, degrees.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    min_transmission_deg: f64,
+    /// Both ground pivots within this box, m (default: within 1.5 times the targets'
+    /// size of their centroid, each way).
+    #[arg(long, num_args = 4, allow_hyphen_values = true, value_names = ["X0", "Y0", "X1", "Y1"])]
+    ground_region: Option<Vec<f64>>,
+    /// Allow the targets on different assembly branches (through a dead point).
+    #[arg(long)]
+    any_branch: bool,
 }
 
 fn main() -> ExitCode {

@@ -569,3 +569,189 @@ fn synth_motion_designs_a_four_bar_through_three_positions() {
     assert!(!ok && err.contains("one place"), "{err}");
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// The coupler point of a crank-rocker (A at the origin, D (4, 0.5); crank 1.2,
+/// coupler 3.6, rocker 3.0; P at (1.5, 1.1) from B along BC, C left of B→D) at
+/// crank angle `deg`, by two circles meeting.
+fn known_coupler_point(deg: f64) -> (f64, f64) {
+    let t = deg.to_radians();
+    let (bx, by) = (1.2 * t.cos(), 1.2 * t.sin());
+    let (ex, ey) = (4.0 - bx, 0.5 - by);
+    let l2 = ex * ex + ey * ey;
+    let along = (3.6f64.powi(2) - 3.0f64.powi(2) + l2) / (2.0 * l2);
+    let h = (3.6f64.powi(2) / l2 - along * along).sqrt();
+    let (cx, cy) = (bx + ex * along - ey * h, by + ey * along + ex * h);
+    let (ux, uy) = ((cx - bx) / 3.6, (cy - by) / 3.6);
+    (bx + ux * 1.5 - uy * 1.1, by + uy * 1.5 + ux * 1.1)
+}
+
+/// The sweep's P column as points.
+fn swept_p(scene: &std::path::Path, steps: usize) -> Vec<(f64, f64)> {
+    let (ok, csv, err) = linkage(&[
+        "sweep",
+        scene.to_str().expect("path"),
+        "--steps",
+        &steps.to_string(),
+    ]);
+    assert!(ok, "{err}");
+    let mut lines = csv.lines();
+    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
+    let col = |name: &str| header.iter().position(|h| *h == name).expect("column");
+    let (x, y) = (col("P_x"), col("P_y"));
+    lines
+        .map(|l| {
+            let v: Vec<f64> = l.split(',').map(|c| c.parse().expect("number")).collect();
+            (v[x], v[y])
+        })
+        .collect()
+}
+
+fn write_targets(
+    dir: &std::path::Path,
+    name: &str,
+    degrees: &[f64],
+    timed: bool,
+) -> std::path::PathBuf {
+    let rows: String = degrees
+        .iter()
+        .map(|&d| {
+            let (x, y) = known_coupler_point(d);
+            if timed {
+                format!("{x:e},{y:e},{d}\n")
+            } else {
+                format!("{x:e},{y:e}\n")
+            }
+        })
+        .collect();
+    let path = dir.join(name);
+    std::fs::write(&path, rows).expect("csv");
+    path
+}
+
+/// `synth path` with timing: ten targets every 36° of a crank-rocker's coupler
+/// curve; the scene it writes, swept by `linkage sweep --steps 10` from its start,
+/// puts P on every target (1e-6 of their size), and the run is the same for the
+/// same seed.
+#[test]
+fn synth_path_timed_designs_a_four_bar_that_sweeps_through_the_targets() {
+    let dir = std::env::temp_dir().join(format!("linkage-cli-path-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let degrees: Vec<f64> = (0..10).map(|k| 10.0 + 36.0 * f64::from(k)).collect();
+    let csv = write_targets(&dir, "timed.csv", &degrees, true);
+    let scene = dir.join("path.ron");
+    let args = [
+        "synth",
+        "path",
+        "--points",
+        csv.to_str().expect("path"),
+        "--timed",
+        "--solutions",
+        "1",
+        "--tolerance",
+        "1e-8",
+        "--seed",
+        "4",
+    ];
+    let (ok, out, err) = linkage(&[&args[..], &["--out", scene.to_str().expect("path")]].concat());
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    assert!(
+        v["designs"][0]["relative_error"].as_f64().expect("error") <= 1e-8,
+        "{out}"
+    );
+    let swept = swept_p(&scene, 10);
+    let size = 2.9949;
+    for (&d, &(x, y)) in degrees.iter().zip(&swept) {
+        let (tx, ty) = known_coupler_point(d);
+        let miss = (x - tx).hypot(y - ty);
+        assert!(miss <= 1e-6 * size, "{d}°: misses by {miss}");
+    }
+    let (_, again, _) = linkage(&args);
+    let strip = |s: &str| -> serde_json::Value {
+        let mut v: serde_json::Value = serde_json::from_str(s).expect("json");
+        v["seconds"] = serde_json::Value::Null;
+        v
+    };
+    assert_eq!(strip(&out), strip(&again), "deterministic for a seed");
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+/// `synth path` without timing: nine targets; the scene's swept coupler curve
+/// passes within 1e-6 of their size of every one.
+#[test]
+fn synth_path_untimed_curve_passes_through_the_targets() {
+    let dir = std::env::temp_dir().join(format!("linkage-cli-path-u-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let degrees: Vec<f64> = (0..9).map(|k| 10.0 + 33.0 * f64::from(k)).collect();
+    let csv = write_targets(&dir, "untimed.csv", &degrees, false);
+    let scene = dir.join("path.ron");
+    let (ok, out, err) = linkage(&[
+        "synth",
+        "path",
+        "--points",
+        csv.to_str().expect("path"),
+        "--solutions",
+        "1",
+        "--tolerance",
+        "1e-8",
+        "--out",
+        scene.to_str().expect("path"),
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    assert!(
+        v["designs"][0]["crank_turns"].as_bool().expect("turns"),
+        "{out}"
+    );
+    let swept = swept_p(&scene, 36_000);
+    let size = 2.9949;
+    for &d in &degrees {
+        let (tx, ty) = known_coupler_point(d);
+        let miss = swept
+            .iter()
+            .zip(swept.iter().cycle().skip(1))
+            .map(|(&(x0, y0), &(x1, y1))| {
+                let (sx, sy) = (x1 - x0, y1 - y0);
+                let len2 = (sx * sx + sy * sy).max(1e-300);
+                let t = (((tx - x0) * sx + (ty - y0) * sy) / len2).clamp(0.0, 1.0);
+                (x0 + t * sx - tx).hypot(y0 + t * sy - ty)
+            })
+            .fold(f64::INFINITY, f64::min);
+        assert!(miss <= 1e-6 * size, "{d}°: the curve misses by {miss}");
+    }
+    let _ = std::fs::remove_dir_all(dir);
+}
+
+/// Bad input to `synth path` is refused with its cause and the valid range.
+#[test]
+fn synth_path_refuses_bad_targets() {
+    let dir = std::env::temp_dir().join(format!("linkage-cli-path-bad-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let two = dir.join("two.csv");
+    std::fs::write(&two, "0,0\n1,1\n").expect("csv");
+    let (ok, _, err) = linkage(&["synth", "path", "--points", two.to_str().expect("path")]);
+    assert!(!ok && err.contains("3 to 20"), "{err}");
+    let untimed = dir.join("untimed.csv");
+    std::fs::write(&untimed, "0,0\n1,1\n2,0\n").expect("csv");
+    let (ok, _, err) = linkage(&[
+        "synth",
+        "path",
+        "--points",
+        untimed.to_str().expect("path"),
+        "--timed",
+    ]);
+    assert!(
+        !ok && err.contains("line 1") && err.contains("3 comma-separated"),
+        "{err}"
+    );
+    let (ok, _, err) = linkage(&[
+        "synth",
+        "path",
+        "--points",
+        untimed.to_str().expect("path"),
+        "--min-transmission-deg",
+        "120",
+    ]);
+    assert!(!ok && err.contains("0 to 90"), "{err}");
+    let _ = std::fs::remove_dir_all(dir);
+}

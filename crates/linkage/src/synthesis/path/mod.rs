@@ -51,7 +51,7 @@ pub struct PathConstraints {
     /// (0 for none).
     pub min_transmission_deg: f64,
     /// Where both ground pivots must lie, as lower and upper corners, m; `None`
-    /// for within twice the targets' size of their centroid.
+    /// for within 1.5 times the targets' size of their centroid, each way.
     pub ground_region_m: Option<[[f64; 2]; 2]>,
     /// The targets must lie on one assembly branch, reached without a dead point.
     pub one_branch: bool,
