@@ -9,6 +9,8 @@ pub mod catalog;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod file_dialog;
 pub mod fonts;
+pub mod path_inputs;
+pub mod path_job;
 pub mod render;
 pub mod session;
 pub mod synthesis;

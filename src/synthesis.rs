@@ -18,15 +18,18 @@ pub enum SynthKind {
     Function,
     /// A four-bar through three positions of a body.
     Motion,
+    /// A four-bar whose coupler point passes through targets (a search).
+    Path,
 }
 
 impl SynthKind {
     /// Every kind, in the window's order.
-    pub const ALL: [SynthKind; 4] = [
+    pub const ALL: [SynthKind; 5] = [
         SynthKind::CrankRocker,
         SynthKind::DieCutter,
         SynthKind::Function,
         SynthKind::Motion,
+        SynthKind::Path,
     ];
 
     /// Its tab's label.
@@ -36,6 +39,7 @@ impl SynthKind {
             SynthKind::DieCutter => "die cutter",
             SynthKind::Function => "function",
             SynthKind::Motion => "three positions",
+            SynthKind::Path => "path",
         }
     }
 }
@@ -57,6 +61,8 @@ pub struct SynthInputs {
     pub poses: String,
     /// Motion: the moving pivots in the body's frame, mm: x1, y1, x2, y2.
     pub moving_mm: [f64; 4],
+    /// Path: the targets and constraints of the search.
+    pub path: crate::path_inputs::PathInputs,
 }
 
 impl Default for SynthInputs {
@@ -71,6 +77,7 @@ impl Default for SynthInputs {
             function_ground_mm: 100.0,
             poses: "0, 0, 0\n200, 100, 20\n350, 300, 45\n".into(),
             moving_mm: [-100.0, -150.0, 150.0, -100.0],
+            path: crate::path_inputs::PathInputs::default(),
         }
     }
 }
@@ -95,6 +102,8 @@ pub fn design(inputs: &SynthInputs) -> Result<Design, String> {
         SynthKind::DieCutter => die(inputs.die),
         SynthKind::Function => function(&inputs.function_points, inputs.function_ground_mm),
         SynthKind::Motion => motion(&inputs.poses, inputs.moving_mm),
+        // Not closed form: the window runs its search (`crate::path_job`).
+        SynthKind::Path => Err("a path design comes from its search: press Search".into()),
     }
 }
 

@@ -61,6 +61,9 @@ pub enum SceneEdit {
     },
     /// Put back the scene as opened.
     Reset,
+    /// Put a whole scene (a synthesized design) in place of this one, at its own
+    /// start; undo puts this one back.
+    Replace(Box<SceneFile>),
     /// Take the last edit back.
     Undo,
     /// Make the last undone edit again.
@@ -83,6 +86,7 @@ impl Session {
             SceneEdit::Integrator(choice) => self.set_integrator(choice),
             SceneEdit::MovePoint { name, to_m } => self.move_point(&name, to_m),
             SceneEdit::Reset => self.reset(),
+            SceneEdit::Replace(scene) => self.replace(*scene),
             SceneEdit::Undo => self.travel(true),
             SceneEdit::Redo => self.travel(false),
         }
@@ -177,6 +181,18 @@ impl Session {
         self.analyses.set_integrator(choice);
         self.start_run();
         self.time_s = 0.0;
+    }
+
+    fn replace(&mut self, scene: SceneFile) {
+        match super::Built::new(&scene, None) {
+            Ok(built) => self.commit(EditTarget::Replaced, scene, built),
+            Err(why) => {
+                self.message = Some(Notice::EditRefused {
+                    what: "putting the design in place".into(),
+                    why,
+                })
+            }
+        }
     }
 
     fn reset(&mut self) {

@@ -24,6 +24,8 @@ pub enum EditTarget {
     Point(String),
     /// Everything put back as opened.
     Reset,
+    /// A whole scene put in place (a synthesized design).
+    Replaced,
 }
 
 /// A scene as it was, and where the crank stood.

@@ -9,9 +9,11 @@ use eframe::egui;
 use linkage::SceneFile;
 
 use crate::app::AppState;
+use crate::session::SceneEdit;
 use crate::session::{SceneSource, Session};
 use crate::synthesis::{Design, SynthInputs, SynthKind};
 use crate::ui::control_map::ControlKind;
+use crate::ui::synthesis_path::{PathAction, PathTab};
 
 /// The window's inputs and its last design.
 #[derive(Default)]
@@ -20,6 +22,16 @@ pub struct SynthesisView {
     pub inputs: SynthInputs,
     /// The last design, or why there is none.
     pub result: Option<Result<Design, String>>,
+    /// The path tab's search and canvas.
+    pub path: PathTab,
+}
+
+/// What to do with a design.
+enum Chosen {
+    /// Open it as a new scene.
+    Open(SceneFile),
+    /// Put it in place of the current scene (undo-able).
+    Replace(SceneFile),
 }
 
 /// The window, while open.
@@ -45,6 +57,29 @@ pub fn window(ctx: &egui::Context, st: &mut AppState) {
                 }
             });
             ui.separator();
+            if view.inputs.kind == SynthKind::Path {
+                // Canvas, targets, constraints, progress and a design table: taller
+                // than a laptop's window, so it scrolls.
+                let room = ui.ctx().content_rect().height() - 160.0;
+                chosen = egui::ScrollArea::vertical()
+                    .max_height(room)
+                    .min_scrolled_height(room.min(640.0))
+                    .show(ui, |ui| {
+                        ui.set_min_width(440.0);
+                        crate::ui::synthesis_path::show(
+                            ui,
+                            &mut st.controls,
+                            &mut view.inputs.path,
+                            &mut view.path,
+                        )
+                    })
+                    .inner
+                    .map(|a| match a {
+                        PathAction::Open(s) => Chosen::Open(s),
+                        PathAction::Replace(s) => Chosen::Replace(s),
+                    });
+                return;
+            }
             inputs(ui, &mut view.inputs);
             let design = ui.button("Design");
             st.controls
@@ -54,7 +89,9 @@ pub fn window(ctx: &egui::Context, st: &mut AppState) {
             }
             chosen = result(ui, st, &view);
         });
-    if let Some(scene) = chosen {
+    if let Some(Chosen::Replace(scene)) = chosen {
+        st.edit(SceneEdit::Replace(Box::new(scene)));
+    } else if let Some(Chosen::Open(scene)) = chosen {
         match Session::open_scene(SceneSource::File("synthesized.ron".into()), scene) {
             Ok(mut session) => {
                 session.mark_unsaved();
@@ -99,6 +136,8 @@ fn inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {
             );
             number(ui, &mut view.function_ground_mm, "ground AD (mm)", 1.0);
         }
+        // Shown by `synthesis_path`.
+        SynthKind::Path => {}
         SynthKind::Motion => {
             text_area(ui, &mut view.poses, "positions: x mm, y mm, angle deg");
             ui.label("moving pivots in the body's frame (mm)");
@@ -126,8 +165,8 @@ fn text_area(ui: &mut egui::Ui, text: &mut String, label: &str) {
     });
 }
 
-/// The design table, or why there is none; returns the scene to open when asked.
-fn result(ui: &mut egui::Ui, st: &mut AppState, view: &SynthesisView) -> Option<SceneFile> {
+/// The design table, or why there is none; returns what to do with it when asked.
+fn result(ui: &mut egui::Ui, st: &mut AppState, view: &SynthesisView) -> Option<Chosen> {
     match &view.result {
         None => None,
         Some(Err(why)) => {
@@ -144,10 +183,22 @@ fn result(ui: &mut egui::Ui, st: &mut AppState, view: &SynthesisView) -> Option<
                         ui.end_row();
                     }
                 });
-            let open = ui.button("Open as scene");
-            st.controls
-                .note(ui, ControlKind::FileButton, "Open as scene", &open);
-            open.clicked().then(|| design.scene.clone())
+            ui.horizontal(|ui| {
+                let open = ui.button("Open as scene");
+                st.controls
+                    .note(ui, ControlKind::FileButton, "Open as scene", &open);
+                let replace = ui.button("Replace this scene");
+                st.controls
+                    .note(ui, ControlKind::FileButton, "Replace this scene", &replace);
+                if open.clicked() {
+                    Some(Chosen::Open(design.scene.clone()))
+                } else {
+                    replace
+                        .clicked()
+                        .then(|| Chosen::Replace(design.scene.clone()))
+                }
+            })
+            .inner
         }
     }
 }

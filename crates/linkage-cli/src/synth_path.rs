@@ -29,9 +29,7 @@ pub fn run(args: &PathSearchArgs) -> Result<String, String> {
     };
     let mut search =
         PathSearch::new(&targets, &constraints(args)?, options(args)).map_err(|e| e.to_string())?;
-    let started = std::time::Instant::now();
     let progress = search.run();
-    let seconds = started.elapsed().as_secs_f64();
     let designs = search.designs();
     let Some(best) = designs.first() else {
         return Err(format!(
@@ -49,7 +47,7 @@ pub fn run(args: &PathSearchArgs) -> Result<String, String> {
         "timed": args.timed,
         "seed": args.seed,
         "evaluations": progress.evaluations,
-        "seconds": seconds,
+        "seconds": progress.seconds,
         "within_tolerance": progress.solutions,
         "designs": designs.iter().map(design_json).collect::<Vec<_>>(),
     }))

@@ -30,6 +30,8 @@ pub struct Progress {
     pub solutions: usize,
     /// Whether the search has finished (enough solutions, or its budget spent).
     pub done: bool,
+    /// Wall-clock time spent searching so far, s.
+    pub seconds: f64,
 }
 
 impl Progress {
@@ -56,6 +58,7 @@ pub struct PathSearch {
     polished_at: f64,
     evaluations: u64,
     max_evaluations: u64,
+    seconds: f64,
     found: Vec<PathDesign>,
     /// The normalised parameters and branch of each found design, to tell them apart.
     found_params: Vec<([f64; PARAMS], bool)>,
@@ -74,6 +77,7 @@ impl PathSearch {
             run_best: f64::INFINITY,
             polished_at: f64::INFINITY,
             evaluations: 0,
+            seconds: 0.0,
             found: vec![],
             found_params: vec![],
         }
@@ -81,10 +85,12 @@ impl PathSearch {
 
     /// Runs at least `evaluations` more evaluations (whole generations), or to the end.
     pub fn step(&mut self, evaluations: u64) -> Progress {
+        let started = web_time::Instant::now();
         let until = self.evaluations.saturating_add(evaluations);
         while self.evaluations < until && !self.is_done() {
             self.generation();
         }
+        self.seconds += started.elapsed().as_secs_f64();
         self.progress()
     }
 
@@ -129,6 +135,7 @@ impl PathSearch {
             best_relative_error: polished.min(coarse),
             solutions: self.solutions(),
             done: self.is_done(),
+            seconds: self.seconds,
         }
     }
 
@@ -140,7 +147,10 @@ impl PathSearch {
     /// The best design now: the best found, or the evolution's best member while
     /// none is found (for showing the search's progress live).
     pub fn leader(&self) -> Option<PathDesign> {
-        let population = self.population.as_ref()?;
+        let Some(population) = self.population.as_ref() else {
+            // Between a restart and the next generation.
+            return self.found.first().cloned();
+        };
         let i = population.best();
         let live = PathDesign::new(
             &self.problem,

@@ -1,0 +1,337 @@
+//! The synthesis window's path tab: targets placed by clicking on its canvas,
+//! dragged there, or typed and pasted as CSV; the search runs off the frame with a
+//! progress bar, the best curve so far drawn live, stop and continue; the designs
+//! found are listed by their largest miss, and the one chosen opens as a scene or
+//! replaces the current one (undo-able).
+
+use eframe::egui;
+use egui_plot::{Line, Plot, PlotPoint, PlotPoints, Points, Text};
+use linkage::SceneFile;
+use linkage::synthesis::path::PathDesign;
+
+use crate::path_inputs::{PathInputs, design_of};
+use crate::path_job::PathJob;
+use crate::ui::control_map::{ControlKind, ControlMap};
+
+/// Milliseconds of search per frame in the browser.
+const SLICE_MS: f64 = 6.0;
+/// How near the pointer must come to a target to take it, points.
+const GRAB_PX: f32 = 12.0;
+
+/// The tab's state besides its inputs.
+#[derive(Default)]
+pub struct PathTab {
+    /// The targets as the text field shows them.
+    csv: String,
+    /// Why the text field's rows were not taken.
+    csv_error: Option<String>,
+    /// The search, once started.
+    pub job: Option<PathJob>,
+    /// Why the search did not start.
+    refused: Option<String>,
+    /// The design chosen in the list.
+    chosen: usize,
+    /// The target being dragged on the canvas.
+    dragging: Option<usize>,
+}
+
+/// What the user asked to do with a design.
+pub enum PathAction {
+    /// Open it as a new scene.
+    Open(SceneFile),
+    /// Put it in place of the current scene (undo-able).
+    Replace(SceneFile),
+}
+
+/// The tab; returns what to do with the chosen design, if asked.
+pub fn show(
+    ui: &mut egui::Ui,
+    controls: &mut ControlMap,
+    inputs: &mut PathInputs,
+    tab: &mut PathTab,
+) -> Option<PathAction> {
+    if let Some(job) = tab.job.as_mut().filter(|j| j.is_running()) {
+        job.poll(SLICE_MS);
+        ui.ctx().request_repaint();
+    }
+    if tab.csv.is_empty() && !inputs.targets.is_empty() {
+        tab.csv = inputs.to_csv();
+    }
+    targets(ui, inputs, tab);
+    constraints(ui, inputs);
+    search_buttons(ui, controls, inputs, tab);
+    designs(ui, controls, tab)
+}
+
+fn targets(ui: &mut egui::Ui, inputs: &mut PathInputs, tab: &mut PathTab) {
+    if ui
+        .checkbox(
+            &mut inputs.timed,
+            "timed: a crank angle at each target (third column)",
+        )
+        .changed()
+    {
+        tab.csv = inputs.to_csv();
+    }
+    // Live, the best so far; once stopped, the design chosen in the list.
+    let leader = tab.job.as_ref().and_then(|j| {
+        let shot = j.snapshot();
+        let chosen = shot.designs.get(tab.chosen).filter(|_| !j.is_running());
+        chosen.or(shot.leader.as_ref()).cloned()
+    });
+    if canvas(ui, inputs, tab, leader.as_ref()) {
+        tab.csv = inputs.to_csv();
+        tab.csv_error = None;
+    }
+    let label = if inputs.timed {
+        "targets: x mm, y mm, crank deg (click the canvas to add, drag to move)"
+    } else {
+        "targets: x mm, y mm (click the canvas to add, drag to move)"
+    };
+    ui.label(label);
+    let r = ui.add(
+        egui::TextEdit::multiline(&mut tab.csv)
+            .desired_rows(4)
+            .code_editor(),
+    );
+    r.widget_info(|| {
+        egui::WidgetInfo::labeled(egui::accesskit::Role::MultilineTextInput, true, label)
+    });
+    if r.changed() {
+        tab.csv_error = inputs.read_csv(&tab.csv).err();
+    }
+    if let Some(why) = &tab.csv_error {
+        ui.colored_label(ui.visuals().error_fg_color, why);
+    }
+    ui.horizontal(|ui| {
+        if ui.button("Clear targets").clicked() {
+            inputs.targets.clear();
+            tab.csv.clear();
+        }
+    });
+}
+
+/// The canvas: targets, the best curve so far and its linkage; a click adds a
+/// target, a drag moves one. Returns whether the targets changed.
+fn canvas(
+    ui: &mut egui::Ui,
+    inputs: &mut PathInputs,
+    tab: &mut PathTab,
+    leader: Option<&PathDesign>,
+) -> bool {
+    let shown = Plot::new("path synthesis canvas")
+        .data_aspect(1.0)
+        .height(260.0)
+        .allow_drag(false)
+        .allow_boxed_zoom(false)
+        .allow_double_click_reset(false)
+        .show(ui, |p| {
+            if let Some(d) = leader {
+                for piece in d.curve(360) {
+                    let mm: PlotPoints<'_> =
+                        piece.iter().map(|q| [q[0] * 1e3, q[1] * 1e3]).collect();
+                    p.line(Line::new("coupler curve", mm).width(1.5));
+                }
+                if let Some(bars) = linkage_lines(d) {
+                    p.line(Line::new("linkage", bars).width(2.5));
+                }
+            }
+            let at: PlotPoints<'_> = inputs.targets.iter().map(|t| t.at_mm).collect();
+            p.points(Points::new("targets", at).radius(5.0));
+            for (i, t) in inputs.targets.iter().enumerate() {
+                let [x, y] = t.at_mm;
+                p.text(
+                    Text::new("", PlotPoint::new(x, y), format!("  {}", i + 1))
+                        .anchor(egui::Align2::LEFT_BOTTOM),
+                );
+            }
+            let screen: Vec<egui::Pos2> = inputs
+                .targets
+                .iter()
+                .map(|t| p.screen_from_plot(PlotPoint::new(t.at_mm[0], t.at_mm[1])))
+                .collect();
+            (p.response().clone(), p.pointer_coordinate(), screen)
+        });
+    let (response, pointer, screen) = shown.inner;
+    let near = |pos: egui::Pos2| {
+        screen
+            .iter()
+            .enumerate()
+            .map(|(i, s)| (i, s.distance(pos)))
+            .filter(|&(_, d)| d <= GRAB_PX)
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .map(|(i, _)| i)
+    };
+    let press = response.interact_pointer_pos();
+    let mut changed = false;
+    if response.drag_started() {
+        tab.dragging = press.and_then(near);
+    }
+    let held = tab.dragging.zip(pointer.filter(|_| response.dragged()));
+    if let Some((t, to)) = held.and_then(|(i, to)| Some((inputs.targets.get_mut(i)?, to))) {
+        t.at_mm = [to.x, to.y];
+        changed = true;
+    }
+    if response.drag_stopped() {
+        tab.dragging = None;
+    }
+    if let Some(to) = pointer.filter(|_| response.clicked() && press.and_then(near).is_none()) {
+        inputs.add([to.x, to.y]);
+        changed = true;
+    }
+    changed
+}
+
+/// The linkage where its coupler point meets the first target: A-B-C-D and the
+/// coupler triangle B-P-C, mm.
+fn linkage_lines(d: &PathDesign) -> Option<PlotPoints<'static>> {
+    let theta = d.crank_deg.first()?.to_radians();
+    let pins = d.linkage().pins_at(theta)?;
+    let mm = |v: linkage::Vec2| [v.x * 1e3, v.y * 1e3];
+    let a = d.pivot_a.map(|v| v * 1e3);
+    let dd = d.pivot_d.map(|v| v * 1e3);
+    Some(
+        vec![
+            a,
+            mm(pins.b),
+            mm(pins.p),
+            mm(pins.c),
+            mm(pins.b),
+            mm(pins.c),
+            dd,
+        ]
+        .into(),
+    )
+}
+
+fn constraints(ui: &mut egui::Ui, inputs: &mut PathInputs) {
+    ui.horizontal(|ui| {
+        ui.checkbox(&mut inputs.crank_turns, "crank turns fully");
+        ui.checkbox(&mut inputs.one_branch, "targets on one branch");
+    });
+    ui.horizontal(|ui| {
+        let name = ui.label("least transmission angle (deg)");
+        ui.add(
+            egui::DragValue::new(&mut inputs.min_transmission_deg)
+                .range(0.0..=89.0)
+                .speed(0.5),
+        )
+        .labelled_by(name.id);
+        let name = ui.label("seed");
+        ui.add(egui::DragValue::new(&mut inputs.seed))
+            .labelled_by(name.id);
+    });
+    ui.horizontal(|ui| {
+        let name = ui.label("tolerance (share of the targets' size)");
+        ui.add(
+            egui::DragValue::new(&mut inputs.tolerance)
+                .range(1e-9..=0.1)
+                .speed(1e-6)
+                .custom_formatter(|v, _| format!("{v:.0e}")),
+        )
+        .labelled_by(name.id);
+    });
+}
+
+fn search_buttons(
+    ui: &mut egui::Ui,
+    controls: &mut ControlMap,
+    inputs: &PathInputs,
+    tab: &mut PathTab,
+) {
+    let running = tab.job.as_ref().is_some_and(PathJob::is_running);
+    ui.horizontal(|ui| {
+        let search = ui.add_enabled(!running, egui::Button::new("Search"));
+        controls.note(ui, ControlKind::FileButton, "Search", &search);
+        if search.clicked() {
+            match inputs.search() {
+                Ok(s) => {
+                    tab.job = Some(PathJob::start(s));
+                    tab.refused = None;
+                    tab.chosen = 0;
+                }
+                Err(why) => tab.refused = Some(why),
+            }
+        }
+        if let Some(job) = tab.job.as_mut() {
+            let label = if running { "Stop" } else { "Continue" };
+            let b = ui.button(label);
+            controls.note(ui, ControlKind::FileButton, label, &b);
+            if b.clicked() && running {
+                job.stop();
+            } else if b.clicked() {
+                job.resume(cfg!(target_arch = "wasm32"));
+            }
+        }
+    });
+    if let Some(why) = &tab.refused {
+        ui.colored_label(ui.visuals().error_fg_color, why);
+    }
+    if let Some(job) = &tab.job {
+        let p = job.snapshot().progress;
+        let best = if p.best_relative_error.is_finite() {
+            format!("best miss {:.1e} of the size", p.best_relative_error)
+        } else {
+            "no closing linkage yet".into()
+        };
+        ui.add(egui::ProgressBar::new(p.fraction() as f32).text(format!(
+            "{} evaluations, {best}, {} within tolerance{}",
+            p.evaluations,
+            p.solutions,
+            if p.done { ", done" } else { "" }
+        )));
+    }
+}
+
+fn designs(ui: &mut egui::Ui, controls: &mut ControlMap, tab: &mut PathTab) -> Option<PathAction> {
+    let found = tab
+        .job
+        .as_ref()
+        .map(|j| j.snapshot().designs.clone())
+        .unwrap_or_default();
+    if found.is_empty() {
+        return None;
+    }
+    ui.separator();
+    for (i, d) in found.iter().enumerate() {
+        let mu = d
+            .min_transmission_deg
+            .map_or_else(String::new, |m| format!(", μ ≥ {m:.0}°"));
+        let kind = if d.crank_turns {
+            "crank turns"
+        } else {
+            "crank rocks"
+        };
+        let text = format!(
+            "{}: miss {:.1e} of the size, {kind}{mu}",
+            i + 1,
+            d.relative_error
+        );
+        if ui.selectable_label(tab.chosen == i, text).clicked() {
+            tab.chosen = i;
+        }
+    }
+    let design = design_of(found.get(tab.chosen).or(found.first())?);
+    let mut action = None;
+    ui.horizontal(|ui| {
+        let open = ui.button("Open as scene");
+        controls.note(ui, ControlKind::FileButton, "Open as scene", &open);
+        let replace = ui.button("Replace this scene");
+        controls.note(ui, ControlKind::FileButton, "Replace this scene", &replace);
+        if open.clicked() {
+            action = Some(PathAction::Open(design.scene.clone()));
+        } else if replace.clicked() {
+            action = Some(PathAction::Replace(design.scene.clone()));
+        }
+    });
+    egui::Grid::new("path design table")
+        .striped(true)
+        .show(ui, |ui| {
+            for (what, value) in &design.table {
+                ui.label(what);
+                ui.label(value);
+                ui.end_row();
+            }
+        });
+    action
+}
