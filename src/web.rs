@@ -44,6 +44,37 @@ struct Published<'a> {
     camera: [f64; 3],
     /// The drawing, while the drawing tools are out.
     drawing: Option<PublishedDrawing>,
+    /// The synthesis window's path search, once started.
+    path_search: Option<PublishedSearch>,
+}
+
+/// A path search as the test hook shows it.
+#[derive(serde::Serialize)]
+struct PublishedSearch {
+    /// Targets placed.
+    targets: usize,
+    /// Whether it is still running.
+    running: bool,
+    /// Evaluations so far.
+    evaluations: u64,
+    /// Designs within tolerance.
+    solutions: usize,
+    /// The best design's largest miss over the targets' size.
+    best_relative_error: f64,
+}
+
+/// The path search of the synthesis window, if one was started.
+fn path_search(st: &crate::app::AppState) -> Option<PublishedSearch> {
+    let view = st.synthesis.as_ref()?;
+    let job = view.path.job.as_ref()?;
+    let p = job.snapshot().progress;
+    Some(PublishedSearch {
+        targets: view.inputs.path.targets.len(),
+        running: job.is_running(),
+        evaluations: p.evaluations,
+        solutions: p.solutions,
+        best_relative_error: p.best_relative_error,
+    })
 }
 
 /// A drawing as the test hook shows it.
@@ -128,6 +159,7 @@ pub fn publish_controls(st: &crate::app::AppState, frame: u64, renderer: bool) {
             links: b.sketch().links.len(),
             complete: b.problem.is_none(),
         }),
+        path_search: path_search(st),
     };
     let json = serde_json::to_string(&published).unwrap_or_default();
     CONTROLS.with(|c| *c.borrow_mut() = json);

@@ -45,6 +45,10 @@ pub enum ControlKind {
     TemplateItem,
     /// A drawing tool (Pivot, Link, ...) or action (Done, Undo, ...).
     DrawTool,
+    /// A tab of the synthesis window (crank-rocker, ..., path).
+    SynthesisTab,
+    /// The path tab's canvas, where a click places a target.
+    SynthesisCanvas,
 }
 
 /// One control as drawn this frame.

@@ -47,10 +47,10 @@ pub fn window(ctx: &egui::Context, st: &mut AppState) {
         .show(ctx, |ui| {
             ui.horizontal(|ui| {
                 for kind in SynthKind::ALL {
-                    if ui
-                        .selectable_label(view.inputs.kind == kind, kind.label())
-                        .clicked()
-                    {
+                    let tab = ui.selectable_label(view.inputs.kind == kind, kind.label());
+                    st.controls
+                        .note(ui, ControlKind::SynthesisTab, kind.label(), &tab);
+                    if tab.clicked() {
                         view.inputs.kind = kind;
                         view.result = None;
                     }

@@ -57,13 +57,18 @@ pub fn show(
     if tab.csv.is_empty() && !inputs.targets.is_empty() {
         tab.csv = inputs.to_csv();
     }
-    targets(ui, inputs, tab);
+    targets(ui, controls, inputs, tab);
     constraints(ui, inputs);
     search_buttons(ui, controls, inputs, tab);
     designs(ui, controls, tab)
 }
 
-fn targets(ui: &mut egui::Ui, inputs: &mut PathInputs, tab: &mut PathTab) {
+fn targets(
+    ui: &mut egui::Ui,
+    controls: &mut ControlMap,
+    inputs: &mut PathInputs,
+    tab: &mut PathTab,
+) {
     if ui
         .checkbox(
             &mut inputs.timed,
@@ -79,7 +84,7 @@ fn targets(ui: &mut egui::Ui, inputs: &mut PathInputs, tab: &mut PathTab) {
         let chosen = shot.designs.get(tab.chosen).filter(|_| !j.is_running());
         chosen.or(shot.leader.as_ref()).cloned()
     });
-    if canvas(ui, inputs, tab, leader.as_ref()) {
+    if canvas(ui, controls, inputs, tab, leader.as_ref()) {
         tab.csv = inputs.to_csv();
         tab.csv_error = None;
     }
@@ -103,18 +108,19 @@ fn targets(ui: &mut egui::Ui, inputs: &mut PathInputs, tab: &mut PathTab) {
     if let Some(why) = &tab.csv_error {
         ui.colored_label(ui.visuals().error_fg_color, why);
     }
-    ui.horizontal(|ui| {
-        if ui.button("Clear targets").clicked() {
-            inputs.targets.clear();
-            tab.csv.clear();
-        }
-    });
+    let clear = ui.button("Clear targets");
+    controls.note(ui, ControlKind::FileButton, "Clear targets", &clear);
+    if clear.clicked() {
+        inputs.targets.clear();
+        tab.csv.clear();
+    }
 }
 
 /// The canvas: targets, the best curve so far and its linkage; a click adds a
 /// target, a drag moves one. Returns whether the targets changed.
 fn canvas(
     ui: &mut egui::Ui,
+    controls: &mut ControlMap,
     inputs: &mut PathInputs,
     tab: &mut PathTab,
     leader: Option<&PathDesign>,
@@ -153,6 +159,7 @@ fn canvas(
             (p.response().clone(), p.pointer_coordinate(), screen)
         });
     let (response, pointer, screen) = shown.inner;
+    controls.note(ui, ControlKind::SynthesisCanvas, "path targets", &response);
     let near = |pos: egui::Pos2| {
         screen
             .iter()

@@ -8,7 +8,8 @@
 // the picture), and that the uploaded scene survives a reload and opens from the
 // page's address in a new page (a share link); and that a four-bar built in the page
 // (New… → four-bar template, a joint dragged) survives a reload and opens from its
-// link. Measures time to first frame (the app logs it) and frames per second while
+// link; and that a small path search in the synthesis window runs to designs while
+// frames keep coming. Measures time to first frame (the app logs it) and frames per second while
 // the mechanism plays.
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
 import { execFileSync } from 'node:child_process';
@@ -401,6 +402,51 @@ if (again) {
   if (unfinishedPoints !== 2) fail(`after a reload the unfinished drawing has ${unfinishedPoints} points, not 2`);
 }
 
+// A small path search in the page: Synthesis… → path, the targets cleared and four
+// clicked on its canvas, Search. The browser has no threads here: the search runs a
+// slice of a few milliseconds per frame, so frames keep coming while it runs (the
+// page's own requestAnimationFrame gaps are measured), and it ends with designs.
+let pathSearch = {};
+const synth = await entry(page, 'FileButton', 'Synthesis…');
+const pathTab = synth && (await page.mouse.click(...middle(synth)), await entry(page, 'SynthesisTab', 'path'));
+if (!pathTab) fail('no Synthesis… button or no path tab');
+else {
+  await page.mouse.click(...middle(pathTab));
+  const clear = await entry(page, 'FileButton', 'Clear targets');
+  if (clear) await page.mouse.click(...middle(clear));
+  await page.waitForTimeout(300);
+  const board = await entry(page, 'SynthesisCanvas', 'path targets');
+  if (!board) fail('no path canvas');
+  else {
+    const [x0, y0, x1, y1] = board.rect;
+    for (const [fx, fy] of [[0.2, 0.7], [0.4, 0.25], [0.65, 0.2], [0.85, 0.6]]) {
+      await page.mouse.click(x0 + fx * (x1 - x0), y0 + fy * (y1 - y0));
+      await page.waitForTimeout(400);
+    }
+    const search = await entry(page, 'FileButton', 'Search');
+    await page.evaluate(() => {
+      window.rafTimes = [];
+      const tick = (t) => { window.rafTimes.push(t); if (!window.rafStop) requestAnimationFrame(tick); };
+      requestAnimationFrame(tick);
+    });
+    const started = Date.now();
+    if (search) await page.mouse.click(...middle(search));
+    let st = await appState(page);
+    for (let i = 0; i < 1800 && !(st.path_search && !st.path_search.running); i++) {
+      await page.waitForTimeout(100);
+      st = await appState(page);
+    }
+    const times = await page.evaluate(() => { window.rafStop = true; return window.rafTimes; });
+    const gaps = times.slice(1).map((t, k) => t - times[k]);
+    pathSearch = { ...st.path_search, seconds: (Date.now() - started) / 1000, frames: times.length,
+      max_frame_gap_ms: Number(Math.max(...gaps).toFixed(1)) };
+    if (!st.path_search) fail('Search started no path search');
+    else if (st.path_search.running) fail(`the path search did not end in 180 s: ${JSON.stringify(pathSearch)}`);
+    else if (st.path_search.targets !== 4 || st.path_search.solutions < 1) fail(`the path search: ${JSON.stringify(pathSearch)}`);
+    if (!(pathSearch.frames >= 10 && pathSearch.max_frame_gap_ms < 3000)) fail(`the page froze during the path search: ${JSON.stringify(pathSearch)}`);
+  }
+}
+
 if (errors.length) fail(`console errors:\n  ${errors.join('\n  ')}`);
 console.log(JSON.stringify({
   url, build, first_frame_ms: firstFrameMs, canvas_drawn_fraction: Number(coverage.toFixed(3)),
@@ -412,6 +458,7 @@ console.log(JSON.stringify({
   built_four_bar_joints: built.joints?.length ?? 0,
   drawn_four_bar_joints: drawn.joints?.length ?? 0,
   unfinished_drawing_points_after_reload: unfinishedPoints,
+  path_search: pathSearch,
   console_errors: errors.length,
 }));
 await browser.close();
