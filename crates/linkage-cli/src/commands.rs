@@ -354,8 +354,18 @@ fn synth(what: SynthCommand) -> Result<String, String> {
         SynthCommand::Motion {
             poses,
             moving,
+            fixed_near,
+            pair,
             scene_out,
-        } => crate::synth_motion::run(&poses, &moving, scene_out.as_deref()),
+        } => crate::synth_motion::run(
+            &poses,
+            &crate::synth_motion::Choice {
+                moving,
+                fixed_near,
+                pair,
+            },
+            scene_out.as_deref(),
+        ),
         SynthCommand::DieCutter {
             stroke_mm,
             k,

@@ -188,15 +188,25 @@ enum SynthCommand {
         #[arg(long)]
         scene_out: Option<PathBuf>,
     },
-    /// A four-bar that carries a body through three positions (centre points of two
-    /// moving pivots; JSON with the poles and a check by the solver; --scene-out).
+    /// A four-bar that carries a body through three, four or five positions (three:
+    /// the centre points of two moving pivots; four: two fixed pivots on the
+    /// centre-point curve; five: two of the Burmester points; JSON with the poles and
+    /// a check by the solver; --scene-out).
     Motion {
         /// CSV of the body's positions: `x_m, y_m, angle_deg` per row (a header allowed).
         #[arg(long)]
         poses: PathBuf,
-        /// The moving pivots in the body's frame, m: x1 y1 x2 y2.
+        /// Three positions: the moving pivots in the body's frame, m: x1 y1 x2 y2.
         #[arg(long, num_args = 4, allow_hyphen_values = true, value_names = ["X1", "Y1", "X2", "Y2"])]
         moving: Vec<f64>,
+        /// Four positions: the fixed pivots are the centre-point curve's points
+        /// nearest these, m: x1 y1 x2 y2.
+        #[arg(long, num_args = 4, allow_hyphen_values = true, value_names = ["X1", "Y1", "X2", "Y2"])]
+        fixed_near: Vec<f64>,
+        /// Five positions: which two Burmester points (as listed, from 1) make the
+        /// four-bar.
+        #[arg(long, num_args = 2, value_names = ["I", "J"])]
+        pair: Vec<usize>,
         /// Write the four-bar as a scene file here.
         #[arg(long)]
         scene_out: Option<PathBuf>,

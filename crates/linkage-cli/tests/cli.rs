@@ -755,3 +755,100 @@ fn synth_path_refuses_bad_targets() {
     assert!(!ok && err.contains("0 to 90"), "{err}");
     let _ = std::fs::remove_dir_all(dir);
 }
+
+/// The coupler of the crank-rocker of [`known_coupler_point`] at crank angle `deg`
+/// as a body position: B, and the angle of B→C, deg.
+fn known_coupler_pose(deg: f64) -> (f64, f64, f64) {
+    let t = deg.to_radians();
+    let (bx, by) = (1.2 * t.cos(), 1.2 * t.sin());
+    let (px, py) = known_coupler_point(deg);
+    // P is (1.5, 1.1) from B in the coupler's frame: the frame's angle from B→P.
+    let angle = (py - by).atan2(px - bx) - 1.1f64.atan2(1.5);
+    (bx, by, angle.to_degrees())
+}
+
+/// `synth motion` through four positions (fixed pivots on the centre-point curve
+/// near the known ones) and five (the Burmester points at the known pivots): the
+/// general solver moves each design through every position (1e-9).
+#[test]
+fn synth_motion_through_four_and_five_positions() {
+    let dir = std::env::temp_dir().join(format!("linkage-cli-burmester-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("tmp");
+    let write = |name: &str, degrees: &[f64]| {
+        let rows: String = degrees
+            .iter()
+            .map(|&d| {
+                let (x, y, a) = known_coupler_pose(d);
+                format!("{x:e},{y:e},{a:e}\n")
+            })
+            .collect();
+        let path = dir.join(name);
+        std::fs::write(&path, rows).expect("csv");
+        path
+    };
+    let four = write("four.csv", &[20.0, 70.0, 120.0, 170.0]);
+    let (ok, out, err) = linkage(&[
+        "synth",
+        "motion",
+        "--poses",
+        four.to_str().expect("path"),
+        "--fixed-near",
+        "0.05",
+        "0.03",
+        "3.9",
+        "0.45",
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    assert!(v["check_miss_m"].as_f64().expect("miss") < 1e-9, "{out}");
+    let (ok, _, err) = linkage(&["synth", "motion", "--poses", four.to_str().expect("path")]);
+    assert!(!ok && err.contains("--fixed-near takes 4 numbers"), "{err}");
+
+    let five = write("five.csv", &[20.0, 70.0, 120.0, 170.0, 230.0]);
+    let (ok, _, err) = linkage(&[
+        "synth",
+        "motion",
+        "--poses",
+        five.to_str().expect("path"),
+        "--pair",
+        "9",
+        "1",
+    ]);
+    assert!(!ok && err.contains("Burmester points (1 to"), "{err}");
+    // The listing holds the known pivots A (0, 0) and D (4, 0.5).
+    let (ok, out, err) = linkage(&[
+        "synth",
+        "motion",
+        "--poses",
+        five.to_str().expect("path"),
+        "--pair",
+        "1",
+        "2",
+    ]);
+    assert!(ok, "{err}");
+    let listed: serde_json::Value = serde_json::from_str(&out).expect("json");
+    let points = &listed["burmester_points"];
+    let index = |x: f64, y: f64| -> Option<usize> {
+        points.as_array()?.iter().position(|p| {
+            let c = &p["centre"];
+            (c[0].as_f64().unwrap_or(f64::NAN) - x).hypot(c[1].as_f64().unwrap_or(f64::NAN) - y)
+                < 1e-9
+        })
+    };
+    let (a, d) = (index(0.0, 0.0), index(4.0, 0.5));
+    assert!(a.is_some() && d.is_some(), "{out}");
+    let pair = [a.map(|i| i + 1), d.map(|i| i + 1)].map(|i| i.unwrap_or(0).to_string());
+    let (ok, out, err) = linkage(&[
+        "synth",
+        "motion",
+        "--poses",
+        five.to_str().expect("path"),
+        "--pair",
+        &pair[0],
+        &pair[1],
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    assert!(v["check_miss_m"].as_f64().expect("miss") < 1e-9, "{out}");
+    let _ = std::fs::remove_dir_all(dir);
+}

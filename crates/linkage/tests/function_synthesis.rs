@@ -5,7 +5,7 @@
 //! scene and solved by the general solver, passes through its precision points.
 
 use linkage::synthesis::function::{
-    PrecisionPoint, chebyshev_spacing, freudenstein, structural_error,
+    PrecisionPoint, chebyshev_spacing, error_curve, freudenstein, structural_error,
 };
 use linkage::{Kinematics, LinkageError, Mechanism};
 
@@ -127,6 +127,27 @@ fn a_log_generator_passes_through_its_chebyshev_points() {
         "{}°",
         three.to_degrees()
     );
+
+    // The error curve: zero at the three points, the same largest error as
+    // `structural_error` over the range, and changing sign at each point.
+    let theta = |x: f64| to_angles(x).input_rad;
+    let phi_of_theta = |t: f64| {
+        let x = 1.0 + (t.to_degrees() - 30.0) / 60.0;
+        to_angles(x).output_rad
+    };
+    let curve = error_curve(&found, pts[0], [theta(1.0), theta(2.0)], phi_of_theta, 100);
+    assert_eq!(curve.len(), 101);
+    let largest = curve.iter().map(|e| e[1].abs()).fold(0.0, f64::max);
+    close("largest error", largest, three);
+    for x in &xs {
+        let at = error_curve(&found, pts[0], [theta(*x), theta(*x)], phi_of_theta, 1);
+        assert!(at[0][1].abs() < 1e-9, "{at:?}");
+    }
+    let sign_changes = curve
+        .windows(2)
+        .filter(|w| (w[0][1] < 0.0) != (w[1][1] < 0.0))
+        .count();
+    assert_eq!(sign_changes, 3, "one at each precision point");
 }
 
 #[test]

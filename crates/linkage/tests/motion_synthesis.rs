@@ -2,9 +2,15 @@
 //! coupler of a known four-bar, taken at three crank angles, gives back its fixed
 //! pivots when its own joints are chosen as the moving pivots; and any design moves
 //! its body through the three positions when its scene is solved by the general
-//! solver (1e-9).
+//! solver (1e-9). Four positions put the known fixed pivots on the centre-point
+//! curve with their moving pivots as circle points, and five give them back among
+//! the Burmester points; the designs move the body through every position (1e-9).
 
 use linkage::Vec2;
+use linkage::synthesis::burmester::{
+    Crank, burmester_points, centre_condition, centre_curve, circle_point, four_bar_of,
+    four_positions,
+};
 use linkage::synthesis::motion::{BodyPose, pole, three_positions};
 
 /// The known four-bar (A0 at the origin, B0 at (1, 0); crank 0.4, coupler 0.9,
@@ -132,4 +138,85 @@ fn a_translation_has_no_pole_and_bad_input_is_refused() {
     ];
     assert!(three_positions(nan, [[0.0, 0.1], [0.2, 0.0]]).is_err());
     assert!(three_positions([still, moved, line[2]], [[0.1, 0.1], [0.1, 0.1]]).is_err());
+}
+
+/// The known four-bar's moving pivots A and B in the body frame of `poses[0]`.
+fn body_pivots(theta0_deg: f64) -> [Vec2; 2] {
+    let pose = coupler_pose(theta0_deg.to_radians());
+    let (a, b) = joints(theta0_deg.to_radians());
+    let back = |p: Vec2| {
+        let (s, c) = pose.angle_rad.sin_cos();
+        let d = p - Vec2::new(pose.at[0], pose.at[1]);
+        Vec2::new(c * d.x + s * d.y, -s * d.x + c * d.y)
+    };
+    [back(a), back(b)]
+}
+
+#[test]
+fn four_positions_put_the_known_pivots_on_the_centre_point_curve() {
+    let poses: Vec<BodyPose> = [40.0f64, 65.0, 95.0, 130.0]
+        .iter()
+        .map(|t| coupler_pose(t.to_radians()))
+        .collect();
+    let typical = centre_condition(&poses, Vec2::new(0.3, -0.4)).abs();
+    assert!(typical > 0.0);
+    for (fixed, moving) in [Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0)]
+        .into_iter()
+        .zip(body_pivots(40.0))
+    {
+        assert!(centre_condition(&poses, fixed).abs() <= 1e-12 * typical);
+        let a = circle_point(&poses, fixed).expect("a circle point");
+        close("circle x", a.x, moving.x);
+        close("circle y", a.y, moving.y);
+    }
+    // Fixed pivots taken on the curve near the known ones: the four-bar moves the
+    // body through all four positions.
+    let design = four_positions(&poses, [[0.05, 0.03], [0.97, -0.04]]).expect("designs");
+    for f in design.fixed {
+        assert!(centre_condition(&poses, Vec2::from(f)).abs() <= 1e-9 * typical);
+    }
+    let checked = design.check().expect("moves");
+    assert!(
+        checked.miss_m < 1e-9 && checked.miss_rad < 1e-9,
+        "{} m, {} rad",
+        checked.miss_m,
+        checked.miss_rad
+    );
+    assert!(!centre_curve(&poses, 2.0, 100).is_empty());
+}
+
+#[test]
+fn five_positions_give_back_the_known_pivots_among_the_burmester_points() {
+    let poses: Vec<BodyPose> = [40.0f64, 65.0, 95.0, 130.0, 170.0]
+        .iter()
+        .map(|t| coupler_pose(t.to_radians()))
+        .collect();
+    let points = burmester_points(&poses).expect("five positions");
+    assert!(points.len() <= 4, "{points:?}");
+    let [ma, mb] = body_pivots(40.0);
+    let a = crank_at(&points, [0.0, 0.0], ma);
+    let b = crank_at(&points, [1.0, 0.0], mb);
+    let checked = four_bar_of(&poses, [a, b])
+        .expect("designs")
+        .check()
+        .expect("moves");
+    assert!(
+        checked.miss_m < 1e-9 && checked.miss_rad < 1e-9,
+        "{} m, {} rad",
+        checked.miss_m,
+        checked.miss_rad
+    );
+    assert!(burmester_points(&poses[..4]).is_err(), "five are needed");
+}
+
+/// The crank of `points` at centre `fixed` (1e-9), its circle point checked
+/// against `moving` (1e-9).
+fn crank_at(points: &[Crank], fixed: [f64; 2], moving: Vec2) -> Crank {
+    let c = *points
+        .iter()
+        .find(|c| (Vec2::from(c.centre) - Vec2::from(fixed)).norm() < 1e-9)
+        .unwrap_or_else(|| panic!("{fixed:?} not among {points:?}"));
+    close("circle x", c.circle[0], moving.x);
+    close("circle y", c.circle[1], moving.y);
+    c
 }

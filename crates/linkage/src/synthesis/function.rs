@@ -203,6 +203,30 @@ pub fn structural_error(linkage: &FunctionFourBar, points: &[PrecisionPoint]) ->
     })
 }
 
+/// The structural error of `linkage` over crank angles `range` (rad): the
+/// generated output on the branch of `first` less the desired output
+/// `desired(θ)`, wrapped into ±π, at `samples + 1` evenly spaced angles as
+/// `[θ, error]` pairs (rad); angles where the chain does not close are left out.
+pub fn error_curve(
+    linkage: &FunctionFourBar,
+    first: PrecisionPoint,
+    range: [f64; 2],
+    desired: impl Fn(f64) -> f64,
+    samples: usize,
+) -> Vec<[f64; 2]> {
+    let left = linkage.c_left_of_bd(first.input_rad, first.output_rad);
+    let tau = std::f64::consts::TAU;
+    (0..=samples)
+        .filter_map(|k| {
+            let theta = range[0] + (range[1] - range[0]) * k as f64 / samples.max(1) as f64;
+            let phi = linkage.output_at(theta, left)?;
+            let e = (phi - desired(theta) + std::f64::consts::PI).rem_euclid(tau)
+                - std::f64::consts::PI;
+            Some([theta, e])
+        })
+        .collect()
+}
+
 /// |x − y| modulo a turn, rad.
 fn angle_between(x: f64, y: f64) -> f64 {
     let tau = std::f64::consts::TAU;

@@ -8,6 +8,7 @@
 //! of A on that circle is the free choice: by default the one with the best minimum
 //! transmission angle.
 
+pub mod burmester;
 pub mod function;
 pub mod motion;
 pub mod path;

@@ -77,17 +77,27 @@ pub struct MotionCheck {
     pub miss_rad: f64,
 }
 
-/// A four-bar whose coupler carries the body through three positions.
+/// A four-bar whose coupler carries the body through three or more positions.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct MotionFourBar {
-    /// The three positions.
-    pub poses: [BodyPose; 3],
+    /// The positions (three; four or five from [`crate::synthesis::burmester`]).
+    pub poses: Vec<BodyPose>,
     /// The moving pivots, in body coordinates, m.
     pub moving: [[f64; 2]; 2],
     /// Their fixed pivots (the centre points), m.
     pub fixed: [[f64; 2]; 2],
-    /// The poles P12, P13, P23 (`None`: a translation), m.
-    pub poles: [Option<[f64; 2]>; 3],
+    /// The poles of each pair of positions, P12, P13, ..., P23, ... in that order
+    /// (`None`: a translation), m.
+    pub poles: Vec<Option<[f64; 2]>>,
+}
+
+/// The poles of every pair of `poses`: P12, P13, ..., P23, ... (`None`: a translation).
+pub fn poles_of(poses: &[BodyPose]) -> Vec<Option<[f64; 2]>> {
+    let n = poses.len();
+    (0..n)
+        .flat_map(|a| (a + 1..n).map(move |b| (a, b)))
+        .map(|(a, b)| pole(&poses[a], &poses[b]).map(|p| [p.x, p.y]))
+        .collect()
 }
 
 /// The four-bar through `poses` with moving pivots `moving` (body coordinates, m).
@@ -133,12 +143,11 @@ pub fn three_positions(poses: [BodyPose; 3], moving: [[f64; 2]; 2]) -> Result<Mo
         }
         fixed[k] = [centre.x, centre.y];
     }
-    let pole_of = |a: usize, b: usize| pole(&poses[a], &poses[b]).map(|p| [p.x, p.y]);
     Ok(MotionFourBar {
-        poses,
+        poses: poses.to_vec(),
         moving,
         fixed,
-        poles: [pole_of(0, 1), pole_of(0, 2), pole_of(1, 2)],
+        poles: poles_of(&poses),
     })
 }
 
@@ -153,7 +162,12 @@ impl MotionFourBar {
             at,
             ground,
         };
-        let mut s = Sketch::new("Three-position motion generator");
+        let title = match self.poses.len() {
+            3 => "Three-position motion generator",
+            4 => "Four-position motion generator",
+            _ => "Five-position motion generator",
+        };
+        let mut s = Sketch::new(title);
         s.length_unit = crate::scene::LengthUnit::Metre;
         s.points = vec![
             point("A0", Vec2::new(self.fixed[0][0], self.fixed[0][1]), true),
