@@ -14,6 +14,8 @@ pub mod path_job;
 pub mod render;
 pub mod session;
 pub mod synthesis;
+pub mod synthesis_function;
+pub mod synthesis_motion;
 pub mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;

@@ -193,6 +193,7 @@ pub fn design_of(d: &PathDesign) -> Design {
             ),
         ],
         scene: d.scene(),
+        figure: crate::synthesis::Figure::None,
     }
 }
 

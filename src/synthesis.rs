@@ -3,8 +3,6 @@
 //! and a scene. The solver does the synthesis (`linkage::synthesis`).
 
 use linkage::SceneFile;
-use linkage::synthesis::function::{PrecisionPoint, freudenstein, structural_error};
-use linkage::synthesis::motion::{BodyPose, three_positions};
 use linkage::synthesis::{CrankRocker, DieCutterSpec, crank_rocker, die_cutter, four_bar_scene};
 
 /// Which design.
@@ -16,7 +14,7 @@ pub enum SynthKind {
     DieCutter,
     /// A function generator through precision points.
     Function,
-    /// A four-bar through three positions of a body.
+    /// A four-bar through three, four or five positions of a body.
     Motion,
     /// A four-bar whose coupler point passes through targets (a search).
     Path,
@@ -38,7 +36,7 @@ impl SynthKind {
             SynthKind::CrankRocker => "crank-rocker",
             SynthKind::DieCutter => "die cutter",
             SynthKind::Function => "function",
-            SynthKind::Motion => "three positions",
+            SynthKind::Motion => "positions",
             SynthKind::Path => "path",
         }
     }
@@ -57,10 +55,12 @@ pub struct SynthInputs {
     pub function_points: String,
     /// Function: ground AD, mm.
     pub function_ground_mm: f64,
-    /// Motion: the body's three positions, `x_mm, y_mm, angle_deg` per line.
+    /// Function: the function to generate (else the typed points).
+    pub function_spec: Option<crate::synthesis_function::FunctionSpec>,
+    /// Motion: the body's three to five positions, `x_mm, y_mm, angle_deg` per line.
     pub poses: String,
-    /// Motion: the moving pivots in the body's frame, mm: x1, y1, x2, y2.
-    pub moving_mm: [f64; 4],
+    /// Motion: what fixes the four-bar (moving pivots, fixed pivots, Burmester pair).
+    pub motion: crate::synthesis_motion::MotionChoice,
     /// Path: the targets and constraints of the search.
     pub path: crate::path_inputs::PathInputs,
 }
@@ -75,8 +75,9 @@ impl Default for SynthInputs {
             // 30°, φ over 90° from 240°.
             function_points: "34.0192, 248.4189\n60.0, 292.6466\n85.9808, 325.5766\n".into(),
             function_ground_mm: 100.0,
+            function_spec: None,
             poses: "0, 0, 0\n200, 100, 20\n350, 300, 45\n".into(),
-            moving_mm: [-100.0, -150.0, 150.0, -100.0],
+            motion: crate::synthesis_motion::MotionChoice::default(),
             path: crate::path_inputs::PathInputs::default(),
         }
     }
@@ -87,8 +88,21 @@ impl Default for SynthInputs {
 pub struct Design {
     /// What the design is, row by row.
     pub table: Vec<(String, String)>,
+    /// What to draw beside the table.
+    pub figure: Figure,
     /// The scene it opens as.
     pub scene: SceneFile,
+}
+
+/// A figure of a design.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Figure {
+    /// None.
+    None,
+    /// A function generator's structural error: `[crank deg, error deg]`.
+    ErrorCurve(Vec<[f64; 2]>),
+    /// A motion generator's construction.
+    Construction(crate::synthesis_motion::Construction),
 }
 
 /// The design of `inputs`, or why there is none (in words: it is shown at once).
@@ -100,22 +114,28 @@ pub fn design(inputs: &SynthInputs) -> Result<Design, String> {
     match inputs.kind {
         SynthKind::CrankRocker => rocker(inputs.rocker),
         SynthKind::DieCutter => die(inputs.die),
-        SynthKind::Function => function(&inputs.function_points, inputs.function_ground_mm),
-        SynthKind::Motion => motion(&inputs.poses, inputs.moving_mm),
+        SynthKind::Function => match &inputs.function_spec {
+            Some(spec) => crate::synthesis_function::from_spec(spec, inputs.function_ground_mm),
+            None => crate::synthesis_function::from_points(
+                &inputs.function_points,
+                inputs.function_ground_mm,
+            ),
+        },
+        SynthKind::Motion => crate::synthesis_motion::motion(&inputs.poses, &inputs.motion),
         // Not closed form: the window runs its search (`crate::path_job`).
         SynthKind::Path => Err("a path design comes from its search: press Search".into()),
     }
 }
 
-fn mm(m: f64) -> String {
+pub(crate) fn mm(m: f64) -> String {
     format!("{:.3} mm", m * 1e3)
 }
 
-fn deg(rad: f64) -> String {
+pub(crate) fn deg(rad: f64) -> String {
     format!("{:.3}°", rad.to_degrees())
 }
 
-fn row(what: &str, value: String) -> (String, String) {
+pub(crate) fn row(what: &str, value: String) -> (String, String) {
     (what.to_owned(), value)
 }
 
@@ -131,6 +151,7 @@ fn rocker([cd_mm, swing_deg, k]: [f64; 3]) -> Result<Design, String> {
     Ok(Design {
         table: crank_rocker_rows(&d, "rocker CD", "least transmission angle"),
         scene: four_bar_scene(&d, k),
+        figure: Figure::None,
     })
 }
 
@@ -158,11 +179,12 @@ fn die([h_mm, k, l_mm, rpm]: [f64; 4]) -> Result<Design, String> {
     Ok(Design {
         table: crank_rocker_rows(&d, "rocker CD = CE", "least transmission angle (ABCD)"),
         scene,
+        figure: Figure::None,
     })
 }
 
 /// Rows of `width` numbers, one per line (blank lines skipped).
-fn numbers(text: &str, width: usize) -> Result<Vec<Vec<f64>>, String> {
+pub(crate) fn numbers(text: &str, width: usize) -> Result<Vec<Vec<f64>>, String> {
     text.lines()
         .enumerate()
         .filter(|(_, l)| !l.trim().is_empty())
@@ -173,72 +195,4 @@ fn numbers(text: &str, width: usize) -> Result<Vec<Vec<f64>>, String> {
                 .ok_or_else(|| format!("line {}: {:?} is not {width} numbers", i + 1, line.trim()))
         })
         .collect()
-}
-
-fn function(points: &str, ground_mm: f64) -> Result<Design, String> {
-    let points: Vec<PrecisionPoint> = numbers(points, 2)?
-        .into_iter()
-        .map(|v| PrecisionPoint {
-            input_rad: v[0].to_radians(),
-            output_rad: v[1].to_radians(),
-        })
-        .collect();
-    let d = freudenstein(&points, ground_mm * 1e-3).map_err(|e| e.to_string())?;
-    let [k1, k2, k3] = d.k;
-    let [a, b, c, g] = d.lengths;
-    let error = structural_error(&d, &points)
-        .map_or_else(|| "the chain does not close at a point".into(), deg);
-    let method = if points.len() == 3 {
-        "exact"
-    } else {
-        "least squares"
-    };
-    Ok(Design {
-        table: vec![
-            row("method", format!("{method}, {} points", points.len())),
-            row("K1, K2, K3", format!("{k1:.6}, {k2:.6}, {k3:.6}")),
-            row("crank AB", mm(a.abs())),
-            row("coupler BC", mm(b)),
-            row("rocker CD", mm(c.abs())),
-            row("ground AD", mm(g)),
-            row("largest error at the points", error),
-        ],
-        scene: d.scene(points[0]),
-    })
-}
-
-fn motion(poses: &str, moving_mm: [f64; 4]) -> Result<Design, String> {
-    let rows = numbers(poses, 3)?;
-    let poses: [BodyPose; 3] = rows
-        .iter()
-        .map(|v| BodyPose {
-            at: [v[0] * 1e-3, v[1] * 1e-3],
-            angle_rad: v[2].to_radians(),
-        })
-        .collect::<Vec<_>>()
-        .try_into()
-        .map_err(|v: Vec<BodyPose>| format!("{} positions: three are needed", v.len()))?;
-    let [x1, y1, x2, y2] = moving_mm.map(|v| v * 1e-3);
-    let d = three_positions(poses, [[x1, y1], [x2, y2]]).map_err(|e| e.to_string())?;
-    let checked = d.check().map_err(|e| e.to_string())?;
-    let point = |p: [f64; 2]| format!("({:.3}, {:.3}) mm", p[0] * 1e3, p[1] * 1e3);
-    let mut table = vec![
-        row("fixed pivot A0", point(d.fixed[0])),
-        row("fixed pivot B0", point(d.fixed[1])),
-    ];
-    for (name, p) in ["pole P12", "pole P13", "pole P23"].iter().zip(d.poles) {
-        table.push(row(name, p.map_or_else(|| "at infinity".into(), point)));
-    }
-    table.push(row(
-        "miss when moved there",
-        format!(
-            "{:.1e} mm, {:.1e}°",
-            checked.miss_m * 1e3,
-            checked.miss_rad.to_degrees()
-        ),
-    ));
-    Ok(Design {
-        table,
-        scene: checked.scene,
-    })
 }

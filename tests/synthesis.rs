@@ -97,7 +97,7 @@ fn each_design_opens_as_a_scene_that_meets_its_requirements() {
     }
 
     // Three positions: the coupler point P is at the first position as it opens.
-    let mut k = design_and_open(&mut h, "three positions");
+    let mut k = design_and_open(&mut h, "positions");
     let p = k.mechanism().point_index("P").expect("P");
     let at = k.solve(0.0).expect("assembles").points[p].position;
     assert!(at.norm() < 1e-12, "{at:?}");
@@ -122,4 +122,72 @@ fn each_design_opens_as_a_scene_that_meets_its_requirements() {
         "the refusal names the stroke"
     );
     assert!(h.query_by_label("Open as scene").is_none());
+}
+
+/// Five positions of a crank-rocker's coupler (A0 at the origin, B0 at (400, 50)
+/// mm): the Burmester points hold the known fixed pivots, and the pair of them
+/// chosen moves the body through all five (the design's own check, 1e-9 mm); the
+/// construction is drawn. A function generator from y = log10 x shows its
+/// structural error over the range.
+#[test]
+fn five_positions_and_a_function_show_their_constructions() {
+    let mut h = common::app_harness();
+    h.run();
+    h.run();
+    click(&mut h, "Synthesis…");
+    click(&mut h, "positions");
+    let five = "112.763114, 41.042417, 55.592249\n41.042417, 112.763114, 39.007115\n\
+                -60.000000, 103.923048, 33.671856\n-118.176930, 20.837781, 37.449441\n\
+                -77.134513, -91.925333, 53.256293\n";
+    let inputs = &mut h.state_mut().state.synthesis.as_mut().expect("open").inputs;
+    inputs.poses = five.into();
+    // The poses are rounded to 1e-6 mm: the known pivots are found to about that.
+    let design = linkage_lab::synthesis::design(inputs).expect("designs");
+    let linkage_lab::synthesis::Figure::Construction(c) = &design.figure else {
+        panic!("no construction");
+    };
+    let index = |x: f64, y: f64| {
+        c.burmester
+            .iter()
+            .position(|b| (b[0] - x).hypot(b[1] - y) < 1e-3)
+            .unwrap_or_else(|| panic!("({x}, {y}) not among {:?}", c.burmester))
+    };
+    let pair = [index(0.0, 0.0) + 1, index(400.0, 50.0) + 1];
+    h.state_mut()
+        .state
+        .synthesis
+        .as_mut()
+        .expect("open")
+        .inputs
+        .motion
+        .pair = pair;
+    // A frame to lay the window out for five positions before clicking in it.
+    h.run();
+    click(&mut h, "Design");
+    let view = h.state().state.synthesis.as_ref().expect("open");
+    let Some(Ok(design)) = &view.result else {
+        panic!("{:?}", view.result);
+    };
+    let miss = &design.table.last().expect("rows").1;
+    let mm: f64 = miss
+        .split(' ')
+        .next()
+        .expect("number")
+        .parse()
+        .expect("a number");
+    assert!(mm < 1e-6, "{miss}");
+    h.snapshot("synthesis_five_positions");
+
+    click(&mut h, "function");
+    click(&mut h, "a function");
+    click(&mut h, "Design");
+    let view = h.state().state.synthesis.as_ref().expect("open");
+    let Some(Ok(design)) = &view.result else {
+        panic!("{:?}", view.result);
+    };
+    assert!(matches!(
+        design.figure,
+        linkage_lab::synthesis::Figure::ErrorCurve(_)
+    ));
+    h.snapshot("synthesis_function_error");
 }

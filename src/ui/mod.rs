@@ -17,6 +17,7 @@ pub mod polygons;
 pub mod report;
 pub mod scene_picker;
 pub mod synthesis;
+pub mod synthesis_figure;
 pub mod synthesis_path;
 pub mod typeset;
 pub mod viewport;

@@ -57,37 +57,17 @@ pub fn window(ctx: &egui::Context, st: &mut AppState) {
                 }
             });
             ui.separator();
-            if view.inputs.kind == SynthKind::Path {
-                // Canvas, targets, constraints, progress and a design table: taller
-                // than a laptop's window, so it scrolls.
-                let room = ui.ctx().content_rect().height() - 160.0;
-                chosen = egui::ScrollArea::vertical()
-                    .max_height(room)
-                    .min_scrolled_height(room.min(640.0))
-                    .show(ui, |ui| {
-                        ui.set_min_width(440.0);
-                        crate::ui::synthesis_path::show(
-                            ui,
-                            &mut st.controls,
-                            &mut view.inputs.path,
-                            &mut view.path,
-                        )
-                    })
-                    .inner
-                    .map(|a| match a {
-                        PathAction::Open(s) => Chosen::Open(s),
-                        PathAction::Replace(s) => Chosen::Replace(s),
-                    });
-                return;
-            }
-            inputs(ui, &mut view.inputs);
-            let design = ui.button("Design");
-            st.controls
-                .note(ui, ControlKind::FileButton, "Design", &design);
-            if design.clicked() {
-                view.result = Some(crate::synthesis::design(&view.inputs));
-            }
-            chosen = result(ui, st, &view);
+            // Inputs, a figure and a design table: taller than a laptop's window
+            // for some designs, so the window scrolls.
+            let room = ui.ctx().content_rect().height() - 160.0;
+            chosen = egui::ScrollArea::vertical()
+                .max_height(room)
+                .min_scrolled_height(room.min(640.0))
+                .show(ui, |ui| {
+                    ui.set_min_width(460.0);
+                    tab(ui, st, &mut view)
+                })
+                .inner;
         });
     if let Some(Chosen::Replace(scene)) = chosen {
         st.edit(SceneEdit::Replace(Box::new(scene)));
@@ -105,15 +85,41 @@ pub fn window(ctx: &egui::Context, st: &mut AppState) {
     }
 }
 
+/// The chosen tab's inputs, design and result; returns what to do with a design.
+fn tab(ui: &mut egui::Ui, st: &mut AppState, view: &mut SynthesisView) -> Option<Chosen> {
+    if view.inputs.kind == SynthKind::Path {
+        return crate::ui::synthesis_path::show(
+            ui,
+            &mut st.controls,
+            &mut view.inputs.path,
+            &mut view.path,
+        )
+        .map(|a| match a {
+            PathAction::Open(s) => Chosen::Open(s),
+            PathAction::Replace(s) => Chosen::Replace(s),
+        });
+    }
+    inputs(ui, &mut view.inputs);
+    let design = ui.button("Design");
+    st.controls
+        .note(ui, ControlKind::FileButton, "Design", &design);
+    if design.clicked() {
+        view.result = Some(crate::synthesis::design(&view.inputs));
+    }
+    result(ui, st, view)
+}
+
+/// A number field with its label (which names it for screen readers and tests).
+pub(crate) fn number(ui: &mut egui::Ui, v: &mut f64, label: &str, speed: f64) {
+    ui.horizontal(|ui| {
+        let name = ui.label(label);
+        ui.add(egui::DragValue::new(v).speed(speed))
+            .labelled_by(name.id);
+    });
+}
+
 /// The inputs of the design chosen.
 fn inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {
-    let number = |ui: &mut egui::Ui, v: &mut f64, label: &str, speed: f64| {
-        ui.horizontal(|ui| {
-            let name = ui.label(label);
-            ui.add(egui::DragValue::new(v).speed(speed))
-                .labelled_by(name.id);
-        });
-    };
     match view.kind {
         SynthKind::CrankRocker => {
             let [cd, swing, k] = &mut view.rocker;
@@ -129,31 +135,17 @@ fn inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {
             number(ui, rpm, "crank speed (rpm)", 1.0);
         }
         SynthKind::Function => {
-            text_area(
-                ui,
-                &mut view.function_points,
-                "precision points: input deg, output deg",
-            );
+            crate::ui::synthesis_figure::function_inputs(ui, view);
             number(ui, &mut view.function_ground_mm, "ground AD (mm)", 1.0);
         }
         // Shown by `synthesis_path`.
         SynthKind::Path => {}
-        SynthKind::Motion => {
-            text_area(ui, &mut view.poses, "positions: x mm, y mm, angle deg");
-            ui.label("moving pivots in the body's frame (mm)");
-            ui.horizontal(|ui| {
-                for (v, axis) in view.moving_mm.iter_mut().zip(["x1", "y1", "x2", "y2"]) {
-                    let name = ui.label(axis);
-                    ui.add(egui::DragValue::new(v).speed(1.0))
-                        .labelled_by(name.id);
-                }
-            });
-        }
+        SynthKind::Motion => crate::ui::synthesis_figure::motion_inputs(ui, view),
     }
 }
 
 /// A labelled text field for rows of numbers (typed or pasted CSV).
-fn text_area(ui: &mut egui::Ui, text: &mut String, label: &str) {
+pub(crate) fn text_area(ui: &mut egui::Ui, text: &mut String, label: &str) {
     ui.label(label);
     let r = ui.add(
         egui::TextEdit::multiline(text)
@@ -174,6 +166,7 @@ fn result(ui: &mut egui::Ui, st: &mut AppState, view: &SynthesisView) -> Option<
             None
         }
         Some(Ok(design)) => {
+            crate::ui::synthesis_figure::figure(ui, &design.figure);
             egui::Grid::new("design table")
                 .striped(true)
                 .show(ui, |ui| {
