@@ -12,9 +12,17 @@ use linkage_lab::LinkageApp;
 
 mod common;
 
-fn click(h: &mut Harness<'static, LinkageApp>, label: &str) {
-    h.get_by_label(label).click();
-    h.run();
+use common::click_label as click;
+
+/// The search's progress now.
+fn progress(h: &Harness<'static, LinkageApp>) -> linkage::synthesis::path::Progress {
+    tab(h)
+        .path
+        .job
+        .as_ref()
+        .expect("a search")
+        .snapshot()
+        .progress
 }
 
 fn tab<'h>(h: &'h Harness<'static, LinkageApp>) -> &'h linkage_lab::ui::synthesis::SynthesisView {
@@ -63,8 +71,7 @@ fn scene_miss(
 #[test]
 fn targets_clicked_on_the_canvas_are_searched_to_a_design_that_opens() {
     let mut h = common::stateful_harness();
-    click(&mut h, "Synthesis…");
-    click(&mut h, "path");
+    common::synthesis_tab(&mut h, "path");
     click(&mut h, "Clear targets");
     assert!(tab(&h).inputs.path.targets.is_empty());
     // The canvas lies between the "timed" checkbox and the targets' label.
@@ -148,8 +155,7 @@ fn targets_clicked_on_the_canvas_are_searched_to_a_design_that_opens() {
 #[test]
 fn a_search_stops_and_continues_where_it_was() {
     let mut h = common::stateful_harness();
-    click(&mut h, "Synthesis…");
-    click(&mut h, "path");
+    common::synthesis_tab(&mut h, "path");
     // The default targets: eight points rounded to 0.1 mm, which no four-bar meets
     // to the tolerance asked here, so the search is still running when stopped.
     h.state_mut()
@@ -167,23 +173,11 @@ fn a_search_stops_and_continues_where_it_was() {
     }
     h.get_by_label("Stop").click();
     h.step();
-    let stopped = tab(&h)
-        .path
-        .job
-        .as_ref()
-        .expect("a search")
-        .snapshot()
-        .progress;
+    let stopped = progress(&h);
     assert!(!tab(&h).path.job.as_ref().expect("a search").is_running());
     assert!(stopped.evaluations > 0 && !stopped.done, "{stopped:?}");
     h.step();
-    let still = tab(&h)
-        .path
-        .job
-        .as_ref()
-        .expect("a search")
-        .snapshot()
-        .progress;
+    let still = progress(&h);
     assert_eq!(
         still.evaluations, stopped.evaluations,
         "nothing runs while stopped"
@@ -193,13 +187,7 @@ fn a_search_stops_and_continues_where_it_was() {
         h.step();
         std::thread::sleep(std::time::Duration::from_millis(20));
     }
-    let later = tab(&h)
-        .path
-        .job
-        .as_ref()
-        .expect("a search")
-        .snapshot()
-        .progress;
+    let later = progress(&h);
     assert!(later.evaluations > stopped.evaluations, "{later:?}");
     h.get_by_label("Stop").click();
     h.step();
@@ -212,8 +200,7 @@ fn the_path_tab_after_a_search_looks_right() {
     let mut h = common::app_harness();
     h.run();
     h.run();
-    click(&mut h, "Synthesis…");
-    click(&mut h, "path");
+    common::synthesis_tab(&mut h, "path");
     h.get_by_label("Search").click();
     let designs = until_done(&mut h);
     assert!(!designs.is_empty());

@@ -10,10 +10,7 @@ use linkage_lab::LinkageApp;
 
 mod common;
 
-fn click(h: &mut Harness<'static, LinkageApp>, label: &str) {
-    h.get_by_label(label).click();
-    h.run();
-}
+use common::click_label as click;
 
 /// Designs the kind on tab `tab` with its default inputs and opens it.
 fn design_and_open(h: &mut Harness<'static, LinkageApp>, tab: &str) -> Kinematics {
@@ -134,8 +131,7 @@ fn five_positions_and_a_function_show_their_constructions() {
     let mut h = common::app_harness();
     h.run();
     h.run();
-    click(&mut h, "Synthesis…");
-    click(&mut h, "positions");
+    common::synthesis_tab(&mut h, "positions");
     let five = "112.763114, 41.042417, 55.592249\n41.042417, 112.763114, 39.007115\n\
                 -60.000000, 103.923048, 33.671856\n-118.176930, 20.837781, 37.449441\n\
                 -77.134513, -91.925333, 53.256293\n";

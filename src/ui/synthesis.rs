@@ -12,8 +12,8 @@ use crate::app::AppState;
 use crate::session::SceneEdit;
 use crate::session::{SceneSource, Session};
 use crate::synthesis::{Design, SynthInputs, SynthKind};
-use crate::ui::control_map::ControlKind;
-use crate::ui::synthesis_path::{PathAction, PathTab};
+use crate::ui::control_map::{ControlKind, ControlMap};
+use crate::ui::synthesis_path::PathTab;
 
 /// The window's inputs and its last design.
 #[derive(Default)]
@@ -27,7 +27,7 @@ pub struct SynthesisView {
 }
 
 /// What to do with a design.
-enum Chosen {
+pub enum Chosen {
     /// Open it as a new scene.
     Open(SceneFile),
     /// Put it in place of the current scene (undo-able).
@@ -93,11 +93,7 @@ fn tab(ui: &mut egui::Ui, st: &mut AppState, view: &mut SynthesisView) -> Option
             &mut st.controls,
             &mut view.inputs.path,
             &mut view.path,
-        )
-        .map(|a| match a {
-            PathAction::Open(s) => Chosen::Open(s),
-            PathAction::Replace(s) => Chosen::Replace(s),
-        });
+        );
     }
     inputs(ui, &mut view.inputs);
     let design = ui.button("Design");
@@ -165,33 +161,41 @@ fn result(ui: &mut egui::Ui, st: &mut AppState, view: &SynthesisView) -> Option<
             ui.colored_label(ui.visuals().error_fg_color, why);
             None
         }
-        Some(Ok(design)) => {
-            crate::ui::synthesis_figure::figure(ui, &design.figure);
-            egui::Grid::new("design table")
-                .striped(true)
-                .show(ui, |ui| {
-                    for (what, value) in &design.table {
-                        ui.label(what);
-                        ui.label(value);
-                        ui.end_row();
-                    }
-                });
-            ui.horizontal(|ui| {
-                let open = ui.button("Open as scene");
-                st.controls
-                    .note(ui, ControlKind::FileButton, "Open as scene", &open);
-                let replace = ui.button("Replace this scene");
-                st.controls
-                    .note(ui, ControlKind::FileButton, "Replace this scene", &replace);
-                if open.clicked() {
-                    Some(Chosen::Open(design.scene.clone()))
-                } else {
-                    replace
-                        .clicked()
-                        .then(|| Chosen::Replace(design.scene.clone()))
-                }
-            })
-            .inner
-        }
+        Some(Ok(design)) => design_view(ui, &mut st.controls, design),
     }
+}
+
+/// A design: its figure, the buttons that open it or put it in place, and its
+/// table; returns what was asked.
+pub fn design_view(
+    ui: &mut egui::Ui,
+    controls: &mut ControlMap,
+    design: &Design,
+) -> Option<Chosen> {
+    crate::ui::synthesis_figure::figure(ui, &design.figure);
+    let chosen = ui
+        .horizontal(|ui| {
+            let open = ui.button("Open as scene");
+            controls.note(ui, ControlKind::FileButton, "Open as scene", &open);
+            let replace = ui.button("Replace this scene");
+            controls.note(ui, ControlKind::FileButton, "Replace this scene", &replace);
+            if open.clicked() {
+                Some(Chosen::Open(design.scene.clone()))
+            } else {
+                replace
+                    .clicked()
+                    .then(|| Chosen::Replace(design.scene.clone()))
+            }
+        })
+        .inner;
+    egui::Grid::new("design table")
+        .striped(true)
+        .show(ui, |ui| {
+            for (what, value) in &design.table {
+                ui.label(what);
+                ui.label(value);
+                ui.end_row();
+            }
+        });
+    chosen
 }

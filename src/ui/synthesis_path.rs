@@ -2,16 +2,16 @@
 //! dragged there, or typed and pasted as CSV; the search runs off the frame with a
 //! progress bar, the best curve so far drawn live, stop and continue; the designs
 //! found are listed by their largest miss, and the one chosen opens as a scene or
-//! replaces the current one (undo-able).
+//! replaces the current one (undo-able), as the other tabs' designs do.
 
 use eframe::egui;
 use egui_plot::{Line, Plot, PlotPoint, PlotPoints, Points, Text};
-use linkage::SceneFile;
 use linkage::synthesis::path::PathDesign;
 
 use crate::path_inputs::{PathInputs, design_of};
 use crate::path_job::PathJob;
 use crate::ui::control_map::{ControlKind, ControlMap};
+use crate::ui::synthesis::{Chosen, design_view};
 
 /// Milliseconds of search per frame in the browser.
 const SLICE_MS: f64 = 6.0;
@@ -35,21 +35,13 @@ pub struct PathTab {
     dragging: Option<usize>,
 }
 
-/// What the user asked to do with a design.
-pub enum PathAction {
-    /// Open it as a new scene.
-    Open(SceneFile),
-    /// Put it in place of the current scene (undo-able).
-    Replace(SceneFile),
-}
-
 /// The tab; returns what to do with the chosen design, if asked.
 pub fn show(
     ui: &mut egui::Ui,
     controls: &mut ControlMap,
     inputs: &mut PathInputs,
     tab: &mut PathTab,
-) -> Option<PathAction> {
+) -> Option<Chosen> {
     if let Some(job) = tab.job.as_mut().filter(|j| j.is_running()) {
         job.poll(SLICE_MS);
         ui.ctx().request_repaint();
@@ -290,7 +282,7 @@ fn search_buttons(
     }
 }
 
-fn designs(ui: &mut egui::Ui, controls: &mut ControlMap, tab: &mut PathTab) -> Option<PathAction> {
+fn designs(ui: &mut egui::Ui, controls: &mut ControlMap, tab: &mut PathTab) -> Option<Chosen> {
     let found = tab
         .job
         .as_ref()
@@ -319,26 +311,5 @@ fn designs(ui: &mut egui::Ui, controls: &mut ControlMap, tab: &mut PathTab) -> O
         }
     }
     let design = design_of(found.get(tab.chosen).or(found.first())?);
-    let mut action = None;
-    ui.horizontal(|ui| {
-        let open = ui.button("Open as scene");
-        controls.note(ui, ControlKind::FileButton, "Open as scene", &open);
-        let replace = ui.button("Replace this scene");
-        controls.note(ui, ControlKind::FileButton, "Replace this scene", &replace);
-        if open.clicked() {
-            action = Some(PathAction::Open(design.scene.clone()));
-        } else if replace.clicked() {
-            action = Some(PathAction::Replace(design.scene.clone()));
-        }
-    });
-    egui::Grid::new("path design table")
-        .striped(true)
-        .show(ui, |ui| {
-            for (what, value) in &design.table {
-                ui.label(what);
-                ui.label(value);
-                ui.end_row();
-            }
-        });
-    action
+    design_view(ui, controls, &design)
 }

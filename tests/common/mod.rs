@@ -61,3 +61,16 @@ pub fn click(h: &mut Harness<'static, LinkageApp>, at: egui::Pos2) {
     }
     h.run();
 }
+
+/// A click on the widget named `label`, then frames until the app settles.
+pub fn click_label(h: &mut Harness<'static, LinkageApp>, label: &str) {
+    use egui_kittest::kittest::Queryable as _;
+    h.get_by_label(label).click();
+    h.run();
+}
+
+/// The synthesis window opened on its tab `tab`.
+pub fn synthesis_tab(h: &mut Harness<'static, LinkageApp>, tab: &str) {
+    click_label(h, "Synthesis…");
+    click_label(h, tab);
+}

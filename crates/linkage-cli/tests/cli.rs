@@ -200,8 +200,7 @@ fn report_has_the_contract_keys() {
 
 #[test]
 fn synth_commands_design_and_write_scenes() {
-    let dir = std::env::temp_dir().join(format!("linkage-cli-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("tmp");
+    let dir = scratch("linkage-cli-test");
     let out_scene = dir.join("cr.ron");
     let (ok, out, err) = linkage(&[
         "synth",
@@ -459,8 +458,7 @@ fn synth_function_designs_a_generator_through_its_points() {
         let (ux, uy) = (dx / dist, dy / dist);
         (bx + along * ux - up * uy, by + along * uy + up * ux)
     };
-    let dir = std::env::temp_dir().join(format!("linkage-cli-fn-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("tmp");
+    let dir = scratch("linkage-cli-fn");
     let csv = dir.join("points.csv");
     let mut rows = String::from("input_deg,output_deg\n");
     for t in [40.0f64, 55.0, 70.0] {
@@ -512,8 +510,7 @@ fn synth_function_designs_a_generator_through_its_points() {
 /// body's reference point P through them (`linkage at` at the crank angles it gives).
 #[test]
 fn synth_motion_designs_a_four_bar_through_three_positions() {
-    let dir = std::env::temp_dir().join(format!("linkage-cli-motion-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("tmp");
+    let dir = scratch("linkage-cli-motion");
     let csv = dir.join("poses.csv");
     let poses = [(0.0, 0.0, 0.0), (0.2, 0.1, 20.0), (0.35, 0.3, 45.0)];
     let rows: String = poses
@@ -568,6 +565,13 @@ fn synth_motion_designs_a_four_bar_through_three_positions() {
     ]);
     assert!(!ok && err.contains("one place"), "{err}");
     let _ = std::fs::remove_dir_all(dir);
+}
+
+/// An empty folder of this test run named after `name`.
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("{name}-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a scratch folder");
+    dir
 }
 
 /// The coupler point of a crank-rocker (A at the origin, D (4, 0.5); crank 1.2,
@@ -634,8 +638,7 @@ fn write_targets(
 /// same seed.
 #[test]
 fn synth_path_timed_designs_a_four_bar_that_sweeps_through_the_targets() {
-    let dir = std::env::temp_dir().join(format!("linkage-cli-path-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("tmp");
+    let dir = scratch("linkage-cli-path");
     let degrees: Vec<f64> = (0..10).map(|k| 10.0 + 36.0 * f64::from(k)).collect();
     let csv = write_targets(&dir, "timed.csv", &degrees, true);
     let scene = dir.join("path.ron");
@@ -680,8 +683,7 @@ fn synth_path_timed_designs_a_four_bar_that_sweeps_through_the_targets() {
 /// passes within 1e-6 of their size of every one.
 #[test]
 fn synth_path_untimed_curve_passes_through_the_targets() {
-    let dir = std::env::temp_dir().join(format!("linkage-cli-path-u-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("tmp");
+    let dir = scratch("linkage-cli-path-u");
     let degrees: Vec<f64> = (0..9).map(|k| 10.0 + 33.0 * f64::from(k)).collect();
     let csv = write_targets(&dir, "untimed.csv", &degrees, false);
     let scene = dir.join("path.ron");
@@ -725,8 +727,7 @@ fn synth_path_untimed_curve_passes_through_the_targets() {
 /// Bad input to `synth path` is refused with its cause and the valid range.
 #[test]
 fn synth_path_refuses_bad_targets() {
-    let dir = std::env::temp_dir().join(format!("linkage-cli-path-bad-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("tmp");
+    let dir = scratch("linkage-cli-path-bad");
     let two = dir.join("two.csv");
     std::fs::write(&two, "0,0\n1,1\n").expect("csv");
     let (ok, _, err) = linkage(&["synth", "path", "--points", two.to_str().expect("path")]);
@@ -772,8 +773,7 @@ fn known_coupler_pose(deg: f64) -> (f64, f64, f64) {
 /// general solver moves each design through every position (1e-9).
 #[test]
 fn synth_motion_through_four_and_five_positions() {
-    let dir = std::env::temp_dir().join(format!("linkage-cli-burmester-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).expect("tmp");
+    let dir = scratch("linkage-cli-burmester");
     let write = |name: &str, degrees: &[f64]| {
         let rows: String = degrees
             .iter()

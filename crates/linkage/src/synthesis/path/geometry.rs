@@ -73,27 +73,9 @@ impl CouplerFourBar {
     /// The pins at crank angle `theta` (rad, from the x-axis), or `None` where the
     /// loop does not close (or a length is not positive).
     pub fn pins_at(&self, theta: f64) -> Option<Pins> {
-        if self.crank <= 0.0 || self.coupler <= 0.0 || self.rocker <= 0.0 {
-            return None;
-        }
-        let b = self.a + Vec2::new(theta.cos(), theta.sin()) * self.crank;
-        let e = self.d - b;
-        let len2 = e.norm_squared();
-        if len2 == 0.0 {
-            return None;
-        }
-        let (bc, dc) = (self.coupler, self.rocker);
-        let along = (bc * bc - dc * dc + len2) / (2.0 * len2);
-        let h2 = bc * bc / len2 - along * along;
-        // NaN (a length not finite) fails this too.
-        if h2.is_nan() || h2 < 0.0 {
-            return None;
-        }
-        let side = if self.c_left_of_bd { 1.0 } else { -1.0 };
-        let c = b + e * along + Vec2::new(-e.y, e.x) * (side * h2.sqrt());
-        let u = (c - b) / bc;
-        let p = b + u * self.point.x + Vec2::new(-u.y, u.x) * self.point.y;
-        Some(Pins { b, c, p })
+        self.pins_and_gap_at(theta)
+            .filter(|&(_, gap)| gap == 0.0)
+            .map(|(pins, _)| pins)
     }
 
     /// The coupler point at crank angle `theta`, or `None` where it does not close.
@@ -106,25 +88,35 @@ impl CouplerFourBar {
     /// closes): continuous across the closing limits, for least squares to cross
     /// them. `None` only for a length that is not positive or B on D.
     pub fn point_and_gap_at(&self, theta: f64) -> Option<(Vec2, f64)> {
-        if self.crank <= 0.0 || self.coupler <= 0.0 || self.rocker <= 0.0 {
+        self.pins_and_gap_at(theta).map(|(pins, gap)| (pins.p, gap))
+    }
+
+    /// The pins, C pulled onto BD where the loop does not close, and the gap.
+    fn pins_and_gap_at(&self, theta: f64) -> Option<(Pins, f64)> {
+        let (bc, dc) = (self.coupler, self.rocker);
+        if !(self.crank > 0.0 && bc > 0.0 && dc > 0.0) {
             return None;
         }
         let b = self.a + Vec2::new(theta.cos(), theta.sin()) * self.crank;
         let e = self.d - b;
         let len2 = e.norm_squared();
-        if len2 == 0.0 {
+        if len2 == 0.0 || !len2.is_finite() {
             return None;
         }
-        let (bc, dc) = (self.coupler, self.rocker);
-        let len = len2.sqrt();
-        let gap = (len - (bc + dc)).max(0.0) + ((bc - dc).abs() - len).max(0.0);
         let along = (bc * bc - dc * dc + len2) / (2.0 * len2);
-        let h = (bc * bc / len2 - along * along).max(0.0).sqrt();
+        let h2 = bc * bc / len2 - along * along;
+        let len = len2.sqrt();
+        // Where h² < 0 the circles miss each other by this much.
+        let gap = if h2 >= 0.0 {
+            0.0
+        } else {
+            ((len - (bc + dc)).max(0.0) + ((bc - dc).abs() - len).max(0.0)).max(f64::MIN_POSITIVE)
+        };
         let side = if self.c_left_of_bd { 1.0 } else { -1.0 };
-        let c = b + e * along + Vec2::new(-e.y, e.x) * (side * h);
+        let c = b + e * along + Vec2::new(-e.y, e.x) * (side * h2.max(0.0).sqrt());
         let u = (c - b) / (c - b).norm().max(f64::MIN_POSITIVE);
         let p = b + u * self.point.x + Vec2::new(-u.y, u.x) * self.point.y;
-        Some((p, gap))
+        Some((Pins { b, c, p }, gap))
     }
 
     /// Ground length AD and the direction of A→D, rad.
