@@ -9,6 +9,7 @@ use egui_kittest::kittest::Queryable as _;
 use linkage::synthesis::path::PathDesign;
 use linkage::{Kinematics, Mechanism, Vec2};
 use linkage_lab::LinkageApp;
+use linkage_lab::ui::control_map::ControlKind;
 
 mod common;
 
@@ -110,6 +111,39 @@ fn targets_clicked_on_the_canvas_are_searched_to_a_design_that_opens() {
             );
         }
     }
+
+    // A drag moves the second target; the others stay.
+    let second = h
+        .state()
+        .state
+        .controls
+        .entries
+        .iter()
+        .find(|e| e.kind == ControlKind::SynthesisTarget && e.label == "target 2")
+        .map(|e| egui::pos2(0.5 * (e.rect[0] + e.rect[2]), 0.5 * (e.rect[1] + e.rect[3])))
+        .expect("target 2 on the canvas");
+    common::pointer(&mut h, second, Some(true));
+    for k in 1..=6 {
+        common::pointer(
+            &mut h,
+            second + egui::vec2(4.0 * k as f32, 3.0 * k as f32),
+            None,
+        );
+    }
+    common::pointer(&mut h, second + egui::vec2(24.0, 18.0), Some(false));
+    let moved: Vec<[f64; 2]> = tab(&h)
+        .inputs
+        .path
+        .targets
+        .iter()
+        .map(|t| t.at_mm)
+        .collect();
+    assert_eq!(moved.len(), 5, "a drag adds no target: {moved:?}");
+    assert_ne!(moved[1], targets[1], "target 2 moved");
+    for k in [0, 2, 3, 4] {
+        assert_eq!(moved[k], targets[k], "target {} stayed", k + 1);
+    }
+    let targets = moved;
 
     h.get_by_label("Search").click();
     let designs = until_done(&mut h);

@@ -49,6 +49,8 @@ pub enum ControlKind {
     SynthesisTab,
     /// The path tab's canvas, where a click places a target.
     SynthesisCanvas,
+    /// A target on the path tab's canvas (a drag moves it).
+    SynthesisTarget,
 }
 
 /// One control as drawn this frame.

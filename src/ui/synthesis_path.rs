@@ -152,6 +152,16 @@ fn canvas(
         });
     let (response, pointer, screen) = shown.inner;
     controls.note(ui, ControlKind::SynthesisCanvas, "path targets", &response);
+    for (i, at) in screen.iter().enumerate() {
+        let rect = egui::Rect::from_center_size(*at, egui::vec2(2.0 * GRAB_PX, 2.0 * GRAB_PX));
+        let shown = response.rect.contains(*at) && ui.clip_rect().contains(*at);
+        controls.note_rect(
+            ControlKind::SynthesisTarget,
+            &format!("target {}", i + 1),
+            rect,
+            shown,
+        );
+    }
     let near = |pos: egui::Pos2| {
         screen
             .iter()
