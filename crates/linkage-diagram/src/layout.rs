@@ -297,6 +297,20 @@ fn vertex_labels(
         .collect()
 }
 
+/// The arrows that carry labels, shortest (least room) first. Lengths are compared
+/// to a millionth of a pixel, then by index: arrows equal in length (the die
+/// cutter's a_C^t and a_EC^t, since CD = CE) would otherwise fall in the order of
+/// their last bits, which the browser's and the native sine and cosine round
+/// apart, and the app's sheet would differ from `linkage diagram`'s.
+fn label_order(arrows: &[LaidArrow]) -> Vec<&LaidArrow> {
+    let mut order: Vec<&LaidArrow> = arrows
+        .iter()
+        .filter(|a| a.style != ArrowStyle::Absolute)
+        .collect();
+    order.sort_by_key(|a| ((distance(a.from, a.to) * 1e6).round() as i64, a.index));
+    order
+}
+
 /// A label per relative or component arrow, the shortest (least room) first.
 fn arrow_labels(
     fig: &PolygonFigure,
@@ -304,12 +318,7 @@ fn arrow_labels(
     obstacles: &mut Obstacles,
     measure: &dyn Fn(&Label) -> [f64; 2],
 ) -> Vec<LaidLabel> {
-    let mut order: Vec<&LaidArrow> = arrows
-        .iter()
-        .filter(|a| a.style != ArrowStyle::Absolute)
-        .collect();
-    order.sort_by(|a, b| distance(a.from, a.to).total_cmp(&distance(b.from, b.to)));
-    order
+    label_order(arrows)
         .into_iter()
         .filter_map(|a| {
             let label = PolygonFigure::arrow_label(&fig.arrows[a.index])?;
@@ -335,6 +344,26 @@ mod tests {
         assert_eq!(round_scale(0.37), 0.05);
         assert_eq!(round_scale(0.0), 0.0);
         assert_eq!(round_scale(f64::NAN), 0.0);
+    }
+
+    #[test]
+    fn arrows_of_one_length_are_labelled_in_index_order_whatever_their_last_bits() {
+        let arrow = |index: usize, x: f64| LaidArrow {
+            from: [0.0, 0.0],
+            to: [x, 0.0],
+            head: None,
+            style: ArrowStyle::Relative,
+            index,
+        };
+        let ten = 10.0f64;
+        let above = f64::from_bits(ten.to_bits() + 1);
+        for arrows in [
+            [arrow(0, 20.0), arrow(1, above), arrow(2, ten)],
+            [arrow(0, 20.0), arrow(1, ten), arrow(2, above)],
+        ] {
+            let order: Vec<usize> = label_order(&arrows).iter().map(|a| a.index).collect();
+            assert_eq!(order, [1, 2, 0]);
+        }
     }
 
     #[test]
