@@ -92,30 +92,15 @@ impl PathInputs {
     /// A row that is not that many numbers, named by its line.
     pub fn read_csv(&mut self, text: &str) -> Result<(), String> {
         let width = if self.timed { 3 } else { 2 };
-        let mut targets = vec![];
-        for (i, line) in text
-            .lines()
+        let rows = crate::synthesis::numbers(text, width)?;
+        let targets = rows
+            .iter()
             .enumerate()
-            .filter(|(_, l)| !l.trim().is_empty())
-        {
-            let v: Result<Vec<f64>, _> = line.split(',').map(|c| c.trim().parse()).collect();
-            match v {
-                Ok(v) if v.len() == width && v.iter().all(|x| x.is_finite()) => {
-                    let crank_deg = v.get(2).copied().unwrap_or(30.0 * targets.len() as f64);
-                    targets.push(Target {
-                        at_mm: [v[0], v[1]],
-                        crank_deg,
-                    });
-                }
-                _ => {
-                    return Err(format!(
-                        "line {}: {:?} is not {width} numbers",
-                        i + 1,
-                        line.trim()
-                    ));
-                }
-            }
-        }
+            .map(|(k, v)| Target {
+                at_mm: [v[0], v[1]],
+                crank_deg: v.get(2).copied().unwrap_or(30.0 * k as f64),
+            })
+            .collect();
         self.targets = targets;
         Ok(())
     }

@@ -15,6 +15,11 @@ mod common;
 
 use common::click_label as click;
 
+/// Where the path tab's targets are, mm.
+fn targets_mm(h: &Harness<'static, LinkageApp>) -> Vec<[f64; 2]> {
+    tab(h).inputs.path.targets.iter().map(|t| t.at_mm).collect()
+}
+
 /// The search's progress now.
 fn progress(h: &Harness<'static, LinkageApp>) -> linkage::synthesis::path::Progress {
     tab(h)
@@ -95,13 +100,7 @@ fn targets_clicked_on_the_canvas_are_searched_to_a_design_that_opens() {
         let at = egui::pos2(left + fx * width, top + fy * (bottom - top));
         common::click(&mut h, at);
     }
-    let targets: Vec<[f64; 2]> = tab(&h)
-        .inputs
-        .path
-        .targets
-        .iter()
-        .map(|t| t.at_mm)
-        .collect();
+    let targets: Vec<[f64; 2]> = targets_mm(&h);
     assert_eq!(targets.len(), 5, "{targets:?}");
     for (i, a) in targets.iter().enumerate() {
         for b in &targets[..i] {
@@ -131,13 +130,7 @@ fn targets_clicked_on_the_canvas_are_searched_to_a_design_that_opens() {
         );
     }
     common::pointer(&mut h, second + egui::vec2(24.0, 18.0), Some(false));
-    let moved: Vec<[f64; 2]> = tab(&h)
-        .inputs
-        .path
-        .targets
-        .iter()
-        .map(|t| t.at_mm)
-        .collect();
+    let moved: Vec<[f64; 2]> = targets_mm(&h);
     assert_eq!(moved.len(), 5, "a drag adds no target: {moved:?}");
     assert_ne!(moved[1], targets[1], "target 2 moved");
     for k in [0, 2, 3, 4] {
@@ -192,14 +185,7 @@ fn a_search_stops_and_continues_where_it_was() {
     common::synthesis_tab(&mut h, "path");
     // The default targets: eight points rounded to 0.1 mm, which no four-bar meets
     // to the tolerance asked here, so the search is still running when stopped.
-    h.state_mut()
-        .state
-        .synthesis
-        .as_mut()
-        .expect("open")
-        .inputs
-        .path
-        .tolerance = 1e-9;
+    common::synthesis_inputs(&mut h).path.tolerance = 1e-9;
     h.get_by_label("Search").click();
     for _ in 0..5 {
         h.step();

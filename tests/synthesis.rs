@@ -105,13 +105,7 @@ fn each_design_opens_as_a_scene_that_meets_its_requirements() {
 
     // A stroke beyond 2L is refused with its reason, and nothing opens.
     click(&mut h, "die cutter");
-    h.state_mut()
-        .state
-        .synthesis
-        .as_mut()
-        .expect("open")
-        .inputs
-        .die[0] = 2000.0;
+    common::synthesis_inputs(&mut h).die[0] = 2000.0;
     h.run();
     click(&mut h, "Design");
     assert!(
@@ -135,7 +129,7 @@ fn five_positions_and_a_function_show_their_constructions() {
     let five = "112.763114, 41.042417, 55.592249\n41.042417, 112.763114, 39.007115\n\
                 -60.000000, 103.923048, 33.671856\n-118.176930, 20.837781, 37.449441\n\
                 -77.134513, -91.925333, 53.256293\n";
-    let inputs = &mut h.state_mut().state.synthesis.as_mut().expect("open").inputs;
+    let inputs = common::synthesis_inputs(&mut h);
     inputs.poses = five.into();
     // The poses are rounded to 1e-6 mm: the known pivots are found to about that.
     let design = linkage_lab::synthesis::design(inputs).expect("designs");
@@ -149,14 +143,7 @@ fn five_positions_and_a_function_show_their_constructions() {
             .unwrap_or_else(|| panic!("({x}, {y}) not among {:?}", c.burmester))
     };
     let pair = [index(0.0, 0.0) + 1, index(400.0, 50.0) + 1];
-    h.state_mut()
-        .state
-        .synthesis
-        .as_mut()
-        .expect("open")
-        .inputs
-        .motion
-        .pair = pair;
+    common::synthesis_inputs(&mut h).motion.pair = pair;
     // A frame to lay the window out for five positions before clicking in it.
     h.run();
     click(&mut h, "Design");

@@ -293,11 +293,7 @@ fn search_buttons(
 }
 
 fn designs(ui: &mut egui::Ui, controls: &mut ControlMap, tab: &mut PathTab) -> Option<Chosen> {
-    let found = tab
-        .job
-        .as_ref()
-        .map(|j| j.snapshot().designs.clone())
-        .unwrap_or_default();
+    let found: &[PathDesign] = tab.job.as_ref().map_or(&[], |j| &j.snapshot().designs);
     if found.is_empty() {
         return None;
     }

@@ -74,3 +74,16 @@ pub fn synthesis_tab(h: &mut Harness<'static, LinkageApp>, tab: &str) {
     click_label(h, "Synthesis…");
     click_label(h, tab);
 }
+
+/// The synthesis window's inputs, to set what a test does not type.
+pub fn synthesis_inputs<'h>(
+    h: &'h mut Harness<'static, LinkageApp>,
+) -> &'h mut linkage_lab::synthesis::SynthInputs {
+    &mut h
+        .state_mut()
+        .state
+        .synthesis
+        .as_mut()
+        .expect("the synthesis window is open")
+        .inputs
+}

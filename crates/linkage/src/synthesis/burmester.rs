@@ -103,6 +103,33 @@ fn size(poses: &[BodyPose]) -> f64 {
         .fold(1e-9, f64::max)
 }
 
+/// A square grid of `n`×`n` cells, `half` each way around `centre`.
+struct Grid {
+    centre: Vec2,
+    half: f64,
+    n: usize,
+}
+
+impl Grid {
+    /// The side of a cell.
+    fn step(&self) -> f64 {
+        2.0 * self.half / self.n as f64
+    }
+
+    /// The node (i, j), 0 to n each.
+    fn at(&self, i: usize, j: usize) -> Vec2 {
+        let step = self.step();
+        self.centre + Vec2::new(-self.half + step * i as f64, -self.half + step * j as f64)
+    }
+
+    /// `f` at every node, once, indexed [i][j].
+    fn sample<T>(&self, f: impl Fn(Vec2) -> T) -> Vec<Vec<T>> {
+        (0..=self.n)
+            .map(|i| (0..=self.n).map(|j| f(self.at(i, j))).collect())
+            .collect()
+    }
+}
+
 /// The centre-point curve of four positions within the square `half` around the
 /// positions' centroid, as short segments (marching squares on an `n`×`n` grid),
 /// for drawing.
@@ -111,12 +138,9 @@ pub fn centre_curve(poses: &[BodyPose], half: f64, n: usize) -> Vec<[[f64; 2]; 2
         .iter()
         .fold(Vec2::zeros(), |s, p| s + Vec2::new(p.at[0], p.at[1]))
         / poses.len() as f64;
-    let step = 2.0 * half / n as f64;
-    let at =
-        |i: usize, j: usize| centre + Vec2::new(-half + step * i as f64, -half + step * j as f64);
-    let values: Vec<Vec<f64>> = (0..=n)
-        .map(|i| (0..=n).map(|j| centre_condition(poses, at(i, j))).collect())
-        .collect();
+    let grid = Grid { centre, half, n };
+    let at = |i: usize, j: usize| grid.at(i, j);
+    let values = grid.sample(|m| centre_condition(poses, m));
     let mut segments = vec![];
     for i in 0..n {
         for j in 0..n {
@@ -163,33 +187,35 @@ pub fn burmester_points(poses: &[BodyPose]) -> Result<Vec<Crank>> {
             centre_condition(quartets[1], m),
         ]
     };
-    // Seeds: grid cells where both conditions change sign, out to 20 sizes away.
+    // Seeds: grid cells where both conditions change sign, out to 20 sizes away
+    // (each node evaluated once).
     let common: Vec<Vec2> = poles_of(&poses[..3])
         .into_iter()
         .flatten()
         .map(Vec2::from)
         .collect();
     let mut found: Vec<Vec2> = vec![];
-    let half = 20.0 * s;
-    let n = 200;
-    let centre = Vec2::new(poses[0].at[0], poses[0].at[1]);
-    let step = 2.0 * half / n as f64;
-    for i in 0..n {
-        for j in 0..n {
-            let m0 = centre + Vec2::new(-half + step * i as f64, -half + step * j as f64);
-            let corners = [
-                m0,
-                m0 + Vec2::new(step, 0.0),
-                m0 + Vec2::new(0.0, step),
-                m0 + Vec2::repeat(step),
+    let grid = Grid {
+        centre: Vec2::new(poses[0].at[0], poses[0].at[1]),
+        half: 20.0 * s,
+        n: 200,
+    };
+    let values = grid.sample(f);
+    for i in 0..grid.n {
+        for j in 0..grid.n {
+            let vals = [
+                values[i][j],
+                values[i + 1][j],
+                values[i][j + 1],
+                values[i + 1][j + 1],
             ];
-            let vals: Vec<[f64; 2]> = corners.iter().map(|&c| f(c)).collect();
             let changes =
                 |k: usize| vals.iter().any(|v| v[k] < 0.0) && vals.iter().any(|v| v[k] >= 0.0);
             if !(changes(0) && changes(1)) {
                 continue;
             }
-            let Some(m) = newton2(&f, m0 + Vec2::repeat(0.5 * step), s) else {
+            let middle = grid.at(i, j) + Vec2::repeat(0.5 * grid.step());
+            let Some(m) = newton2(&f, middle, s) else {
                 continue;
             };
             let near = |q: &Vec2| (q - m).norm() <= 1e-6 * s;

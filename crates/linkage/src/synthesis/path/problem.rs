@@ -135,10 +135,14 @@ impl Problem {
         match m.travel(angles) {
             None if limits.one_branch => 1.0,
             None => 0.0,
-            Some((start, len)) => {
-                (limits.min_transmission - m.least_transmission_over(start, len)).max(0.0)
-            }
+            Some(arc) => self.transmission_short_over(m, arc),
         }
+    }
+
+    /// How far the least transmission angle over the crank arc `(start, len)`
+    /// falls below the least allowed, rad (0 when it does not).
+    fn transmission_short_over(&self, m: &CouplerFourBar, (start, len): (f64, f64)) -> f64 {
+        (self.limits.min_transmission - m.least_transmission_over(start, len)).max(0.0)
     }
 
     fn timed_sum(&self, m: &CouplerFourBar, first: f64, angles: &mut [f64]) -> Option<f64> {
@@ -252,8 +256,7 @@ impl Problem {
             return 0.0;
         }
         let angles = self.angles_of(u);
-        m.travel(&angles).map_or(0.0, |(start, len)| {
-            (self.limits.min_transmission - m.least_transmission_over(start, len)).max(0.0)
-        })
+        m.travel(&angles)
+            .map_or(0.0, |arc| self.transmission_short_over(m, arc))
     }
 }
