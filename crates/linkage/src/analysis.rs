@@ -13,8 +13,10 @@ use crate::roots_util::{refine, sign_changes};
 const TAU: f64 = std::f64::consts::TAU;
 /// Grid used to bracket roots: 0.5 deg over a full turn.
 const GRID: usize = 720;
-/// Velocity ratio below which an output counts as at rest (round-off of a ratio of
-/// order 1 is 1e-16; a real limit's neighbours on the grid have ratios of 1e-3 and up).
+/// Velocity ratio below which an output counts as at rest, per radian of input and,
+/// for a slider, per metre of the mechanism's size: dimensionless, so that a 50 µm
+/// mechanism rests exactly when its 50 m twin does (round-off of a ratio of order 1 is
+/// 1e-16; a real limit's neighbours on the grid have ratios of 1e-3 and up).
 const RESTING_RATE: f64 = 1e-9;
 
 /// Input intervals (rad) over which the chain assembles on its branch.
@@ -167,6 +169,15 @@ impl Output {
     /// Whether the value is an angle (rad) rather than a displacement (m).
     pub fn is_angle(&self) -> bool {
         matches!(self, Self::Rocker { .. })
+    }
+
+    /// The rate as a pure number: per radian of input at unit input speed, and for a
+    /// slider per metre of `size_m` too, so that thresholds on it hold at any scale.
+    fn relative_rate(&self, s: &Solution, size_m: f64) -> f64 {
+        match self {
+            Self::Rocker { .. } => self.rate(s),
+            Self::Slide { .. } => self.rate(s) / size_m,
+        }
     }
 }
 
@@ -402,42 +413,120 @@ pub fn limit_positions(
     out: &Output,
     ranges: &AssemblyRanges,
 ) -> Vec<LimitPosition> {
+    found_limits(k, out, ranges)
+        .into_iter()
+        .map(|f| f.limit)
+        .collect()
+}
+
+/// A limit position and whether its rate vanishes to a higher order there (see
+/// [`flat`]).
+struct FoundLimit {
+    limit: LimitPosition,
+    flat: bool,
+}
+
+fn found_limits(k: &mut Kinematics, out: &Output, ranges: &AssemblyRanges) -> Vec<FoundLimit> {
     let start = k.mechanism().driver.start_rad;
+    let size = k.mechanism().size_m;
     let mut probe = Probe {
         sol: k.empty_solution(),
         k,
     };
+    let ratio =
+        |probe: &mut Probe, x: f64| probe.at(x).map_or(f64::NAN, |s| out.relative_rate(s, size));
     let mut found = Vec::new();
     for xs in grids(ranges, start) {
-        let rates: Vec<f64> = xs
-            .iter()
-            .map(|&x| probe.at(x).map_or(f64::NAN, |s| out.rate(s)))
-            .collect();
+        let rates: Vec<f64> = xs.iter().map(|&x| ratio(&mut probe, x)).collect();
         for i in sign_changes(&rates) {
             // An output at rest (a change-point chain's folded mode holds its rocker
             // still) changes the sign of round-off only: no limit there.
             if rates[i].abs().max(rates[i + 1].abs()) < RESTING_RATE {
                 continue;
             }
-            let Some(root) = refine(xs[i], xs[i + 1], |x| {
-                probe.at(x).map_or(f64::NAN, |s| out.rate(s))
-            }) else {
+            let Some(root) = refine(xs[i], xs[i + 1], |x| ratio(&mut probe, x)) else {
                 continue;
             };
+            let flat = flat(&mut |x| ratio(&mut probe, x), root);
             let Some(s) = probe.at(root) else { continue };
-            found.push(LimitPosition {
-                input_rad: root.rem_euclid(TAU),
-                output: out.name().to_string(),
-                kind: if rates[i] > 0.0 {
-                    Extreme::Max
-                } else {
-                    Extreme::Min
+            found.push(FoundLimit {
+                limit: LimitPosition {
+                    input_rad: root.rem_euclid(TAU),
+                    output: out.name().to_string(),
+                    kind: if rates[i] > 0.0 {
+                        Extreme::Max
+                    } else {
+                        Extreme::Min
+                    },
+                    value: out.value(s),
                 },
-                value: out.value(s),
+                flat,
             });
         }
     }
     found
+}
+
+/// Whether `rate` vanishes at `root` to a higher (third or odd higher) order: then
+/// round-off hides the root within about (1e-16)^(1/3) ≈ 5e-6 rad of where it is, and
+/// a root found there is only that good. A simple root's rate grows tenfold from 1e-3
+/// to 1e-2 rad away, a triple root's a thousandfold.
+fn flat(rate: &mut dyn FnMut(f64) -> f64, root: f64) -> bool {
+    let growth = |h: f64, rate: &mut dyn FnMut(f64) -> f64| {
+        (rate(root + 10.0 * h) * rate(root - 10.0 * h) / (rate(root + h) * rate(root - h)))
+            .abs()
+            .sqrt()
+    };
+    let g = growth(1e-3, rate);
+    // Between 10 (order 1) and 1000 (order 3).
+    g.is_finite() && g > 100.0
+}
+
+/// How far from a flat root (see [`flat`]) a simple root of another output may lie
+/// and still be taken for the same, rad: several times the round-off band of a triple
+/// root, far below the grid step that separates distinct roots.
+const SAME_ROOT: f64 = 1e-4;
+
+/// Moves each flat limit onto a simple limit of another output found within
+/// [`SAME_ROOT`], where there is one, and takes the output's value there. A flat
+/// limit is where an output's rate is the product of two rates that vanish together
+/// (the die cutter's die at its toggle: the die's rate through the rocker's, the
+/// rocker at its own limit): the simple root of the other output is the same place,
+/// known to round-off instead of to 5e-6 rad.
+fn align_flat_limits(k: &mut Kinematics, outs: &[Output], found: &mut [Vec<FoundLimit>]) {
+    let simple: Vec<(usize, f64)> = found
+        .iter()
+        .enumerate()
+        .flat_map(|(o, limits)| {
+            limits
+                .iter()
+                .filter(|f| !f.flat)
+                .map(move |f| (o, f.limit.input_rad))
+        })
+        .collect();
+    let mut sol = k.empty_solution();
+    for (o, limits) in found.iter_mut().enumerate() {
+        for f in limits.iter_mut().filter(|f| f.flat) {
+            let near = simple
+                .iter()
+                .filter(|&&(other, _)| other != o)
+                .map(|&(_, x)| (x, angle_between(x, f.limit.input_rad)))
+                .filter(|&(_, d)| d <= SAME_ROOT)
+                .min_by(|a, b| a.1.total_cmp(&b.1));
+            if let Some((x, _)) = near
+                && k.solve_into(x, 1.0, &mut sol).is_ok()
+            {
+                f.limit.input_rad = x;
+                f.limit.value = outs[o].value(&sol);
+            }
+        }
+    }
+}
+
+/// The angle between two angles, rad, in [0, π].
+fn angle_between(a: f64, b: f64) -> f64 {
+    let d = (a - b).rem_euclid(TAU);
+    d.min(TAU - d)
 }
 
 /// Range swept by an output: the span between its extremes, including the ends of
@@ -773,12 +862,17 @@ pub fn report(k: &mut Kinematics) -> Result<Report> {
             .collect(),
     };
     let outs = outputs(k);
+    let mut found: Vec<Vec<FoundLimit>> = outs
+        .iter()
+        .map(|out| found_limits(k, out, &working))
+        .collect();
+    align_flat_limits(k, &outs, &mut found);
     let mut all_limits = Vec::new();
     let mut strokes_m = indexmap::IndexMap::new();
     let mut swings_rad = indexmap::IndexMap::new();
     let mut per_output = Vec::new();
-    for out in &outs {
-        let limits = limit_positions(k, out, &working);
+    for (out, limits) in outs.iter().zip(found) {
+        let limits: Vec<LimitPosition> = limits.into_iter().map(|f| f.limit).collect();
         let sp = span(k, out, &limits, &working);
         match out {
             Output::Rocker { .. } => swings_rad.insert(out.name().to_string(), sp),

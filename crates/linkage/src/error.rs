@@ -49,14 +49,15 @@ pub enum LinkageError {
     },
     /// Newton–Raphson did not reach the tolerance.
     #[error(
-        "Newton solver did not converge at input {input_deg:.4} deg: residual {residual:.3e} after {iterations} iterations (tolerance {tolerance:.1e})"
+        "Newton solver did not converge at input {input_deg:.4} deg: residual {residual:.3e} of the mechanism's size after {iterations} iterations (tolerance {tolerance:.1e})"
     )]
     NewtonDiverged {
         /// Input angle, in degrees.
         input_deg: f64,
         /// Iterations used.
         iterations: usize,
-        /// Largest constraint residual left, in metres or radians.
+        /// Largest constraint residual left, as a share of the mechanism's size (or in
+        /// radians, for a slider's turn).
         residual: f64,
         /// Tolerance asked for.
         tolerance: f64,

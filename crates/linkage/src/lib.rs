@@ -29,6 +29,7 @@ pub mod newton;
 pub mod polygon;
 mod roots_util;
 pub mod scene;
+pub mod scene_scale;
 pub mod share;
 pub mod sketch;
 mod small_lu;

@@ -300,7 +300,9 @@ pub struct SolverSpec {
     /// Preferred path.
     #[serde(default)]
     pub path: SolverPath,
-    /// Newton tolerance on the constraint residual, m (and rad); default 1e-14.
+    /// Newton tolerance on the constraint residual, as a share of the mechanism's size
+    /// (its largest point distance from the origin), and in rad for a slider's turn;
+    /// default 1e-14.
     #[serde(default = "default_tolerance")]
     pub tolerance: f64,
     /// Newton iteration limit.

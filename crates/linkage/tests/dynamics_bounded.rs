@@ -67,7 +67,12 @@ fn spring_of_1e12_under_an_explicit_method_names_implicit_and_the_stiffness() {
     let mut s = Settings::new(Method::Dp5);
     s.t_end = 1.0;
     s.use_stops = false;
-    let msg = simulate(&k, &s).expect_err("bounded").to_string();
+    // It ends, spending its step budget or finishing at the stability limit's step;
+    // either way what it says names the implicit method and the stiffness.
+    let msg = match simulate(&k, &s) {
+        Err(e) => e.to_string(),
+        Ok(sim) => sim.stats.warnings.join("; "),
+    };
     assert!(msg.contains("implicit"), "{msg}");
     assert!(msg.contains("|λ|"), "names the stiffness: {msg}");
 }

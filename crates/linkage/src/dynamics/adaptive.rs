@@ -63,20 +63,34 @@ impl Default for Controller {
     }
 }
 
-/// Tolerances: each of x and v must be within atol + rtol·|value| per step.
+/// Tolerances: x must be within atol + rtol·|x| per step, and v within
+/// atol·rate + rtol·|v|, where `rate` is the run's own rate scale (1/s): an absolute
+/// tolerance on a speed in rad/s would be loose for a fast small machine and tight
+/// for a slow large one, and the same machine at another scale would take other steps.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Tolerance {
     pub rtol: f64,
     pub atol: f64,
+    /// The run's rate scale, 1/s (see [`rate_scale`](super::run)).
+    pub rate: f64,
 }
 
 impl Tolerance {
+    /// The absolute part of the tolerance of component `i` (0: x, rad; 1: v, rad/s).
+    fn absolute(&self, i: usize) -> f64 {
+        if i == 0 {
+            self.atol
+        } else {
+            self.atol * self.rate
+        }
+    }
+
     /// RMS over x and v of the error scaled by the tolerance (w is not controlled:
     /// it follows from x and v).
     fn norm(&self, err: &State, y0: &State, y1: &State) -> f64 {
         let sum: f64 = (0..2)
             .map(|i| {
-                let scale = self.atol + self.rtol * y0[i].abs().max(y1[i].abs());
+                let scale = self.absolute(i) + self.rtol * y0[i].abs().max(y1[i].abs());
                 (err[i] / scale).powi(2)
             })
             .sum();
@@ -299,13 +313,15 @@ pub(crate) fn initial_step(
 ) -> f64 {
     let scaled = |v: &State| -> f64 {
         let s: f64 = (0..2)
-            .map(|i| (v[i] / (tol.atol + tol.rtol * a.y[i].abs())).powi(2))
+            .map(|i| (v[i] / (tol.absolute(i) + tol.rtol * a.y[i].abs())).powi(2))
             .sum();
         (s / 2.0).sqrt()
     };
     let (d0, d1) = (scaled(&a.y), scaled(&a.f));
+    // Hairer's fallback of 1e-6 s, in the run's own time scale.
+    let tiny = 1e-6 / tol.rate;
     let h0 = if d0 < 1e-5 || d1 < 1e-5 {
-        1e-6
+        tiny
     } else {
         0.01 * d0 / d1
     }
@@ -318,7 +334,7 @@ pub(crate) fn initial_step(
     let d2 = scaled(&diff) / h0;
     let order = 1.0 / pair.error_exponent();
     let h1 = if d1.max(d2) <= 1e-15 {
-        (h0 * 1e-3).max(1e-6)
+        (h0 * 1e-3).max(tiny)
     } else {
         (0.01 / d1.max(d2)).powf(1.0 / order)
     };

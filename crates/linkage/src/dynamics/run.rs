@@ -90,6 +90,19 @@ fn stiffness(rhs: &mut Rhs, a: &Point) -> Result<f64> {
     })
 }
 
+/// The run's own rate scale, 1/s: the stiffest mode's |λ|, or the starting speed
+/// where that is faster, or one over the run's length for a machine with neither
+/// (no force and at rest: it does not move). Speeds are measured against it, so that
+/// the tolerances and first step are the same for a machine at any scale.
+fn rate_scale(stiffness_per_s: f64, start_speed: f64, t_end: f64) -> f64 {
+    let rate = stiffness_per_s.max(start_speed.abs());
+    if rate > 0.0 && rate.is_finite() {
+        rate
+    } else {
+        1.0 / t_end
+    }
+}
+
 /// The error of a run that spent its step budget: where it got to, and what to change.
 fn budget_spent(stats: &RunStats, t: f64, settings: &Settings) -> LinkageError {
     let stiff = settings
@@ -144,7 +157,9 @@ pub struct Run {
     sampler: Sampler,
     samples: Vec<Sample>,
     events: Vec<SimEvent>,
-    next_output: Option<f64>,
+    /// Index on the output grid of the next sample (the first, at t = 0, is taken
+    /// at the start).
+    next_output: u64,
     pair: Option<Pair>,
     tol: Tolerance,
     max_step: f64,
@@ -213,6 +228,7 @@ impl Run {
         let tol = Tolerance {
             rtol: settings.rtol,
             atol: settings.atol,
+            rate: rate_scale(stats.stiffness_per_s, v0, settings.t_end),
         };
         let max_step = if settings.step > 0.0 {
             settings.step
@@ -234,7 +250,7 @@ impl Run {
             sampler,
             samples,
             events: Vec::new(),
-            next_output: settings.output_dt,
+            next_output: 1,
             pair,
             tol,
             max_step,
@@ -325,12 +341,12 @@ impl Run {
         // to sample from this step's dense output, like any other.
         let stop_hit = hit.filter(|&(_, i)| self.stops[i].stops);
         let t_until = stop_hit.map_or(b.t, |(t, _)| t);
-        if let Some(dt) = self.settings.output_dt {
-            while let Some(t_out) = self.next_output.filter(|&t| t <= t_until) {
+        if self.settings.output_dt.is_some() {
+            while let Some(t_out) = self.output_time(self.next_output).filter(|&t| t <= t_until) {
                 let y = dense.get(&mut self.rhs, &b, &mut self.stages)?.eval(t_out);
                 let s = self.sampler.sample(&mut self.rhs, t_out, &y, segment)?;
                 self.samples.push(s);
-                self.next_output = Some(t_out + dt).filter(|&t| t <= self.settings.t_end);
+                self.next_output += 1;
             }
         } else if stop_hit.is_none() {
             let s = self.sampler.sample(&mut self.rhs, b.t, &b.y, segment)?;
@@ -360,6 +376,23 @@ impl Run {
         }
         self.a = b;
         self.switch_coordinate_if_needed()
+    }
+
+    /// The time of sample `index` of the output grid, `None` past the end. Times are
+    /// the index times the grid step, not sums of steps: a sum's round-off would decide
+    /// whether the last sample falls on the end or just past it, differently for the
+    /// same run in other units. A time within 1e-9 of a step past the end is the end.
+    fn output_time(&self, index: u64) -> Option<f64> {
+        let dt = self.settings.output_dt?;
+        let t = index as f64 * dt;
+        let end = self.settings.t_end;
+        if t <= end {
+            Some(t)
+        } else if t - end <= 1e-9 * dt {
+            Some(end)
+        } else {
+            None
+        }
     }
 
     /// The next accepted step of the method, or `None` where the energy method finds

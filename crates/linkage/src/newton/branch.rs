@@ -162,7 +162,7 @@ impl Newton {
         self.increment.axpy(h * h * h / 6.0, &self.jerk, 1.0);
         // Near a dead point the derivatives blow up: a large predicted change means the
         // step is too long for the branch to be followed safely.
-        if self.increment.amax() > MAX_PREDICTED_CHANGE && h.abs() >= 2e-7 {
+        if self.relative_increment() > MAX_PREDICTED_CHANGE && h.abs() >= 2e-7 {
             return Ok(false);
         }
         self.q += &self.increment;
@@ -198,6 +198,23 @@ impl Newton {
         self.steady_steps = self.steady_steps.saturating_add(1);
         self.wrap_angles();
         Ok(true)
+    }
+}
+
+impl Newton {
+    /// The largest predicted change of a coordinate: rad for a turning joint, and for
+    /// a sliding one metres over the mechanism's size, so that steps are cut alike at
+    /// every scale.
+    fn relative_increment(&self) -> f64 {
+        self.tree
+            .iter()
+            .skip(1)
+            .zip(self.increment.iter())
+            .map(|(t, dq)| match t.kind {
+                super::TreeKind::Revolute { .. } => dq.abs(),
+                super::TreeKind::Prismatic { .. } => dq.abs() / self.size_m,
+            })
+            .fold(0.0, f64::max)
     }
 }
 

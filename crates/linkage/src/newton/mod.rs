@@ -126,9 +126,14 @@ pub struct Newton {
     moved_by: Vec<bool>,
     cuts: Vec<Cut>,
     ground: usize,
+    /// Largest residual accepted, as a share of the size (and rad).
     tolerance: f64,
-    /// Largest residual accepted when Newton stalls at round-off (1e-12 of the size).
+    /// Largest residual accepted when Newton stalls at round-off (as a share of the
+    /// size, and rad).
     stall_residual: f64,
+    /// The mechanism's size, m: residuals in metres count relative to it, so that a
+    /// 50 µm chain converges exactly as its 50 m twin does.
+    size_m: f64,
     max_iterations: usize,
     /// Unknown coordinates (tree joints after the driver).
     q: DVector<f64>,
@@ -175,7 +180,8 @@ fn across(a: usize, b: usize, from: usize) -> Option<usize> {
     }
 }
 
-/// Largest change of any coordinate the predictor may make in one step (rad or m/m).
+/// Largest change of any coordinate the predictor may make in one step (rad, or for a
+/// sliding joint metres per metre of the mechanism's size).
 const MAX_PREDICTED_CHANGE: f64 = 0.2;
 
 /// Largest step of the input between two Newton solves on one branch, rad.
@@ -308,8 +314,9 @@ impl Newton {
             tree,
             cuts,
             ground: m.ground,
-            tolerance: tolerance.max(8.0 * f64::EPSILON * m.size_m),
-            stall_residual: 1e-12 * m.size_m,
+            tolerance: tolerance.max(8.0 * f64::EPSILON),
+            stall_residual: 1e-12,
+            size_m: m.size_m,
             max_iterations,
             q: DVector::zeros(unknowns),
             dq: DVector::zeros(unknowns),
@@ -464,6 +471,7 @@ impl Newton {
     /// Cut-joint residuals (positions), written to `out`; returns the max-norm.
     fn residual(&self, links: &[LinkMotion], out: &mut [f64]) -> f64 {
         let mut worst: f64 = 0.0;
+        let per_m = 1.0 / self.size_m;
         for (c, cut) in self.cuts.iter().enumerate() {
             let (r0, r1) = match cut {
                 Cut::Revolute {
@@ -485,7 +493,11 @@ impl Newton {
             };
             out[2 * c] = r0;
             out[2 * c + 1] = r1;
-            worst = worst.max(r0.abs()).max(r1.abs());
+            let r1_relative = match cut {
+                Cut::Revolute { .. } => r1 * per_m,
+                Cut::Prismatic(_) => r1,
+            };
+            worst = worst.max(r0.abs() * per_m).max(r1_relative.abs());
         }
         worst
     }

@@ -16,6 +16,24 @@ pub const SCENES: [&str; 6] = [
     "quick_return.ron",
 ];
 
+/// Every template in `assets/templates` (the editor's "New…" menu).
+pub const TEMPLATES: [&str; 5] = [
+    "four_bar.ron",
+    "slider_crank.ron",
+    "inverted_slider_crank.ron",
+    "watt_six_bar.ron",
+    "stephenson_six_bar.ron",
+];
+
+/// Text of a template.
+pub fn template_text(file: &str) -> String {
+    let path = format!(
+        "{}/../../assets/templates/{file}",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("cannot read {path}: {e}"))
+}
+
 /// Text of a shipped scene.
 pub fn scene_text(file: &str) -> String {
     let path = format!("{}/../../assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"));
