@@ -3,7 +3,8 @@
 //! timed, and the constraints; and the search and design table they give.
 
 use linkage::synthesis::path::{
-    PathConstraints, PathDesign, PathSearch, PathTargets, SearchOptions,
+    PathConstraints, PathDesign, PathLinkage, PathSearch, PathTargets, SearchOptions, TargetOrder,
+    TurnsWith,
 };
 
 use crate::synthesis::Design;
@@ -24,6 +25,8 @@ pub struct PathInputs {
     pub targets: Vec<Target>,
     /// The crank angles are prescribed.
     pub timed: bool,
+    /// Untimed targets may be met in any order (else in the order given).
+    pub any_order: bool,
     /// The crank must turn through a whole revolution.
     pub crank_turns: bool,
     /// Least transmission angle over the travel, deg.
@@ -60,7 +63,8 @@ impl Default for PathInputs {
                 })
                 .collect(),
             timed: false,
-            crank_turns: true,
+            any_order: false,
+            crank_turns: false,
             min_transmission_deg: 0.0,
             one_branch: true,
             seed: 1,
@@ -131,6 +135,11 @@ impl PathInputs {
             min_transmission_deg: self.min_transmission_deg,
             ground_region_m: None,
             one_branch: self.one_branch,
+            order: if self.any_order {
+                TargetOrder::Any
+            } else {
+                TargetOrder::AsGiven
+            },
         };
         let options = SearchOptions {
             seed: self.seed,
@@ -142,44 +151,82 @@ impl PathInputs {
     }
 }
 
-/// The table and scene of a path design.
-pub fn design_of(d: &PathDesign) -> Design {
+/// Which four-bar of a design's family: the design, or one of its two cognates.
+pub type Member = usize;
+
+/// The four-bar `member` of `d`'s family (0: the design; 1, 2: its cognates), if
+/// it has one.
+pub fn member_of(d: &PathDesign, member: Member) -> Option<&PathLinkage> {
+    match member {
+        0 => Some(&d.linkage),
+        k => d.cognates.get(k - 1).map(|c| &c.linkage),
+    }
+}
+
+/// What a cognate's crank turns with: a few words for the list, a sentence for the
+/// table.
+pub fn turns_with(t: TurnsWith, long: bool) -> &'static str {
+    match (t, long) {
+        (TurnsWith::Crank, false) => "turns with the crank",
+        (TurnsWith::Coupler, false) => "turns with the coupler",
+        (TurnsWith::Rocker, false) => "turns with the rocker",
+        (TurnsWith::Crank, true) => "turns with the design's crank (the same timing)",
+        (TurnsWith::Coupler, true) => "turns with the design's coupler",
+        (TurnsWith::Rocker, true) => "turns with the design's rocker",
+    }
+}
+
+/// The table and scene of the four-bar `member` of `d`'s family.
+pub fn design_of(d: &PathDesign, member: Member) -> Option<Design> {
+    let l = member_of(d, member)?;
     let mm = |m: f64| format!("{:.3} mm", m * 1e3);
     let point = |p: [f64; 2]| format!("({:.3}, {:.3}) mm", p[0] * 1e3, p[1] * 1e3);
-    let ground = (d.pivot_d[0] - d.pivot_a[0]).hypot(d.pivot_d[1] - d.pivot_a[1]);
+    let ground = (l.pivot_d[0] - l.pivot_a[0]).hypot(l.pivot_d[1] - l.pivot_a[1]);
     let row = |what: &str, value: String| (what.to_owned(), value);
-    Design {
-        table: vec![
-            row("crank AB", mm(d.crank_m)),
-            row("coupler BC", mm(d.coupler_m)),
-            row("rocker CD", mm(d.rocker_m)),
-            row("ground AD", mm(ground)),
-            row("crank pivot A", point(d.pivot_a)),
-            row("rocker pivot D", point(d.pivot_d)),
-            row("coupler point P from B along BC", point(d.coupler_point_m)),
-            row(
-                "largest miss",
-                format!(
-                    "{} ({:.1e} of the targets' size)",
-                    mm(d.max_error_m),
-                    d.relative_error
-                ),
+    let mut table = vec![
+        row("Grashof class", l.grashof.to_string()),
+        row("crank AB", mm(l.crank_m)),
+        row("coupler BC", mm(l.coupler_m)),
+        row("rocker CD", mm(l.rocker_m)),
+        row("ground AD", mm(ground)),
+        row("crank pivot A", point(l.pivot_a)),
+        row("rocker pivot D", point(l.pivot_d)),
+        row("coupler point P from B along BC", point(l.coupler_point_m)),
+        row(
+            "largest miss",
+            format!(
+                "{} ({:.1e} of the targets' size)",
+                mm(d.max_error_m),
+                d.relative_error
             ),
-            row(
-                "crank turns fully",
-                if d.crank_turns { "yes" } else { "no" }.into(),
+        ),
+        row(
+            "crank turns fully",
+            if l.crank_turns { "yes" } else { "no" }.into(),
+        ),
+        row(
+            "least transmission angle",
+            l.min_transmission_deg.map_or_else(
+                || "the travel leaves the branch".into(),
+                |m| format!("{m:.1}°"),
             ),
-            row(
-                "least transmission angle",
-                d.min_transmission_deg.map_or_else(
-                    || "the travel leaves the branch".into(),
-                    |m| format!("{m:.1}°"),
-                ),
-            ),
-        ],
-        scene: d.scene(),
-        figure: crate::synthesis::Figure::None,
+        ),
+    ];
+    if let Some(c) = member.checked_sub(1).and_then(|k| d.cognates.get(k)) {
+        table.insert(
+            0,
+            row("cognate: its crank", turns_with(c.turns_with, true).into()),
+        );
     }
+    let scene = match member {
+        0 => d.scene(),
+        k => d.cognate_scene(k - 1)?,
+    };
+    Some(Design {
+        table,
+        scene,
+        figure: crate::synthesis::Figure::None,
+    })
 }
 
 #[cfg(test)]

@@ -62,7 +62,7 @@ fn scene_miss(
     let mut k = Kinematics::new(Mechanism::from_scene(scene).expect("valid")).expect("solves");
     let p = k.mechanism().point_index("P").expect("P on the coupler");
     let mut miss: f64 = 0.0;
-    for (t, deg) in targets_mm.iter().zip(&design.crank_deg) {
+    for (t, deg) in targets_mm.iter().zip(&design.linkage.crank_deg) {
         let at = k.solve(deg.to_radians()).expect("closes").points[p].position;
         miss = miss.max((at - Vec2::new(t[0], t[1]) * 1e-3).norm());
     }
@@ -183,9 +183,12 @@ fn targets_clicked_on_the_canvas_are_searched_to_a_design_that_opens() {
 fn a_search_stops_and_continues_where_it_was() {
     let mut h = common::stateful_harness();
     common::synthesis_tab(&mut h, "path");
-    // The default targets: eight points rounded to 0.1 mm, which no four-bar meets
-    // to the tolerance asked here, so the search is still running when stopped.
-    common::synthesis_inputs(&mut h).path.tolerance = 1e-9;
+    // The default targets, timed: eight points rounded to 0.1 mm at prescribed crank
+    // angles, which no four-bar meets to the tolerance asked here (sixteen equations
+    // in ten unknowns), so the search is still running when stopped.
+    let inputs = common::synthesis_inputs(&mut h);
+    inputs.path.tolerance = 1e-9;
+    inputs.path.timed = true;
     h.get_by_label("Search").click();
     for _ in 0..5 {
         h.step();

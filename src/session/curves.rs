@@ -222,9 +222,7 @@ fn traces(k: &Kinematics, sw: &Sweep) -> Vec<Trace> {
     let m = k.mechanism();
     let pinned_to_ground = |link: usize| {
         link == m.ground
-            || m.revolutes
-                .iter()
-                .any(|r| (r.a == link && r.b == m.ground) || (r.b == link && r.a == m.ground))
+            || m.ground_pivot_of(link).is_some()
             || m.sliders
                 .iter()
                 .any(|s| s.slider == link && s.guide == m.ground)

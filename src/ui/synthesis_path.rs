@@ -1,14 +1,15 @@
 //! The synthesis window's path tab: targets placed by clicking on its canvas,
 //! dragged there, or typed and pasted as CSV; the search runs off the frame with a
 //! progress bar, the best curve so far drawn live, stop and continue; the designs
-//! found are listed by their largest miss, and the one chosen opens as a scene or
+//! found are listed by their largest miss, each with its two cognates (the other
+//! four-bars that trace the same curve), and the one chosen opens as a scene or
 //! replaces the current one (undo-able), as the other tabs' designs do.
 
 use eframe::egui;
 use egui_plot::{Line, Plot, PlotPoint, PlotPoints, Points, Text};
-use linkage::synthesis::path::PathDesign;
+use linkage::synthesis::path::{PathDesign, PathLinkage};
 
-use crate::path_inputs::{PathInputs, design_of};
+use crate::path_inputs::{Member, PathInputs, design_of, member_of, turns_with};
 use crate::path_job::PathJob;
 use crate::ui::control_map::{ControlKind, ControlMap};
 use crate::ui::synthesis::{Chosen, design_view};
@@ -29,8 +30,8 @@ pub struct PathTab {
     pub job: Option<PathJob>,
     /// Why the search did not start.
     refused: Option<String>,
-    /// The design chosen in the list.
-    chosen: usize,
+    /// The design chosen in the list, and which of its family.
+    chosen: (usize, Member),
     /// The target being dragged on the canvas.
     dragging: Option<usize>,
 }
@@ -70,11 +71,16 @@ fn targets(
     {
         tab.csv = inputs.to_csv();
     }
-    // Live, the best so far; once stopped, the design chosen in the list.
+    // Live, the best so far; once stopped, the four-bar chosen in the list.
     let leader = tab.job.as_ref().and_then(|j| {
         let shot = j.snapshot();
-        let chosen = shot.designs.get(tab.chosen).filter(|_| !j.is_running());
-        chosen.or(shot.leader.as_ref()).cloned()
+        let (design, member) = tab.chosen;
+        let chosen = shot
+            .designs
+            .get(design)
+            .filter(|_| !j.is_running())
+            .and_then(|d| member_of(d, member));
+        chosen.or(shot.leader.as_ref().map(|d| &d.linkage)).cloned()
     });
     if canvas(ui, controls, inputs, tab, leader.as_ref()) {
         tab.csv = inputs.to_csv();
@@ -115,7 +121,7 @@ fn canvas(
     controls: &mut ControlMap,
     inputs: &mut PathInputs,
     tab: &mut PathTab,
-    leader: Option<&PathDesign>,
+    leader: Option<&PathLinkage>,
 ) -> bool {
     let shown = Plot::new("path synthesis canvas")
         .data_aspect(1.0)
@@ -193,7 +199,7 @@ fn canvas(
 
 /// The linkage where its coupler point meets the first target: A-B-C-D and the
 /// coupler triangle B-P-C, mm.
-fn linkage_lines(d: &PathDesign) -> Option<PlotPoints<'static>> {
+fn linkage_lines(d: &PathLinkage) -> Option<PlotPoints<'static>> {
     let theta = d.crank_deg.first()?.to_radians();
     let pins = d.linkage().pins_at(theta)?;
     let mm = |v: linkage::Vec2| [v.x * 1e3, v.y * 1e3];
@@ -217,6 +223,10 @@ fn constraints(ui: &mut egui::Ui, inputs: &mut PathInputs) {
     ui.horizontal(|ui| {
         ui.checkbox(&mut inputs.crank_turns, "crank turns fully");
         ui.checkbox(&mut inputs.one_branch, "targets on one branch");
+        ui.add_enabled(
+            !inputs.timed,
+            egui::Checkbox::new(&mut inputs.any_order, "targets in any order"),
+        );
     });
     ui.horizontal(|ui| {
         let name = ui.label("least transmission angle (deg)");
@@ -257,7 +267,7 @@ fn search_buttons(
                 Ok(s) => {
                     tab.job = Some(PathJob::start(s));
                     tab.refused = None;
-                    tab.chosen = 0;
+                    tab.chosen = (0, 0);
                 }
                 Err(why) => tab.refused = Some(why),
             }
@@ -299,23 +309,50 @@ fn designs(ui: &mut egui::Ui, controls: &mut ControlMap, tab: &mut PathTab) -> O
     }
     ui.separator();
     for (i, d) in found.iter().enumerate() {
-        let mu = d
-            .min_transmission_deg
-            .map_or_else(String::new, |m| format!(", μ ≥ {m:.0}°"));
-        let kind = if d.crank_turns {
-            "crank turns"
-        } else {
-            "crank rocks"
-        };
         let text = format!(
-            "{}: miss {:.1e} of the size, {kind}{mu}",
+            "{}: miss {:.1e} of the size, {}",
             i + 1,
-            d.relative_error
+            d.relative_error,
+            summary(&d.linkage)
         );
-        if ui.selectable_label(tab.chosen == i, text).clicked() {
-            tab.chosen = i;
+        if ui.selectable_label(tab.chosen == (i, 0), text).clicked() {
+            tab.chosen = (i, 0);
+        }
+        for (k, c) in d.cognates.iter().enumerate() {
+            let text = format!(
+                "    cognate {} ({}): {}",
+                k + 1,
+                turns_with(c.turns_with, false),
+                summary(&c.linkage)
+            );
+            let row = ui.selectable_label(tab.chosen == (i, k + 1), text);
+            controls.note(
+                ui,
+                ControlKind::FileButton,
+                &format!("cognate {}.{}", i + 1, k + 1),
+                &row,
+            );
+            if row.clicked() {
+                tab.chosen = (i, k + 1);
+            }
         }
     }
-    let design = design_of(found.get(tab.chosen).or(found.first())?);
+    let (design, member) = tab.chosen;
+    let shown = found.get(design).and_then(|d| design_of(d, member));
+    let design = shown.or_else(|| design_of(found.first()?, 0))?;
     design_view(ui, controls, &design)
+}
+
+/// A four-bar in a few words: its class, whether its crank turns, its least
+/// transmission angle.
+fn summary(l: &PathLinkage) -> String {
+    let mu = l
+        .min_transmission_deg
+        .map_or_else(String::new, |m| format!(", μ ≥ {m:.0}°"));
+    let crank = if l.crank_turns {
+        "crank turns"
+    } else {
+        "crank rocks"
+    };
+    format!("{}, {crank}{mu}", l.grashof)
 }

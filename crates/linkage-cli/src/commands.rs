@@ -16,6 +16,8 @@ use crate::{Command, Format, PathArg, SceneArgs, SynthCommand};
 pub enum Failure {
     /// The command's own error, as shown to the user.
     Message(String),
+    /// The solver's error, worded by the command that met it ([`describe`]).
+    Solver(linkage::LinkageError),
     /// Writing the output failed (a closed pipe, a full disk).
     Output(std::io::Error),
 }
@@ -28,7 +30,7 @@ impl From<String> for Failure {
 
 impl From<linkage::LinkageError> for Failure {
     fn from(e: linkage::LinkageError) -> Self {
-        Self::Message(e.to_string())
+        Self::Solver(e)
     }
 }
 
@@ -157,6 +159,29 @@ fn apply_branches(mech: &mut Mechanism, spec: &str) -> Result<(), String> {
     Ok(())
 }
 
+/// The solver's error in the words of this command line: an input speed that
+/// overflows is named by where it came from (`--speed-rad-s`, or the scene's driver).
+pub(crate) fn describe(args: &SceneArgs, e: linkage::LinkageError) -> String {
+    let linkage::LinkageError::SpeedOverflow {
+        speed_rad_s,
+        most_rad_s,
+    } = e
+    else {
+        return e.to_string();
+    };
+    let rpm = |w: f64| w * 60.0 / std::f64::consts::TAU;
+    match args.speed_rad_s {
+        Some(_) => format!(
+            "--speed-rad-s {speed_rad_s:e} makes velocities or accelerations overflow: give at most {most_rad_s:.1e} rad/s"
+        ),
+        None => format!(
+            "the scene's driver speed ({speed_rad_s:e} rad/s, {:e} rpm) makes velocities or accelerations overflow: at most {most_rad_s:.1e} rad/s ({:.1e} rpm), or give --speed-rad-s",
+            rpm(speed_rad_s),
+            rpm(most_rad_s)
+        ),
+    }
+}
+
 pub(crate) fn check_finite(values: &[f64], what: &str) -> Result<(), String> {
     match values.iter().position(|v| !v.is_finite()) {
         Some(i) => Err(format!(
@@ -208,9 +233,12 @@ fn sweep(
     }
     let mut k = load(args)?;
     if format == Format::Csv {
-        return sweep_csv(&mut k, steps, out);
+        return sweep_csv(&mut k, steps, out).map_err(|f| match f {
+            Failure::Solver(e) => Failure::Message(describe(args, e)),
+            other => other,
+        });
     }
-    let sw = linkage::sweep::sweep(&mut k, steps).map_err(|e| e.to_string())?;
+    let sw = linkage::sweep::sweep(&mut k, steps).map_err(|e| describe(args, e))?;
     let m = k.mechanism();
     let header = csv_header(m);
     let rows: Vec<Vec<f64>> = sw
@@ -266,7 +294,10 @@ fn warn_near_singular(inputs_rad: &[f64]) {
 
 fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<String, String> {
     let mut k = load(args)?;
-    let s: Solution = k.solve(input_deg.to_radians()).map_err(|e| e.to_string())?;
+    let s: Solution = k
+        .solve(input_deg.to_radians())
+        .and_then(|s| linkage::overflow::check(&mut k, &s).map(|()| s))
+        .map_err(|e| describe(args, e))?;
     let m = k.mechanism();
     let angles: Vec<f64> = s.links.iter().map(|l| l.angle_rad()).collect();
     let header = csv_header(m);

@@ -6,7 +6,7 @@ use serde_json::{Value, json};
 
 use crate::Format;
 use crate::SceneArgs;
-use crate::commands::{json_text, load, records_to_csv};
+use crate::commands::{describe, json_text, load, records_to_csv};
 
 /// Runs the cycle and formats it; a singular amplification is an empty CSV field
 /// (JSON null), never infinity.
@@ -25,7 +25,7 @@ pub fn run(args: &SceneArgs, steps: usize, format: Format) -> Result<String, Str
     let mut peak = 0.0_f64;
     for i in 0..steps {
         let input = start + std::f64::consts::TAU * i as f64 / steps as f64;
-        let s = ks.at(&mut k, input).map_err(|e| e.to_string())?;
+        let s = ks.at(&mut k, input).map_err(|e| describe(args, e))?;
         if i == 0 {
             for j in &s.joints {
                 header.push(format!("{}_fx", j.name));

@@ -6,6 +6,7 @@
 #![forbid(unsafe_code)]
 
 mod commands;
+mod counts;
 mod diagram;
 mod kinetostatics;
 mod plot;
@@ -69,8 +70,8 @@ enum Command {
     Sweep {
         #[command(flatten)]
         scene: SceneArgs,
-        /// Number of positions.
-        #[arg(long, default_value_t = 360)]
+        /// Number of positions (at least 2: the cycle's ends).
+        #[arg(long, default_value_t = 360, allow_hyphen_values = true, value_parser = counts::at_least_two)]
         steps: usize,
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Csv)]
@@ -109,7 +110,7 @@ enum Command {
         #[command(flatten)]
         scene: SceneArgs,
         /// Number of positions.
-        #[arg(long, default_value_t = 360)]
+        #[arg(long, default_value_t = 360, allow_hyphen_values = true, value_parser = counts::at_least_one)]
         steps: usize,
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Csv)]
@@ -205,7 +206,7 @@ enum SynthCommand {
         fixed_near: Vec<f64>,
         /// Five positions: which two Burmester points (as listed, from 1) make the
         /// four-bar.
-        #[arg(long, num_args = 2, value_names = ["I", "J"])]
+        #[arg(long, num_args = 2, value_names = ["I", "J"], allow_hyphen_values = true, value_parser = counts::at_least_one)]
         pair: Vec<usize>,
         /// Write the four-bar as a scene file here.
         #[arg(long)]
@@ -239,35 +240,47 @@ enum SynthCommand {
 #[derive(clap::Args, Debug)]
 struct PathSearchArgs {
     /// CSV of targets: `x_m, y_m` per row, or `x_m, y_m, crank_deg` with --timed
-    /// (a header allowed).
+    /// (a header allowed). Untimed targets are met in the order given, once round
+    /// the coupler curve, in either direction.
     #[arg(long)]
     points: PathBuf,
     /// The third column prescribes the crank angle at each target (only the
     /// differences matter).
     #[arg(long)]
     timed: bool,
+    /// Untimed targets may be met in any order (each where the curve passes nearest).
+    #[arg(long, conflicts_with = "timed")]
+    any_order: bool,
     /// Seed of the search.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = counts::any_u64)]
     seed: u64,
     /// Write the best design as a scene file here.
     #[arg(long, alias = "scene-out")]
     out: Option<PathBuf>,
-    /// Stop after this many distinct designs within tolerance.
-    #[arg(long, default_value_t = 3)]
+    /// Write the best design's two cognates (the other four-bars that trace the same
+    /// curve) as scene files here.
+    #[arg(long, num_args = 2, value_names = ["COGNATE1", "COGNATE2"])]
+    cognate_out: Option<Vec<PathBuf>>,
+    /// Stop after this many distinct families (a design and its two cognates)
+    /// within tolerance (the search also stops when restarts find no new one).
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = counts::at_least_one)]
     solutions: usize,
     /// Within tolerance: the largest miss is at most this share of the targets' size.
     #[arg(long, default_value_t = 1e-6)]
     tolerance: f64,
     /// Most evaluations of a candidate linkage.
-    #[arg(long, default_value_t = 3_000_000)]
+    #[arg(long, default_value_t = 3_000_000, allow_hyphen_values = true, value_parser = counts::at_least_one_u64)]
     max_evaluations: u64,
-    /// Let the crank rock instead of turning through a whole revolution.
+    /// The crank must turn through a whole revolution.
     #[arg(long)]
+    crank_turns: bool,
+    /// Let the crank rock (the default; kept for scripts that ask for it).
+    #[arg(long, hide = true, conflicts_with = "crank_turns")]
     rocking_crank: bool,
     /// Least transmission angle over the crank's travel through the targets, degrees.
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     min_transmission_deg: f64,
-    /// Both ground pivots within this box, m (default: within 1.5 times the targets'
+    /// Both ground pivots within this box, m (default: within 4 times the targets'
     /// size of their centroid, each way).
     #[arg(long, num_args = 4, allow_hyphen_values = true, value_names = ["X0", "Y0", "X1", "Y1"])]
     ground_region: Option<Vec<f64>>,
@@ -290,6 +303,10 @@ fn main() -> ExitCode {
         }
         Err(commands::Failure::Message(message)) => {
             eprintln!("error: {message}");
+            ExitCode::FAILURE
+        }
+        Err(commands::Failure::Solver(e)) => {
+            eprintln!("error: {e}");
             ExitCode::FAILURE
         }
     }

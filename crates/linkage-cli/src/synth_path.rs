@@ -3,7 +3,7 @@
 //! ranked by their largest miss, the evaluations and the time taken.
 
 use linkage::synthesis::path::{
-    PathConstraints, PathDesign, PathSearch, PathTargets, SearchOptions,
+    PathConstraints, PathDesign, PathSearch, PathTargets, SearchOptions, TargetOrder,
 };
 use serde_json::json;
 
@@ -34,13 +34,22 @@ pub fn run(args: &PathSearchArgs) -> Result<String, String> {
     let Some(best) = designs.first() else {
         return Err(format!(
             "no four-bar meets the constraints after {} evaluations: raise --max-evaluations, \
-             or loosen them (--rocking-crank, --any-branch, --min-transmission-deg, --ground-region)",
+             or loosen them (--any-branch, --min-transmission-deg, --ground-region, without --crank-turns)",
             progress.evaluations
         ));
     };
     if let Some(path) = &args.out {
-        let scene = best.scene().to_ron().map_err(|e| e.to_string())?;
-        std::fs::write(path, scene).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        write_scene(&best.scene(), path)?;
+    }
+    for (k, path) in args.cognate_out.iter().flatten().enumerate() {
+        let scene = best.cognate_scene(k).ok_or_else(|| {
+            format!(
+                "the best design has no cognate {} to write to {} (its coupler point lies on B or C)",
+                k + 1,
+                path.display()
+            )
+        })?;
+        write_scene(&scene, path)?;
     }
     json_text(&json!({
         "targets": targets.points_m.len(),
@@ -51,6 +60,11 @@ pub fn run(args: &PathSearchArgs) -> Result<String, String> {
         "within_tolerance": progress.solutions,
         "designs": designs.iter().map(design_json).collect::<Vec<_>>(),
     }))
+}
+
+fn write_scene(scene: &linkage::scene::SceneFile, path: &std::path::Path) -> Result<(), String> {
+    let text = scene.to_ron().map_err(|e| e.to_string())?;
+    std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
 }
 
 fn constraints(args: &PathSearchArgs) -> Result<PathConstraints, String> {
@@ -65,10 +79,15 @@ fn constraints(args: &PathSearchArgs) -> Result<PathConstraints, String> {
         }
     };
     Ok(PathConstraints {
-        crank_turns: !args.rocking_crank,
+        crank_turns: args.crank_turns,
         min_transmission_deg: args.min_transmission_deg,
         ground_region_m,
         one_branch: !args.any_branch,
+        order: if args.any_order {
+            TargetOrder::Any
+        } else {
+            TargetOrder::AsGiven
+        },
     })
 }
 
@@ -82,20 +101,8 @@ fn options(args: &PathSearchArgs) -> SearchOptions {
     }
 }
 
+/// A design as JSON: its linkage, misses and cognates (each with its own class,
+/// crank and transmission angle, and the link of the design its crank turns with).
 fn design_json(d: &PathDesign) -> serde_json::Value {
-    json!({
-        "pivot_a_m": d.pivot_a,
-        "pivot_d_m": d.pivot_d,
-        "crank_m": d.crank_m,
-        "coupler_m": d.coupler_m,
-        "rocker_m": d.rocker_m,
-        "coupler_point_m": d.coupler_point_m,
-        "c_left_of_bd": d.c_left_of_bd,
-        "crank_deg": d.crank_deg,
-        "max_error_m": d.max_error_m,
-        "rms_error_m": d.rms_error_m,
-        "relative_error": d.relative_error,
-        "crank_turns": d.crank_turns,
-        "min_transmission_deg": d.min_transmission_deg,
-    })
+    serde_json::to_value(d).unwrap_or_else(|e| json!({ "error": e.to_string() }))
 }

@@ -680,48 +680,76 @@ fn synth_path_timed_designs_a_four_bar_that_sweeps_through_the_targets() {
     let _ = std::fs::remove_dir_all(dir);
 }
 
-/// `synth path` without timing: nine targets; the scene's swept coupler curve
-/// passes within 1e-6 of their size of every one.
+/// The largest distance of a target from the coupler curve of `scene` swept by
+/// `linkage sweep` (a polyline of 36,000 positions).
+fn curve_miss(scene: &std::path::Path, degrees: &[f64]) -> f64 {
+    let swept = swept_p(scene, 36_000);
+    degrees
+        .iter()
+        .map(|&d| {
+            let (tx, ty) = known_coupler_point(d);
+            swept
+                .iter()
+                .zip(swept.iter().cycle().skip(1))
+                .map(|(&(x0, y0), &(x1, y1))| {
+                    let (sx, sy) = (x1 - x0, y1 - y0);
+                    let len2 = (sx * sx + sy * sy).max(1e-300);
+                    let t = (((tx - x0) * sx + (ty - y0) * sy) / len2).clamp(0.0, 1.0);
+                    (x0 + t * sx - tx).hypot(y0 + t * sy - ty)
+                })
+                .fold(f64::INFINITY, f64::min)
+        })
+        .fold(0.0, f64::max)
+}
+
+/// `synth path` without timing: ten targets in order, a turning crank asked for; the
+/// scene's swept coupler curve passes within 1e-6 of their size of every one, and so
+/// do the scenes of the design's two cognates (`--cognate-out`) where the cognate
+/// stays on its branch; the JSON lists both with their own class and crank.
 #[test]
-fn synth_path_untimed_curve_passes_through_the_targets() {
+fn synth_path_untimed_curve_and_its_cognates_pass_through_the_targets() {
     let dir = scratch("linkage-cli-path-u");
-    let degrees: Vec<f64> = (0..9).map(|k| 10.0 + 33.0 * f64::from(k)).collect();
+    let degrees: Vec<f64> = (0..10).map(|k| 10.0 + 33.0 * f64::from(k)).collect();
     let csv = write_targets(&dir, "untimed.csv", &degrees, false);
     let scene = dir.join("path.ron");
+    let cognates = [dir.join("cognate1.ron"), dir.join("cognate2.ron")];
     let (ok, out, err) = linkage(&[
         "synth",
         "path",
         "--points",
         csv.to_str().expect("path"),
-        "--solutions",
-        "1",
+        "--crank-turns",
         "--tolerance",
         "1e-8",
         "--out",
         scene.to_str().expect("path"),
+        "--cognate-out",
+        cognates[0].to_str().expect("path"),
+        cognates[1].to_str().expect("path"),
     ]);
     assert!(ok, "{err}");
     let v: serde_json::Value = serde_json::from_str(&out).expect("json");
-    assert!(
-        v["designs"][0]["crank_turns"].as_bool().expect("turns"),
-        "{out}"
-    );
-    let swept = swept_p(&scene, 36_000);
+    let best = &v["designs"][0];
+    assert!(best["crank_turns"].as_bool().expect("turns"), "{out}");
     let size = 2.9949;
-    for &d in &degrees {
-        let (tx, ty) = known_coupler_point(d);
-        let miss = swept
-            .iter()
-            .zip(swept.iter().cycle().skip(1))
-            .map(|(&(x0, y0), &(x1, y1))| {
-                let (sx, sy) = (x1 - x0, y1 - y0);
-                let len2 = (sx * sx + sy * sy).max(1e-300);
-                let t = (((tx - x0) * sx + (ty - y0) * sy) / len2).clamp(0.0, 1.0);
-                (x0 + t * sx - tx).hypot(y0 + t * sy - ty)
-            })
-            .fold(f64::INFINITY, f64::min);
-        assert!(miss <= 1e-6 * size, "{d}°: the curve misses by {miss}");
+    let miss = curve_miss(&scene, &degrees);
+    assert!(miss <= 1e-6 * size, "the curve misses by {miss}");
+    let listed = best["cognates"].as_array().expect("cognates");
+    assert_eq!(listed.len(), 2, "{out}");
+    assert_eq!(listed[0]["turns_with"], "crank", "{out}");
+    let mut checked = 0;
+    for (c, file) in listed.iter().zip(&cognates) {
+        assert!(
+            c["grashof"].is_string() && c["crank_turns"].is_boolean(),
+            "{c}"
+        );
+        if c["min_transmission_deg"].is_number() {
+            let miss = curve_miss(file, &degrees);
+            assert!(miss <= 1e-6 * size, "{}: misses by {miss}", file.display());
+            checked += 1;
+        }
     }
+    assert!(checked >= 1, "no cognate stays on its branch: {out}");
     let _ = std::fs::remove_dir_all(dir);
 }
 

@@ -187,11 +187,7 @@ pub fn outputs(k: &Kinematics) -> Vec<Output> {
     let mut out: Vec<Output> = m
         .moving_links()
         .filter(|&l| l != m.driver.link)
-        .filter(|&l| {
-            m.revolutes
-                .iter()
-                .any(|r| (r.a == l && r.b == m.ground) || (r.b == l && r.a == m.ground))
-        })
+        .filter(|&l| m.ground_pivot_of(l).is_some())
         .map(|l| Output::Rocker {
             link: l,
             name: m.links[l].name.clone(),
@@ -273,6 +269,36 @@ pub enum GrashofClass {
     /// Not Grashof: no link turns fully.
     #[serde(rename = "triple-rocker (non-Grashof)")]
     TripleRocker,
+}
+
+impl GrashofClass {
+    /// The class of a four-bar of lengths ground, input, coupler, output (any unit).
+    pub fn of_lengths(lengths: [f64; 4]) -> Self {
+        Self::with_sums(lengths).0
+    }
+
+    /// The class, s + l and p + q.
+    fn with_sums(lengths: [f64; 4]) -> (Self, f64, f64) {
+        let mut sorted = lengths;
+        sorted.sort_by(f64::total_cmp);
+        let (sl, pq) = (sorted[0] + sorted[3], sorted[1] + sorted[2]);
+        let shortest = (0..4)
+            .min_by(|&x, &y| lengths[x].total_cmp(&lengths[y]))
+            .unwrap_or(0);
+        let class = if (sl - pq).abs() <= 1e-9 * sl {
+            Self::ChangePoint
+        } else if sl > pq {
+            Self::TripleRocker
+        } else {
+            match shortest {
+                0 => Self::DoubleCrank,
+                1 => Self::CrankRocker,
+                2 => Self::DoubleRocker,
+                _ => Self::RockerCrank,
+            }
+        };
+        (class, sl, pq)
+    }
 }
 
 impl std::fmt::Display for GrashofClass {
@@ -660,26 +686,8 @@ pub fn grashof(k: &Kinematics) -> Option<Grashof> {
         g.len_j,
     ];
     let names = [m.ground, crank, g.i, g.j].map(|l| m.links[l].name.clone());
-    let mut sorted = lengths;
-    sorted.sort_by(f64::total_cmp);
-    let (s, l) = (sorted[0], sorted[3]);
-    let (sl, pq) = (s + l, sorted[1] + sorted[2]);
-    let change_point = (sl - pq).abs() <= 1e-9 * sl;
-    let shortest = (0..4)
-        .min_by(|&x, &y| lengths[x].total_cmp(&lengths[y]))
-        .unwrap_or(0);
-    let class = if change_point {
-        GrashofClass::ChangePoint
-    } else if sl > pq {
-        GrashofClass::TripleRocker
-    } else {
-        match shortest {
-            0 => GrashofClass::DoubleCrank,
-            1 => GrashofClass::CrankRocker,
-            2 => GrashofClass::DoubleRocker,
-            _ => GrashofClass::RockerCrank,
-        }
-    };
+    let (class, sl, pq) = GrashofClass::with_sums(lengths);
+    let change_point = class == GrashofClass::ChangePoint;
     Some(Grashof {
         class,
         grashof: sl <= pq || change_point,

@@ -73,6 +73,29 @@ pub enum LinkageError {
     /// The chain has no closed-form decomposition into dyads.
     #[error("no closed-form dyad decomposition: {0}")]
     NotDecomposable(String),
+    /// The input speed is so high that velocities or accelerations overflow (are no
+    /// longer finite numbers) somewhere on the cycle.
+    #[error(
+        "the input speed {speed_rad_s:e} rad/s makes velocities or accelerations overflow: at most {most_rad_s:.1e} rad/s"
+    )]
+    SpeedOverflow {
+        /// The speed asked for, rad/s.
+        speed_rad_s: f64,
+        /// The largest speed whose velocities and accelerations stay finite over the
+        /// cycle, rad/s (with a factor of two to spare).
+        most_rad_s: f64,
+    },
+    /// A link that cannot serve as the coordinate of a dynamic run.
+    #[error(
+        "link `{link}` cannot be the coordinate: it has no revolute joint to ground (links that can: {})",
+        candidates.join(", ")
+    )]
+    NotACoordinate {
+        /// The link asked for.
+        link: String,
+        /// The moving links with a revolute joint to ground.
+        candidates: Vec<String>,
+    },
 }
 
 /// Shorthand for results carrying a [`LinkageError`].

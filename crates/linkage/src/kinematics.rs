@@ -123,18 +123,21 @@ impl Kinematics {
     /// regular.
     ///
     /// # Errors
-    /// [`LinkageError::InvalidParameter`] when `link` has no revolute joint to ground.
+    /// [`LinkageError::NotACoordinate`] when `link` has no revolute joint to ground.
     pub fn redriven(&self, link: usize, pose: &Solution) -> Result<Self> {
         let m = &self.mech;
         let pivot = m
-            .revolutes
-            .iter()
-            .position(|r| (r.a == link && r.b == m.ground) || (r.b == link && r.a == m.ground))
-            .filter(|_| link != m.ground)
-            .ok_or_else(|| LinkageError::InvalidParameter {
-                name: "coordinate link".into(),
-                value: link as f64,
-                valid: "a moving link with a revolute joint to ground".into(),
+            .ground_pivot_of(link)
+            .ok_or_else(|| LinkageError::NotACoordinate {
+                link: m
+                    .links
+                    .get(link)
+                    .map_or_else(|| format!("#{link}"), |l| l.name.clone()),
+                candidates: m
+                    .moving_links()
+                    .filter(|&l| m.ground_pivot_of(l).is_some())
+                    .map(|l| m.links[l].name.clone())
+                    .collect(),
             })?;
         let mut mech = m.clone();
         let input = pose.links[link].angle_rad();

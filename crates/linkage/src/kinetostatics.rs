@@ -83,6 +83,7 @@ impl Kinetostatics {
     pub fn at(&mut self, k: &mut Kinematics, input_rad: f64) -> Result<KinetostaticState> {
         let omega = k.mechanism().driver.speed_rad_s;
         k.solve_into(input_rad, omega, &mut self.sol)?;
+        crate::overflow::check(k, &self.sol)?;
         let m = k.mechanism();
         let sol = &self.sol;
         let applied = self.forces.applied_loads(sol);

@@ -26,6 +26,7 @@ pub mod lanes;
 pub mod model;
 pub mod motion;
 pub mod newton;
+pub mod overflow;
 pub mod polygon;
 mod roots_util;
 pub mod scene;

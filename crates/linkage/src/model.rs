@@ -241,6 +241,19 @@ impl Mechanism {
         (0..self.links.len()).filter(move |&i| i != self.ground)
     }
 
+    /// The revolute joint (its index in `revolutes`) that pins moving link `link` to
+    /// ground, if one does.
+    pub fn ground_pivot_of(&self, link: usize) -> Option<usize> {
+        let g = self.ground;
+        (link != g)
+            .then(|| {
+                self.revolutes
+                    .iter()
+                    .position(|r| (r.a == link && r.b == g) || (r.b == link && r.a == g))
+            })
+            .flatten()
+    }
+
     /// Validates a parsed scene and converts it to SI.
     pub fn from_scene(scene: &SceneFile) -> Result<Self> {
         let len = scene.length_unit.to_metres();

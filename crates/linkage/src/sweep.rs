@@ -92,7 +92,9 @@ pub fn sweep(k: &mut Kinematics, steps: usize) -> Result<Sweep> {
 /// unwrapped along the sweep) instead of keeping it: memory stays flat for any count.
 ///
 /// # Errors
-/// Fewer than 2 steps, the solver's error, or the first error of `visit`.
+/// Fewer than 2 steps, the solver's error, an input speed so high that a velocity or
+/// acceleration overflows ([`LinkageError::SpeedOverflow`]), or the first error of
+/// `visit`.
 pub fn sweep_each<E: From<LinkageError>>(
     k: &mut Kinematics,
     steps: usize,
@@ -122,6 +124,7 @@ pub fn sweep_each<E: From<LinkageError>>(
         solve_stepping_past_branch_points(k, inputs, speed, (b - a) * 1e-6, &mut lanes)?;
         for lane in 0..LANES.min(steps - first) {
             lanes.lane_into(lane, &mut s);
+            crate::overflow::check(k, &s)?;
             if s.conditioning < NEAR_SINGULAR {
                 near_singular.push(s.input_rad);
             }

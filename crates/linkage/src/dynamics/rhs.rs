@@ -55,11 +55,7 @@ impl Rhs {
         let m = k.mechanism();
         let candidates = m
             .moving_links()
-            .filter(|&l| {
-                m.revolutes
-                    .iter()
-                    .any(|r| (r.a == l && r.b == m.ground) || (r.b == l && r.a == m.ground))
-            })
+            .filter(|&l| m.ground_pivot_of(l).is_some())
             .collect();
         Self {
             sol: k.empty_solution(),

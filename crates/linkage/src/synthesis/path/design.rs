@@ -1,16 +1,20 @@
 //! A path generator found by the search, in world units: its linkage, how closely
-//! it meets the targets, its coupler curve and its scene.
+//! it meets the targets, its coupler curve, its scene, and its two cognates (the
+//! other four-bars that trace the same curve).
 
 use serde::Serialize;
 
+use super::cognates::{TurnsWith, cognates};
 use super::geometry::{CouplerFourBar, PARAMS};
 use super::problem::Problem;
+use crate::analysis::GrashofClass;
 use crate::motion::Vec2;
 use crate::scene::SceneFile;
 
-/// A four-bar whose coupler point P passes through (or near) the targets.
+/// A four-bar with a coupler point P, placed in the world, and how it meets the
+/// targets' places on its curve.
 #[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct PathDesign {
+pub struct PathLinkage {
     /// Crank pivot A, m.
     pub pivot_a: [f64; 2],
     /// Rocker pivot D, m.
@@ -27,12 +31,8 @@ pub struct PathDesign {
     pub c_left_of_bd: bool,
     /// The crank angle (from the x-axis) at which P meets each target, deg.
     pub crank_deg: Vec<f64>,
-    /// Largest distance of P from a target, m.
-    pub max_error_m: f64,
-    /// Root-mean-square distance of P from the targets, m.
-    pub rms_error_m: f64,
-    /// The largest distance over the targets' size (the diagonal of their bounding box).
-    pub relative_error: f64,
+    /// Grashof class (which link is shortest, and whether any turns fully).
+    pub grashof: GrashofClass,
     /// Whether the crank turns through a whole revolution.
     pub crank_turns: bool,
     /// Least transmission angle over the crank's travel through the targets, deg
@@ -40,40 +40,24 @@ pub struct PathDesign {
     pub min_transmission_deg: Option<f64>,
 }
 
-impl PathDesign {
-    /// The design of the normalised four-bar `params` on branch `left`, meeting the
-    /// targets at crank angles `angles` (rad).
-    pub(super) fn new(problem: &Problem, params: &[f64], left: bool, angles: &[f64]) -> Self {
-        let s = problem.scale;
-        let norm = CouplerFourBar::from_params(&params[..PARAMS], left);
-        let world = |p: Vec2| problem.centre + p * s;
-        let misses: Vec<f64> = problem
-            .targets
-            .iter()
-            .zip(angles)
-            .map(|(t, &theta)| {
-                norm.point_at(theta)
-                    .map_or(f64::INFINITY, |p| (p - t).norm() * s)
-            })
-            .collect();
-        let max = misses.iter().cloned().fold(0.0, f64::max);
-        let rms = (misses.iter().map(|m| m * m).sum::<f64>() / misses.len() as f64).sqrt();
-        let travel = norm.travel(angles);
+impl PathLinkage {
+    /// `m` meeting the targets at crank angles `angles` (rad); `travel` gives its
+    /// travel through them (in their order, or the shortest arc).
+    fn new(m: &CouplerFourBar, angles: &[f64], travel: Option<(f64, f64)>) -> Self {
+        let ground = (m.d - m.a).norm();
         Self {
-            pivot_a: world(norm.a).into(),
-            pivot_d: world(norm.d).into(),
-            crank_m: norm.crank * s,
-            coupler_m: norm.coupler * s,
-            rocker_m: norm.rocker * s,
-            coupler_point_m: (norm.point * s).into(),
-            c_left_of_bd: left,
+            pivot_a: m.a.into(),
+            pivot_d: m.d.into(),
+            crank_m: m.crank,
+            coupler_m: m.coupler,
+            rocker_m: m.rocker,
+            coupler_point_m: m.point.into(),
+            c_left_of_bd: m.c_left_of_bd,
             crank_deg: angles.iter().map(|a| a.to_degrees()).collect(),
-            max_error_m: max,
-            rms_error_m: rms,
-            relative_error: max / s,
-            crank_turns: norm.crank_turns(),
+            grashof: GrashofClass::of_lengths([ground, m.crank, m.coupler, m.rocker]),
+            crank_turns: m.crank_turns(),
             min_transmission_deg: travel
-                .map(|(start, len)| norm.least_transmission_over(start, len).to_degrees()),
+                .map(|(start, len)| m.least_transmission_over(start, len).to_degrees()),
         }
     }
 
@@ -111,9 +95,9 @@ impl PathDesign {
         pieces
     }
 
-    /// The design as a scene, starting where P meets the first target, with P on
-    /// the coupler.
-    pub fn scene(&self) -> SceneFile {
+    /// The linkage as a scene, starting where P meets the first target, with P on
+    /// the coupler; `max_error_m` goes into its description.
+    pub fn scene(&self, max_error_m: f64) -> SceneFile {
         let mut scene = super::super::four_bar(&super::super::FourBar {
             pivot_a: self.pivot_a,
             pivot_d: self.pivot_d,
@@ -126,8 +110,121 @@ impl PathDesign {
         scene.description = format!(
             "Four-bar whose coupler point P passes through {} targets, missing by at most {:.3e} m.",
             self.crank_deg.len(),
-            self.max_error_m
+            max_error_m
         );
         scene
+    }
+}
+
+/// One of a design's two cognates: another four-bar whose coupler point traces the
+/// same curve through the targets.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PathCognate {
+    /// The cognate.
+    #[serde(flatten)]
+    pub linkage: PathLinkage,
+    /// Which link of the design its crank turns with.
+    pub turns_with: TurnsWith,
+}
+
+/// A four-bar whose coupler point P passes through (or near) the targets, with its
+/// cognates.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PathDesign {
+    /// The four-bar.
+    #[serde(flatten)]
+    pub linkage: PathLinkage,
+    /// Largest distance of P from a target, m.
+    pub max_error_m: f64,
+    /// Root-mean-square distance of P from the targets, m.
+    pub rms_error_m: f64,
+    /// The largest distance over the targets' size (the diagonal of their bounding box).
+    pub relative_error: f64,
+    /// The two other four-bars through the same curve (Roberts–Chebyshev), where
+    /// they could be built (none where the coupler point lies on B or C).
+    pub cognates: Vec<PathCognate>,
+}
+
+impl PathDesign {
+    /// The design of the normalised four-bar `params` on branch `left`, meeting the
+    /// targets at crank angles `angles` (rad).
+    pub(super) fn new(problem: &Problem, params: &[f64], left: bool, angles: &[f64]) -> Self {
+        let s = problem.scale;
+        let norm = CouplerFourBar::from_params(&params[..PARAMS], left);
+        let misses: Vec<f64> = problem
+            .targets
+            .iter()
+            .zip(angles)
+            .map(|(t, &theta)| {
+                norm.point_at(theta)
+                    .map_or(f64::INFINITY, |p| (p - t).norm() * s)
+            })
+            .collect();
+        let max = misses.iter().cloned().fold(0.0, f64::max);
+        let rms = (misses.iter().map(|m| m * m).sum::<f64>() / misses.len() as f64).sqrt();
+        let world = to_world(problem, &norm);
+        let cognates = if max.is_finite() {
+            cognates(&world, angles).map_or_else(Vec::new, |cs| {
+                cs.iter()
+                    .map(|c| PathCognate {
+                        linkage: PathLinkage::new(
+                            &c.linkage,
+                            &c.angles,
+                            problem
+                                .travel(&c.linkage, &c.angles)
+                                .filter(|_| c.one_branch),
+                        ),
+                        turns_with: c.turns_with,
+                    })
+                    .collect()
+            })
+        } else {
+            Vec::new()
+        };
+        Self {
+            linkage: PathLinkage::new(&world, angles, problem.travel(&norm, angles)),
+            max_error_m: max,
+            rms_error_m: rms,
+            relative_error: max / s,
+            cognates,
+        }
+    }
+
+    /// The design's four-bar in world units.
+    pub fn linkage(&self) -> CouplerFourBar {
+        self.linkage.linkage()
+    }
+
+    /// The design's coupler curve (see [`PathLinkage::curve`]).
+    pub fn curve(&self, samples: usize) -> Vec<Vec<[f64; 2]>> {
+        self.linkage.curve(samples)
+    }
+
+    /// The design as a scene, starting where P meets the first target.
+    pub fn scene(&self) -> SceneFile {
+        self.linkage.scene(self.max_error_m)
+    }
+
+    /// Cognate `k` (0 or 1) as a scene, starting where P meets the first target.
+    pub fn cognate_scene(&self, k: usize) -> Option<SceneFile> {
+        let c = self.cognates.get(k)?;
+        let mut scene = c.linkage.scene(self.max_error_m);
+        scene.name = format!("Path generator, cognate {}", k + 1);
+        Some(scene)
+    }
+}
+
+/// The normalised four-bar `m` in world units.
+fn to_world(problem: &Problem, m: &CouplerFourBar) -> CouplerFourBar {
+    let s = problem.scale;
+    let world = |p: Vec2| problem.centre + p * s;
+    CouplerFourBar {
+        a: world(m.a),
+        d: world(m.d),
+        crank: m.crank * s,
+        coupler: m.coupler * s,
+        rocker: m.rocker * s,
+        point: m.point * s,
+        c_left_of_bd: m.c_left_of_bd,
     }
 }

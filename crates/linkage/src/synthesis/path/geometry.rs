@@ -141,6 +141,37 @@ impl CouplerFourBar {
         )
     }
 
+    /// The arcs of crank angle over which the loop closes, as (start, length) in rad:
+    /// one whole turn, one arc (the crank rocks through it and back), two arcs
+    /// (a Grashof double-rocker's two circuits) or none.
+    pub fn closing_arcs(&self) -> Vec<(f64, f64)> {
+        let (lo, hi) = self.closing_cos_range();
+        let (_, ground_dir) = self.ground();
+        if lo > hi || lo > 1.0 || hi < -1.0 || !lo.is_finite() || !hi.is_finite() {
+            return vec![];
+        }
+        match (lo <= -1.0, hi >= 1.0) {
+            (true, true) => vec![(0.0, 2.0 * PI)],
+            // cos ψ ≥ lo: about ψ = 0.
+            (false, true) => {
+                let half = lo.acos();
+                vec![(ground_dir - half, 2.0 * half)]
+            }
+            // cos ψ ≤ hi: about ψ = π.
+            (true, false) => {
+                let edge = hi.acos();
+                vec![(ground_dir + edge, 2.0 * (PI - edge))]
+            }
+            (false, false) => {
+                let (near, far) = (hi.acos(), lo.acos());
+                vec![
+                    (ground_dir + near, far - near),
+                    (ground_dir - far, far - near),
+                ]
+            }
+        }
+    }
+
     /// Whether the crank turns through a whole revolution (Grashof with the crank
     /// the shortest link, or a change-point linkage at its limit).
     pub fn crank_turns(&self) -> bool {
@@ -191,6 +222,31 @@ impl CouplerFourBar {
         arcs.sort_by(|x, y| x.1.total_cmp(&y.1));
         arcs.into_iter()
             .find(|&(start, len)| self.closes_over(start, len))
+    }
+
+    /// The crank's travel through `thetas` met in their order, once round at most:
+    /// the arc from the first angle to the last in the sense in which every next
+    /// angle lies ahead of the one before (counter-clockwise or clockwise), if the
+    /// loop closes throughout it. Returns the arc's counter-clockwise start and its
+    /// length (rad); `None` when the angles are in neither order or the arc leaves the
+    /// branch.
+    pub fn ordered_travel(&self, thetas: &[f64]) -> Option<(f64, f64)> {
+        let (first, last) = (*thetas.first()?, *thetas.last()?);
+        let ahead = |sense: f64| -> f64 {
+            thetas
+                .windows(2)
+                .map(|w| (sense * (w[1] - w[0])).rem_euclid(2.0 * PI))
+                .sum()
+        };
+        let (ccw, cw) = (ahead(1.0), ahead(-1.0));
+        let arc = if ccw < 2.0 * PI && ccw <= cw {
+            (first, ccw)
+        } else if cw < 2.0 * PI {
+            (last, cw)
+        } else {
+            return None;
+        };
+        self.closes_over(arc.0, arc.1).then_some(arc)
     }
 
     /// The range of cos ψ over the crank arc from `start` through `len`.
@@ -284,6 +340,48 @@ mod tests {
             rocker.travel(&[0.5, -0.5]).is_none(),
             "ψ = 0 is between, where BD is too short"
         );
+    }
+
+    /// Against sampling: the loop closes inside every closing arc and not just
+    /// outside them, for a crank that turns, one that rocks about ψ = 0 and about π,
+    /// and a Grashof double-rocker's two circuits.
+    #[test]
+    fn the_closing_arcs_are_where_the_loop_closes() {
+        let cases = [
+            crank_rocker(),
+            CouplerFourBar::from_params(&[0., 0., 1., 0., 0.8, 2.0, 0.5, 0., 0.], true),
+            CouplerFourBar::from_params(&[0., 0., 1.0, 0.3, 2.5, 1.2, 2.0, 0., 0.], true),
+            CouplerFourBar::from_params(&[0., 0., 2.0, 0.5, 2.2, 0.6, 1.9, 0., 0.], false),
+        ];
+        for m in cases {
+            let arcs = m.closing_arcs();
+            assert!(!arcs.is_empty(), "{m:?}");
+            let inside = |t: f64| arcs.iter().any(|&(s, l)| (t - s).rem_euclid(2.0 * PI) <= l);
+            for k in 0..3600 {
+                let t = f64::from(k) * PI / 1800.0;
+                // A margin of 1e-6 rad either side of each end.
+                let near_end = arcs.iter().any(|&(s, l)| {
+                    let d = (t - s).rem_euclid(2.0 * PI);
+                    d.min(2.0 * PI - d) < 1e-6 || (d - l).abs() < 1e-6
+                });
+                if !near_end {
+                    assert_eq!(m.pins_at(t).is_some(), inside(t), "{m:?} at {t}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_ordered_travel_is_the_arc_in_the_targets_order() {
+        let m = crank_rocker();
+        // Counter-clockwise across 0: from 350° through 40°.
+        let (start, len) = m.ordered_travel(&[-0.17, 0.1, 0.4, 0.7]).expect("in order");
+        assert!((start + 0.17).abs() < 1e-12 && (len - 0.87).abs() < 1e-12);
+        // Clockwise: the same arc, walked the other way.
+        let (start, len) = m.ordered_travel(&[0.7, 0.4, 0.1, -0.17]).expect("in order");
+        assert!((start + 0.17).abs() < 1e-12 && (len - 0.87).abs() < 1e-12);
+        // Out of order either way.
+        assert!(m.ordered_travel(&[0.0, 0.4, 0.2, 0.6]).is_none());
     }
 
     #[test]

@@ -5,6 +5,8 @@
 //! problem needs one thing they do not offer, residuals that may not exist (a trial
 //! step where the loop does not close is refused like a step that raises the cost).
 
+use std::collections::VecDeque;
+
 use nalgebra::{DMatrix, DVector};
 
 /// How a refinement ended.
@@ -27,72 +29,153 @@ pub struct Settings {
     pub cost_floor: f64,
     /// Central-difference step of the Jacobian.
     pub step: f64,
+    /// Stop when the cost has not fallen below this share of itself over the last
+    /// [`STALL_WINDOW`] iterations (1 for never).
+    pub stall: f64,
+}
+
+/// Iterations over which [`Settings::stall`] judges progress.
+pub const STALL_WINDOW: usize = 25;
+
+/// A refinement under way, advanced an iteration at a time ([`Minimiser::iterate`]),
+/// so that a caller that must keep drawing frames can spread it over them.
+#[derive(Clone, Debug)]
+pub struct Minimiser {
+    x: Vec<f64>,
+    r: Vec<f64>,
+    cost: f64,
+    lambda: f64,
+    settings: Settings,
+    /// The cost at the last iterations, for the stall rule.
+    history: VecDeque<f64>,
+    iterations: usize,
+    evaluations: u64,
+    done: bool,
+}
+
+impl Minimiser {
+    /// A refinement of the sum of squares of the `m` residuals from `x0`; `None` when
+    /// they do not exist there.
+    pub fn new(
+        x0: &[f64],
+        m: usize,
+        settings: Settings,
+        residuals: &mut impl FnMut(&[f64], &mut [f64]) -> bool,
+    ) -> Option<Self> {
+        let mut r = vec![0.0; m];
+        if !residuals(x0, &mut r) {
+            return None;
+        }
+        Some(Self {
+            x: x0.to_vec(),
+            cost: sum_sq(&r),
+            r,
+            lambda: 1e-3,
+            settings,
+            history: VecDeque::with_capacity(STALL_WINDOW + 1),
+            iterations: 0,
+            evaluations: 1,
+            done: false,
+        })
+    }
+
+    /// Whether it has ended (converged, stalled, or out of iterations).
+    pub fn is_done(&self) -> bool {
+        self.done
+    }
+
+    /// Where it stands.
+    pub fn fitted(&self) -> Fitted {
+        Fitted {
+            x: self.x.clone(),
+            cost: self.cost,
+            evaluations: self.evaluations,
+        }
+    }
+
+    /// One iteration (a Jacobian and the damped steps until one lowers the cost);
+    /// returns the evaluations it used.
+    pub fn iterate(&mut self, residuals: &mut impl FnMut(&[f64], &mut [f64]) -> bool) -> u64 {
+        let before = self.evaluations;
+        if self.done || self.stops() {
+            self.done = true;
+            return 0;
+        }
+        self.iterations += 1;
+        let (jac, used) = jacobian(&self.x, self.r.len(), self.settings.step, residuals);
+        self.evaluations += used;
+        let jt = jac.transpose();
+        let jtj = &jt * &jac;
+        let grad = &jt * DVector::from_column_slice(&self.r);
+        let mut trial_r = vec![0.0; self.r.len()];
+        let mut improved = false;
+        // Raise the damping until a step lowers the cost (or it is hopeless).
+        while self.lambda < 1e12 {
+            let mut damped = jtj.clone();
+            for i in 0..self.x.len() {
+                damped[(i, i)] += self.lambda * jtj[(i, i)].max(1e-12);
+            }
+            let Some(chol) = damped.cholesky() else {
+                self.lambda *= 10.0;
+                continue;
+            };
+            let delta = chol.solve(&(-&grad));
+            let trial: Vec<f64> = self
+                .x
+                .iter()
+                .zip(delta.iter())
+                .map(|(a, d)| a + d)
+                .collect();
+            self.evaluations += 1;
+            if residuals(&trial, &mut trial_r) {
+                let trial_cost = sum_sq(&trial_r);
+                if trial_cost < self.cost {
+                    let tiny = (self.cost - trial_cost) <= 1e-15 * self.cost;
+                    self.x = trial;
+                    self.r.copy_from_slice(&trial_r);
+                    self.cost = trial_cost;
+                    self.lambda = (self.lambda * 0.2).max(1e-12);
+                    improved = !tiny;
+                    break;
+                }
+            }
+            self.lambda *= 10.0;
+        }
+        self.done = !improved;
+        self.evaluations - before
+    }
+
+    /// Whether to stop before another iteration: converged, out of iterations, or
+    /// stalled. A start in a curved valley gains a little every step for hundreds of
+    /// steps (the valley's floor leads to the solution) and one at a local minimum
+    /// nothing: only the second stops here.
+    fn stops(&mut self) -> bool {
+        if self.cost <= self.settings.cost_floor || self.iterations >= self.settings.iterations {
+            return true;
+        }
+        self.history.push_back(self.cost);
+        if self.history.len() > STALL_WINDOW {
+            let then = self.history.pop_front().unwrap_or(self.cost);
+            return self.cost > self.settings.stall * then;
+        }
+        false
+    }
 }
 
 /// Minimises the sum of squares of `residuals(x, out)` from `x0`; `residuals`
 /// returns false where they do not exist. `None` when they do not exist at `x0`.
+#[cfg(test)]
 pub fn minimise(
     x0: &[f64],
     m: usize,
     settings: Settings,
     mut residuals: impl FnMut(&[f64], &mut [f64]) -> bool,
 ) -> Option<Fitted> {
-    let n = x0.len();
-    let mut x = x0.to_vec();
-    let mut r = vec![0.0; m];
-    let mut evaluations = 1;
-    if !residuals(&x, &mut r) {
-        return None;
+    let mut lm = Minimiser::new(x0, m, settings, &mut residuals)?;
+    while !lm.is_done() {
+        lm.iterate(&mut residuals);
     }
-    let mut cost = sum_sq(&r);
-    let mut lambda = 1e-3;
-    let mut trial_r = vec![0.0; m];
-    for _ in 0..settings.iterations {
-        if cost <= settings.cost_floor {
-            break;
-        }
-        let (jac, used) = jacobian(&x, m, settings.step, &mut residuals);
-        evaluations += used;
-        let jt = jac.transpose();
-        let jtj = &jt * &jac;
-        let grad = &jt * DVector::from_column_slice(&r);
-        let mut improved = false;
-        // Raise the damping until a step lowers the cost (or it is hopeless).
-        while lambda < 1e12 {
-            let mut damped = jtj.clone();
-            for i in 0..n {
-                damped[(i, i)] += lambda * jtj[(i, i)].max(1e-12);
-            }
-            let Some(chol) = damped.cholesky() else {
-                lambda *= 10.0;
-                continue;
-            };
-            let delta = chol.solve(&(-&grad));
-            let trial: Vec<f64> = x.iter().zip(delta.iter()).map(|(a, d)| a + d).collect();
-            evaluations += 1;
-            if residuals(&trial, &mut trial_r) {
-                let trial_cost = sum_sq(&trial_r);
-                if trial_cost < cost {
-                    let tiny = (cost - trial_cost) <= 1e-15 * cost;
-                    x = trial;
-                    r.copy_from_slice(&trial_r);
-                    cost = trial_cost;
-                    lambda = (lambda * 0.2).max(1e-12);
-                    improved = !tiny;
-                    break;
-                }
-            }
-            lambda *= 10.0;
-        }
-        if !improved {
-            break;
-        }
-    }
-    Some(Fitted {
-        x,
-        cost,
-        evaluations,
-    })
+    Some(lm.fitted())
 }
 
 fn sum_sq(r: &[f64]) -> f64 {
@@ -155,6 +238,7 @@ mod tests {
             iterations: 200,
             cost_floor: 1e-30,
             step: 1e-7,
+            stall: 1.0,
         };
         let fit = minimise(&[-1.2, 1.0], 2, settings, |x, r| {
             r[0] = 10.0 * (x[1] - x[0] * x[0]);
@@ -175,6 +259,7 @@ mod tests {
             iterations: 100,
             cost_floor: 1e-30,
             step: 1e-7,
+            stall: 1.0,
         };
         let fit = minimise(&[4.0], 1, settings, |x, r| {
             r[0] = x[0].sqrt() - 0.5;

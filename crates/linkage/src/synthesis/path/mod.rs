@@ -1,24 +1,35 @@
 //! Path generation: a four-bar whose coupler point passes through 3 to 20 target
 //! points, with or without prescribed crank angles (timing). A global search
-//! (differential evolution over the pivots, lengths, coupler point and branch,
-//! [`evolution`]) finds basins on a sampled coupler curve; Levenberg–Marquardt
-//! ([`least_squares`]) then meets the targets exactly where the four-bar can.
-//! The user's constraints (a crank that turns, a least transmission angle, a
-//! region for the ground pivots, targets on one branch) are penalties in the
-//! search and are checked exactly on every design kept. Several distinct designs
-//! are kept, ranked by their largest miss.
+//! (differential evolution, [`evolution`]) over the coupler curve's shape, placed on
+//! the targets by the similarity that fits best (`shape.rs`, `coarse.rs`), finds
+//! basins; Levenberg–Marquardt ([`least_squares`]) then meets the targets exactly
+//! where the four-bar can. The user's constraints (a crank that turns, a least
+//! transmission angle, a region for the ground pivots, targets on one branch, in
+//! their order) are penalties in the search and are checked exactly on every design
+//! kept. Designs are kept by family (a four-bar and its two Roberts–Chebyshev
+//! cognates, `cognates.rs`), ranked by their largest miss.
 //!
 //! With timing, the crank angles given are relative: the search chooses where the
-//! first target is met and the others follow at the given differences.
+//! first target is met and the others follow at the given differences. Without,
+//! the targets are met in the order given, once round the curve, either way (or in
+//! any order, when asked).
 
+mod coarse;
+mod cognates;
 mod design;
 mod evolution;
+mod family;
 mod geometry;
 mod least_squares;
+mod polish;
 mod problem;
+mod projected;
 mod search;
+mod shape;
+mod slide;
 
-pub use design::PathDesign;
+pub use cognates::TurnsWith;
+pub use design::{PathCognate, PathDesign, PathLinkage};
 pub use geometry::{CouplerFourBar, PARAMS, Pins};
 pub use search::{PathSearch, Progress};
 
@@ -26,7 +37,12 @@ use serde::Serialize;
 
 use crate::error::{LinkageError, Result};
 use crate::motion::Vec2;
-use problem::{Limits, Problem};
+use problem::{Encoding, Limits, Problem};
+
+/// How far from the targets' centroid, each way, the ground pivots may lie unless
+/// the user gives a region, in units of the targets' size: ordinary four-bars have
+/// their pivots up to about three sizes away.
+pub const DEFAULT_REGION: f64 = 4.0;
 
 /// Fewest targets a search takes.
 pub const MIN_TARGETS: usize = 3;
@@ -42,28 +58,46 @@ pub struct PathTargets {
     pub crank_deg: Option<Vec<f64>>,
 }
 
+/// How untimed targets are met along the coupler curve.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TargetOrder {
+    /// In the order given, once round the curve, in either direction: as a designer
+    /// lists the points the coupler must pass.
+    #[default]
+    AsGiven,
+    /// In any order, each target on the curve wherever it is nearest.
+    Any,
+}
+
 /// What the user asks of the linkage besides meeting the targets.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct PathConstraints {
-    /// The crank must turn through a whole revolution.
+    /// The crank must turn through a whole revolution (off by default: targets from
+    /// a rocking linkage have no turning-crank design, and a design whose crank rocks
+    /// often has a cognate whose crank turns).
     pub crank_turns: bool,
     /// Least transmission angle over the crank's travel through the targets, deg
     /// (0 for none).
     pub min_transmission_deg: f64,
     /// Where both ground pivots must lie, as lower and upper corners, m; `None`
-    /// for within 1.5 times the targets' size of their centroid, each way.
+    /// for within [`DEFAULT_REGION`] times the targets' size of their centroid, each
+    /// way.
     pub ground_region_m: Option<[[f64; 2]; 2]>,
     /// The targets must lie on one assembly branch, reached without a dead point.
     pub one_branch: bool,
+    /// How untimed targets are met (timed ones follow their crank angles).
+    pub order: TargetOrder,
 }
 
 impl Default for PathConstraints {
     fn default() -> Self {
         Self {
-            crank_turns: true,
+            crank_turns: false,
             min_transmission_deg: 0.0,
             ground_region_m: None,
             one_branch: true,
+            order: TargetOrder::AsGiven,
         }
     }
 }
@@ -73,7 +107,7 @@ impl Default for PathConstraints {
 pub struct SearchOptions {
     /// Seed of the search's random numbers: the same seed gives the same designs.
     pub seed: u64,
-    /// Stop once this many distinct designs are within tolerance.
+    /// Stop once this many families (a design and its cognates) are within tolerance.
     pub solutions: usize,
     /// A design is within tolerance when its largest miss is at most this share of
     /// the targets' size.
@@ -88,7 +122,7 @@ impl Default for SearchOptions {
     fn default() -> Self {
         Self {
             seed: 1,
-            solutions: 3,
+            solutions: 1,
             tolerance: 1e-6,
             max_evaluations: 3_000_000,
             population: 80,
@@ -195,7 +229,7 @@ fn normalise(targets: &PathTargets, constraints: &PathConstraints) -> Result<Pro
         ));
     }
     let region = match constraints.ground_region_m {
-        None => [Vec2::repeat(-1.5), Vec2::repeat(1.5)],
+        None => [Vec2::repeat(-DEFAULT_REGION), Vec2::repeat(DEFAULT_REGION)],
         Some([lo, hi]) => {
             if let Some(bad) = lo.iter().chain(&hi).find(|v| !v.is_finite()) {
                 return Err(invalid("ground region corner", *bad, "a finite number"));
@@ -213,12 +247,20 @@ fn normalise(targets: &PathTargets, constraints: &PathConstraints) -> Result<Pro
             ]
         }
     };
+    let points: Vec<Vec2> = targets
+        .points_m
+        .iter()
+        .map(|p| (Vec2::from(*p) - centre) / scale)
+        .collect();
+    let encoding = match (&timing, constraints.order) {
+        (Some(_), _) => Encoding::Timed,
+        (None, TargetOrder::AsGiven) => Encoding::InOrder,
+        (None, TargetOrder::Any) => Encoding::AnyOrder,
+    };
     Ok(Problem {
-        targets: targets
-            .points_m
-            .iter()
-            .map(|p| (Vec2::from(*p) - centre) / scale)
-            .collect(),
+        along: problem::shares_along(&points),
+        targets: points,
+        encoding,
         timing,
         limits: Limits {
             crank_turns: constraints.crank_turns,

@@ -1,46 +1,14 @@
 //! The path-generation problem in normalised coordinates (targets centred on their
 //! centroid and scaled by their size, so bounds and tolerances are the same for a
-//! watch part and a press), and the two costs the search uses: a coarse one of a
-//! sampled coupler curve for the global search, and exact residuals for the
-//! least-squares refinement.
+//! watch part and a press): its constraints, the global search's vectors
+//! ([`Encoding`]) and the exact residuals the least-squares refinement uses. The
+//! search's coarse costs are in `coarse.rs`.
 
-use std::f64::consts::TAU;
+use std::f64::consts::PI;
 
-use super::geometry::{CouplerFourBar, PARAMS, to_segment};
+use super::geometry::{CouplerFourBar, PARAMS};
+use super::shape::{RATIO, SHAPE};
 use crate::motion::Vec2;
-
-/// Crank angles the coarse cost samples the coupler curve at.
-const SAMPLES: usize = 60;
-/// The cost of a position that does not close, in units of the targets' size.
-const OPEN: f64 = 10.0;
-
-/// The distance from `target` to the coupler curve near crank angle `theta`, and
-/// where: two rounds of fitting a parabola to the squared distance, a sample step
-/// apart and then an eighth of one. The chord between samples would cut inside the
-/// curve by up to a thousandth of its size at 6° and the search would chase that;
-/// this is the curve itself to about 1e-8.
-fn nearest_on_curve(m: &CouplerFourBar, target: Vec2, theta: f64, step: f64) -> (f64, f64) {
-    let dist2 = |t: f64| {
-        m.point_at(t)
-            .map_or(f64::INFINITY, |p| (p - target).norm_squared())
-    };
-    let mut best = (dist2(theta), theta);
-    for h in [0.5 * step, step / 16.0] {
-        let centre = best.1;
-        let (lo, mid, hi) = (dist2(centre - h), best.0, dist2(centre + h));
-        let curvature = lo - 2.0 * mid + hi;
-        if curvature.is_nan() || curvature <= 0.0 || !lo.is_finite() || !hi.is_finite() {
-            continue;
-        }
-        let shift = (0.5 * h * (lo - hi) / curvature).clamp(-h, h);
-        let at = centre + shift;
-        let d = dist2(at);
-        if d < best.0 {
-            best = (d, at);
-        }
-    }
-    (best.0.sqrt(), best.1)
-}
 
 /// Constraints in normalised units.
 #[derive(Clone, Debug)]
@@ -55,7 +23,22 @@ pub struct Limits {
     pub one_branch: bool,
 }
 
-/// Targets, timing and limits, normalised.
+/// What a vector of the global search holds, by how the targets are given.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Encoding {
+    /// Crank angles given: the shape ([`SHAPE`] numbers), the branch, and where in
+    /// the crank's closing arcs the travel through the targets lies.
+    Timed,
+    /// Untimed, met in the order given once round the curve: the shape, the branch,
+    /// where in the closing arcs the travel lies, and its share of them, signed by
+    /// its sense.
+    InOrder,
+    /// Untimed, in any order: the four-bar's nine numbers in the targets' frame and
+    /// the branch (the search before targets kept their order).
+    AnyOrder,
+}
+
+/// Targets, timing, limits and encoding, normalised.
 #[derive(Clone, Debug)]
 pub struct Problem {
     /// The targets.
@@ -64,123 +47,74 @@ pub struct Problem {
     pub timing: Option<Vec<f64>>,
     /// The constraints.
     pub limits: Limits,
+    /// What the search's vectors hold.
+    pub encoding: Encoding,
+    /// Each target's share of the length of the polyline through the targets in
+    /// order (0 at the first, 1 at the last): where along the curve to place it first.
+    pub along: Vec<f64>,
     /// World point of the normalised origin.
     pub centre: Vec2,
     /// World length of the normalised unit.
     pub scale: f64,
 }
 
+/// Each point's share of the length of the polyline through `points` in order.
+pub fn shares_along(points: &[Vec2]) -> Vec<f64> {
+    let mut run = vec![0.0];
+    for w in points.windows(2) {
+        let last = run.last().copied().unwrap_or(0.0);
+        run.push(last + (w[1] - w[0]).norm());
+    }
+    let total = run.last().copied().unwrap_or(0.0);
+    run.iter()
+        .map(|l| if total > 0.0 { l / total } else { 0.0 })
+        .collect()
+}
+
 impl Problem {
-    /// Lower and upper bounds of the global search's unknowns: the four-bar's nine
-    /// parameters, a branch selector (its sign) and, when timed, the crank angle of
-    /// the first target. A curve of unit size comes from links of about its size.
+    /// Lower and upper bounds of the global search's unknowns (see [`Encoding`]);
+    /// a branch selector's sign picks the branch.
     pub fn bounds(&self) -> Vec<(f64, f64)> {
+        match self.encoding {
+            Encoding::AnyOrder => self.world_bounds(),
+            Encoding::Timed | Encoding::InOrder => {
+                let ratio = RATIO.ln();
+                let mut b = vec![(-ratio, ratio); SHAPE - 1];
+                b.push((-PI, PI));
+                b.push((-1.0, 1.0));
+                // Where the travel lies in the closing arcs, and (in order) its share
+                // of them with its sense: see `coarse.rs`.
+                b.push((0.0, 2.0));
+                if self.encoding == Encoding::InOrder {
+                    b.push((-1.0, 1.0));
+                }
+                b
+            }
+        }
+    }
+
+    /// The four-bar's nine numbers and the branch, in the targets' frame: pivots in
+    /// the region, links long enough to reach the targets from anywhere in it.
+    fn world_bounds(&self) -> Vec<(f64, f64)> {
         let [lo, hi] = self.limits.region;
-        let mut b = vec![
+        let reach = lo.abs().max().max(hi.abs().max()) + 1.0;
+        vec![
             (lo.x, hi.x),
             (lo.y, hi.y),
             (lo.x, hi.x),
             (lo.y, hi.y),
             (0.02, 1.0),
-            (0.05, 2.5),
-            (0.05, 2.5),
-            (-1.5, 1.5),
-            (-1.5, 1.5),
+            (0.05, 2.0 * reach),
+            (0.05, 2.0 * reach),
+            (-reach, reach),
+            (-reach, reach),
             (-1.0, 1.0),
-        ];
-        if self.timing.is_some() {
-            b.push((0.0, TAU));
-        }
-        b
-    }
-
-    /// The four-bar a search vector describes.
-    pub fn linkage(&self, v: &[f64]) -> CouplerFourBar {
-        CouplerFourBar::from_params(&v[..PARAMS], v[PARAMS] >= 0.0)
+        ]
     }
 
     /// The crank angle of target `i` when timed, from the first's.
-    fn timed_angle(&self, first: f64, i: usize) -> f64 {
+    pub fn timed_angle(&self, first: f64, i: usize) -> f64 {
         self.timing.as_ref().map_or(first, |t| first + t[i])
-    }
-
-    /// The coarse cost of a search vector: root-mean-square distance of the targets
-    /// from the coupler curve (sampled every 6°, untimed) or from the coupler point
-    /// at their crank angles (timed), plus penalties for broken constraints. Also
-    /// gives each target's crank angle, for the refinement to start from.
-    pub fn coarse(&self, v: &[f64], angles: &mut [f64]) -> f64 {
-        let m = self.linkage(v);
-        let mut penalty = 0.0;
-        if self.limits.crank_turns {
-            penalty += 10.0 * m.turning_shortfall();
-        }
-        let sum = match self.timing {
-            Some(_) => self.timed_sum(&m, v[PARAMS + 1], angles),
-            None => self.untimed_sum(&m, angles),
-        };
-        let Some(sum) = sum else {
-            return OPEN + penalty;
-        };
-        penalty += self.travel_penalty(&m, angles);
-        (sum / self.targets.len() as f64).sqrt() + penalty
-    }
-
-    /// Penalties for leaving the branch between targets, or for a transmission
-    /// angle below the least allowed over the travel.
-    fn travel_penalty(&self, m: &CouplerFourBar, angles: &[f64]) -> f64 {
-        let limits = &self.limits;
-        if !limits.one_branch && limits.min_transmission <= 0.0 {
-            return 0.0;
-        }
-        match m.travel(angles) {
-            None if limits.one_branch => 1.0,
-            None => 0.0,
-            Some(arc) => self.transmission_short_over(m, arc),
-        }
-    }
-
-    /// How far the least transmission angle over the crank arc `(start, len)`
-    /// falls below the least allowed, rad (0 when it does not).
-    fn transmission_short_over(&self, m: &CouplerFourBar, (start, len): (f64, f64)) -> f64 {
-        (self.limits.min_transmission - m.least_transmission_over(start, len)).max(0.0)
-    }
-
-    fn timed_sum(&self, m: &CouplerFourBar, first: f64, angles: &mut [f64]) -> Option<f64> {
-        let mut sum = 0.0;
-        for (i, target) in self.targets.iter().enumerate() {
-            angles[i] = self.timed_angle(first, i);
-            sum += m
-                .point_at(angles[i])
-                .map_or(OPEN * OPEN, |p| (p - target).norm_squared());
-        }
-        Some(sum)
-    }
-
-    fn untimed_sum(&self, m: &CouplerFourBar, angles: &mut [f64]) -> Option<f64> {
-        let step = TAU / SAMPLES as f64;
-        let curve: [Option<Vec2>; SAMPLES] = std::array::from_fn(|k| m.point_at(k as f64 * step));
-        if curve.iter().filter(|p| p.is_some()).count() < 2 {
-            return None;
-        }
-        let mut sum = 0.0;
-        for (i, target) in self.targets.iter().enumerate() {
-            let mut best = (f64::INFINITY, 0.0);
-            for k in 0..SAMPLES {
-                if let (Some(p0), Some(p1)) = (curve[k], curve[(k + 1) % SAMPLES]) {
-                    let (dist, t) = to_segment(*target, p0, p1);
-                    if dist < best.0 {
-                        best = (dist, (k as f64 + t) * step);
-                    }
-                }
-            }
-            if best.0.is_infinite() {
-                return None;
-            }
-            let (dist, theta) = nearest_on_curve(m, *target, best.1, step);
-            angles[i] = theta;
-            sum += dist * dist;
-        }
-        Some(sum)
     }
 
     /// Number of exact residuals: three per target and three constraint terms.
@@ -188,11 +122,11 @@ impl Problem {
         3 * self.targets.len() + 3
     }
 
-    /// The refinement's unknowns from a search vector and the targets' crank angles:
-    /// the four-bar's parameters, then the first target's crank angle (timed) or
-    /// every target's (untimed).
-    pub fn unknowns(&self, v: &[f64], angles: &[f64]) -> Vec<f64> {
-        let mut u = v[..PARAMS].to_vec();
+    /// The refinement's unknowns from a four-bar's nine numbers and the targets' crank
+    /// angles: the numbers, then the first target's crank angle (timed) or every
+    /// target's (untimed).
+    pub fn unknowns(&self, params: &[f64; PARAMS], angles: &[f64]) -> Vec<f64> {
+        let mut u = params.to_vec();
         match self.timing {
             Some(_) => u.push(angles[0]),
             None => u.extend_from_slice(angles),
@@ -235,7 +169,7 @@ impl Problem {
             0.0
         };
         out[n + 1] = self.outside_region(&m);
-        out[n + 2] = self.transmission_deficit(&m, u);
+        out[n + 2] = self.transmission_deficit(&m, &self.angles_of(u));
         true
     }
 
@@ -251,12 +185,30 @@ impl Problem {
         out(m.a) + out(m.d)
     }
 
-    fn transmission_deficit(&self, m: &CouplerFourBar, u: &[f64]) -> f64 {
+    /// The crank's travel through the targets at `angles` (rad), as the encoding
+    /// asks: in their order (the arc from the first to the last, in the sense the
+    /// second lies), or the shortest arc holding them all (timed, any order). `None`
+    /// where that arc leaves the branch.
+    pub fn travel(&self, m: &CouplerFourBar, angles: &[f64]) -> Option<(f64, f64)> {
+        match self.encoding {
+            Encoding::InOrder => m.ordered_travel(angles),
+            Encoding::Timed | Encoding::AnyOrder => m.travel(angles),
+        }
+    }
+
+    /// How far the least transmission angle over the travel falls below the least
+    /// allowed, rad (0 when it does not, or where no travel stays on the branch).
+    pub fn transmission_deficit(&self, m: &CouplerFourBar, angles: &[f64]) -> f64 {
         if self.limits.min_transmission <= 0.0 {
             return 0.0;
         }
-        let angles = self.angles_of(u);
-        m.travel(&angles)
+        self.travel(m, angles)
             .map_or(0.0, |arc| self.transmission_short_over(m, arc))
+    }
+
+    /// How far the least transmission angle over the crank arc `(start, len)` falls
+    /// below the least allowed, rad (0 when it does not).
+    pub fn transmission_short_over(&self, m: &CouplerFourBar, (start, len): (f64, f64)) -> f64 {
+        (self.limits.min_transmission - m.least_transmission_over(start, len)).max(0.0)
     }
 }

@@ -1,20 +1,28 @@
 //! The path search as a resumable job: differential evolution finds basins, and
 //! every few generations Levenberg–Marquardt polishes the best member to the exact
 //! targets. A polished design within tolerance is kept and the evolution restarts
-//! from a fresh population to look for another; so does one that has stalled.
+//! from a fresh population to look for another; so does one that has stalled. A
+//! design and its two cognates are one family (they share their three fixed
+//! pivots): the search counts families, and it ends when it has as many as asked,
+//! when restarts stop finding new ones, or when its budget is spent.
 //! [`PathSearch::step`] runs a slice of evaluations at a time, for a caller that
 //! must keep drawing frames (the browser) or that wants progress.
 
 use super::design::PathDesign;
 use super::evolution::{Population, SplitMix};
-use super::least_squares::{Settings, minimise};
-use super::problem::Problem;
+use super::family::Family;
+use super::geometry::CouplerFourBar;
+use super::polish::{Outcome, Polish};
+use super::problem::{Encoding, Problem};
 use super::{PARAMS, SearchOptions};
 
 /// Generations between polishes of the best member.
 const POLISH_EVERY: u32 = 10;
 /// Generations without a 1 % gain after which the evolution restarts.
 const STALL: u32 = 60;
+/// Restarts in a row that find no new family, once one is found, after which the
+/// search ends: the targets allow no more that it can find.
+const FRUITLESS: u32 = 3;
 
 /// Where a search stands.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -28,7 +36,8 @@ pub struct Progress {
     pub best_relative_error: f64,
     /// Designs found within the tolerance.
     pub solutions: usize,
-    /// Whether the search has finished (enough solutions, or its budget spent).
+    /// Whether the search has finished (enough solutions, restarts that found no new
+    /// family, or its budget spent).
     pub done: bool,
     /// Wall-clock time spent searching so far, s.
     pub seconds: f64,
@@ -60,8 +69,14 @@ pub struct PathSearch {
     max_evaluations: u64,
     seconds: f64,
     found: Vec<PathDesign>,
-    /// The normalised parameters and branch of each found design, to tell them apart.
-    found_params: Vec<([f64; PARAMS], bool)>,
+    /// The family of each found design, in the same order, to tell them apart.
+    families: Vec<Family>,
+    /// Restarts in a row that kept no new family.
+    fruitless: u32,
+    /// Whether this run of the evolution has kept a new family.
+    kept_new: bool,
+    /// The refinement under way, if any (the evolution waits for it).
+    polish: Option<Polish>,
 }
 
 impl PathSearch {
@@ -79,16 +94,24 @@ impl PathSearch {
             evaluations: 0,
             seconds: 0.0,
             found: vec![],
-            found_params: vec![],
+            families: vec![],
+            fruitless: 0,
+            kept_new: false,
+            polish: None,
         }
     }
 
-    /// Runs at least `evaluations` more evaluations (whole generations), or to the end.
+    /// Runs at least `evaluations` more evaluations (whole generations, or whole
+    /// iterations of a refinement), or to the end.
     pub fn step(&mut self, evaluations: u64) -> Progress {
         let started = web_time::Instant::now();
         let until = self.evaluations.saturating_add(evaluations);
         while self.evaluations < until && !self.is_done() {
-            self.generation();
+            if self.polish.is_some() {
+                self.refine();
+            } else {
+                self.generation();
+            }
         }
         self.seconds += started.elapsed().as_secs_f64();
         self.progress()
@@ -99,17 +122,23 @@ impl PathSearch {
         self.step(u64::MAX)
     }
 
-    /// Raises the budget by `evaluations`, to go on after the search has ended.
+    /// Raises the budget by `evaluations`, to go on after the search has ended
+    /// (restarts that found nothing new are forgiven).
     pub fn extend(&mut self, evaluations: u64) {
         self.max_evaluations = self
             .max_evaluations
             .max(self.evaluations)
             .saturating_add(evaluations);
+        self.fruitless = 0;
     }
 
-    /// Whether enough solutions are found or the budget is spent.
+    /// Whether enough families are found, restarts stop finding new ones, or the
+    /// budget is spent.
     pub fn is_done(&self) -> bool {
-        self.solutions() >= self.options.solutions || self.evaluations >= self.max_evaluations
+        let found = self.solutions();
+        found >= self.options.solutions
+            || (found > 0 && self.fruitless >= FRUITLESS)
+            || self.evaluations >= self.max_evaluations
     }
 
     fn solutions(&self) -> usize {
@@ -151,17 +180,22 @@ impl PathSearch {
             // Between a restart and the next generation.
             return self.found.first().cloned();
         };
-        let i = population.best();
-        let live = PathDesign::new(
-            &self.problem,
-            &population.members[i],
-            population.members[i][PARAMS] >= 0.0,
-            &population.angles[i],
-        );
-        match self.found.first() {
-            Some(d) if d.relative_error <= live.relative_error => Some(d.clone()),
-            _ => Some(live),
+        let live = self
+            .placed(&population.members[population.best()])
+            .map(|(params, left, angles)| PathDesign::new(&self.problem, &params, left, &angles));
+        match (self.found.first(), live) {
+            (Some(d), Some(l)) if d.relative_error <= l.relative_error => Some(d.clone()),
+            (_, Some(l)) => Some(l),
+            (d, None) => d.cloned(),
         }
+    }
+
+    /// The four-bar of a search vector in the targets' frame: its nine numbers, its
+    /// branch and each target's crank angle.
+    fn placed(&self, v: &[f64]) -> Option<([f64; PARAMS], bool, Vec<f64>)> {
+        let mut angles = vec![0.0; self.problem.targets.len()];
+        let m = self.problem.place(v, &mut angles).linkage?;
+        Some((m.params(), m.c_left_of_bd, angles))
     }
 
     fn generation(&mut self) {
@@ -184,14 +218,44 @@ impl PathSearch {
         let gained = best < 0.5 * self.polished_at;
         if (self.generations.is_multiple_of(POLISH_EVERY) && gained) || stalled {
             self.polished_at = best;
-            let met = self.polish_best();
-            if met || stalled {
+            let v = population.members[population.best()].clone();
+            let member = self.placed(&v);
+            self.polish = member
+                .and_then(|m| Polish::start(&self.problem, m, self.options.tolerance, stalled));
+            if self.polish.is_none() && stalled {
                 self.restart();
             }
         }
     }
 
+    /// One iteration of the refinement under way; when it ends, keeps what it gave
+    /// if that meets the constraints, and restarts the evolution when that is within
+    /// tolerance or the evolution had stalled.
+    fn refine(&mut self) {
+        let Some(polish) = self.polish.as_mut() else {
+            return;
+        };
+        let (used, outcome) = polish.advance(&self.problem);
+        self.evaluations += used;
+        let Some(outcome) = outcome else {
+            return;
+        };
+        let (left, after_stall) = (polish.left(), polish.after_stall);
+        self.polish = None;
+        let met = match outcome {
+            Outcome::Refined { params, angles } => self.consider(params, left, &angles),
+            Outcome::Failed => false,
+        };
+        if met || after_stall {
+            self.restart();
+        }
+    }
+
     fn restart(&mut self) {
+        if !self.kept_new && !self.found.is_empty() {
+            self.fruitless += 1;
+        }
+        self.kept_new = false;
         self.population = None;
         self.generations = 0;
         self.since_gain = 0;
@@ -199,78 +263,53 @@ impl PathSearch {
         self.polished_at = f64::INFINITY;
     }
 
-    /// Polishes the best member; keeps the result if it meets the constraints and
-    /// returns whether it is within tolerance.
-    fn polish_best(&mut self) -> bool {
-        let Some(population) = self.population.as_ref() else {
-            return false;
-        };
-        let i = population.best();
-        let left = population.members[i][PARAMS] >= 0.0;
-        let u0 = self
-            .problem
-            .unknowns(&population.members[i], &population.angles[i]);
-        let problem = &self.problem;
-        let tolerance = self.options.tolerance;
-        let settings = Settings {
-            iterations: 100,
-            cost_floor: (1e-3 * tolerance).powi(2),
-            step: 1e-7,
-        };
-        let fit = minimise(&u0, problem.residual_count(), settings, |u, r| {
-            problem.residuals(u, left, r)
-        });
-        let Some(fit) = fit else {
-            return false;
-        };
-        self.evaluations += fit.evaluations;
-        let angles = problem.angles_of(&fit.x);
-        let design = PathDesign::new(problem, &fit.x, left, &angles);
-        if !self.feasible(&design, &fit.x, left) {
+    /// Keeps a refined four-bar if it meets the constraints; returns whether it is
+    /// within tolerance.
+    fn consider(&mut self, params: [f64; PARAMS], left: bool, angles: &[f64]) -> bool {
+        let design = PathDesign::new(&self.problem, &params, left, angles);
+        let m = CouplerFourBar::from_params(&params, left);
+        if !self.feasible(&design, &m, angles) {
             return false;
         }
-        let met = design.relative_error <= tolerance;
-        self.keep(design, &fit.x, left);
+        let met = design.relative_error <= self.options.tolerance;
+        self.keep(design, Family::of(&m));
         met
     }
 
-    /// Whether the polished design meets the user's constraints exactly.
-    fn feasible(&self, design: &PathDesign, u: &[f64], left: bool) -> bool {
+    /// Whether the refined design meets the user's constraints exactly (in order:
+    /// its crank meets the targets in their order, once round).
+    fn feasible(&self, design: &PathDesign, m: &CouplerFourBar, angles: &[f64]) -> bool {
         let limits = &self.problem.limits;
-        let m = super::geometry::CouplerFourBar::from_params(&u[..PARAMS], left);
         let slack = 1e-9;
+        let d = &design.linkage;
+        let in_order =
+            self.problem.encoding != Encoding::InOrder || m.ordered_travel(angles).is_some();
         design.relative_error.is_finite()
+            && in_order
             && (!limits.crank_turns || m.turning_shortfall() <= slack)
-            && self.problem.outside_region(&m) <= slack
-            && (!limits.one_branch || design.min_transmission_deg.is_some())
-            && design
-                .min_transmission_deg
+            && self.problem.outside_region(m) <= slack
+            && (!limits.one_branch || d.min_transmission_deg.is_some())
+            && d.min_transmission_deg
                 .is_none_or(|mu| mu.to_radians() >= limits.min_transmission - slack)
     }
 
-    /// Keeps `design` if it is new, or in place of a worse twin; best first.
-    fn keep(&mut self, design: PathDesign, u: &[f64], left: bool) {
-        let params: [f64; PARAMS] = std::array::from_fn(|k| u[k]);
-        let twin = self.found_params.iter().position(|(p, l)| {
-            *l == left
-                && p.iter()
-                    .zip(&params)
-                    .map(|(a, b)| (a - b).abs())
-                    .fold(0.0, f64::max)
-                    < 1e-3
-        });
+    /// Keeps `design` if its family is new, or in place of a worse one of its family;
+    /// best first.
+    fn keep(&mut self, design: PathDesign, family: Family) {
+        let twin = self.families.iter().position(|f| f.same_as(&family));
         match twin {
             Some(k) if self.found[k].relative_error <= design.relative_error => return,
             Some(k) => {
                 self.found.remove(k);
-                self.found_params.remove(k);
+                self.families.remove(k);
             }
+            None if design.relative_error <= self.options.tolerance => self.kept_new = true,
             None => {}
         }
         let at = self
             .found
             .partition_point(|d| d.relative_error <= design.relative_error);
         self.found.insert(at, design);
-        self.found_params.insert(at, (params, left));
+        self.families.insert(at, family);
     }
 }

@@ -1,0 +1,155 @@
+//! The refinement of the evolution's best member to the exact targets, advanced an
+//! iteration at a time so that a search in the browser keeps its frames: untimed,
+//! first with the crank angles projected out (`projected.rs`), then with every
+//! unknown together; timed, with every unknown at once.
+
+use super::geometry::PARAMS;
+use super::least_squares::{Minimiser, Settings};
+use super::problem::Problem;
+
+/// The least-squares settings of a refinement to `tolerance`: many iterations, but a
+/// start that stops gaining is left at once (starts in the true solution's valley
+/// crawl along it for hundreds of steps; starts at a local minimum gain nothing).
+fn settings(tolerance: f64) -> Settings {
+    Settings {
+        iterations: 2000,
+        cost_floor: (1e-3 * tolerance).powi(2),
+        step: 1e-7,
+        stall: 0.9,
+    }
+}
+
+/// Which unknowns are being refined.
+#[derive(Clone, Debug)]
+enum Stage {
+    /// The nine numbers, each target's angle its foot point from `start`.
+    Projected {
+        lm: Minimiser,
+        start: Vec<f64>,
+        feet: Vec<f64>,
+    },
+    /// The nine numbers and the angles (every target's, or the first's when timed).
+    Joint { lm: Minimiser },
+}
+
+/// What a finished refinement gave.
+pub enum Outcome {
+    /// Refined numbers, branch and each target's crank angle.
+    Refined {
+        /// The four-bar's nine numbers.
+        params: [f64; PARAMS],
+        /// Each target's crank angle, rad.
+        angles: Vec<f64>,
+    },
+    /// The residuals stopped existing (no linkage closes there).
+    Failed,
+}
+
+/// A refinement under way.
+#[derive(Clone, Debug)]
+pub struct Polish {
+    left: bool,
+    tolerance: f64,
+    stage: Stage,
+    /// Whether the evolution had stalled when it began (it restarts afterwards).
+    pub after_stall: bool,
+}
+
+impl Polish {
+    /// A refinement of the four-bar `params` on branch `left` meeting the targets at
+    /// `angles`; `None` where its residuals do not exist.
+    pub fn start(
+        problem: &Problem,
+        (params, left, angles): ([f64; PARAMS], bool, Vec<f64>),
+        tolerance: f64,
+        after_stall: bool,
+    ) -> Option<Self> {
+        let stage = if problem.timing.is_none() {
+            let mut feet = angles.clone();
+            let lm = Minimiser::new(
+                &params,
+                problem.residual_count(),
+                settings(tolerance),
+                &mut |p, r| problem.projected_residuals(p, left, &angles, &mut feet, r),
+            )?;
+            Stage::Projected {
+                lm,
+                start: angles,
+                feet,
+            }
+        } else {
+            joint(problem, &params, left, &angles, tolerance)?
+        };
+        Some(Self {
+            left,
+            tolerance,
+            stage,
+            after_stall,
+        })
+    }
+
+    /// The branch refined.
+    pub fn left(&self) -> bool {
+        self.left
+    }
+
+    /// One iteration; returns the evaluations it used and, when finished, what it
+    /// gave.
+    pub fn advance(&mut self, problem: &Problem) -> (u64, Option<Outcome>) {
+        let left = self.left;
+        match &mut self.stage {
+            Stage::Projected { lm, start, feet } => {
+                let mut residuals =
+                    |p: &[f64], r: &mut [f64]| problem.projected_residuals(p, left, start, feet, r);
+                let used = lm.iterate(&mut residuals);
+                if !lm.is_done() {
+                    return (used, None);
+                }
+                let fitted = lm.fitted();
+                let mut r = vec![0.0; problem.residual_count()];
+                if !residuals(&fitted.x, &mut r) {
+                    return (used, Some(Outcome::Failed));
+                }
+                let params: [f64; PARAMS] = std::array::from_fn(|k| fitted.x[k]);
+                let angles = feet.clone();
+                match joint(problem, &params, left, &angles, self.tolerance) {
+                    Some(stage) => {
+                        self.stage = stage;
+                        (used, None)
+                    }
+                    None => (used, Some(Outcome::Failed)),
+                }
+            }
+            Stage::Joint { lm } => {
+                let used = lm.iterate(&mut |u, r| problem.residuals(u, left, r));
+                if !lm.is_done() {
+                    return (used, None);
+                }
+                let x = lm.fitted().x;
+                let outcome = Outcome::Refined {
+                    params: std::array::from_fn(|k| x[k]),
+                    angles: problem.angles_of(&x),
+                };
+                (used, Some(outcome))
+            }
+        }
+    }
+}
+
+/// The joint refinement of `params` and `angles`.
+fn joint(
+    problem: &Problem,
+    params: &[f64; PARAMS],
+    left: bool,
+    angles: &[f64],
+    tolerance: f64,
+) -> Option<Stage> {
+    let u0 = problem.unknowns(params, angles);
+    let lm = Minimiser::new(
+        &u0,
+        problem.residual_count(),
+        settings(tolerance),
+        &mut |u, r| problem.residuals(u, left, r),
+    )?;
+    Some(Stage::Joint { lm })
+}
