@@ -89,7 +89,7 @@ fn ours(case: &cases::Case, seed: u64) -> Ours {
     let mut timeline: Vec<(f64, f64)> = Vec::new();
     let mut best = f64::INFINITY;
     loop {
-        let p = search.step(2_000);
+        let p = search.step(500);
         let t = started.elapsed().as_secs_f64();
         let now = search
             .designs()

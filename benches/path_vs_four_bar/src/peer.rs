@@ -13,6 +13,7 @@
 
 use std::time::Instant;
 
+use four_bar::mh::pareto::Best as _;
 use four_bar::{FourBar, mh, syn};
 
 use crate::cases::{Case, size};
@@ -73,7 +74,10 @@ pub fn run<const B: usize>(case: &Case, seconds: f64, budgets: &[f64; B]) -> [f6
             held.push((t, fb));
         })
         .solve();
-    let errors: Vec<(f64, f64)> = held.iter().map(|(t, fb)| (*t, error(fb, targets))).collect();
+    let errors: Vec<(f64, f64)> = held
+        .iter()
+        .map(|(t, fb)| (*t, error(fb, targets)))
+        .collect();
     budgets.map(|budget| {
         errors
             .iter()

@@ -177,7 +177,9 @@ fn quick() -> SearchOptions {
 
 #[test]
 fn the_same_seed_gives_the_same_designs_and_slices_change_nothing() {
-    let t = targets(&crank_rocker(), &every(10.0, 33.0, 10), true);
+    // Untimed: timed targets are met from the dyads before the evolution runs, the
+    // same whatever the seed.
+    let t = targets(&crank_rocker(), &every(10.0, 33.0, 10), false);
     let constraints = PathConstraints::default();
     let mut whole = PathSearch::new(&t, &constraints, quick()).expect("valid");
     whole.run();

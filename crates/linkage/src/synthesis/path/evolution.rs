@@ -49,10 +49,48 @@ pub struct Population {
 /// A coarse evaluation: cost and the targets' crank angles.
 type Scored = (f64, Vec<f64>);
 
-fn score_all(problem: &Problem, vectors: &[Vec<f64>]) -> Vec<Scored> {
+/// How far (as a share of each bound's width, in Euclidean distance) a place where
+/// an earlier run of the evolution ended without a design raises the cost.
+const NICHE_RADIUS: f64 = 0.05;
+/// How much it raises it there, in units of the targets' size: above the costs of
+/// the wrong basins that restarts fall into again and again (about 3e-3 measured).
+const NICHE_HEIGHT: f64 = 1e-2;
+
+/// What the evolution minimises: the problem's coarse cost, raised near the places
+/// where earlier runs of the evolution ended without a design (sequential niching,
+/// Beasley, Bull and Martin 1993), so that a restart explores elsewhere instead of
+/// falling into the same wrong basin again.
+pub struct Landscape<'a> {
+    /// The problem.
+    pub problem: &'a Problem,
+    /// Where earlier runs ended without a design.
+    pub visited: &'a [Vec<f64>],
+}
+
+impl Landscape<'_> {
+    fn raised(&self, v: &[f64], bounds: &[(f64, f64)]) -> f64 {
+        self.visited
+            .iter()
+            .map(|t| {
+                let d = v
+                    .iter()
+                    .zip(t)
+                    .zip(bounds)
+                    .map(|((a, b), (lo, hi))| ((a - b) / (hi - lo)).powi(2))
+                    .sum::<f64>()
+                    .sqrt();
+                NICHE_HEIGHT * (1.0 - d / NICHE_RADIUS).max(0.0)
+            })
+            .sum()
+    }
+}
+
+fn score_all(landscape: &Landscape, vectors: &[Vec<f64>]) -> Vec<Scored> {
+    let problem = landscape.problem;
+    let bounds = problem.bounds();
     let score = |v: &Vec<f64>| {
         let mut angles = vec![0.0; problem.targets.len()];
-        let cost = problem.coarse(v, &mut angles);
+        let cost = problem.coarse(v, &mut angles) + landscape.raised(v, &bounds);
         (
             if cost.is_finite() {
                 cost
@@ -73,8 +111,8 @@ fn score_all(problem: &Problem, vectors: &[Vec<f64>]) -> Vec<Scored> {
 
 impl Population {
     /// `size` members drawn uniformly within the bounds, scored.
-    pub fn random(problem: &Problem, size: usize, rng: &mut SplitMix) -> Self {
-        let bounds = problem.bounds();
+    pub fn random(landscape: &Landscape, size: usize, rng: &mut SplitMix) -> Self {
+        let bounds = landscape.problem.bounds();
         let members: Vec<Vec<f64>> = (0..size)
             .map(|_| {
                 bounds
@@ -83,7 +121,7 @@ impl Population {
                     .collect()
             })
             .collect();
-        let (costs, angles) = score_all(problem, &members).into_iter().unzip();
+        let (costs, angles) = score_all(landscape, &members).into_iter().unzip();
         Self {
             members,
             costs,
@@ -99,9 +137,9 @@ impl Population {
     }
 
     /// One generation; returns the evaluations it took.
-    pub fn evolve(&mut self, problem: &Problem, rng: &mut SplitMix) -> u64 {
-        let trials = self.trials(problem, rng);
-        let scored = score_all(problem, &trials);
+    pub fn evolve(&mut self, landscape: &Landscape, rng: &mut SplitMix) -> u64 {
+        let trials = self.trials(landscape.problem, rng);
+        let scored = score_all(landscape, &trials);
         for (i, (trial, (cost, angles))) in trials.into_iter().zip(scored).enumerate() {
             if cost <= self.costs[i] {
                 self.members[i] = trial;

@@ -93,11 +93,43 @@ impl CouplerFourBar {
 
     /// The pins, C pulled onto BD where the loop does not close, and the gap.
     fn pins_and_gap_at(&self, theta: f64) -> Option<(Pins, f64)> {
+        let (sin, cos) = theta.sin_cos();
+        self.pins_and_gap_along(Vec2::new(cos, sin))
+    }
+
+    /// [`Self::point_and_gap_at`] with the crank along the unit vector `along`
+    /// (callers stepping round the crank turn it by a fixed rotation instead of
+    /// taking a sine and a cosine at every step).
+    pub fn point_and_gap_along(&self, along: Vec2) -> Option<(Vec2, f64)> {
+        self.pins_and_gap_along(along)
+            .map(|(pins, gap)| (pins.p, gap))
+    }
+
+    /// The coupler point at crank angle `theta` and its derivative with respect to
+    /// the crank angle (from the velocities: the coupler turns so that C moves
+    /// square to DC), or `None` where the loop does not close or is at a dead point.
+    pub fn point_and_tangent_at(&self, theta: f64) -> Option<(Vec2, Vec2)> {
+        let pins = self.pins_at(theta)?;
+        let (e, f) = (pins.c - pins.b, pins.c - self.d);
+        let b_rate = crate::motion::perp(&(pins.b - self.a));
+        // B' + ω (C − B)⊥ = ω_DC (C − D)⊥; the dot with C − D drops the right side.
+        let turn = crate::motion::cross(&e, &f);
+        if turn == 0.0 {
+            return None;
+        }
+        let omega = -b_rate.dot(&f) / turn;
+        Some((
+            pins.p,
+            b_rate + crate::motion::perp(&(pins.p - pins.b)) * omega,
+        ))
+    }
+
+    fn pins_and_gap_along(&self, along: Vec2) -> Option<(Pins, f64)> {
         let (bc, dc) = (self.coupler, self.rocker);
         if !(self.crank > 0.0 && bc > 0.0 && dc > 0.0) {
             return None;
         }
-        let b = self.a + Vec2::new(theta.cos(), theta.sin()) * self.crank;
+        let b = self.a + along * self.crank;
         let e = self.d - b;
         let len2 = e.norm_squared();
         if len2 == 0.0 || !len2.is_finite() {
@@ -368,6 +400,24 @@ mod tests {
                     assert_eq!(m.pins_at(t).is_some(), inside(t), "{m:?} at {t}");
                 }
             }
+        }
+    }
+
+    /// Against central differences of the point itself (1e-7 of the size).
+    #[test]
+    fn the_tangent_is_the_derivative_of_the_coupler_point() {
+        let m = crank_rocker();
+        for k in 0..36 {
+            let t = f64::from(k) * 0.17;
+            let (p, tangent) = m.point_and_tangent_at(t).expect("closes");
+            let h = 1e-6;
+            let fd = (m.point_at(t + h).expect("closes") - m.point_at(t - h).expect("closes"))
+                / (2.0 * h);
+            assert!((p - m.point_at(t).expect("closes")).norm() == 0.0);
+            assert!(
+                (tangent - fd).norm() < 1e-7 * 4.0,
+                "at {t}: {tangent} vs {fd}"
+            );
         }
     }
 

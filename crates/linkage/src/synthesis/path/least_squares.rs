@@ -84,6 +84,11 @@ impl Minimiser {
         self.done
     }
 
+    /// The residuals where it stands.
+    pub fn residuals(&self) -> &[f64] {
+        &self.r
+    }
+
     /// Where it stands.
     pub fn fitted(&self) -> Fitted {
         Fitted {

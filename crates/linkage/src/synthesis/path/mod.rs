@@ -17,6 +17,7 @@
 mod coarse;
 mod cognates;
 mod design;
+mod dyads;
 mod evolution;
 mod family;
 mod geometry;

@@ -19,6 +19,26 @@ fn settings(tolerance: f64) -> Settings {
     }
 }
 
+/// The settings of a last, patient refinement of a design that ended within
+/// [`NEAR_MISS`] times the tolerance but not within it: where the targets barely
+/// determine the linkage (smallest singular values of 1e-6 measured) the last
+/// digits come slowly, and the stall rule above would leave them.
+fn patient_settings(tolerance: f64) -> Settings {
+    Settings {
+        iterations: 5000,
+        stall: 0.999,
+        ..settings(tolerance)
+    }
+}
+
+/// How far beyond the tolerance a refined design may miss and still be given the
+/// patient refinement.
+const NEAR_MISS: f64 = 30.0;
+
+/// A four-bar to refine: its nine numbers, its branch (C left of B→D) and each
+/// target's crank angle, rad.
+pub type Start = ([f64; PARAMS], bool, Vec<f64>);
+
 /// Which unknowns are being refined.
 #[derive(Clone, Debug)]
 enum Stage {
@@ -28,8 +48,9 @@ enum Stage {
         start: Vec<f64>,
         feet: Vec<f64>,
     },
-    /// The nine numbers and the angles (every target's, or the first's when timed).
-    Joint { lm: Minimiser },
+    /// The nine numbers and the angles (every target's, or the first's when timed);
+    /// `patient` for the last refinement of a near miss.
+    Joint { lm: Minimiser, patient: bool },
 }
 
 /// What a finished refinement gave.
@@ -53,6 +74,9 @@ pub struct Polish {
     stage: Stage,
     /// Whether the evolution had stalled when it began (it restarts afterwards).
     pub after_stall: bool,
+    /// Whether it refines a start found from the dyads (`dyads.rs`), not a member of
+    /// the evolution.
+    pub from_dyads: bool,
 }
 
 impl Polish {
@@ -60,7 +84,7 @@ impl Polish {
     /// `angles`; `None` where its residuals do not exist.
     pub fn start(
         problem: &Problem,
-        (params, left, angles): ([f64; PARAMS], bool, Vec<f64>),
+        (params, left, angles): Start,
         tolerance: f64,
         after_stall: bool,
     ) -> Option<Self> {
@@ -78,13 +102,14 @@ impl Polish {
                 feet,
             }
         } else {
-            joint(problem, &params, left, &angles, tolerance)?
+            joint(problem, &params, left, &angles, settings(tolerance))?
         };
         Some(Self {
             left,
             tolerance,
             stage,
             after_stall,
+            from_dyads: false,
         })
     }
 
@@ -112,7 +137,7 @@ impl Polish {
                 }
                 let params: [f64; PARAMS] = std::array::from_fn(|k| fitted.x[k]);
                 let angles = feet.clone();
-                match joint(problem, &params, left, &angles, self.tolerance) {
+                match joint(problem, &params, left, &angles, settings(self.tolerance)) {
                     Some(stage) => {
                         self.stage = stage;
                         (used, None)
@@ -120,12 +145,25 @@ impl Polish {
                     None => (used, Some(Outcome::Failed)),
                 }
             }
-            Stage::Joint { lm } => {
+            Stage::Joint { lm, patient } => {
                 let used = lm.iterate(&mut |u, r| problem.residuals(u, left, r));
                 if !lm.is_done() {
                     return (used, None);
                 }
                 let x = lm.fitted().x;
+                let miss = largest_miss(lm.residuals(), problem.targets.len());
+                if !*patient && miss > self.tolerance && miss <= NEAR_MISS * self.tolerance {
+                    let lm = Minimiser::new(
+                        &x,
+                        problem.residual_count(),
+                        patient_settings(self.tolerance),
+                        &mut |u, r| problem.residuals(u, left, r),
+                    );
+                    if let Some(lm) = lm {
+                        self.stage = Stage::Joint { lm, patient: true };
+                        return (used, None);
+                    }
+                }
                 let outcome = Outcome::Refined {
                     params: std::array::from_fn(|k| x[k]),
                     angles: problem.angles_of(&x),
@@ -142,14 +180,20 @@ fn joint(
     params: &[f64; PARAMS],
     left: bool,
     angles: &[f64],
-    tolerance: f64,
+    settings: Settings,
 ) -> Option<Stage> {
     let u0 = problem.unknowns(params, angles);
-    let lm = Minimiser::new(
-        &u0,
-        problem.residual_count(),
-        settings(tolerance),
-        &mut |u, r| problem.residuals(u, left, r),
-    )?;
-    Some(Stage::Joint { lm })
+    let lm = Minimiser::new(&u0, problem.residual_count(), settings, &mut |u, r| {
+        problem.residuals(u, left, r)
+    })?;
+    Some(Stage::Joint { lm, patient: false })
+}
+
+/// The largest distance of the coupler point from a target, in the targets'
+/// normalised units (their size is 1), from residuals ordered as
+/// [`Problem::residuals`] orders them.
+fn largest_miss(r: &[f64], targets: usize) -> f64 {
+    (0..targets)
+        .map(|i| r[3 * i].hypot(r[3 * i + 1]))
+        .fold(0.0, f64::max)
 }

@@ -17,15 +17,8 @@ const FOOT_STEPS: usize = 12;
 /// where the miss is across the curve, by Gauss–Newton along the tangent. `None`
 /// where the curve does not close on the way.
 fn foot(m: &CouplerFourBar, target: Vec2, mut theta: f64) -> Option<f64> {
-    let h = 1e-6;
     for _ in 0..FOOT_STEPS {
-        let p = m.point_at(theta)?;
-        let tangent = match (m.point_at(theta + h), m.point_at(theta - h)) {
-            (Some(a), Some(b)) => (a - b) / (2.0 * h),
-            (Some(a), None) => (a - p) / h,
-            (None, Some(b)) => (p - b) / h,
-            (None, None) => return None,
-        };
+        let (p, tangent) = m.point_and_tangent_at(theta)?;
         let reach = tangent.norm_squared();
         if reach.is_nan() || reach <= 0.0 {
             return Some(theta);

@@ -9,10 +9,10 @@
 //! must keep drawing frames (the browser) or that wants progress.
 
 use super::design::PathDesign;
-use super::evolution::{Population, SplitMix};
+use super::evolution::{Landscape, Population, SplitMix};
 use super::family::Family;
 use super::geometry::CouplerFourBar;
-use super::polish::{Outcome, Polish};
+use super::polish::{Outcome, Polish, Start};
 use super::problem::{Encoding, Problem};
 use super::{PARAMS, SearchOptions};
 
@@ -77,7 +77,16 @@ pub struct PathSearch {
     kept_new: bool,
     /// The refinement under way, if any (the evolution waits for it).
     polish: Option<Polish>,
+    /// Where runs of the evolution ended without a design (the latest
+    /// [`MAX_VISITED`]), which restarts steer away from.
+    visited: Vec<Vec<f64>>,
+    /// Starting four-bars from the dyads (timed targets), refined before the
+    /// evolution runs; `None` until found.
+    starts: Option<Vec<Start>>,
 }
+
+/// Places remembered in [`PathSearch::visited`].
+const MAX_VISITED: usize = 30;
 
 impl PathSearch {
     pub(super) fn start(problem: Problem, options: SearchOptions) -> Self {
@@ -98,6 +107,8 @@ impl PathSearch {
             fruitless: 0,
             kept_new: false,
             polish: None,
+            visited: vec![],
+            starts: None,
         }
     }
 
@@ -109,7 +120,7 @@ impl PathSearch {
         while self.evaluations < until && !self.is_done() {
             if self.polish.is_some() {
                 self.refine();
-            } else {
+            } else if !self.refine_next_start() {
                 self.generation();
             }
         }
@@ -192,7 +203,7 @@ impl PathSearch {
 
     /// The four-bar of a search vector in the targets' frame: its nine numbers, its
     /// branch and each target's crank angle.
-    fn placed(&self, v: &[f64]) -> Option<([f64; PARAMS], bool, Vec<f64>)> {
+    fn placed(&self, v: &[f64]) -> Option<Start> {
         let mut angles = vec![0.0; self.problem.targets.len()];
         let m = self.problem.place(v, &mut angles).linkage?;
         Some((m.params(), m.c_left_of_bd, angles))
@@ -200,12 +211,16 @@ impl PathSearch {
 
     fn generation(&mut self) {
         let size = self.options.population.max(8);
+        let landscape = Landscape {
+            problem: &self.problem,
+            visited: &self.visited,
+        };
         let Some(population) = self.population.as_mut() else {
-            self.population = Some(Population::random(&self.problem, size, &mut self.rng));
+            self.population = Some(Population::random(&landscape, size, &mut self.rng));
             self.evaluations += size as u64;
             return;
         };
-        self.evaluations += population.evolve(&self.problem, &mut self.rng);
+        self.evaluations += population.evolve(&landscape, &mut self.rng);
         self.generations += 1;
         let best = population.costs[population.best()];
         if best < 0.99 * self.run_best {
@@ -228,6 +243,24 @@ impl PathSearch {
         }
     }
 
+    /// Starts refining the next start from the dyads, if one is left (finding them
+    /// first); returns whether it did.
+    fn refine_next_start(&mut self) -> bool {
+        if self.starts.is_none() {
+            self.starts = Some(super::dyads::timed_starts(&self.problem));
+            self.evaluations += super::dyads::fits(&self.problem);
+        }
+        let tolerance = self.options.tolerance;
+        while let Some(start) = self.starts.as_mut().and_then(Vec::pop) {
+            if let Some(mut polish) = Polish::start(&self.problem, start, tolerance, false) {
+                polish.from_dyads = true;
+                self.polish = Some(polish);
+                return true;
+            }
+        }
+        false
+    }
+
     /// One iteration of the refinement under way; when it ends, keeps what it gave
     /// if that meets the constraints, and restarts the evolution when that is within
     /// tolerance or the evolution had stalled.
@@ -240,15 +273,33 @@ impl PathSearch {
         let Some(outcome) = outcome else {
             return;
         };
-        let (left, after_stall) = (polish.left(), polish.after_stall);
+        let (left, after_stall, from_dyads) =
+            (polish.left(), polish.after_stall, polish.from_dyads);
         self.polish = None;
         let met = match outcome {
             Outcome::Refined { params, angles } => self.consider(params, left, &angles),
             Outcome::Failed => false,
         };
+        if from_dyads {
+            return;
+        }
         if met || after_stall {
+            if !met {
+                self.remember_where_it_ended();
+            }
             self.restart();
         }
+    }
+
+    /// Keeps the place where this run of the evolution ended without a design.
+    fn remember_where_it_ended(&mut self) {
+        let Some(p) = self.population.as_ref() else {
+            return;
+        };
+        if self.visited.len() == MAX_VISITED {
+            self.visited.remove(0);
+        }
+        self.visited.push(p.members[p.best()].clone());
     }
 
     fn restart(&mut self) {

@@ -34,17 +34,8 @@ impl Places<'_> {
 
     /// The curve's point and its derivative per index at index `x`.
     fn point_and_tangent(&self, x: f64) -> Option<(Complex<f64>, Complex<f64>)> {
-        let h = 1e-4;
-        let p = self.unit.point_at(self.angle(x))?;
-        let ahead = self.unit.point_at(self.angle(x + h));
-        let behind = self.unit.point_at(self.angle(x - h));
-        let tangent = match (ahead, behind) {
-            (Some(a), Some(b)) => (a - b) / (2.0 * h),
-            (Some(a), None) => (a - p) / h,
-            (None, Some(b)) => (p - b) / h,
-            (None, None) => return None,
-        };
-        Some((complex(p), complex(tangent)))
+        let (p, tangent) = self.unit.point_and_tangent_at(self.angle(x))?;
+        Some((complex(p), complex(tangent * self.step)))
     }
 
     /// `rounds` Gauss–Newton steps from places `x` and similarity `sim`; returns the
