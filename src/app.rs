@@ -257,6 +257,10 @@ impl LinkageApp {
             Some(Err(why)) => state.status = Some(why),
             None => {}
         }
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Some(path) = &start.file {
+            ui::files::open_path(&mut state, path);
+        }
         Self {
             state,
             shapes: SharedShapes::default(),
@@ -448,6 +452,7 @@ impl eframe::App for LinkageApp {
             undo_shortcuts(ui, &mut self.state);
         }
 
+        ui::files::take_dropped(ui.ctx(), &mut self.state);
         ui::scene_picker::top_bar(ui, &mut self.state, frame);
         if self.state.builder.is_some() {
             self.drawing_panels(ui);
@@ -455,6 +460,7 @@ impl eframe::App for LinkageApp {
             self.viewer_panels(ui, &mut solver_us);
         }
         ui::synthesis::window(ui.ctx(), &mut self.state);
+        ui::files::drop_hint(ui.ctx());
         // What the panels after the view asked for (the polygons' and plots' own
         // controls, the shortcuts) shows next frame, which `follow_up` asks for.
         self.state.apply_edits();

@@ -13,6 +13,7 @@ pub mod path_inputs;
 pub mod path_job;
 pub mod render;
 pub mod session;
+pub mod start;
 pub mod synthesis;
 pub mod synthesis_function;
 pub mod synthesis_motion;
@@ -29,37 +30,7 @@ pub fn controls_json() -> String {
 
 pub use app::{AppState, LinkageApp};
 
-/// How the desktop app starts (from its command line).
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct StartOptions {
-    /// `--exit-after-frames N`: close after N frames and print the mean CPU time per
-    /// frame (headless smoke runs and measurements).
-    pub exit_after_frames: Option<u64>,
-    /// `--play`: start with the animation running.
-    pub play: bool,
-    /// `--scene KEY`: open this shipped scene instead of the default.
-    pub scene: Option<String>,
-}
-
-impl StartOptions {
-    /// Reads the options; unknown arguments and malformed values are ignored (the
-    /// window still opens).
-    pub fn from_args(args: impl IntoIterator<Item = String>) -> Self {
-        let mut out = Self::default();
-        let mut args = args.into_iter();
-        while let Some(arg) = args.next() {
-            match arg.as_str() {
-                "--exit-after-frames" => {
-                    out.exit_after_frames = args.next().and_then(|n| n.parse().ok());
-                }
-                "--play" => out.play = true,
-                "--scene" => out.scene = args.next(),
-                _ => {}
-            }
-        }
-        out
-    }
-}
+pub use start::StartOptions;
 
 /// Starts the app on the page's `<canvas id="linkage_canvas">` (browser only).
 #[cfg(target_arch = "wasm32")]

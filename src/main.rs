@@ -3,25 +3,48 @@
 #![cfg_attr(not(debug_assertions), windows_subsystem = "windows")]
 
 #[cfg(not(target_arch = "wasm32"))]
-fn main() -> eframe::Result {
+fn main() -> std::process::ExitCode {
+    use std::process::ExitCode;
+    // `--help`, `--version` and argument errors end here (clap: status 0 or 2).
+    let start = linkage_lab::StartOptions::from_command_line();
     // The app's own messages (opened files, scenes that failed) at info, the
     // libraries' only when they warn; RUST_LOG overrides.
     env_logger::Builder::from_env(
         env_logger::Env::default().default_filter_or("warn,linkage_lab=info"),
     )
     .init();
+    let env = |name: &str| std::env::var(name).ok();
+    if let Some(why) =
+        linkage_lab::start::no_display(env("DISPLAY").as_deref(), env("WAYLAND_DISPLAY").as_deref())
+    {
+        eprintln!("{why}");
+        return ExitCode::FAILURE;
+    }
     let options = eframe::NativeOptions {
         viewport: eframe::egui::ViewportBuilder::default()
             .with_title("Linkage Lab")
-            .with_inner_size([1100.0, 720.0]),
+            .with_inner_size([1100.0, 720.0])
+            .with_drag_and_drop(true),
         ..Default::default()
     };
-    let start = linkage_lab::StartOptions::from_args(std::env::args());
-    eframe::run_native(
+    let result = eframe::run_native(
         "Linkage Lab",
         options,
         Box::new(move |cc| Ok(Box::new(linkage_lab::LinkageApp::new(cc, start)))),
-    )
+    );
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            // One line: winit's errors print as nested debug structures.
+            let text = e
+                .to_string()
+                .split_whitespace()
+                .collect::<Vec<_>>()
+                .join(" ");
+            eprintln!("linkage-lab: cannot open a window: {text}");
+            ExitCode::FAILURE
+        }
+    }
 }
 
 #[cfg(target_arch = "wasm32")]

@@ -335,6 +335,30 @@ pub fn pick_file(slot: &Upload, ctx: &eframe::egui::Context) -> Result<(), Strin
     Ok(())
 }
 
+/// Reads a file dropped on the page (the browser reads it asynchronously) into
+/// `slot`, for the next frame to open as an upload; asks `ctx` for that frame.
+pub fn read_dropped(
+    file: eframe::egui::DroppedFileHandle,
+    slot: &Upload,
+    ctx: &eframe::egui::Context,
+) {
+    let slot = slot.clone();
+    let ctx = ctx.clone();
+    wasm_bindgen_futures::spawn_local(async move {
+        let name = file.path().file_name().map_or_else(
+            || "dropped.ron".to_string(),
+            |n| n.to_string_lossy().into_owned(),
+        );
+        match file.bytes_async().await {
+            Ok(bytes) => {
+                *slot.borrow_mut() = Some((name, String::from_utf8_lossy(&bytes).into_owned()));
+            }
+            Err(e) => log::warn!("the dropped file {name} could not be read: {e}"),
+        }
+        ctx.request_repaint();
+    });
+}
+
 /// The local-storage key of the drawing being made.
 const DRAWING_KEY: &str = "linkage-lab.drawing";
 

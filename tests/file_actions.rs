@@ -282,3 +282,108 @@ fn png_export_writes_the_sheet_rendered_at_150_dpi() {
     assert!((1239..=1241).contains(&width), "{width} px wide");
     std::fs::remove_dir_all(dir).expect("clean up");
 }
+
+/// A file dropped on the window, as winit hands it to egui.
+#[derive(Debug)]
+struct Dropped(PathBuf);
+
+impl egui::DroppedFile for Dropped {
+    fn path(&self) -> &Path {
+        &self.0
+    }
+
+    fn bytes(&self) -> Result<Vec<u8>, String> {
+        std::fs::read(&self.0).map_err(|e| e.to_string())
+    }
+}
+
+/// The app given `start`, with no GPU renderer.
+fn harness_starting(start: StartOptions) -> Harness<'static, LinkageApp> {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1500.0, 950.0))
+        .build_eframe(move |cc| LinkageApp::new(cc, start.clone()));
+    h.run();
+    h
+}
+
+/// Regression (issue 22, finding 7): `linkage-lab FILE.ron` opened the default scene;
+/// the file named on the command line opens at start.
+#[test]
+fn a_scene_file_named_on_the_command_line_opens_at_start() {
+    let file = shipped("quick_return.ron");
+    let h = harness_starting(StartOptions {
+        file: Some(file),
+        ..StartOptions::default()
+    });
+    let s = &h.state().state.session;
+    assert_eq!(
+        s.source(),
+        &SceneSource::File("quick_return.ron".into()),
+        "{}",
+        status(&h)
+    );
+    // A file that cannot be read leaves the default scene, saying why.
+    let h = harness_starting(StartOptions {
+        file: Some(PathBuf::from("/no/such/scene.ron")),
+        ..StartOptions::default()
+    });
+    assert!(status(&h).contains("/no/such/scene.ron"), "{}", status(&h));
+}
+
+/// Regression (issue 22, finding 7): a scene file dropped on the window did nothing;
+/// it opens, and over unsaved edits the app asks first, as Open does.
+#[test]
+fn a_scene_file_dropped_on_the_window_opens() {
+    let mut h = harness_starting(StartOptions::default());
+    let drop = |h: &mut Harness<'static, LinkageApp>, file: &str| {
+        h.input_mut()
+            .dropped_files
+            .push(Arc::new(Dropped(shipped(file))));
+        h.run();
+    };
+    drop(&mut h, "slider_crank.ron");
+    assert_eq!(
+        h.state().state.session.source(),
+        &SceneSource::File("slider_crank.ron".into())
+    );
+    h.state_mut().state.edit(SceneEdit::Length {
+        index: 0,
+        value: 0.11,
+    });
+    h.run();
+    drop(&mut h, "quick_return.ron");
+    assert!(
+        h.state().state.pending_open.is_some(),
+        "asks over unsaved edits"
+    );
+}
+
+/// The desktop binary's own doors (issue 22, finding 7): `--help` and `--version`
+/// print without opening a window, an unknown argument is refused with status 2, and
+/// with no display the app says so in one line instead of winit's error structure.
+#[test]
+fn the_desktop_binary_answers_its_command_line_and_names_a_missing_display() {
+    let run = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_linkage-lab"))
+            .args(args)
+            .env_remove("DISPLAY")
+            .env_remove("WAYLAND_DISPLAY")
+            .output()
+            .expect("runs")
+    };
+    let help = run(&["--help"]);
+    assert_eq!(help.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&help.stdout).contains("--scene"));
+    let version = run(&["--version"]);
+    assert!(String::from_utf8_lossy(&version.stdout).contains(env!("CARGO_PKG_VERSION")));
+    let unknown = run(&["--frobnicate"]);
+    assert_eq!(unknown.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&unknown.stderr).contains("--frobnicate"));
+    let headless = run(&["--scene", "quick_return"]);
+    let err = String::from_utf8_lossy(&headless.stderr);
+    assert_eq!(headless.status.code(), Some(1), "{err}");
+    assert!(
+        err.trim().lines().count() == 1 && err.contains("DISPLAY") && !err.contains("OsError"),
+        "{err}"
+    );
+}

@@ -243,6 +243,50 @@ pub fn open_text(st: &mut AppState, name: String, text: &str) {
     }
 }
 
+/// Opens the scene file at `path` (from the command line, or dropped on the window),
+/// asking first over unsaved edits as Open does; later dialogs start in its folder.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn open_path(st: &mut AppState, path: &std::path::Path) {
+    st.files.dialog.last_dir = path.parent().map(std::path::Path::to_path_buf);
+    run(st, FileAction::Open, path);
+}
+
+/// Opens a scene file dropped on the window, or on the page (read by the browser,
+/// then opened in a later frame as an upload is). Of several, the first.
+pub fn take_dropped(ctx: &egui::Context, st: &mut AppState) {
+    let dropped = ctx.input(|i| i.raw.dropped_files.clone());
+    let Some(file) = dropped.first() else {
+        return;
+    };
+    if dropped.len() > 1 {
+        log::info!("{} files dropped: opening the first", dropped.len());
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    open_path(st, file.path());
+    #[cfg(target_arch = "wasm32")]
+    crate::web::read_dropped(file.clone(), &st.files.upload, ctx);
+}
+
+/// While files are dragged over the window: a veil that says what a drop does.
+pub fn drop_hint(ctx: &egui::Context) {
+    if ctx.input(|i| i.raw.hovered_files.is_empty()) {
+        return;
+    }
+    let screen = ctx.content_rect();
+    let painter = ctx.layer_painter(egui::LayerId::new(
+        egui::Order::Foreground,
+        egui::Id::unique("drop hint"),
+    ));
+    painter.rect_filled(screen, 0.0, egui::Color32::from_black_alpha(160));
+    painter.text(
+        screen.center(),
+        egui::Align2::CENTER_CENTER,
+        "Drop a scene file (.ron) to open it",
+        egui::FontId::proportional(24.0),
+        egui::Color32::WHITE,
+    );
+}
+
 /// Opens the system's dialog for `action`; its answer comes back in a later frame.
 #[cfg(not(target_arch = "wasm32"))]
 fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, frame: &eframe::Frame) {

@@ -209,12 +209,16 @@ mod tests {
         let targets = PathTargets {
             points_m: degrees
                 .iter()
-                .map(|d| m.point_at(d.to_radians()).map(Into::into).unwrap_or([0.0; 2]))
+                .map(|d| {
+                    m.point_at(d.to_radians())
+                        .map(Into::into)
+                        .unwrap_or([0.0; 2])
+                })
                 .collect(),
             crank_deg: Some(degrees),
         };
-        let problem = super::super::normalise(&targets, &PathConstraints::default())
-            .expect("valid targets");
+        let problem =
+            super::super::normalise(&targets, &PathConstraints::default()).expect("valid targets");
         let norm = |p: Vec2| (p - problem.centre) / problem.scale;
         let w = complex(m.point) / m.coupler;
         let o = point(complex(m.a) + w * (complex(m.d) - complex(m.a)));
