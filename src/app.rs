@@ -136,6 +136,8 @@ pub struct AppState {
     pub builder: Option<crate::builder::Builder>,
     /// The synthesis window, while open.
     pub synthesis: Option<ui::synthesis::SynthesisView>,
+    /// The arrangement of the panels for the screen, and the sheet's tab.
+    pub layout: ui::layout::LayoutState,
 }
 
 impl AppState {
@@ -170,6 +172,7 @@ impl AppState {
             turning: None,
             builder: None,
             synthesis: None,
+            layout: Default::default(),
         }
     }
 
@@ -230,6 +233,8 @@ pub struct LinkageApp {
     #[cfg(target_arch = "wasm32")]
     url: crate::web::UrlSync,
     #[cfg(target_arch = "wasm32")]
+    fragment_watch: crate::web::FragmentWatch,
+    #[cfg(target_arch = "wasm32")]
     drawing_store: crate::web::DrawingStore,
 }
 
@@ -269,6 +274,8 @@ impl LinkageApp {
             exit_after_frames: start.exit_after_frames,
             #[cfg(target_arch = "wasm32")]
             url: crate::web::UrlSync::default(),
+            #[cfg(target_arch = "wasm32")]
+            fragment_watch: crate::web::FragmentWatch::default(),
             #[cfg(target_arch = "wasm32")]
             drawing_store: crate::web::DrawingStore::default(),
         }
@@ -361,8 +368,22 @@ fn open_or_explain(key: &str) -> Session {
 }
 
 impl LinkageApp {
-    /// The viewer: report strip, controls, polygons, plots and the mechanism view.
+    /// The viewer: report strip, controls, polygons, plots and the mechanism view
+    /// (on a phone or tablet, the view and a sheet of tabs).
     fn viewer_panels(&mut self, ui: &mut egui::Ui, solver_us: &mut f64) {
+        if self.state.layout.compact() {
+            egui::CentralPanel::default_margins().show(ui, |ui| {
+                let view = ui::sheet::show(ui, &mut self.state, false);
+                let mut ui = ui.new_child(egui::UiBuilder::new().max_rect(view));
+                *solver_us += ui::viewport::show(
+                    &mut ui,
+                    &mut self.state,
+                    &self.shapes,
+                    self.renderer.as_ref(),
+                );
+            });
+            return;
+        }
         ui::report::strip(ui, &self.state);
         egui::Panel::left("controls")
             .default_size(290.0)
@@ -399,6 +420,19 @@ impl LinkageApp {
     /// While drawing: the tools beside the drawing; the report, plots and polygons
     /// once the drawing is a mechanism.
     fn drawing_panels(&mut self, ui: &mut egui::Ui) {
+        if self.state.layout.compact() {
+            egui::CentralPanel::default_margins().show(ui, |ui| {
+                let view = ui::sheet::show(ui, &mut self.state, true);
+                let mut ui = ui.new_child(egui::UiBuilder::new().max_rect(view));
+                ui::builder_canvas::show(
+                    &mut ui,
+                    &mut self.state,
+                    &self.shapes,
+                    self.renderer.as_ref(),
+                );
+            });
+            return;
+        }
         let complete = self
             .state
             .builder
@@ -433,6 +467,11 @@ impl LinkageApp {
 impl eframe::App for LinkageApp {
     fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
         let started = web_time::Instant::now();
+        if self.state.layout.update(ui.ctx()) {
+            // A phone turned, a window resized past the breakpoint: the view changed
+            // shape.
+            self.state.fit_pending = true;
+        }
         self.state.edit_ms = 0.0;
         let edits_before = (self.state.opened, self.state.session.edit_count());
         self.state.controls.clear();
@@ -453,6 +492,13 @@ impl eframe::App for LinkageApp {
         }
 
         ui::files::take_dropped(ui.ctx(), &mut self.state);
+        #[cfg(target_arch = "wasm32")]
+        {
+            self.fragment_watch.install(ui.ctx());
+            if self.fragment_watch.take() {
+                crate::web::follow_fragment(&mut self.state, &mut self.url);
+            }
+        }
         ui::scene_picker::top_bar(ui, &mut self.state, frame);
         if self.state.builder.is_some() {
             self.drawing_panels(ui);

@@ -185,6 +185,11 @@ pub struct UrlSync {
 }
 
 impl UrlSync {
+    /// Forgets what it wrote, so that the next update writes the state afresh.
+    pub fn forget(&mut self) {
+        self.last.clear();
+    }
+
     /// Updates the URL if the state differs from the last one written. Returns why
     /// the scene cannot travel in the URL, once, when that becomes so.
     pub fn update(&mut self, s: &Session) -> Option<String> {
@@ -204,6 +209,66 @@ impl UrlSync {
         }
         None
     }
+}
+
+/// Watches the page's fragment for changes the user makes: a link pasted into the
+/// address bar of the open page, back, forward. The app's own writes go through
+/// `replaceState`, which fires no `hashchange`.
+#[derive(Default)]
+pub struct FragmentWatch {
+    changed: Rc<std::cell::Cell<bool>>,
+    installed: bool,
+}
+
+impl FragmentWatch {
+    /// Listens for `hashchange` (once), asking `ctx` for a frame when one comes.
+    pub fn install(&mut self, ctx: &eframe::egui::Context) {
+        if self.installed {
+            return;
+        }
+        self.installed = true;
+        let Some(window) = web_sys::window() else {
+            return;
+        };
+        let changed = self.changed.clone();
+        let ctx = ctx.clone();
+        let on_change = Closure::<dyn FnMut()>::new(move || {
+            changed.set(true);
+            ctx.request_repaint();
+        });
+        let listened = window
+            .add_event_listener_with_callback("hashchange", on_change.as_ref().unchecked_ref());
+        if let Err(e) = listened {
+            log::warn!("links pasted into the open page will not open: {e:?}");
+        }
+        // The listener lives as long as the page.
+        on_change.forget();
+    }
+
+    /// Whether the fragment changed since the last call.
+    pub fn take(&self) -> bool {
+        self.changed.replace(false)
+    }
+}
+
+/// Opens what the page's fragment names, if it is not what the app shows (asking
+/// first over unsaved edits, as opening a file does); a link that does not open is
+/// said in the status line. The address then follows the app again (`url` writes it
+/// afresh): the current scene's until the new one opens.
+pub fn follow_fragment(st: &mut crate::app::AppState, url: &mut UrlSync) {
+    let fragment = fragment();
+    let wanted = fragment.trim_start_matches('#');
+    if wanted == url_state::encode(&st.session) {
+        return;
+    }
+    match url_state::open(&url_state::decode(&fragment)) {
+        Ok(session) => {
+            log::info!("opening the link's scene: {}", session.scene().name);
+            st.open(session);
+        }
+        Err(e) => st.status = Some(format!("the link's scene did not open: {e}")),
+    }
+    url.forget();
 }
 
 /// The page's address, which carries the scene (the share link).

@@ -215,3 +215,122 @@ fn a_dragged_slider_moves_the_pose_each_frame_and_the_report_follows_when_it_sto
     assert!(h.query_by_label("updating…").is_none());
     assert!(h.query_by_label("stroke slider = 122.00 mm").is_some());
 }
+
+/// Phones held upright, a tablet either way, a small desktop window: the screens the
+/// issue names (390×844, 430×932, 768×1024, 1024×768) and 800×600.
+const DEVICES: [(&str, f32, f32); 5] = [
+    ("phone_390x844", 390.0, 844.0),
+    ("phone_430x932", 430.0, 932.0),
+    ("tablet_768x1024", 768.0, 1024.0),
+    ("tablet_1024x768", 1024.0, 768.0),
+    ("window_800x600", 800.0, 600.0),
+];
+
+/// Regression (issue 22, finding 5): at 390×844 the desktop panels sat side by side
+/// and the mechanism view was a strip about 100 px wide. On every device size the
+/// view takes at least half the screen; every tab of the sheet (controls, polygons,
+/// plots, report, accuracy) is there and shows; every control a finger touches is at
+/// least 40 points high; and each device's controls are kept as a picture.
+#[test]
+fn phones_and_tablets_give_the_view_half_the_screen_and_reach_every_panel() {
+    use linkage_lab::ui::control_map::ControlKind;
+    use linkage_lab::ui::layout::SheetTab;
+    // One set of snapshot results over the harnesses, as kittest asks.
+    let mut snapshots = egui_kittest::SnapshotResults::new();
+    for (name, w, hgt) in DEVICES {
+        let mut h = common::sized_harness(w, hgt);
+        h.run();
+        h.run();
+        let st = &h.state().state;
+        let [x0, y0, x1, y1] = st.controls.view.expect("the view is drawn");
+        let share = (x1 - x0) * (y1 - y0) / (w * hgt);
+        assert!(
+            share >= 0.5,
+            "{name}: the view has {share:.2} of the screen"
+        );
+        for e in st.controls.entries.iter().filter(|e| e.visible) {
+            let touched = matches!(
+                e.kind,
+                ControlKind::Play
+                    | ControlKind::Crank
+                    | ControlKind::Length
+                    | ControlKind::Branch
+                    | ControlKind::SheetTab
+                    | ControlKind::Menu
+                    | ControlKind::History
+                    | ControlKind::ScenePicker
+            );
+            if touched {
+                let height = e.rect[3] - e.rect[1];
+                assert!(
+                    height >= 40.0 - 0.5,
+                    "{name}: {:?} {} is {height} high",
+                    e.kind,
+                    e.label
+                );
+            }
+        }
+        h.snapshot(format!("{name}_controls"));
+        for tab in SheetTab::ALL {
+            let entry = h
+                .state()
+                .state
+                .controls
+                .entries
+                .iter()
+                .find(|e| e.kind == ControlKind::SheetTab && e.label == tab.label())
+                .cloned()
+                .unwrap_or_else(|| panic!("{name}: no {} tab", tab.label()));
+            let [a, b, c, d] = entry.rect;
+            common::click(&mut h, egui::pos2(0.5 * (a + c), 0.5 * (b + d)));
+            h.run();
+            assert_eq!(h.state().state.layout.tab, tab, "{name}");
+            if name == "phone_390x844" && tab != SheetTab::Controls {
+                h.snapshot(format!("{name}_{}", tab.label().to_lowercase()));
+            }
+        }
+        if name == "phone_390x844" {
+            phone_menu_and_synthesis(&mut h);
+        }
+        snapshots.extend_harness(&mut h);
+    }
+}
+
+/// The phone's menu holds the top bar's other actions; the synthesis window it opens
+/// fits the screen's width.
+fn phone_menu_and_synthesis(h: &mut Harness<'static, LinkageApp>) {
+    use linkage_lab::ui::control_map::ControlKind;
+    let at = |h: &Harness<'static, LinkageApp>, kind: ControlKind, label: &str| {
+        let e = h
+            .state()
+            .state
+            .controls
+            .entries
+            .iter()
+            .find(|e| e.kind == kind && e.label == label && e.visible)
+            .cloned()
+            .unwrap_or_else(|| panic!("no {kind:?} {label}"));
+        let [a, b, c, d] = e.rect;
+        assert!(d - b >= 40.0 - 0.5, "{label} is {} high", d - b);
+        egui::pos2(0.5 * (a + c), 0.5 * (b + d))
+    };
+    let menu = at(h, ControlKind::Menu, "Menu");
+    common::click(h, menu);
+    h.run();
+    for label in [
+        "Open scene…",
+        "Save scene…",
+        "Export CSV…",
+        "New…",
+        "Synthesis…",
+    ] {
+        at(h, ControlKind::FileButton, label);
+    }
+    h.snapshot("phone_390x844_menu");
+    let synthesis = at(h, ControlKind::FileButton, "Synthesis…");
+    common::click(h, synthesis);
+    h.run();
+    h.run();
+    assert!(h.state().state.synthesis.is_some());
+    h.snapshot("phone_390x844_synthesis");
+}

@@ -51,6 +51,10 @@ pub enum ControlKind {
     SynthesisCanvas,
     /// A target on the path tab's canvas (a drag moves it).
     SynthesisTarget,
+    /// A tab of the sheet that holds the panels on a phone or tablet.
+    SheetTab,
+    /// The top bar's menu on a phone or tablet (the file actions, New…, views).
+    Menu,
 }
 
 /// One control as drawn this frame.

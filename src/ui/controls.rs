@@ -12,9 +12,57 @@ use crate::ui::control_map::ControlKind;
 /// Label of the crank-angle slider (UI tests find it by this).
 pub const CRANK_LABEL: &str = "crank angle (deg)";
 
+/// Room a slider's number box takes beside it, points.
+const NUMBER_BOX: f32 = 80.0;
+
+/// Whether `ui` is too narrow for a slider, its number box and a label `label_width`
+/// wide in one row (a phone's sheet, with sliders long enough for a finger).
+fn too_narrow(ui: &egui::Ui, label_width: f32) -> bool {
+    ui.available_width() < ui.spacing().slider_width + NUMBER_BOX + label_width
+}
+
+/// A slider with its label: beside it on a desktop screen (the panels are laid out
+/// for that); on a phone or tablet beside it where the sheet holds both, else above
+/// it, the slider then filling the width its number box leaves, so that no label is
+/// cut off and the slider is long enough for a finger.
+pub(crate) fn labelled(
+    ui: &mut egui::Ui,
+    slider: egui::Slider<'_>,
+    label: &str,
+    touch: bool,
+) -> egui::Response {
+    let text = egui::WidgetText::from(label).into_galley(
+        ui,
+        Some(egui::TextWrapMode::Extend),
+        f32::INFINITY,
+        egui::TextStyle::Body,
+    );
+    if !touch || !too_narrow(ui, text.size().x) {
+        return ui.add(slider.text(label));
+    }
+    let name = ui.label(label);
+    let width = (ui.available_width() - NUMBER_BOX).max(60.0);
+    ui.scope(|ui| {
+        ui.spacing_mut().slider_width = width;
+        ui.add(slider).labelled_by(name.id)
+    })
+    .inner
+}
+
 /// The control panel.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     ui.heading("Controls");
+    let touch = st.layout.compact();
+    let speed = |ui: &mut egui::Ui, st: &mut AppState| {
+        labelled(
+            ui,
+            egui::Slider::new(&mut st.speed, 0.01..=4.0).logarithmic(true),
+            "speed ×",
+            touch,
+        );
+    };
+    // The longest row: Play, the speed slider, its number and label.
+    let narrow = touch && too_narrow(ui, 140.0);
     ui.horizontal(|ui| {
         let label = if st.playing { "Pause" } else { "Play" };
         let play = ui.button(label);
@@ -22,21 +70,22 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         if play.clicked() {
             st.playing = !st.playing;
         }
-        ui.add(
-            egui::Slider::new(&mut st.speed, 0.01..=4.0)
-                .logarithmic(true)
-                .text("speed ×"),
-        );
+        if !narrow {
+            speed(ui, st);
+        }
     });
+    if narrow {
+        speed(ui, st);
+    }
 
     let [lo, hi] = st.session.input_range_deg();
     let mut input = st.session.input_rad().to_degrees();
     if st.session.curves().full_rotation {
         input = input.rem_euclid(360.0);
     }
-    let slider = egui::Slider::new(&mut input, lo..=hi).text(CRANK_LABEL);
+    let slider = egui::Slider::new(&mut input, lo..=hi);
     // A full turn wraps, so dragging past 360 continues from 0.
-    let crank = ui.add(slider);
+    let crank = labelled(ui, slider, CRANK_LABEL, touch);
     st.controls
         .note(ui, ControlKind::Crank, CRANK_LABEL, &crank);
     if crank.changed() {
@@ -47,7 +96,12 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     if let Some(Ok(run)) = st.session.dynamics() {
         let end = run.duration_s();
         let mut t = st.session.time_s();
-        let r = ui.add(egui::Slider::new(&mut t, 0.0..=end).text("run time (s)"));
+        let r = labelled(
+            ui,
+            egui::Slider::new(&mut t, 0.0..=end),
+            "run time (s)",
+            touch,
+        );
         st.controls
             .note(ui, ControlKind::RunTime, "run time (s)", &r);
         if r.changed() {
@@ -67,7 +121,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         let Some(mut v) = p.value(st.session.scene()) else {
             continue;
         };
-        let r = ui.add(egui::Slider::new(&mut v, p.range()).text(&p.label));
+        let r = labelled(ui, egui::Slider::new(&mut v, p.range()), &p.label, touch);
         st.controls.note(ui, ControlKind::Length, &p.label, &r);
         if r.changed() {
             st.edit(SceneEdit::Length { index: i, value: v });
@@ -94,7 +148,12 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     if st.session.models() != Models::Kinematics && !springs.is_empty() {
         ui.separator();
         for (i, label, mut k, orig) in springs {
-            let r = ui.add(egui::Slider::new(&mut k, spring_range(orig)).text(&label));
+            let r = labelled(
+                ui,
+                egui::Slider::new(&mut k, spring_range(orig)),
+                &label,
+                touch,
+            );
             st.controls.note(ui, ControlKind::Spring, &label, &r);
             if r.changed() {
                 st.edit(SceneEdit::SpringK {
@@ -118,7 +177,12 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         if !masses.is_empty() {
             ui.separator();
             for (i, label, mut m, orig) in masses {
-                let r = ui.add(egui::Slider::new(&mut m, mass_range(orig)).text(&label));
+                let r = labelled(
+                    ui,
+                    egui::Slider::new(&mut m, mass_range(orig)),
+                    &label,
+                    touch,
+                );
                 st.controls.note(ui, ControlKind::Mass, &label, &r);
                 if r.changed() {
                     st.edit(SceneEdit::Mass { index: i, kg: m });

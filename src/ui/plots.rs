@@ -38,7 +38,7 @@ fn cursor_deg(s: &Session) -> f64 {
 
 /// The plot pane.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
-    ui.horizontal(|ui| {
+    ui.horizontal_wrapped(|ui| {
         for (tab, label) in [
             (PlotTab::Output, "Output s, v, a"),
             (PlotTab::Transmission, "Transmission angle"),
@@ -181,30 +181,52 @@ fn model_curves<'s>(ui: &mut egui::Ui, s: &'s Session) -> Option<&'s ModelCurves
 /// One plot of a row: (y label, x label, data, cursor position on x).
 type PlotSpec<'a> = (&'a str, &'a str, &'a [[f64; 2]], Option<f64>);
 
-/// Plots side by side.
+/// Narrowest a plot is drawn beside another, points: below, plots stand one under
+/// another (a phone's sheet), each [`STACKED_HEIGHT`] high.
+const LEAST_WIDTH: f32 = 200.0;
+/// Height of a plot in a stack, points.
+const STACKED_HEIGHT: f32 = 200.0;
+
+/// Plots side by side where the pane is wide enough, else one under another.
 fn row(ui: &mut egui::Ui, id: &str, generation: (&str, u64), plots: &[PlotSpec<'_>]) {
-    let height = ui.available_height().max(80.0);
-    ui.columns(plots.len(), |cols| {
-        for (i, (col, (y_label, x_label, data, cursor))) in cols.iter_mut().zip(plots).enumerate() {
-            let [lo, hi] = robust_range(data);
-            // Keyed on the mechanism, so that an edit re-fits the bounds.
-            Plot::new((id, i, generation))
-                .height(height)
-                .default_y_bounds(lo, hi)
-                .x_axis_label(*x_label)
-                .y_axis_label(*y_label)
-                .allow_scroll(false)
-                .show(col, |p| {
-                    p.line(Line::new(
-                        *y_label,
-                        data.iter().copied().collect::<PlotPoints<'_>>(),
-                    ));
-                    if let Some(x) = cursor.filter(|x| x.is_finite()) {
-                        p.vline(VLine::new("now", x));
-                    }
-                });
+    if ui.available_width() >= LEAST_WIDTH * plots.len() as f32 {
+        let height = ui.available_height().max(80.0);
+        ui.columns(plots.len(), |cols| {
+            for (i, (col, spec)) in cols.iter_mut().zip(plots).enumerate() {
+                plot(col, (id, i, generation), spec, height);
+            }
+        });
+    } else {
+        for (i, spec) in plots.iter().enumerate() {
+            plot(ui, (id, i, generation), spec, STACKED_HEIGHT);
         }
-    });
+    }
+}
+
+/// One plot, `height` high, keyed by `key` (the mechanism's, so that an edit re-fits
+/// its bounds).
+fn plot(
+    ui: &mut egui::Ui,
+    key: (&str, usize, (&str, u64)),
+    (y_label, x_label, data, cursor): &PlotSpec<'_>,
+    height: f32,
+) {
+    let [lo, hi] = robust_range(data);
+    Plot::new(key)
+        .height(height)
+        .default_y_bounds(lo, hi)
+        .x_axis_label(*x_label)
+        .y_axis_label(*y_label)
+        .allow_scroll(false)
+        .show(ui, |p| {
+            p.line(Line::new(
+                *y_label,
+                data.iter().copied().collect::<PlotPoints<'_>>(),
+            ));
+            if let Some(x) = cursor.filter(|x| x.is_finite()) {
+                p.vline(VLine::new("now", x));
+            }
+        });
 }
 
 /// The y range that holds the middle 96 % of the values, padded by a tenth: near a

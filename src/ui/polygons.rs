@@ -28,10 +28,10 @@ const HOVER_PX: f32 = 6.0;
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     ui.horizontal(|ui| {
         ui.heading("Polygons");
-        let (text, tip) = if st.polygons_wide {
-            ("narrower", "Give the mechanism its room back")
-        } else {
-            ("enlarge", "Polygons and mechanism share the window equally")
+        let (text, tip) = match (st.polygons_wide, st.layout.compact()) {
+            (true, _) => ("narrower", "Give the mechanism its room back"),
+            (false, false) => ("enlarge", "Polygons and mechanism share the window equally"),
+            (false, true) => ("enlarge", "Give the sheet the larger part of the screen"),
         };
         let button = ui.button(text).on_hover_text(tip);
         st.controls

@@ -12,22 +12,43 @@ use crate::session::derived::Shown;
 /// report from before them, greyed, until a frame without an edit makes the new one.
 pub fn strip(ui: &mut egui::Ui, st: &AppState) {
     egui::Panel::bottom("report").show(ui, |ui| {
-        ui.horizontal_wrapped(|ui| match st.session.report_shown() {
-            Shown::Current(r) => entries(ui, r),
-            Shown::Outdated(r) => {
-                ui.weak("updating…");
-                ui.separator();
-                ui.add_enabled_ui(false, |ui| entries(ui, r));
-            }
-            Shown::Pending => {
-                ui.weak("report: computing…");
-            }
-        });
+        ui.horizontal_wrapped(|ui| shown(ui, st, Form::Strip));
     });
 }
 
-/// The report's entries in a row, or why there is none.
-fn entries(ui: &mut egui::Ui, report: &Result<Report, linkage::LinkageError>) {
+/// The report as a page of the compact arrangements' sheet: each entry with where on
+/// the cycle it occurs written under it (a finger cannot hover).
+pub fn page(ui: &mut egui::Ui, st: &AppState) {
+    shown(ui, st, Form::Page);
+}
+
+/// How the entries are laid out.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Form {
+    /// In a row, the details on hover.
+    Strip,
+    /// One under another, the details written out.
+    Page,
+}
+
+fn shown(ui: &mut egui::Ui, st: &AppState, form: Form) {
+    match st.session.report_shown() {
+        Shown::Current(r) => entries(ui, r, form),
+        Shown::Outdated(r) => {
+            ui.weak("updating…");
+            if form == Form::Strip {
+                ui.separator();
+            }
+            ui.add_enabled_ui(false, |ui| entries(ui, r, form));
+        }
+        Shown::Pending => {
+            ui.weak("report: computing…");
+        }
+    }
+}
+
+/// The report's entries, or why there is none.
+fn entries(ui: &mut egui::Ui, report: &Result<Report, linkage::LinkageError>, form: Form) {
     let r = match report {
         Ok(r) => r,
         Err(e) => {
@@ -35,10 +56,35 @@ fn entries(ui: &mut egui::Ui, report: &Result<Report, linkage::LinkageError>) {
             return;
         }
     };
-    match &r.grashof {
-        Some(g) => ui
-            .label(format!("Grashof: {}", g.class))
-            .on_hover_text(format!(
+    for (k, (headline, details)) in items(r).into_iter().enumerate() {
+        match form {
+            Form::Strip => {
+                if k > 0 {
+                    ui.separator();
+                }
+                let shown = ui.label(headline);
+                if !details.is_empty() {
+                    shown.on_hover_text(details);
+                }
+            }
+            Form::Page => {
+                ui.strong(headline);
+                if !details.is_empty() {
+                    ui.weak(details);
+                }
+                ui.add_space(4.0);
+            }
+        }
+    }
+}
+
+/// Each entry of the report: its headline and where on the cycle it occurs.
+fn items(r: &Report) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    out.push(match &r.grashof {
+        Some(g) => (
+            format!("Grashof: {}", g.class),
+            format!(
                 "s + l = {:.4} m, p + q = {:.4} m ({}){}",
                 g.s_plus_l_m,
                 g.p_plus_q_m,
@@ -48,41 +94,40 @@ fn entries(ui: &mut egui::Ui, report: &Result<Report, linkage::LinkageError>) {
                 } else {
                     ""
                 }
-            )),
-        None => ui.label("Grashof: not a four-bar"),
-    };
-    ui.separator();
-    match r.time_ratio {
-        Some(k) => ui
-            .label(format!("K = {k:.4}"))
-            .on_hover_text(r.time_ratio_note.clone().unwrap_or_default()),
-        None => ui
-            .label("K: none")
-            .on_hover_text(r.time_ratio_note.clone().unwrap_or_default()),
-    };
+            ),
+        ),
+        None => ("Grashof: not a four-bar".into(), String::new()),
+    });
+    let note = r.time_ratio_note.clone().unwrap_or_default();
+    out.push(match r.time_ratio {
+        Some(k) => (format!("K = {k:.4}"), note),
+        None => ("K: none".into(), note),
+    });
     for (name, stroke) in &r.strokes_m {
-        ui.separator();
-        ui.label(format!("stroke {name} = {:.2} mm", stroke * 1e3))
-            .on_hover_text(limits_of(r, name));
+        out.push((
+            format!("stroke {name} = {:.2} mm", stroke * 1e3),
+            limits_of(r, name),
+        ));
     }
     for (name, swing) in &r.swings_rad {
-        ui.separator();
-        ui.label(format!("swing {name} = {:.2}°", swing.to_degrees()))
-            .on_hover_text(limits_of(r, name));
+        out.push((
+            format!("swing {name} = {:.2}°", swing.to_degrees()),
+            limits_of(r, name),
+        ));
     }
     if let Some(t) = &r.transmission_angle_rad {
-        ui.separator();
-        ui.label(format!("μ min = {:.2}°", t.min.to_degrees()))
-            .on_hover_text(format!(
+        out.push((
+            format!("μ min = {:.2}°", t.min.to_degrees()),
+            format!(
                 "at crank {:.2}° (group {}); max {:.2}° at crank {:.2}°",
                 t.at.to_degrees(),
                 t.group,
                 t.max.to_degrees(),
                 t.at_max.to_degrees()
-            ));
+            ),
+        ));
     }
     if !r.toggles.is_empty() {
-        ui.separator();
         let text: Vec<String> = r
             .toggles
             .iter()
@@ -95,15 +140,19 @@ fn entries(ui: &mut egui::Ui, report: &Result<Report, linkage::LinkageError>) {
                 )
             })
             .collect();
-        ui.label(format!("{} toggle/dead positions", r.toggles.len()))
-            .on_hover_text(text.join("\n"));
+        out.push((
+            format!("{} toggle/dead positions", r.toggles.len()),
+            text.join("\n"),
+        ));
     }
     if !r.branch_points.is_empty() {
-        ui.separator();
         let text: Vec<String> = r.branch_points.iter().map(branch_point_line).collect();
-        ui.label(format!("{} branch points", r.branch_points.len()))
-            .on_hover_text(text.join("\n"));
+        out.push((
+            format!("{} branch points", r.branch_points.len()),
+            text.join("\n"),
+        ));
     }
+    out
 }
 
 /// "crank 180.00°: RRR dyad (coupler, rocker) at C, B on D".

@@ -16,94 +16,181 @@ fn names() -> &'static [String] {
     NAMES.get_or_init(|| BUILTIN_SCENES.iter().map(BuiltinScene::name).collect())
 }
 
-/// The top bar.
+/// The top bar: on a desktop screen every action in a row; on a phone or tablet the
+/// scene, undo, redo and fit, with the rest in a menu.
 pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
     egui::Panel::top("scene_bar").show(ui, |ui| {
-        ui.horizontal_wrapped(|ui| {
-            ui.strong("Linkage Lab");
-            // The file buttons come before the scene's name, whose width varies, so
-            // that they stay in place whichever scene is open.
-            files::buttons(ui, st, frame);
-            let current = match st.session.source() {
-                SceneSource::Builtin(key) => BUILTIN_SCENES
-                    .iter()
-                    .position(|b| b.key == key)
-                    .map_or_else(|| key.clone(), |i| names()[i].clone()),
-                SceneSource::File(name) => name.clone(),
-            };
-            let mut chosen = None;
-            let mut items = Vec::new();
-            let picker = egui::ComboBox::from_label("Scene")
-                .selected_text(current)
-                .width(300.0)
-                .show_ui(ui, |ui| {
-                    // A popup's first frame is a sizing pass, laid out away from where
-                    // it will be drawn: its rects are not where a click lands.
-                    let placed = !ui.is_sizing_pass();
-                    for (b, name) in BUILTIN_SCENES.iter().zip(names()) {
-                        let r = ui.selectable_label(false, name);
-                        let visible = placed && ui.clip_rect().contains_rect(r.rect);
-                        items.push((name, r.rect, visible));
-                        if r.clicked() {
-                            chosen = Some(b.key);
-                        }
-                    }
-                });
-            st.controls
-                .note(ui, ControlKind::ScenePicker, "Scene", &picker.response);
-            for (name, rect, visible) in items {
-                st.controls
-                    .note_rect(ControlKind::SceneItem, name, rect, visible);
-            }
-            if let Some(key) = chosen {
-                match Session::open_builtin(key) {
-                    Ok(s) => st.open(s),
-                    Err(e) => st.status = Some(e),
-                }
-            }
-            new_menu(ui, st);
-            let synthesis = ui.button("Synthesis…");
-            st.controls
-                .note(ui, ControlKind::FileButton, "Synthesis…", &synthesis);
-            if synthesis.clicked() {
-                st.synthesis = match st.synthesis.take() {
-                    Some(_) => None,
-                    None => Some(Default::default()),
-                };
-            }
-            if ui.button("Reset edits").clicked() {
-                st.edit(crate::session::SceneEdit::Reset);
-            }
-            history_buttons(ui, st);
-            if st.session.is_dirty() {
-                ui.label("(edited)").on_hover_text(
-                    "The scene has edits not saved to a file: Save scene… keeps them",
-                );
-            }
-            if ui.button("Fit view").clicked() {
-                st.fit_pending = true;
-            }
-            let edit = ui
-                .checkbox(&mut st.edit_points, "move points")
-                .on_hover_text("Drag a joint in the view to move it; Undo takes a drag back");
-            st.controls
-                .note(ui, ControlKind::Layer, "move points", &edit);
-            for (on, label) in [
-                (&mut st.layers.velocities, "v vectors"),
-                (&mut st.layers.accelerations, "a vectors"),
-                (&mut st.layers.traces, "traces"),
-                (&mut st.layers.centres, "instant centres"),
-            ] {
-                let r = ui.checkbox(on, label);
-                st.controls.note(ui, ControlKind::Layer, label, &r);
-            }
-            if let Some(status) = &st.status {
-                ui.label(status);
-            }
-        });
+        if st.layout.compact() {
+            compact_bar(ui, st, frame);
+        } else {
+            wide_bar(ui, st, frame);
+        }
     });
     files::prompt_window(ui.ctx(), st);
     discard_question(ui.ctx(), st);
+}
+
+fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
+    ui.horizontal_wrapped(|ui| {
+        ui.strong("Linkage Lab");
+        // The file buttons come before the scene's name, whose width varies, so that
+        // they stay in place whichever scene is open.
+        files::buttons(ui, st, frame);
+        scene_picker(ui, st, 300.0);
+        new_menu(ui, st);
+        synthesis_button(ui, st);
+        if ui.button("Reset edits").clicked() {
+            st.edit(crate::session::SceneEdit::Reset);
+        }
+        history_buttons(ui, st);
+        edited_mark(ui, st);
+        if ui.button("Fit view").clicked() {
+            st.fit_pending = true;
+        }
+        view_toggles(ui, st);
+        if let Some(status) = &st.status {
+            ui.label(status);
+        }
+    });
+}
+
+fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
+    // On a tablet lying down everything shares one row; on a phone the scene's name
+    // takes the rest of the first (its frame and arrow take about 32 points more)
+    // and undo, redo and fit go below.
+    let one_row = ui.available_width() >= 700.0;
+    ui.horizontal(|ui| {
+        let menu = ui.menu_button("Menu", |ui| {
+            files::buttons(ui, st, frame);
+            new_menu(ui, st);
+            synthesis_button(ui, st);
+            if ui.button("Reset edits").clicked() {
+                st.edit(crate::session::SceneEdit::Reset);
+            }
+            ui.separator();
+            view_toggles(ui, st);
+        });
+        st.controls
+            .note(ui, ControlKind::Menu, "Menu", &menu.response);
+        let room = ui.available_width();
+        let width = if one_row {
+            (room - 330.0).min(480.0)
+        } else {
+            room - 32.0
+        };
+        scene_picker(ui, st, width);
+        if one_row {
+            history_and_status(ui, st);
+        }
+    });
+    if !one_row {
+        ui.horizontal_wrapped(|ui| history_and_status(ui, st));
+    }
+}
+
+/// Undo, redo, fit, "(edited)" and the status line.
+fn history_and_status(ui: &mut egui::Ui, st: &mut AppState) {
+    history_buttons(ui, st);
+    if ui.button("Fit view").clicked() {
+        st.fit_pending = true;
+    }
+    edited_mark(ui, st);
+    if let Some(status) = &st.status {
+        ui.label(status);
+    }
+}
+
+/// The scene picker, `width` wide; labelled "Scene" beside it on a desktop screen,
+/// for screen readers alone on a phone (where the width is the scene name's).
+fn scene_picker(ui: &mut egui::Ui, st: &mut AppState, width: f32) {
+    let labelled = !st.layout.compact();
+    let current = match st.session.source() {
+        SceneSource::Builtin(key) => BUILTIN_SCENES
+            .iter()
+            .position(|b| b.key == key)
+            .map_or_else(|| key.clone(), |i| names()[i].clone()),
+        SceneSource::File(name) => name.clone(),
+    };
+    let mut chosen = None;
+    let mut items = Vec::new();
+    let combo = if labelled {
+        egui::ComboBox::from_label("Scene")
+    } else {
+        egui::ComboBox::from_id_salt("Scene")
+    };
+    let picker = combo
+        .selected_text(current)
+        .width(width)
+        .truncate()
+        .show_ui(ui, |ui| {
+            // A popup's first frame is a sizing pass, laid out away from where it
+            // will be drawn: its rects are not where a click lands.
+            let placed = !ui.is_sizing_pass();
+            for (b, name) in BUILTIN_SCENES.iter().zip(names()) {
+                let r = ui.selectable_label(false, name);
+                let visible = placed && ui.clip_rect().contains_rect(r.rect);
+                items.push((name, r.rect, visible));
+                if r.clicked() {
+                    chosen = Some(b.key);
+                }
+            }
+        });
+    let picker = picker.response;
+    if !labelled {
+        picker.widget_info(|| {
+            egui::WidgetInfo::labeled(egui::accesskit::Role::ComboBox, true, "Scene")
+        });
+    }
+    st.controls
+        .note(ui, ControlKind::ScenePicker, "Scene", &picker);
+    for (name, rect, visible) in items {
+        st.controls
+            .note_rect(ControlKind::SceneItem, name, rect, visible);
+    }
+    if let Some(key) = chosen {
+        match Session::open_builtin(key) {
+            Ok(s) => st.open(s),
+            Err(e) => st.status = Some(e),
+        }
+    }
+}
+
+fn synthesis_button(ui: &mut egui::Ui, st: &mut AppState) {
+    let synthesis = ui.button("Synthesis…");
+    st.controls
+        .note(ui, ControlKind::FileButton, "Synthesis…", &synthesis);
+    if synthesis.clicked() {
+        st.synthesis = match st.synthesis.take() {
+            Some(_) => None,
+            None => Some(Default::default()),
+        };
+    }
+}
+
+/// "(edited)" while the scene has unsaved edits.
+fn edited_mark(ui: &mut egui::Ui, st: &AppState) {
+    if st.session.is_dirty() {
+        ui.label("(edited)")
+            .on_hover_text("The scene has edits not saved to a file: Save scene… keeps them");
+    }
+}
+
+/// "move points" and the overlays of the view.
+fn view_toggles(ui: &mut egui::Ui, st: &mut AppState) {
+    let edit = ui
+        .checkbox(&mut st.edit_points, "move points")
+        .on_hover_text("Drag a joint in the view to move it; Undo takes a drag back");
+    st.controls
+        .note(ui, ControlKind::Layer, "move points", &edit);
+    for (on, label) in [
+        (&mut st.layers.velocities, "v vectors"),
+        (&mut st.layers.accelerations, "a vectors"),
+        (&mut st.layers.traces, "traces"),
+        (&mut st.layers.centres, "instant centres"),
+    ] {
+        let r = ui.checkbox(on, label);
+        st.controls.note(ui, ControlKind::Layer, label, &r);
+    }
 }
 
 /// Display names of the templates, read once.

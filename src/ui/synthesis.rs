@@ -41,11 +41,25 @@ pub fn window(ctx: &egui::Context, st: &mut AppState) {
     };
     let mut open = true;
     let mut chosen = None;
+    let screen = ctx.content_rect();
+    // On a phone the window is the screen's width; elsewhere beside the controls.
+    let compact = st.layout.compact();
+    let width = if compact {
+        screen.width() - 16.0
+    } else {
+        460.0
+    };
+    let at = if compact {
+        egui::pos2(8.0, 8.0)
+    } else {
+        egui::pos2(320.0, 80.0)
+    };
     egui::Window::new("Synthesis")
         .open(&mut open)
-        .default_pos(egui::pos2(320.0, 80.0))
+        .default_pos(at)
+        .max_width(screen.width() - 16.0)
         .show(ctx, |ui| {
-            ui.horizontal(|ui| {
+            ui.horizontal_wrapped(|ui| {
                 for kind in SynthKind::ALL {
                     let tab = ui.selectable_label(view.inputs.kind == kind, kind.label());
                     st.controls
@@ -64,7 +78,7 @@ pub fn window(ctx: &egui::Context, st: &mut AppState) {
                 .max_height(room)
                 .min_scrolled_height(room.min(640.0))
                 .show(ui, |ui| {
-                    ui.set_min_width(460.0);
+                    ui.set_min_width(width);
                     tab(ui, st, &mut view)
                 })
                 .inner;

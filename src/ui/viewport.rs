@@ -126,10 +126,10 @@ pub fn show(
     if st.layers.accelerations && st.scales.acceleration > 0.0 {
         legend += &format!("\na: 1 m/s² drawn {:.4} m", st.scales.acceleration);
     }
-    legend += if st.edit_points {
-        "\ndrag a joint to move it (Alt: off the grid), elsewhere to pan"
-    } else {
-        "\ndrag to pan, wheel to zoom, double-click to fit"
+    legend += match (st.edit_points, st.layout.compact()) {
+        (true, _) => "\ndrag a joint to move it (Alt: off the grid), elsewhere to pan",
+        (false, false) => "\ndrag to pan, wheel to zoom, double-click to fit",
+        (false, true) => "\ndrag to pan, pinch to zoom, double-tap to fit",
     };
     painter.text(
         rect.left_top() + egui::vec2(8.0, 8.0),

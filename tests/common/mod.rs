@@ -19,6 +19,17 @@ pub fn app_harness() -> Harness<'static, LinkageApp> {
     h
 }
 
+/// The app at its default scene on a screen of `w` × `h` points (a phone, a
+/// tablet, a small window), before its first frame.
+pub fn sized_harness(w: f32, h: f32) -> Harness<'static, LinkageApp> {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(w, h))
+        .wgpu()
+        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
+    h.state_mut().state.show_timings = false;
+    h
+}
+
 /// The app at its default scene, 1500×950, with no GPU renderer (the view draws no
 /// mechanism), after two frames: for tests that read state, not pixels.
 pub fn stateful_harness() -> Harness<'static, LinkageApp> {

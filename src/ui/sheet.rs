@@ -1,0 +1,80 @@
+//! The sheet of tabs that holds the panels on a phone or tablet (and in a small
+//! window): controls, polygons, plots, report and accuracy, one at a time, each
+//! scrolled, beside or under the mechanism view (`layout.rs`).
+
+use eframe::egui;
+
+use crate::app::AppState;
+use crate::ui::control_map::ControlKind;
+use crate::ui::layout::{SheetTab, VIEW_SHARE};
+
+/// Lays out the sheet in its part of `ui`'s area and returns the rest, the view's.
+/// The sheet comes first so that the controls' edits land before the view is drawn
+/// (they are applied here): the view shows them in the same frame.
+pub fn show(ui: &mut egui::Ui, st: &mut AppState, drawing: bool) -> egui::Rect {
+    let area = ui.available_rect_before_wrap();
+    let screen = ui.ctx().content_rect().size();
+    // "enlarge" (the polygon pane's button) gives the sheet the larger part.
+    let share = if st.polygons_wide {
+        1.0 - VIEW_SHARE
+    } else {
+        VIEW_SHARE
+    };
+    let (view, sheet) = st.layout.arrangement.split(area, screen, share);
+    let mut ui = ui.new_child(
+        egui::UiBuilder::new()
+            .max_rect(sheet)
+            .layout(egui::Layout::top_down(egui::Align::Min)),
+    );
+    tabs(&mut ui, st, drawing);
+    ui.separator();
+    egui::ScrollArea::vertical()
+        .auto_shrink(false)
+        .show(&mut ui, |ui| page(ui, st, drawing));
+    st.apply_edits();
+    view
+}
+
+/// Whether a tab has anything to show: while drawing, only once the drawing is a
+/// mechanism (the report, polygons, plots and accuracy are of the mechanism).
+fn available(st: &AppState, drawing: bool, tab: SheetTab) -> bool {
+    let complete = st.builder.as_ref().is_none_or(|b| b.problem.is_none());
+    tab == SheetTab::Controls || !drawing || complete
+}
+
+fn tabs(ui: &mut egui::Ui, st: &mut AppState, drawing: bool) {
+    if !available(st, drawing, st.layout.tab) {
+        st.layout.tab = SheetTab::Controls;
+    }
+    ui.horizontal_wrapped(|ui| {
+        // Five tabs in a row on a phone 390 points wide: less padding than a button.
+        ui.spacing_mut().button_padding.x = 7.0;
+        ui.spacing_mut().item_spacing.x = 4.0;
+        for tab in SheetTab::ALL {
+            if !available(st, drawing, tab) {
+                continue;
+            }
+            let label = if drawing && tab == SheetTab::Controls {
+                "Drawing"
+            } else {
+                tab.label()
+            };
+            let r = ui.selectable_label(st.layout.tab == tab, label);
+            st.controls.note(ui, ControlKind::SheetTab, tab.label(), &r);
+            if r.clicked() {
+                st.layout.tab = tab;
+            }
+        }
+    });
+}
+
+fn page(ui: &mut egui::Ui, st: &mut AppState, drawing: bool) {
+    match st.layout.tab {
+        SheetTab::Controls if drawing => crate::ui::builder_panel::panel(ui, st),
+        SheetTab::Controls => crate::ui::controls::panel(ui, st),
+        SheetTab::Polygons => crate::ui::polygons::panel(ui, st),
+        SheetTab::Plots => crate::ui::plots::panel(ui, st),
+        SheetTab::Report => crate::ui::report::page(ui, st),
+        SheetTab::Accuracy => crate::ui::accuracy::panel(ui, st),
+    }
+}
