@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Real-browser test of the web demo: builds it (scripts/build_web.sh), serves dist/ on
-# 127.0.0.1, and runs tests/browser/browser_test.mjs and every_scene.mjs in Debian's
-# headless Chromium via playwright-core, once per build (WebGL2, WebGPU). Installs
-# chromium and the npm packages if missing.
+# 127.0.0.1, and runs tests/browser/browser_test.mjs, every_scene.mjs and
+# links_and_drops.mjs in Debian's headless Chromium via playwright-core, once per build
+# (WebGL2, WebGPU), and every_device.mjs (phones and tablets, by touch) in the WebGL2
+# build. First the unit tests of the browser tests' own judges (frames_test.mjs).
+# Installs chromium and the npm packages if missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -11,6 +13,7 @@ if ! command -v chromium >/dev/null; then
     $sudo apt-get update && $sudo apt-get install -y chromium
 fi
 (cd tests/browser && npm ci --no-audit --no-fund)
+node --test tests/browser/frames_test.mjs
 bash scripts/build_web.sh
 # The CLI the browser test compares the app's diagram download with.
 cargo build -q -p linkage-cli
@@ -42,5 +45,9 @@ for build in webgl2 webgpu; do
     # Every scene file, every kind of control; the picker and the URL fragment in
     # turn, so that each scene opens both ways over the two builds.
     node tests/browser/every_scene.mjs "http://127.0.0.1:$port/" || status=1
+    node tests/browser/links_and_drops.mjs "http://127.0.0.1:$port/" || status=1
 done
+# Layout and touch are the same code in both builds, and the WebGPU build draws
+# through SwiftShader's Vulkan at a fifth of the speed: the devices run once.
+LINKAGE_BUILD=webgl2 node tests/browser/every_device.mjs "http://127.0.0.1:$port/" || status=1
 exit $status

@@ -75,13 +75,23 @@ impl Default for PathInputs {
 
 impl PathInputs {
     /// The targets as CSV rows: `x_mm, y_mm` or, timed, `x_mm, y_mm, crank_deg`.
+    /// Places are written to 1e-7 of the targets' extent (a clicked target carries
+    /// sixteen digits that no one reads, and its row would wrap), angles to 1e-6 deg.
     pub fn to_csv(&self) -> String {
+        let extent = self
+            .targets
+            .iter()
+            .flat_map(|t| t.at_mm)
+            .map(f64::abs)
+            .fold(0.0, f64::max);
+        let places = decimals_for(extent, 1e-7);
+        let write = |v: f64, d: usize| trimmed(&format!("{v:.d$}"));
         self.targets
             .iter()
             .map(|t| {
-                let [x, y] = t.at_mm;
+                let [x, y] = t.at_mm.map(|v| write(v, places));
                 if self.timed {
-                    format!("{x}, {y}, {}\n", t.crank_deg)
+                    format!("{x}, {y}, {}\n", write(t.crank_deg, 6))
                 } else {
                     format!("{x}, {y}\n")
                 }
@@ -229,6 +239,26 @@ pub fn design_of(d: &PathDesign, member: Member) -> Option<Design> {
     })
 }
 
+/// Decimal places that show `share` of `extent` (none for an extent of zero or
+/// less, as many as a double holds at most).
+fn decimals_for(extent: f64, share: f64) -> usize {
+    if !(extent > 0.0 && extent.is_finite()) {
+        return 6;
+    }
+    (-(extent * share).log10()).ceil().clamp(0.0, 17.0) as usize
+}
+
+/// A decimal number without trailing zeros (and without a trailing point, or the
+/// sign of a zero).
+fn trimmed(text: &str) -> String {
+    let t = if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.')
+    } else {
+        text
+    };
+    if t == "-0" { "0".into() } else { t.into() }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -248,5 +278,36 @@ mod tests {
             .expect_err("refused");
         assert!(e.contains("line 3"), "{e}");
         assert_eq!(inputs.targets, before, "a refused paste keeps the targets");
+    }
+
+    /// A clicked target's sixteen digits are written to 1e-7 of the targets' extent,
+    /// from a micrometre mechanism to a metre one, each row short enough for one line
+    /// of the text field, and read back within that.
+    #[test]
+    fn clicked_targets_are_written_short_at_every_scale() {
+        for scale in [1e-3, 1.0, 1e3] {
+            let mut inputs = PathInputs::default();
+            for t in &mut inputs.targets {
+                t.at_mm = t.at_mm.map(|v| (v + 0.123_456_789_012_345) * scale);
+            }
+            let before = inputs.targets.clone();
+            let text = inputs.to_csv();
+            let longest = text.lines().map(str::len).max().unwrap_or(0);
+            assert!(longest <= 30, "scale {scale}: {text}");
+            inputs.read_csv(&text).expect("reads its own CSV");
+            let extent = before
+                .iter()
+                .flat_map(|t| t.at_mm)
+                .map(f64::abs)
+                .fold(0.0, f64::max);
+            for (a, b) in inputs.targets.iter().zip(&before) {
+                for k in 0..2 {
+                    assert!(
+                        (a.at_mm[k] - b.at_mm[k]).abs() <= 1e-7 * extent,
+                        "scale {scale}: {text}"
+                    );
+                }
+            }
+        }
     }
 }

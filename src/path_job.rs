@@ -33,10 +33,24 @@ impl Snapshot {
     }
 }
 
+/// How the slices of a sliced search went (the browser test judges by these that
+/// frames kept coming).
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct Slices {
+    /// Slices run (one per frame).
+    pub count: u64,
+    /// The longest slice, ms.
+    pub longest_ms: f64,
+    /// The longest single step of a slice (its granularity: a slice ends at the
+    /// first step past its budget), ms.
+    pub longest_step_ms: f64,
+}
+
 /// A search under way or stopped.
 pub struct PathJob {
     state: State,
     snapshot: Snapshot,
+    slices: Slices,
 }
 
 enum State {
@@ -58,6 +72,7 @@ impl PathJob {
         Self {
             state: State::running(Box::new(search)),
             snapshot,
+            slices: Slices::default(),
         }
     }
 
@@ -68,6 +83,7 @@ impl PathJob {
         Self {
             state: State::Sliced(Box::new(search)),
             snapshot,
+            slices: Slices::default(),
         }
     }
 
@@ -83,10 +99,7 @@ impl PathJob {
                 }
             }
             State::Sliced(search) => {
-                let started = web_time::Instant::now();
-                while !search.is_done() && started.elapsed().as_secs_f64() * 1e3 < budget_ms {
-                    search.step(CHUNK);
-                }
+                run_slice(search, budget_ms, &mut self.slices);
                 self.snapshot = Snapshot::of(search);
                 if search.is_done() {
                     self.stop();
@@ -100,6 +113,11 @@ impl PathJob {
     /// What to show now.
     pub fn snapshot(&self) -> &Snapshot {
         &self.snapshot
+    }
+
+    /// How the slices went so far (none for a search on a thread).
+    pub fn slices(&self) -> Slices {
+        self.slices
     }
 
     /// Whether the search is running.
@@ -136,6 +154,19 @@ impl PathJob {
             };
         }
     }
+}
+
+/// Steps `search` until `budget_ms` is spent or it is done, noting the slice.
+fn run_slice(search: &mut PathSearch, budget_ms: f64, slices: &mut Slices) {
+    let started = web_time::Instant::now();
+    let elapsed_ms = || started.elapsed().as_secs_f64() * 1e3;
+    while !search.is_done() && elapsed_ms() < budget_ms {
+        let before = elapsed_ms();
+        search.step(CHUNK);
+        slices.longest_step_ms = slices.longest_step_ms.max(elapsed_ms() - before);
+    }
+    slices.count += 1;
+    slices.longest_ms = slices.longest_ms.max(elapsed_ms());
 }
 
 impl State {

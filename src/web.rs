@@ -22,6 +22,8 @@ struct Published<'a> {
     controls: &'a crate::ui::control_map::ControlMap,
     /// What the last edit could not do (a refusal), if anything.
     message: Option<String>,
+    /// The status line: what the last file, link or drop did, or why it did not.
+    status: Option<&'a str>,
     /// CPU time of the frames that carried an edit (performance.now() in the browser).
     edit_timing: crate::app::EditTiming,
     /// Whether a dynamic run is still being computed.
@@ -44,8 +46,16 @@ struct Published<'a> {
     camera: [f64; 3],
     /// The drawing, while the drawing tools are out.
     drawing: Option<PublishedDrawing>,
+    /// The synthesis window's path targets placed.
+    path_targets: usize,
     /// The synthesis window's path search, once started.
     path_search: Option<PublishedSearch>,
+    /// Why the last path search did not start, if it did not.
+    path_refused: Option<&'a str>,
+    /// How the panels are arranged for the screen.
+    arrangement: crate::ui::layout::Arrangement,
+    /// The sheet's tab shown (in the compact arrangements).
+    sheet_tab: crate::ui::layout::SheetTab,
 }
 
 /// A path search as the test hook shows it.
@@ -61,6 +71,12 @@ struct PublishedSearch {
     solutions: usize,
     /// The best design's largest miss over the targets' size.
     best_relative_error: f64,
+    /// Time spent searching so far, ms (the slices' sum).
+    search_ms: f64,
+    /// What a slice may spend, ms.
+    slice_budget_ms: f64,
+    /// How the slices went.
+    slices: crate::path_job::Slices,
 }
 
 /// The path search of the synthesis window, if one was started.
@@ -74,6 +90,9 @@ fn path_search(st: &crate::app::AppState) -> Option<PublishedSearch> {
         evaluations: p.evaluations,
         solutions: p.solutions,
         best_relative_error: p.best_relative_error,
+        search_ms: p.seconds * 1e3,
+        slice_budget_ms: crate::ui::synthesis_path::SLICE_MS,
+        slices: job.slices(),
     })
 }
 
@@ -139,6 +158,7 @@ pub fn publish_controls(st: &crate::app::AppState, frame: u64, renderer: bool) {
         frame,
         controls: &st.controls,
         message: st.session.message(),
+        status: st.status.as_deref(),
         edit_timing: st.edit_timing,
         run_pending: st.session.run_progress().is_some(),
         input_deg: degrees_exactly(st.session.input_rad()),
@@ -159,7 +179,14 @@ pub fn publish_controls(st: &crate::app::AppState, frame: u64, renderer: bool) {
             links: b.sketch().links.len(),
             complete: b.problem.is_none(),
         }),
+        path_targets: st
+            .synthesis
+            .as_ref()
+            .map_or(0, |v| v.inputs.path.targets.len()),
         path_search: path_search(st),
+        path_refused: st.synthesis.as_ref().and_then(|v| v.path.refused()),
+        arrangement: st.layout.arrangement,
+        sheet_tab: st.layout.tab,
     };
     let json = serde_json::to_string(&published).unwrap_or_default();
     CONTROLS.with(|c| *c.borrow_mut() = json);

@@ -289,11 +289,51 @@ fn phones_and_tablets_give_the_view_half_the_screen_and_reach_every_panel() {
                 h.snapshot(format!("{name}_{}", tab.label().to_lowercase()));
             }
         }
+        scene_list_fits(&mut h, name, w);
         if name == "phone_390x844" {
             phone_menu_and_synthesis(&mut h);
         }
         snapshots.extend_harness(&mut h);
     }
+}
+
+/// The scene picker's list lies within the screen, every scene in it whole (a
+/// phone's screen is narrower than the longest name: the list wraps them).
+fn scene_list_fits(h: &mut Harness<'static, LinkageApp>, name: &str, width: f32) {
+    use linkage_lab::ui::control_map::ControlKind;
+    let picker = h
+        .state()
+        .state
+        .controls
+        .of_kind(ControlKind::ScenePicker)
+        .next()
+        .cloned()
+        .expect("a scene picker");
+    let [a, b, c, d] = picker.rect;
+    common::click(h, egui::pos2(0.5 * (a + c), 0.5 * (b + d)));
+    h.run();
+    let items: Vec<_> = h
+        .state()
+        .state
+        .controls
+        .of_kind(ControlKind::SceneItem)
+        .cloned()
+        .collect();
+    assert!(!items.is_empty(), "{name}: the scene list did not open");
+    for e in items {
+        let [x0, _, x1, _] = e.rect;
+        assert!(
+            e.visible && x0 >= 0.0 && x1 <= width,
+            "{name}: \"{}\" lies at {x0}..{x1} of {width} points (visible: {})",
+            e.label,
+            e.visible
+        );
+    }
+    if name == "phone_390x844" {
+        h.snapshot(format!("{name}_scenes"));
+    }
+    h.key_press(egui::Key::Escape);
+    h.run();
 }
 
 /// The phone's menu holds the top bar's other actions; the synthesis window it opens

@@ -8,7 +8,7 @@
 use eframe::egui;
 
 /// The arrangement of the panels.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 pub enum Arrangement {
     /// Panels around the view (a desktop screen).
     #[default]
@@ -82,7 +82,7 @@ impl Arrangement {
 }
 
 /// The tabs of the compact arrangements' sheet.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 pub enum SheetTab {
     /// Play, crank angle, lengths, springs, masses, branches (or, while drawing, the
     /// drawing tools).

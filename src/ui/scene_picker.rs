@@ -118,11 +118,18 @@ fn scene_picker(ui: &mut egui::Ui, st: &mut AppState, width: f32) {
     } else {
         egui::ComboBox::from_id_salt("Scene")
     };
+    // The list's height: on a phone, where its names wrap, all of it unless the
+    // screen is shorter (egui's default shows about eight lines, then scrolls).
+    let height = ui.ctx().content_rect().height() * 0.8;
     let picker = combo
         .selected_text(current)
         .width(width)
+        .height(height)
         .truncate()
         .show_ui(ui, |ui| {
+            if !labelled {
+                fit_the_screen(ui);
+            }
             // A popup's first frame is a sizing pass, laid out away from where it
             // will be drawn: its rects are not where a click lands.
             let placed = !ui.is_sizing_pass();
@@ -153,6 +160,14 @@ fn scene_picker(ui: &mut egui::Ui, st: &mut AppState, width: f32) {
             Err(e) => st.status = Some(e),
         }
     }
+}
+
+/// On a phone the scenes' names are wider than the screen: the list wraps them
+/// within it (a popup is kept on the screen, but not made narrower).
+fn fit_the_screen(ui: &mut egui::Ui) {
+    let margin = 2.0 * ui.style().spacing.window_margin.sum().x;
+    ui.set_max_width(ui.ctx().content_rect().width() - margin);
+    ui.style_mut().wrap_mode = Some(egui::TextWrapMode::Wrap);
 }
 
 fn synthesis_button(ui: &mut egui::Ui, st: &mut AppState) {

@@ -15,7 +15,7 @@ use crate::ui::control_map::{ControlKind, ControlMap};
 use crate::ui::synthesis::{Chosen, design_view};
 
 /// Milliseconds of search per frame in the browser.
-const SLICE_MS: f64 = 6.0;
+pub const SLICE_MS: f64 = 6.0;
 /// How near the pointer must come to a target to take it, points.
 const GRAB_PX: f32 = 12.0;
 
@@ -34,6 +34,13 @@ pub struct PathTab {
     chosen: (usize, Member),
     /// The target being dragged on the canvas.
     dragging: Option<usize>,
+}
+
+impl PathTab {
+    /// Why the last Search did not start, if it did not.
+    pub fn refused(&self) -> Option<&str> {
+        self.refused.as_deref()
+    }
 }
 
 /// The tab; returns what to do with the chosen design, if asked.
@@ -92,11 +99,19 @@ fn targets(
         "targets: x mm, y mm (click the canvas to add, drag to move)"
     };
     ui.label(label);
-    let r = ui.add(
-        egui::TextEdit::multiline(&mut tab.csv)
-            .desired_rows(4)
-            .code_editor(),
-    );
+    // Scrolled past six rows, so that twenty targets leave Search in sight.
+    let r = egui::ScrollArea::vertical()
+        .id_salt("path targets text")
+        .max_height(6.0 * ui.text_style_height(&egui::TextStyle::Monospace) + 8.0)
+        .show(ui, |ui| {
+            ui.add(
+                egui::TextEdit::multiline(&mut tab.csv)
+                    .desired_rows(4)
+                    .desired_width(f32::INFINITY)
+                    .code_editor(),
+            )
+        })
+        .inner;
     r.widget_info(|| {
         egui::WidgetInfo::labeled(egui::accesskit::Role::MultilineTextInput, true, label)
     });

@@ -8,13 +8,14 @@
 // the picture), and that the uploaded scene survives a reload and opens from the
 // page's address in a new page (a share link); and that a four-bar built in the page
 // (New… → four-bar template, a joint dragged) survives a reload and opens from its
-// link; and that a small path search in the synthesis window runs to designs while
-// frames keep coming. Measures time to first frame (the app logs it) and frames per second while
+// link; and that a small path search in the synthesis window runs to designs, and a
+// long one keeps frames coming (frames.mjs) and stops when asked. Measures time to first frame (the app logs it) and frames per second while
 // the mechanism plays.
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { build, colouredIn, decode, differing, launchChromium, nonBackground, wrongBuild } from './common.mjs';
+import { build, colouredIn, decode, differing, launchChromium, nonBackground, until, wrongBuild } from './common.mjs';
+import { framesKeptComing, framesSpanned, slicesKeptTheirBudget } from './frames.mjs';
 
 const url = process.argv[2] ?? 'http://127.0.0.1:8917/';
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
@@ -37,13 +38,11 @@ page.on('pageerror', (e) => errors.push(`pageerror: ${e.message}`));
 // a listener added together with the click can come too late for a quick app.
 page.on('filechooser', () => {});
 
-const t0 = Date.now();
 await page.goto(url, { waitUntil: 'load' });
-while (firstFrameMs === null && Date.now() - t0 < 60000) await page.waitForTimeout(100);
+await until(() => firstFrameMs !== null || errors.length > 0);
 if (firstFrameMs === null) fail('the app never drew a first frame');
 const wrong = await wrongBuild(page);
 if (wrong) fail(wrong);
-await page.waitForTimeout(1500);
 
 const canvas = page.locator('#linkage_canvas');
 const shotDir = process.env.SCREENSHOT_DIR;
@@ -52,14 +51,43 @@ const shot = async (name) => {
   if (shotDir) (await import('node:fs')).writeFileSync(`${shotDir}/${name}.png`, buf);
   return decode(buf);
 };
-const before = await shot('loaded');
-const coverage = nonBackground(before);
-if (coverage < 0.2) fail(`canvas looks blank: ${(coverage * 100).toFixed(1)} % drawn`);
+const appState = async (p) => JSON.parse(await p.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+// A control where two different frames drew it in the same place: a frame's layout
+// can move it (a status line that grows as the edit of the same frame lands), and at
+// SwiftShader's 2 frames a second a click aimed by one frame lands in the next.
+const entry = async (p, kind, label) => {
+  let seen, settled, i = 0;
+  // An idle app draws on a pointer move.
+  const poke = () => p.mouse.move(20 + (i++ % 2), 10);
+  await until(async () => {
+    const st = await appState(p);
+    const e = st.controls?.entries?.find((c) => c.kind === kind && (label === undefined || c.label === label));
+    if (e?.visible) {
+      if (seen && st.frame > seen.frame && seen.e.rect.every((v, k) => Math.abs(v - e.rect[k]) < 0.5)) settled = e;
+      if (!seen || st.frame > seen.frame) seen = { e, frame: st.frame };
+    } else seen = undefined;
+    return settled !== undefined;
+  }, poke);
+  return settled;
+};
+/** Waits until the app has drawn a frame after now (`poke`: how to make it draw). */
+const nextFrame = async (p, poke) => {
+  const frame = (await appState(p)).frame;
+  await until(async () => (await appState(p)).frame > frame, poke);
+};
 // The mechanism itself, drawn by the build's GPU renderer (wgpu or glow), not egui:
 // coloured links, vectors and traces inside the view, where egui draws grey text only.
-const loadedState = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+// Waited for: the renderer may start a few frames after the first.
+let before, coverage, loadedState, gpuPixels;
+await until(async () => {
+  before = await shot('loaded');
+  coverage = nonBackground(before);
+  loadedState = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+  gpuPixels = colouredIn(before, loadedState.controls.view ?? [0, 0, 0, 0]);
+  return coverage >= 0.2 && loadedState.renderer && gpuPixels >= 500;
+}, () => page.mouse.move(21, 10));
+if (coverage < 0.2) fail(`canvas looks blank: ${(coverage * 100).toFixed(1)} % drawn`);
 if (!loadedState.renderer) fail(`the ${build} build's mechanism renderer did not start`);
-const gpuPixels = colouredIn(before, loadedState.controls.view);
 if (gpuPixels < 500) fail(`the mechanism view shows ${gpuPixels} coloured pixels: the GPU draw is missing`);
 
 // Drag the crank-angle slider (found through the app's control map) in small steps.
@@ -75,9 +103,9 @@ for (let x = x0; x <= x1; x += 5) {
   await page.waitForTimeout(30);
 }
 await page.mouse.up();
-await page.waitForTimeout(800);
-const after = await shot('dragged');
-const changed = differing(before, after);
+let after = await shot('dragged');
+let changed = 0;
+await until(async () => (after = await shot('dragged'), changed = differing(before, after)) >= 2000);
 if (changed < 2000) fail(`dragging the crank slider changed only ${changed} pixels`);
 
 // Press Play, count the page's animation frames for 3 s, then wait, on a slow
@@ -92,10 +120,7 @@ const fps = await page.evaluate(() => new Promise((resolve) => {
   requestAnimationFrame(tick);
 }));
 let played = 0;
-for (let i = 0; i < 20 && played < 2000; i++) {
-  played = differing(after, await shot('played'));
-  if (played < 2000) await page.waitForTimeout(500);
-}
+await until(async () => (played = differing(after, await shot('played'))) >= 2000);
 await page.mouse.click(...PLAY); // pause
 if (played < 2000) fail(`playing changed only ${played} pixels`);
 
@@ -111,13 +136,7 @@ const download = async ([x, y]) => {
   const [dl] = await Promise.all([page.waitForEvent('download', { timeout: 20000 }), page.mouse.click(x, y)]);
   return { name: dl.suggestedFilename(), text: readFileSync(await dl.path(), 'utf8') };
 };
-const waitForLog = async (needle) => {
-  for (let i = 0; i < 100; i++) {
-    if (logged.some((t) => t.includes(needle))) return true;
-    await page.waitForTimeout(100);
-  }
-  return false;
-};
+const waitForLog = (needle) => until(() => logged.some((t) => t.includes(needle)));
 const upload = async (name, text) => {
   // The app opens the file picker in the frame after the click; the browser allows
   // that only within its user-activation window (about 5 s). On a loaded machine at a
@@ -183,37 +202,26 @@ if (!/\bname:/.test(saved.text)) fail(`scene download is no scene: ${saved.text.
 
 // The saved scene opens again; then another shipped scene changes the picture.
 await upload('saved_cutter.ron', saved.text);
-await page.waitForTimeout(800);
+await nextFrame(page, () => page.mouse.move(21, 10));
 const cutter = await shot('reopened');
 const sliderCrank = readFileSync(new URL('../../assets/scenes/slider_crank.ron', import.meta.url), 'utf8');
 await upload('slider_crank.ron', sliderCrank);
 let reopened = 0;
-for (let i = 0; i < 20 && reopened < 2000; i++) {
-  await page.waitForTimeout(400);
-  reopened = differing(cutter, await shot('uploaded'));
-}
+await until(async () => (reopened = differing(cutter, await shot('uploaded'))) >= 2000);
 if (reopened < 2000) fail(`opening slider_crank.ron changed only ${reopened} pixels`);
 
 // A scene opened from a file travels whole in the URL (doc=1.…): a reload keeps it,
 // and the address opened in a new page (a shared link) shows the same mechanism.
-const appState = async (p) => JSON.parse(await p.evaluate(() => window.wasmBindings.linkage_lab_controls()));
 const uploadedName = (await appState(page)).scene_name;
 let hash = '';
-for (let i = 0; i < 50 && !hash.includes('doc=1.'); i++) {
-  await page.waitForTimeout(100);
-  hash = await page.evaluate(() => location.hash);
-}
+await until(async () => (hash = await page.evaluate(() => location.hash)).includes('doc=1.'));
 if (!hash.includes('doc=1.')) fail(`the URL does not carry the opened file: ${hash.slice(0, 60)}`);
 const afterReload = async (p) => {
-  for (let i = 0; i < 600; i++) {
-    // The bindings exist before the wasm is ready: a call then throws.
-    const ready = await p.evaluate(() => {
-      try { return Boolean(window.wasmBindings?.linkage_lab_controls?.()); } catch { return false; }
-    });
-    if (ready) return appState(p);
-    await p.waitForTimeout(100);
-  }
-  return {};
+  // The bindings exist before the wasm is ready: a call then throws.
+  const ready = await until(() => p.evaluate(() => {
+    try { return Boolean(window.wasmBindings?.linkage_lab_controls?.()); } catch { return false; }
+  }));
+  return ready ? appState(p) : {};
 };
 await page.reload({ waitUntil: 'load' });
 const reloaded = await afterReload(page);
@@ -228,40 +236,22 @@ await shared.close();
 // A four-bar built in the page: New… → the four-bar template, "move points", C
 // dragged to a new place; a reload keeps the edited mechanism, and its address opened
 // in a new page shows the same one (every joint where it was, to 1e-9 m).
-// A control where two different frames drew it in the same place: a frame's layout
-// can move it (a status line that grows as the edit of the same frame lands), and at
-// SwiftShader's 2 frames a second a click aimed by one frame lands in the next.
-const entry = async (p, kind, label) => {
-  let seen;
-  for (let i = 0; i < 100; i++) {
-    const st = await appState(p);
-    const e = st.controls?.entries?.find((c) => c.kind === kind && (label === undefined || c.label === label));
-    if (e?.visible) {
-      if (seen && st.frame > seen.frame && seen.e.rect.every((v, k) => Math.abs(v - e.rect[k]) < 0.5)) return e;
-      if (!seen || st.frame > seen.frame) seen = { e, frame: st.frame };
-    } else seen = undefined;
-    await p.mouse.move(20 + (i % 2), 10); // an idle app draws on a pointer move
-    await p.waitForTimeout(100);
-  }
-  return undefined;
-};
-/** Drags with the mouse from `from` along `path` (screen points), a step per frame
- * or so; returns the CPU of each edit frame seen ([frame ms, edit ms], the app's own
- * performance.now() figures) — at SwiftShader's few frames a second nearly every one. */
+/** Drags with the mouse from `from` along `path` (screen points), each step once the
+ * app has drawn the frame that took the one before; returns the CPU of each edit
+ * frame ([frame ms, edit ms], the app's own performance.now() figures). */
 const dragTimed = async (p, from, path) => {
   await p.mouse.move(...from);
   await p.mouse.down();
-  let frames = (await appState(p)).edit_timing.frames;
+  let timing = (await appState(p)).edit_timing;
   const seen = [];
   for (const at of path) {
+    const frame = (await appState(p)).frame;
     await p.mouse.move(...at);
-    await p.waitForTimeout(60);
+    await until(async () => (await appState(p)).frame > frame);
     const t = (await appState(p)).edit_timing;
-    if (t.frames > frames) seen.push([Number(t.last_ms.toFixed(2)), Number(t.last_edit_ms.toFixed(2))]);
-    frames = t.frames;
+    if (t.frames > timing.frames) seen.push([Number(t.last_ms.toFixed(2)), Number(t.last_edit_ms.toFixed(2))]);
+    timing = t;
   }
-  // The last place lands before the release: SwiftShader may take 500 ms a frame.
-  await p.waitForTimeout(600);
   await p.mouse.up();
   return seen;
 };
@@ -275,10 +265,7 @@ const places = (st) => JSON.stringify((st.joints ?? []).map((j) => [j.name, ...j
  * shows the same one: every joint where it was, to 1e-9 m. */
 const keptAndShared = async (built, what, wantUrl) => {
   let url = '';
-  for (let i = 0; i < 50 && !url.includes(wantUrl); i++) {
-    await page.waitForTimeout(100);
-    url = page.url();
-  }
+  await until(() => (url = page.url()).includes(wantUrl));
   await page.reload({ waitUntil: 'load' });
   const kept = await afterReload(page);
   if (kept.scene_name !== built.scene_name || !samePlaces(kept.joints ?? [], built.joints)) {
@@ -299,17 +286,17 @@ else {
   const item = await entry(page, 'TemplateItem', 'Four-bar (template)');
   if (!item) fail('no four-bar template in New…');
   else await page.mouse.click(...middle(item));
-  for (let i = 0; i < 50 && (await appState(page)).scene_name !== 'Four-bar (template)'; i++) await page.waitForTimeout(100);
+  await until(async () => (await appState(page)).scene_name === 'Four-bar (template)');
   if ((await appState(page)).scene_name !== 'Four-bar (template)') fail(`New… → four-bar opened ${(await appState(page)).scene_name}`);
   const toggle = await entry(page, 'Layer', 'move points');
   if (toggle) await page.mouse.click(...middle(toggle));
-  await page.waitForTimeout(300);
+  await nextFrame(page);
   const before = await appState(page);
   const c = before.joints.find((j) => j.name === 'C');
   const [cx, cy] = c.screen;
   const path = Array.from({ length: 8 }, (_, i) => [cx + 5 * (i + 1), cy - 3 * (i + 1)]);
   dragFrames.viewer_point = await dragTimed(page, [cx, cy], path);
-  await page.waitForTimeout(500);
+  await nextFrame(page, () => page.mouse.move(21, 10));
   built = await appState(page);
   const moved = built.joints.find((j) => j.name === 'C');
   if (Math.hypot(moved.world[0] - c.world[0], moved.world[1] - c.world[1]) < 1e-3) fail(`dragging C did not move it: ${built.message ?? ''}`);
@@ -326,15 +313,30 @@ const toScreen = (st, [x, y]) => {
   const [cx, cy, ppm] = st.camera;
   return [0.5 * (x0 + x1) + (x * 1e-3 - cx) * ppm, 0.5 * (y0 + y1) - (y * 1e-3 - cy) * ppm];
 };
+/** Clicks at a world place (mm) and waits for the frame that took the click. */
 const clickMm = async (xy) => {
-  await page.mouse.click(...toScreen(await appState(page), xy));
-  await page.waitForTimeout(300);
+  const st = await appState(page);
+  await page.mouse.click(...toScreen(st, xy));
+  await until(async () => (await appState(page)).frame > st.frame);
 };
 const useTool = async (label) => {
   const t = await entry(page, 'DrawTool', label);
   if (!t) { fail(`no drawing tool ${label}`); return; }
+  const frame = (await appState(page)).frame;
   await page.mouse.click(...middle(t));
-  await page.waitForTimeout(300);
+  await until(async () => (await appState(page)).frame > frame);
+};
+/** After New… → Empty: waits until the drawing starts, answering the question the
+ * app asks first over unsaved edits; returns whether it started. */
+const drawingStarts = async () => {
+  const question = async () => (await appState(page)).controls.entries
+    .some((e) => e.kind === 'FileButton' && e.label === 'Drop the edits and open' && e.visible);
+  await until(async () => (await appState(page)).drawing || question());
+  if (!(await appState(page)).drawing) {
+    const dropping = await entry(page, 'FileButton', 'Drop the edits and open');
+    if (dropping) await page.mouse.click(...middle(dropping));
+  }
+  return until(async () => (await appState(page)).drawing);
 };
 const menu = await entry(page, 'FileButton', 'New…');
 if (menu) {
@@ -342,14 +344,8 @@ if (menu) {
   const empty = await entry(page, 'TemplateItem', 'Empty: draw your own');
   if (!empty) fail('no empty drawing in New…');
   else await page.mouse.click(...middle(empty));
-  for (let i = 0; i < 30 && !(await appState(page)).drawing; i++) await page.waitForTimeout(100);
-  if (!(await appState(page)).drawing) {
-    // The four-bar above has unsaved edits: the app asks before drawing over them.
-    const dropping = await entry(page, 'FileButton', 'Drop the edits and open');
-    if (dropping) await page.mouse.click(...middle(dropping));
-  }
-  for (let i = 0; i < 50 && !(await appState(page)).drawing; i++) await page.waitForTimeout(100);
-  if (!(await appState(page)).drawing) fail(`New… → Empty did not start a drawing: ${(await appState(page)).message ?? ''}`);
+  // The four-bar above has unsaved edits: the app asks before drawing over them.
+  if (!(await drawingStarts())) fail(`New… → Empty did not start a drawing: ${(await appState(page)).message ?? ''}`);
   else {
     await useTool('Pivot');
     for (const xy of [[0, 0], [300, 0]]) await clickMm(xy);
@@ -357,7 +353,7 @@ if (menu) {
     for (const xy of [[0, 0], [0, 50], [0, 50], [200, 200], [200, 200], [300, 0]]) await clickMm(xy);
     await useTool('Driver');
     await clickMm([0, 25]);
-    for (let i = 0; i < 30 && !(await appState(page)).drawing?.complete; i++) await page.waitForTimeout(100);
+    await until(async () => (await appState(page)).drawing?.complete);
     const st = await appState(page);
     if (!st.drawing?.complete) fail(`the drawn four-bar is not a mechanism: ${JSON.stringify(st.drawing)}`);
     // The Move tool: D dragged out along x and back to where it was drawn (the grid
@@ -366,9 +362,8 @@ if (menu) {
     const d = toScreen(await appState(page), [200, 200]);
     const out = Array.from({ length: 6 }, (_, i) => toScreen(st, [200 + 10 * (i + 1), 200]));
     dragFrames.drawing_point = await dragTimed(page, d, [...out, ...out.reverse().slice(1), d]);
-    await page.waitForTimeout(300);
     await useTool('Done');
-    for (let i = 0; i < 30 && (await appState(page)).drawing; i++) await page.waitForTimeout(100);
+    await until(async () => !(await appState(page)).drawing);
     drawn = await appState(page);
     const want = [['A', 0, 0], ['B', 0.3, 0], ['C', 0, 0.05], ['D', 0.2, 0.2]];
     const at = (st, name) => st.joints?.find((j) => j.name === name)?.world ?? [NaN, NaN];
@@ -386,64 +381,105 @@ if (again) {
   await page.mouse.click(...middle(again));
   const empty = await entry(page, 'TemplateItem', 'Empty: draw your own');
   if (empty) await page.mouse.click(...middle(empty));
-  for (let i = 0; i < 30 && !(await appState(page)).drawing; i++) await page.waitForTimeout(100);
-  if (!(await appState(page)).drawing) {
-    const dropping = await entry(page, 'FileButton', 'Drop the edits and open');
-    if (dropping) await page.mouse.click(...middle(dropping));
-    for (let i = 0; i < 30 && !(await appState(page)).drawing; i++) await page.waitForTimeout(100);
-  }
+  await drawingStarts();
   await useTool('Pivot');
   for (const xy of [[0, 0], [300, 0]]) await clickMm(xy);
   const before = (await appState(page)).drawing?.points;
   if (before !== 2) fail(`two pivots placed, the drawing has ${before} points`);
-  await page.waitForTimeout(500);
+  // The page stores the drawing in the frame after the change.
+  await nextFrame(page, () => page.mouse.move(21, 10));
   await page.reload({ waitUntil: 'load' });
   unfinishedPoints = (await afterReload(page)).drawing?.points ?? 0;
   if (unfinishedPoints !== 2) fail(`after a reload the unfinished drawing has ${unfinishedPoints} points, not 2`);
 }
 
-// A small path search in the page: Synthesis… → path, the targets cleared and four
-// clicked on its canvas, Search. The browser has no threads here: the search runs a
-// slice of a few milliseconds per frame, so frames keep coming while it runs (the
-// page's own requestAnimationFrame gaps are measured), and it ends with designs.
+// Path searches in the page: Synthesis… → path, the targets cleared and clicked on its
+// canvas, Search. The browser has no threads here: the search runs a slice of a few
+// milliseconds per frame. A small search (four targets) ends with designs; a long
+// one (twelve targets round a square, which no four-bar's coupler meets) runs until
+// its work spans many of the page's frames, then Stop is pressed. That frames kept
+// coming is judged by frames.mjs against the search's own duration and the page's
+// own frames, never by a count of frames or a wall time.
 let pathSearch = {};
+const startGaps = () => page.evaluate(() => {
+  window.rafTimes = []; window.rafStop = false;
+  const tick = (t) => { window.rafTimes.push(t); if (!window.rafStop) requestAnimationFrame(tick); };
+  requestAnimationFrame(tick);
+});
+const stopGaps = async () => {
+  const times = await page.evaluate(() => { window.rafStop = true; return window.rafTimes; });
+  return times.slice(1).map((t, k) => t - times[k]);
+};
+/** Clears the targets and clicks `at` (fractions of the canvas) on the path canvas. */
+const placeTargets = async (at) => {
+  const clear = await entry(page, 'FileButton', 'Clear targets');
+  if (clear) await page.mouse.click(...middle(clear));
+  const board = await entry(page, 'SynthesisCanvas', 'path targets');
+  if (!board) { fail('no path canvas'); return false; }
+  const [x0, y0, x1, y1] = board.rect;
+  for (const [fx, fy] of at) {
+    const before = (await appState(page)).path_targets;
+    await page.mouse.click(x0 + fx * (x1 - x0), y0 + fy * (y1 - y0));
+    await until(async () => (await appState(page)).path_targets > before);
+  }
+  return true;
+};
+const searchState = async () => (await appState(page)).path_search;
 const synth = await entry(page, 'FileButton', 'Synthesis…');
 const pathTab = synth && (await page.mouse.click(...middle(synth)), await entry(page, 'SynthesisTab', 'path'));
 if (!pathTab) fail('no Synthesis… button or no path tab');
 else {
   await page.mouse.click(...middle(pathTab));
-  const clear = await entry(page, 'FileButton', 'Clear targets');
-  if (clear) await page.mouse.click(...middle(clear));
-  await page.waitForTimeout(300);
-  const board = await entry(page, 'SynthesisCanvas', 'path targets');
-  if (!board) fail('no path canvas');
-  else {
-    const [x0, y0, x1, y1] = board.rect;
-    for (const [fx, fy] of [[0.2, 0.7], [0.4, 0.25], [0.65, 0.2], [0.85, 0.6]]) {
-      await page.mouse.click(x0 + fx * (x1 - x0), y0 + fy * (y1 - y0));
-      await page.waitForTimeout(400);
-    }
+  if (await placeTargets([[0.2, 0.7], [0.4, 0.25], [0.65, 0.2], [0.85, 0.6]])) {
     const search = await entry(page, 'FileButton', 'Search');
-    await page.evaluate(() => {
-      window.rafTimes = [];
-      const tick = (t) => { window.rafTimes.push(t); if (!window.rafStop) requestAnimationFrame(tick); };
-      requestAnimationFrame(tick);
-    });
-    const started = Date.now();
     if (search) await page.mouse.click(...middle(search));
-    let st = await appState(page);
-    for (let i = 0; i < 1800 && !(st.path_search && !st.path_search.running); i++) {
-      await page.waitForTimeout(100);
-      st = await appState(page);
+    await until(async () => (await searchState())?.running === false);
+    const small = await searchState();
+    if (!small) fail('Search started no path search');
+    else if (small.running) fail(`the path search did not end: ${JSON.stringify(small)}`);
+    else if (small.targets !== 4 || small.solutions < 1) fail(`the path search: ${JSON.stringify(small)}`);
+    pathSearch.small = small;
+  }
+  const square = [0, 1, 2, 3].flatMap((side) => [0, 1 / 3, 2 / 3].map((f) => {
+    const corners = [[0.25, 0.25], [0.75, 0.25], [0.75, 0.75], [0.25, 0.75]];
+    const [a, b] = [corners[side], corners[(side + 1) % 4]];
+    return [a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1])];
+  }));
+  if (await placeTargets(square)) {
+    const search = await entry(page, 'FileButton', 'Search');
+    if (shotDir) await shot('before_long_search');
+    const before = await searchState();
+    await startGaps();
+    if (search) await page.mouse.click(...middle(search));
+    // The new search under way: its own evaluations, not the small one's.
+    const started = await until(async () => {
+      const st = await appState(page);
+      return st.path_refused || (st.path_search?.running && st.path_search.evaluations !== before?.evaluations);
+    });
+    const refused = (await appState(page)).path_refused;
+    // Until the search has spanned 20 of the page's frames (or ended).
+    if (started && !refused) {
+      await until(async () => {
+        const st = await searchState();
+        const gaps = await page.evaluate(() => window.rafTimes.slice(1).map((t, k) => t - window.rafTimes[k]));
+        return !st.running || framesSpanned(gaps) >= 20;
+      });
     }
-    const times = await page.evaluate(() => { window.rafStop = true; return window.rafTimes; });
-    const gaps = times.slice(1).map((t, k) => t - times[k]);
-    pathSearch = { ...st.path_search, seconds: (Date.now() - started) / 1000, frames: times.length,
-      max_frame_gap_ms: Number(Math.max(...gaps).toFixed(1)) };
-    if (!st.path_search) fail('Search started no path search');
-    else if (st.path_search.running) fail(`the path search did not end in 180 s: ${JSON.stringify(pathSearch)}`);
-    else if (st.path_search.targets !== 4 || st.path_search.solutions < 1) fail(`the path search: ${JSON.stringify(pathSearch)}`);
-    if (!(pathSearch.frames >= 10 && pathSearch.max_frame_gap_ms < 3000)) fail(`the page froze during the path search: ${JSON.stringify(pathSearch)}`);
+    const stop = started && !refused && (await searchState()).running && await entry(page, 'FileButton', 'Stop');
+    if (stop) await page.mouse.click(...middle(stop));
+    await until(async () => (await searchState())?.running === false);
+    const gaps = await stopGaps();
+    const long = await searchState();
+    if (refused) fail(`the long search was refused: ${refused}`);
+    else if (!started) fail(`Search started no new search: ${JSON.stringify(long)}`);
+    if (long.evaluations === before?.evaluations) fail(`the long search did no work: ${JSON.stringify(long)}`);
+    const frames = framesKeptComing(gaps);
+    const slices = slicesKeptTheirBudget(long);
+    pathSearch.long = { ...long, max_frame_gap_ms: Number(Math.max(...gaps).toFixed(1)), frames: frames.why, slicing: slices.why };
+    if (long.running) fail(`Stop did not stop the search: ${JSON.stringify(long)}`);
+    if (!frames.judged) fail(`the long search was too short to judge: ${frames.why}`);
+    if (!frames.ok) fail(`the page froze during the path search: ${frames.why}`);
+    if (!slices.ok) fail(`a search slice overran its budget: ${slices.why}`);
   }
 }
 

@@ -66,3 +66,22 @@ export function colouredIn(img, rect) {
   }
   return n;
 }
+
+/** How long a wait may last before the test calls it a hang. Every wait is for a
+ * condition (a frame drawn, a control placed, a file opened), never for a time: a
+ * healthy page meets it in a frame or two at any speed, and this only ends a test
+ * whose page has stopped. */
+export const HANG_MS = 120000;
+
+/** Waits until `condition()` (sync or async) holds, looking every 100 ms, for up to
+ * [`HANG_MS`]; returns whether it held. `poke`, if given, runs between looks (an
+ * idle egui app draws a frame only when something happens). */
+export async function until(condition, poke) {
+  const started = Date.now();
+  while (!(await condition())) {
+    if (Date.now() - started > HANG_MS) return false;
+    if (poke) await poke();
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  return true;
+}

@@ -11,7 +11,7 @@
 // The app says where its controls are: window.wasmBindings.linkage_lab_controls().
 // Usage: node every_scene.mjs http://127.0.0.1:PORT/
 import { readdirSync, readFileSync } from 'node:fs';
-import { decode, differing, launchChromium, nonBackground, wrongBuild, build } from './common.mjs';
+import { decode, differing, launchChromium, nonBackground, until, wrongBuild, build } from './common.mjs';
 
 const base = (process.argv[2] ?? 'http://127.0.0.1:8917/').replace(/#.*$/, '');
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
@@ -38,11 +38,10 @@ async function openPage(url) {
   });
   page.on('pageerror', (e) => errors.push(`pageerror: ${e.message}`));
   await page.goto(url, { waitUntil: 'load' });
-  for (let i = 0; i < 600 && !drawn && !errors.length; i++) await page.waitForTimeout(100);
+  await until(() => drawn || errors.length > 0);
   if (!drawn) errors.push(`no first frame at ${url}`);
   const wrong = await wrongBuild(page);
   if (wrong) errors.push(wrong);
-  await page.waitForTimeout(500);
   return { page, errors };
 }
 
@@ -51,11 +50,10 @@ const shot = async (page) => decode(await page.locator('#linkage_canvas').screen
 const hash = (page) => page.evaluate(() => location.hash);
 const centre = (c, fx = 0.5) => [c.rect[0] + fx * (c.rect[2] - c.rect[0]), 0.5 * (c.rect[1] + c.rect[3])];
 
-/** Waits (up to 60 s: SwiftShader on a loaded machine draws two frames a second, and
- * the run gets a slice of each) until no dynamic run is being computed: the accuracy
- * panel's lines change when one ends, which can scroll the panel under a control. */
+/** Waits until no dynamic run is being computed: the accuracy panel's lines change
+ * when one ends, which can scroll the panel under a control. */
 async function runDone(page) {
-  for (let i = 0; i < 600 && (await state(page)).run_pending; i++) await page.waitForTimeout(100);
+  await until(async () => !(await state(page)).run_pending);
 }
 
 /** The first control of `kind` (and label, if given), scrolled into view, once the
@@ -65,41 +63,37 @@ async function runDone(page) {
  * 100 ms apart can read the same frame). */
 async function find(page, kind, label) {
   await runDone(page);
-  let seen;
-  for (let i = 0; i < 300; i++) {
+  let seen, found, absent = false, i = 0;
+  await until(async () => {
     const st = await state(page);
     const c = st.controls.entries.find((e) => e.kind === kind && (label === undefined || e.label === label));
-    if (!c) return undefined;
+    if (!c) return (absent = true);
     if (c.visible) {
       if (seen && st.frame > seen.frame) {
-        if (seen.c.rect.every((v, k) => Math.abs(v - c.rect[k]) < 0.5)) return c;
+        if (seen.c.rect.every((v, k) => Math.abs(v - c.rect[k]) < 0.5)) return (found = c);
         seen = { c, frame: st.frame };
       } else if (!seen) seen = { c, frame: st.frame };
       // An idle egui app draws no frame until something happens: a pointer move
       // over the top bar's title asks for one.
-      await page.mouse.move(20 + (i % 2), 10);
-      await page.waitForTimeout(100);
-      continue;
+      await page.mouse.move(20 + (i++ % 2), 10);
+      return false;
     }
     seen = undefined;
-    // Scroll the control panel towards it, then let the scroll's animation run.
+    // Scroll the control panel towards it; the scroll's animation runs meanwhile.
     await page.mouse.move(120, 500);
     await page.mouse.wheel(0, c.rect[1] > 500 ? 150 : -150);
-    await page.waitForTimeout(150);
-  }
-  return seen?.c;
+    return false;
+  });
+  return absent ? undefined : found ?? seen?.c;
 }
 
 /** Clicks at (x, y) and returns the ms from the click to the next frame drawn after it. */
 async function timedClick(page, [x, y]) {
   await page.evaluate(() => { window.__edit = performance.now(); window.__shown = null; requestAnimationFrame(() => requestAnimationFrame(() => { window.__shown = performance.now(); })); });
   await page.mouse.click(x, y);
-  for (let i = 0; i < 200; i++) {
-    const ms = await page.evaluate(() => (window.__shown === null ? null : window.__shown - window.__edit));
-    if (ms !== null) return ms;
-    await page.waitForTimeout(10);
-  }
-  return NaN;
+  let ms = null;
+  await until(async () => (ms = await page.evaluate(() => (window.__shown === null ? null : window.__shown - window.__edit))) !== null);
+  return ms ?? NaN;
 }
 
 /** Two fragments carry the same state: same keys, numbers equal to 1e-9 relative
@@ -118,14 +112,15 @@ function sameFragment(a, b) {
   return true;
 }
 
-/** Waits (up to 5 s, for a loaded machine) until the URL differs from `before` or
- * the app shows a refusal; returns the app's state then. */
-async function settle(page, before) {
-  let st = await state(page);
-  for (let i = 0; i < 50 && (await hash(page)) === before && !st.message; i++) {
-    await page.waitForTimeout(100);
+/** Waits until the URL differs from `before`, the picture from `picture` (if given),
+ * or the app shows a refusal; returns the app's state then. */
+async function settle(page, before, picture) {
+  let st;
+  await until(async () => {
     st = await state(page);
-  }
+    if ((await hash(page)) !== before || st.message) return true;
+    return picture !== undefined && differing(picture, await shot(page)) > 200;
+  });
   return st;
 }
 
@@ -150,15 +145,10 @@ for (const [i, scene] of scenes.entries()) {
       await page.mouse.click(...centre(picker));
       // The popup's first frame only sizes it: wait until its items are placed.
       let item;
-      for (let i = 0; i < 50 && !item?.visible; i++) {
-        await page.waitForTimeout(100);
-        item = (await state(page)).controls.entries.find((e) => e.kind === 'SceneItem' && e.label === scene.name);
-      }
+      await until(async () => (item = (await state(page)).controls.entries.find((e) => e.kind === 'SceneItem' && e.label === scene.name))?.visible);
       if (!item?.visible) { fail(`${what}: "${scene.name}" is not shown in the picker`); await page.close(); continue; }
       await page.mouse.click(...centre(item));
-      // A loaded machine draws a frame or two a second: wait for the new scene.
-      for (let i = 0; i < 100 && !(await hash(page)).startsWith(`#scene=${scene.key}&`); i++) await page.waitForTimeout(100);
-      await page.waitForTimeout(300);
+      await until(async () => (await hash(page)).startsWith(`#scene=${scene.key}&`));
     }
     if (!(await hash(page)).startsWith(`#scene=${scene.key}&`)) fail(`${what}: the URL says ${await hash(page)}`);
     const opened = await shot(page);
@@ -168,17 +158,11 @@ for (const [i, scene] of scenes.entries()) {
     // Play for a second.
     const play = await find(page, 'Play');
     await page.mouse.click(...centre(play));
-    await page.waitForTimeout(1000);
-    // SwiftShader draws a few frames a second and the die cutter turns at 50 rpm:
-    // wait, on a slow machine, until the picture has moved.
+    // Until the picture has moved (the die cutter turns at 50 rpm).
     let played = 0;
-    for (let i = 0; i < 40 && played < 2000; i++) {
-      played = differing(opened, await shot(page));
-      if (played < 2000) await page.waitForTimeout(500);
-    }
+    await until(async () => (played = differing(opened, await shot(page))) >= 2000);
     await page.mouse.click(...centre(await find(page, 'Play')));
     if (played < 2000) fail(`${what}: playing changed only ${played} pixels`);
-    await page.waitForTimeout(300);
 
     // Every kind of control present, moved with the mouse.
     const kinds = new Set((await state(page)).controls.entries.map((e) => e.kind));
@@ -194,7 +178,7 @@ for (const [i, scene] of scenes.entries()) {
       const picBefore = await shot(page);
       const timedBefore = (await state(page)).edit_timing.frames;
       const ms = await timedClick(page, [c.rect[0] + at, centre(c)[1]]);
-      const after = kind === 'Tolerance' ? (await page.waitForTimeout(800), await state(page)) : await settle(page, urlBefore);
+      const after = await settle(page, urlBefore, picBefore);
       const changed = (await hash(page)) !== urlBefore || differing(picBefore, await shot(page)) > 200;
       if (!changed && !after.message) fail(`${what}: moving ${name} "${c.label}" changed nothing`);
       if (!after.pose_finite) fail(`${what}: non-finite pose after ${name}`);
@@ -217,13 +201,13 @@ for (const [i, scene] of scenes.entries()) {
     if (kinds.has('Integrator')) {
       const picBefore = await shot(page);
       await page.mouse.click(...centre(await find(page, 'Integrator')));
-      await page.waitForTimeout(300);
       const rk4 = await find(page, 'IntegratorItem', 'rk4');
       if (!rk4) fail(`${what}: no rk4 in the integrator menu`);
       else {
         const ms = await timedClick(page, centre(rk4));
-        await page.waitForTimeout(500);
-        if (differing(picBefore, await shot(page)) < 50) fail(`${what}: choosing rk4 changed nothing on screen`);
+        let px = 0;
+        await until(async () => (px = differing(picBefore, await shot(page))) >= 50);
+        if (px < 50) fail(`${what}: choosing rk4 changed nothing on screen`);
         const timing = (await state(page)).edit_timing;
         moved.Integrator = { edit_frame_ms: Number(timing.last_ms.toFixed(2)), edit_ms: Number(timing.last_edit_ms.toFixed(2)), click_to_frame_ms: Number(ms.toFixed(1)), refused: false };
       }
@@ -238,10 +222,7 @@ for (const [i, scene] of scenes.entries()) {
         const picBefore = await shot(page);
         const ms = await timedClick(page, centre(c));
         let px = 0;
-        for (let i = 0; i < 20 && px < 200; i++) {
-          await page.waitForTimeout(200);
-          px = differing(picBefore, await shot(page));
-        }
+        await until(async () => (px = differing(picBefore, await shot(page))) >= 200);
         if (px < 200) fail(`${what}: turning ${name} ${turn} changed only ${px} pixels`);
         moved[`${name} ${turn}`] = { click_to_frame_ms: Number(ms.toFixed(1)), pixels_changed: px };
       }

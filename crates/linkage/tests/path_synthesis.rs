@@ -288,7 +288,7 @@ fn bad_targets_are_refused_with_their_cause() {
 /// size each way) left them out and the search ended at 1e-2 after 3 million
 /// evaluations, whatever the seed.
 #[test]
-fn default_options_find_a_crank_rocker_whose_pivots_lie_beyond_the_old_region() {
+fn path_synthesis_finds_ordinary_four_bars_with_default_options() {
     let m = known([0.0, 0.0, 1.0, 0.0, 0.2, 1.0, 0.8, 0.5, 1.0], true);
     let t = targets(&m, &every(0.0, 36.0, 10), false);
     let (centre, size) = {
