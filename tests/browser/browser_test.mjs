@@ -95,12 +95,15 @@ const crank = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_l
   .controls.entries.find((e) => e.kind === 'Crank');
 if (!crank) fail('no crank slider');
 const y = 0.5 * (crank.rect[1] + crank.rect[3]), x0 = crank.rect[0] + 4, x1 = crank.rect[0] + 90;
+// Each step once the app has drawn the frame that took the one before: a fast
+// machine may otherwise see the whole drag between two frames, as a click.
 await page.mouse.move(x0, y);
-await page.waitForTimeout(50);
+await nextFrame(page);
 await page.mouse.down();
+await nextFrame(page);
 for (let x = x0; x <= x1; x += 5) {
   await page.mouse.move(x, y);
-  await page.waitForTimeout(30);
+  await nextFrame(page);
 }
 await page.mouse.up();
 let after = await shot('dragged');
