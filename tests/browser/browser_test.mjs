@@ -14,7 +14,7 @@
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { build, colouredIn, decode, differing, launchChromium, nonBackground, until, wrongBuild } from './common.mjs';
+import { appState, build, colouredIn, decode, differing, launchChromium, nonBackground, settledControl, until, wrongBuild } from './common.mjs';
 import { framesKeptComing, framesSpanned, slicesKeptTheirBudget } from './frames.mjs';
 
 const url = process.argv[2] ?? 'http://127.0.0.1:8917/';
@@ -51,25 +51,10 @@ const shot = async (name) => {
   if (shotDir) (await import('node:fs')).writeFileSync(`${shotDir}/${name}.png`, buf);
   return decode(buf);
 };
-const appState = async (p) => JSON.parse(await p.evaluate(() => window.wasmBindings.linkage_lab_controls()));
-// A control where two different frames drew it in the same place: a frame's layout
-// can move it (a status line that grows as the edit of the same frame lands), and at
-// SwiftShader's 2 frames a second a click aimed by one frame lands in the next.
-const entry = async (p, kind, label) => {
-  let seen, settled, i = 0;
-  // An idle app draws on a pointer move.
-  const poke = () => p.mouse.move(20 + (i++ % 2), 10);
-  await until(async () => {
-    const st = await appState(p);
-    const e = st.controls?.entries?.find((c) => c.kind === kind && (label === undefined || c.label === label));
-    if (e?.visible) {
-      if (seen && st.frame > seen.frame && seen.e.rect.every((v, k) => Math.abs(v - e.rect[k]) < 0.5)) settled = e;
-      if (!seen || st.frame > seen.frame) seen = { e, frame: st.frame };
-    } else seen = undefined;
-    return settled !== undefined;
-  }, poke);
-  return settled;
-};
+// A control where two different frames drew it in the same place (common.mjs); an
+// idle app draws on a pointer move.
+let pokes = 0;
+const entry = (p, kind, label) => settledControl(p, kind, label, () => p.mouse.move(20 + (pokes++ % 2), 10));
 /** Waits until the app has drawn a frame after now (`poke`: how to make it draw). */
 const nextFrame = async (p, poke) => {
   const frame = (await appState(p)).frame;
@@ -82,7 +67,7 @@ let before, coverage, loadedState, gpuPixels;
 await until(async () => {
   before = await shot('loaded');
   coverage = nonBackground(before);
-  loadedState = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+  loadedState = await appState(page);
   gpuPixels = colouredIn(before, loadedState.controls.view ?? [0, 0, 0, 0]);
   return coverage >= 0.2 && loadedState.renderer && gpuPixels >= 500;
 }, () => page.mouse.move(21, 10));
@@ -91,7 +76,7 @@ if (!loadedState.renderer) fail(`the ${build} build's mechanism renderer did not
 if (gpuPixels < 500) fail(`the mechanism view shows ${gpuPixels} coloured pixels: the GPU draw is missing`);
 
 // Drag the crank-angle slider (found through the app's control map) in small steps.
-const crank = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()))
+const crank = (await appState(page))
   .controls.entries.find((e) => e.kind === 'Crank');
 if (!crank) fail('no crank slider');
 const y = 0.5 * (crank.rect[1] + crank.rect[3]), x0 = crank.rect[0] + 4, x1 = crank.rect[0] + 90;
@@ -113,7 +98,7 @@ if (changed < 2000) fail(`dragging the crank slider changed only ${changed} pixe
 
 // Press Play, count the page's animation frames for 3 s, then wait, on a slow
 // machine, until the picture has moved.
-const playButton = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()))
+const playButton = (await appState(page))
   .controls.entries.find((e) => e.kind === 'Play');
 const PLAY = [0.5 * (playButton.rect[0] + playButton.rect[2]), 0.5 * (playButton.rect[1] + playButton.rect[3])];
 await page.mouse.click(...PLAY);
@@ -128,7 +113,7 @@ await page.mouse.click(...PLAY); // pause
 if (played < 2000) fail(`playing changed only ${played} pixels`);
 
 // The top bar's file buttons, from the control map.
-const lastControls = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+const lastControls = await appState(page);
 const fileButton = (label) => {
   const b = lastControls.controls.entries.find((e) => e.kind === 'FileButton' && e.label === label);
   if (!b) { fail(`no ${label} button`); return [0, 0]; }
@@ -161,7 +146,7 @@ const csvRows = csv.text.trim().split('\n').length;
 if (csv.name !== 'die_cutter_sweep.csv') fail(`CSV download named ${csv.name}`);
 if (!csv.text.startsWith('input_rad,') || csvRows < 100) fail(`CSV download: ${csvRows} rows, starts ${csv.text.slice(0, 40)}`);
 // The diagram sheet: found through the app's control map, compared with the CLI's.
-const controls = JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+const controls = await appState(page);
 const exportDiagram = controls.controls.entries.find((e) => e.kind === 'FileButton' && e.label === 'Export diagram…');
 let sheetBytes = 0;
 if (!exportDiagram) fail('no Export diagram button');

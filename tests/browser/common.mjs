@@ -1,5 +1,7 @@
-// What both browser scripts share: Debian's Chromium launched headless on one of the
-// demo's two builds, and the pixel measures they judge screenshots by.
+// What the browser scripts share: Debian's Chromium launched headless on one of the
+// demo's two builds, the app opened in a page and its published state, the shipped
+// scenes, waits, and the pixel measures they judge screenshots by.
+import { readdirSync, readFileSync } from 'node:fs';
 import { chromium } from 'playwright-core';
 import { PNG } from 'pngjs';
 
@@ -84,4 +86,59 @@ export async function until(condition, poke) {
     await new Promise((r) => setTimeout(r, 100));
   }
   return true;
+}
+
+/** Every scene file in assets/scenes (read from the directory, not listed anywhere),
+ * sorted: its file name, key, text and the name the app shows. */
+export function shippedScenes() {
+  const dir = new URL('../../assets/scenes/', import.meta.url);
+  return readdirSync(dir).filter((f) => f.endsWith('.ron')).sort().map((file) => {
+    const text = readFileSync(new URL(file, dir), 'utf8');
+    // RON string escapes (\' in "paper\'s") are not part of the name shown.
+    const name = /\bname:\s*"((?:[^"\\]|\\.)*)"/.exec(text)?.[1]?.replace(/\\(.)/g, '$1');
+    return { file, key: file.replace(/\.ron$/, ''), text, name };
+  });
+}
+
+/** Loads the app at `url` in `page` with its console watched, and waits for its
+ * first frame. Returns the list of what went wrong, which keeps growing while the
+ * page lives: console errors, page errors, no first frame, the wrong build. */
+export async function openApp(page, url) {
+  const errors = [];
+  let drawn = false;
+  page.on('console', (m) => {
+    if (m.type() === 'error') errors.push(m.text());
+    if (m.text().includes('first frame at')) drawn = true;
+  });
+  page.on('pageerror', (e) => errors.push(`pageerror: ${e.message}`));
+  await page.goto(url, { waitUntil: 'load' });
+  await until(() => drawn || errors.length > 0);
+  if (!drawn) errors.push(`no first frame at ${url}`);
+  const wrong = await wrongBuild(page);
+  if (wrong) errors.push(wrong);
+  return errors;
+}
+
+/** What the app publishes for tests (src/web.rs): its frame, controls, scene, ... */
+export async function appState(page) {
+  return JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+}
+
+/** The control of `kind` (and `label`, if given) once two different frames show it
+ * in the same place: a frame's layout can move it (a status line that grows as an
+ * edit lands), and at SwiftShader's few frames a second a click aimed by one frame
+ * lands in the next. `poke` makes an idle app draw (a pointer move). Undefined if it
+ * is not shown. */
+export async function settledControl(page, kind, label, poke) {
+  let seen, settled;
+  await until(async () => {
+    const st = await appState(page);
+    const c = st.controls?.entries?.find((e) => e.kind === kind && (label === undefined || e.label === label));
+    if (c?.visible) {
+      if (seen && st.frame > seen.frame && seen.c.rect.every((v, k) => Math.abs(v - c.rect[k]) < 0.5)) settled = c;
+      if (!seen || st.frame > seen.frame) seen = { c, frame: st.frame };
+    } else seen = undefined;
+    return settled !== undefined;
+  }, poke);
+  return settled;
 }

@@ -10,8 +10,8 @@
 // Fingers move through Chrome's DevTools protocol (Input.dispatchTouchEvent), each
 // step once the app has drawn the frame that took the one before.
 // Usage: node every_device.mjs http://127.0.0.1:PORT/
-import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
-import { build, colouredIn, decode, differing, launchChromium, nonBackground, until, wrongBuild } from './common.mjs';
+import { writeFileSync } from 'node:fs';
+import { appState as state, build, colouredIn, decode, differing, launchChromium, nonBackground, openApp, settledControl, shippedScenes, until } from './common.mjs';
 
 const base = (process.argv[2] ?? 'http://127.0.0.1:8917/').replace(/#.*$/, '');
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
@@ -29,14 +29,8 @@ const DEVICES = [
 const TOUCHED = ['Play', 'Crank', 'Length', 'Branch', 'SheetTab', 'Menu', 'History', 'ScenePicker'];
 const TOUCH_PX = 40;
 
-const sceneDir = new URL('../../assets/scenes/', import.meta.url);
-const scenes = readdirSync(sceneDir).filter((f) => f.endsWith('.ron')).sort().map((file) => {
-  const text = readFileSync(new URL(file, sceneDir), 'utf8');
-  const name = /\bname:\s*"((?:[^"\\]|\\.)*)"/.exec(text)?.[1]?.replace(/\\(.)/g, '$1');
-  return { key: file.replace(/\.ron$/, ''), name };
-});
+const scenes = shippedScenes();
 
-const state = async (page) => JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
 const centre = (r) => [0.5 * (r[0] + r[2]), 0.5 * (r[1] + r[3])];
 const area = (r) => Math.max(0, r[2] - r[0]) * Math.max(0, r[3] - r[1]);
 
@@ -77,20 +71,9 @@ async function pinch(page, cdp, at, r0, r1, steps = 8) {
   await touch(page, cdp, 'touchEnd', []);
 }
 
-/** The control of `kind` (and `label`) once two frames show it in the same place. */
-async function control(page, cdp, kind, label) {
-  let seen, settled;
-  await until(async () => {
-    const st = await state(page);
-    const c = st.controls.entries.find((e) => e.kind === kind && (label === undefined || e.label === label));
-    if (c?.visible) {
-      if (seen && st.frame > seen.frame && seen.c.rect.every((v, k) => Math.abs(v - c.rect[k]) < 0.5)) settled = c;
-      if (!seen || st.frame > seen.frame) seen = { c, frame: st.frame };
-    } else seen = undefined;
-    return settled !== undefined;
-  }, () => page.mouse.move(2, 2)); // an idle app draws a frame on a pointer move
-  return settled;
-}
+/** The control of `kind` (and `label`) once two frames show it in the same place;
+ * an idle app draws a frame on a pointer move. */
+const control = (page, kind, label) => settledControl(page, kind, label, () => page.mouse.move(2, 2));
 
 /** The sheet's part of the screen: below the view when the screen stands, right of
  * it when it lies. */
@@ -122,10 +105,10 @@ function checkLayout(st, device, what) {
 
 /** Opens `scene` through the picker with a finger; returns whether it opened. */
 async function openScene(page, cdp, scene) {
-  const picker = await control(page, cdp, 'ScenePicker');
+  const picker = await control(page, 'ScenePicker');
   if (!picker) return false;
   await tap(page, cdp, centre(picker.rect));
-  const item = await control(page, cdp, 'SceneItem', scene.name);
+  const item = await control(page, 'SceneItem', scene.name);
   if (!item) return false;
   await tap(page, cdp, centre(item.rect));
   return until(async () => (await page.evaluate(() => location.hash)).startsWith(`#scene=${scene.key}&`));
@@ -133,7 +116,7 @@ async function openScene(page, cdp, scene) {
 
 /** Shows the sheet's `tab`; returns whether it is shown. */
 async function showTab(page, cdp, tab) {
-  const c = await control(page, cdp, 'SheetTab', tab);
+  const c = await control(page, 'SheetTab', tab);
   if (!c) return false;
   await tap(page, cdp, centre(c.rect));
   return until(async () => (await state(page)).sheet_tab === tab);
@@ -154,7 +137,7 @@ async function exercise(page, cdp, device, scene) {
   if (coloured < 300) fail(`${what}: the view shows ${coloured} coloured pixels: no mechanism`);
 
   // The crank turned by a finger on its slider.
-  const crank = await control(page, cdp, 'Crank');
+  const crank = await control(page, 'Crank');
   if (!crank) fail(`${what}: no crank slider`);
   else {
     // The entry's rectangle is the whole row (slider, value, label); a slider is at
@@ -204,17 +187,8 @@ for (const device of DEVICES) {
   });
   const page = await context.newPage();
   const cdp = await context.newCDPSession(page);
-  const errors = [];
-  let drawn = false;
-  page.on('console', (m) => {
-    if (m.type() === 'error') errors.push(m.text());
-    if (m.text().includes('first frame at')) drawn = true;
-  });
-  page.on('pageerror', (e) => errors.push(`pageerror: ${e.message}`));
-  await page.goto(base, { waitUntil: 'load' });
-  await until(() => drawn || errors.length > 0);
-  const wrong = await wrongBuild(page);
-  if (wrong) fail(`${device.name}: ${wrong}`);
+  const errors = await openApp(page, base);
+  if (errors.length) fail(`${device.name}: ${errors.splice(0).join('\n  ')}`);
   const size = await page.evaluate(() => [innerWidth, innerHeight]);
   if (size[0] !== device.width || size[1] !== device.height) fail(`${device.name}: the page is ${size}`);
   const outcomes = [];

@@ -10,19 +10,12 @@
 // second, not by the edit.
 // The app says where its controls are: window.wasmBindings.linkage_lab_controls().
 // Usage: node every_scene.mjs http://127.0.0.1:PORT/
-import { readdirSync, readFileSync } from 'node:fs';
-import { decode, differing, launchChromium, nonBackground, until, wrongBuild, build } from './common.mjs';
+import { appState as state, build, decode, differing, launchChromium, nonBackground, openApp, shippedScenes, until } from './common.mjs';
 
 const base = (process.argv[2] ?? 'http://127.0.0.1:8917/').replace(/#.*$/, '');
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
 
-const sceneDir = new URL('../../assets/scenes/', import.meta.url);
-const scenes = readdirSync(sceneDir).filter((f) => f.endsWith('.ron')).sort().map((file) => {
-  const text = readFileSync(new URL(file, sceneDir), 'utf8');
-  // RON string escapes (\' in "paper\'s") are not part of the name shown.
-  const name = /\bname:\s*"((?:[^"\\]|\\.)*)"/.exec(text)?.[1]?.replace(/\\(.)/g, '$1');
-  return { file, key: file.replace(/\.ron$/, ''), name };
-});
+const scenes = shippedScenes();
 if (scenes.length < 6) fail(`only ${scenes.length} scene files found`);
 
 const browser = await launchChromium();
@@ -30,22 +23,10 @@ const browser = await launchChromium();
 /** A page with its console watched; resolves once the app has drawn its first frame. */
 async function openPage(url) {
   const page = await browser.newPage({ viewport: { width: 1500, height: 950 }, deviceScaleFactor: 1 });
-  const errors = [];
-  let drawn = false;
-  page.on('console', (m) => {
-    if (m.type() === 'error') errors.push(m.text());
-    if (m.text().includes('first frame at')) drawn = true;
-  });
-  page.on('pageerror', (e) => errors.push(`pageerror: ${e.message}`));
-  await page.goto(url, { waitUntil: 'load' });
-  await until(() => drawn || errors.length > 0);
-  if (!drawn) errors.push(`no first frame at ${url}`);
-  const wrong = await wrongBuild(page);
-  if (wrong) errors.push(wrong);
+  const errors = await openApp(page, url);
   return { page, errors };
 }
 
-const state = async (page) => JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
 const shot = async (page) => decode(await page.locator('#linkage_canvas').screenshot());
 const hash = (page) => page.evaluate(() => location.hash);
 const centre = (c, fx = 0.5) => [c.rect[0] + fx * (c.rect[2] - c.rect[0]), 0.5 * (c.rect[1] + c.rect[3])];

@@ -5,32 +5,18 @@
 // "Drop the edits and open" opens. A file that is not a scene is refused with its
 // cause in the status line, and the scene shown stays.
 // Usage: node links_and_drops.mjs http://127.0.0.1:PORT/
-import { readFileSync } from 'node:fs';
-import { build, launchChromium, until, wrongBuild } from './common.mjs';
+import { appState, build, launchChromium, openApp, settledControl, shippedScenes, until } from './common.mjs';
 
 const base = (process.argv[2] ?? 'http://127.0.0.1:8917/').replace(/#.*$/, '');
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
 
-const sceneDir = new URL('../../assets/scenes/', import.meta.url);
-/** A shipped scene: its key, file text and name. */
-const scene = (key) => {
-  const text = readFileSync(new URL(`${key}.ron`, sceneDir), 'utf8');
-  const name = /\bname:\s*"((?:[^"\\]|\\.)*)"/.exec(text)[1].replace(/\\(.)/g, '$1');
-  return { key, text, name };
-};
-const [slider, shaper, flipper, cutter] = ['slider_crank', 'quick_return', 'gravity_flipper', 'die_cutter'].map(scene);
+const scenes = Object.fromEntries(shippedScenes().map((s) => [s.key, s]));
+const [slider, shaper, flipper, cutter] = ['slider_crank', 'quick_return', 'gravity_flipper', 'die_cutter'].map((k) => scenes[k]);
 
 const browser = await launchChromium();
 const page = await browser.newPage({ viewport: { width: 1500, height: 950 }, deviceScaleFactor: 1 });
-const errors = [];
-let drawn = false;
-page.on('console', (m) => {
-  if (m.type() === 'error') errors.push(m.text());
-  if (m.text().includes('first frame at')) drawn = true;
-});
-page.on('pageerror', (e) => errors.push(`pageerror: ${e.message}`));
 
-const state = async () => JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));
+const state = () => appState(page);
 let pokes = 0;
 /** An idle app draws a frame on a pointer move. */
 const poke = () => page.mouse.move(700 + (pokes++ % 2), 5);
@@ -42,19 +28,7 @@ const nextState = async () => {
 };
 const middle = (r) => [0.5 * (r[0] + r[2]), 0.5 * (r[1] + r[3])];
 /** The control of `kind` and `label` once two frames show it in the same place. */
-async function control(kind, label) {
-  let seen, settled;
-  await until(async () => {
-    const st = await state();
-    const c = st.controls.entries.find((e) => e.kind === kind && (label === undefined || e.label === label));
-    if (c?.visible) {
-      if (seen && st.frame > seen.frame && seen.c.rect.every((v, k) => Math.abs(v - c.rect[k]) < 0.5)) settled = c;
-      if (!seen || st.frame > seen.frame) seen = { c, frame: st.frame };
-    } else seen = undefined;
-    return settled !== undefined;
-  }, poke);
-  return settled;
-}
+const control = (kind, label) => settledControl(page, kind, label, poke);
 const showing = async (s) => (await state()).scene_name === s.name;
 const asking = async () => (await state()).controls.entries
   .some((e) => e.kind === 'FileButton' && e.label === 'Drop the edits and open' && e.visible);
@@ -109,11 +83,8 @@ async function drop(name, text) {
 /** Sets the page's fragment as a link pasted into the address bar does. */
 const go = (fragment) => page.evaluate((f) => { location.hash = f; }, fragment);
 
-await page.goto(base, { waitUntil: 'load' });
-await until(() => drawn || errors.length > 0, poke);
-if (!drawn) fail('the app never drew a first frame');
-const wrong = await wrongBuild(page);
-if (wrong) fail(wrong);
+const errors = await openApp(page, base);
+if (errors.length) fail(errors.splice(0).join('\n'));
 const first = (await state()).scene_name;
 const out = { build, first };
 

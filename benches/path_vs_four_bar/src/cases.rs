@@ -239,15 +239,7 @@ pub fn case(index: usize, rng: &mut Rng) -> Case {
         let centroid = points
             .iter()
             .fold(Vec2::zeros(), |c, p| c + Vec2::from(*p) / n as f64);
-        let truth = CouplerFourBar {
-            a: place(unit.a),
-            d: place(unit.d),
-            crank: unit.crank * scale,
-            coupler: unit.coupler * scale,
-            rocker: unit.rocker * scale,
-            point: unit.point * scale,
-            c_left_of_bd: unit.c_left_of_bd,
-        };
+        let truth = unit.similar(scale, place);
         let far = (truth.a - centroid).norm().max((truth.d - centroid).norm());
         let crowded = points
             .windows(2)

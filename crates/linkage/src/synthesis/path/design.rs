@@ -8,7 +8,6 @@ use super::cognates::{TurnsWith, cognates};
 use super::geometry::{CouplerFourBar, PARAMS};
 use super::problem::Problem;
 use crate::analysis::GrashofClass;
-use crate::motion::Vec2;
 use crate::scene::SceneFile;
 
 /// A four-bar with a coupler point P, placed in the world, and how it meets the
@@ -217,14 +216,5 @@ impl PathDesign {
 /// The normalised four-bar `m` in world units.
 fn to_world(problem: &Problem, m: &CouplerFourBar) -> CouplerFourBar {
     let s = problem.scale;
-    let world = |p: Vec2| problem.centre + p * s;
-    CouplerFourBar {
-        a: world(m.a),
-        d: world(m.d),
-        crank: m.crank * s,
-        coupler: m.coupler * s,
-        rocker: m.rocker * s,
-        point: m.point * s,
-        c_left_of_bd: m.c_left_of_bd,
-    }
+    m.similar(s, |p| problem.centre + p * s)
 }

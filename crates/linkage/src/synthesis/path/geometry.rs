@@ -55,6 +55,22 @@ impl CouplerFourBar {
         }
     }
 
+    /// The same four-bar moved by a similarity that keeps orientation: its lengths
+    /// and coupler point times `scale`, its ground pivots mapped by `place` (which
+    /// must scale by `scale`: a turn, the scale and a shift). The coupler point is
+    /// in the coupler's own frame, so it only scales.
+    pub fn similar(&self, scale: f64, place: impl Fn(Vec2) -> Vec2) -> Self {
+        Self {
+            a: place(self.a),
+            d: place(self.d),
+            crank: self.crank * scale,
+            coupler: self.coupler * scale,
+            rocker: self.rocker * scale,
+            point: self.point * scale,
+            c_left_of_bd: self.c_left_of_bd,
+        }
+    }
+
     /// The parameters in the order [`Self::from_params`] reads them.
     pub fn params(&self) -> [f64; PARAMS] {
         [

@@ -150,11 +150,8 @@ impl Problem {
     /// angle's deficit (each 0 when met). False only where a length is not positive.
     pub fn residuals(&self, u: &[f64], left: bool, out: &mut [f64]) -> bool {
         let m = CouplerFourBar::from_params(&u[..PARAMS], left);
-        for (i, target) in self.targets.iter().enumerate() {
-            let theta = match self.timing {
-                Some(_) => self.timed_angle(u[PARAMS], i),
-                None => u[PARAMS + i],
-            };
+        let angles = self.angles_of(u);
+        for (i, (target, &theta)) in self.targets.iter().zip(&angles).enumerate() {
             let Some((p, gap)) = m.point_and_gap_at(theta) else {
                 return false;
             };
@@ -162,15 +159,22 @@ impl Problem {
             out[3 * i + 1] = p.y - target.y;
             out[3 * i + 2] = gap;
         }
+        self.constraint_residuals(&m, &angles, out);
+        true
+    }
+
+    /// Writes the residuals after the targets' three each: the turning shortfall
+    /// (when the crank must turn), the pivots' distance outside the region and the
+    /// transmission angle's deficit over `angles`.
+    pub fn constraint_residuals(&self, m: &CouplerFourBar, angles: &[f64], out: &mut [f64]) {
         let n = 3 * self.targets.len();
         out[n] = if self.limits.crank_turns {
             m.turning_shortfall()
         } else {
             0.0
         };
-        out[n + 1] = self.outside_region(&m);
-        out[n + 2] = self.transmission_deficit(&m, &self.angles_of(u));
-        true
+        out[n + 1] = self.outside_region(m);
+        out[n + 2] = self.transmission_deficit(m, angles);
     }
 
     /// How far the ground pivots lie outside the region (0 inside).

@@ -60,14 +60,7 @@ impl Problem {
             out[3 * i + 1] = p.y - target.y;
             out[3 * i + 2] = 0.0;
         }
-        let n = 3 * self.targets.len();
-        out[n] = if self.limits.crank_turns {
-            m.turning_shortfall()
-        } else {
-            0.0
-        };
-        out[n + 1] = self.outside_region(&m);
-        out[n + 2] = self.transmission_deficit(&m, angles);
+        self.constraint_residuals(&m, angles, out);
         true
     }
 }
