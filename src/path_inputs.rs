@@ -6,6 +6,7 @@ use linkage::synthesis::path::{
     PathConstraints, PathDesign, PathLinkage, PathSearch, PathTargets, SearchOptions, TargetOrder,
     TurnsWith,
 };
+use linkage::synthesis::rows::{RowError, read_rows};
 
 use crate::synthesis::Design;
 
@@ -99,14 +100,15 @@ impl PathInputs {
             .collect()
     }
 
-    /// Reads targets from CSV rows (two numbers, or three when timed; blank lines
-    /// skipped).
+    /// Reads targets from CSV rows (two numbers, or three when timed), as
+    /// `linkage synth path` reads its file: blank lines, `#` comments and a header
+    /// skipped.
     ///
     /// # Errors
     /// A row that is not that many numbers, named by its line.
-    pub fn read_csv(&mut self, text: &str) -> Result<(), String> {
+    pub fn read_csv(&mut self, text: &str) -> Result<(), RowError> {
         let width = if self.timed { 3 } else { 2 };
-        let rows = crate::synthesis::numbers(text, width)?;
+        let rows = read_rows(text, width)?;
         let targets = rows
             .iter()
             .enumerate()
@@ -276,8 +278,19 @@ mod tests {
         let e = inputs
             .read_csv("1, 2, 3\n\n4, x, 6\n")
             .expect_err("refused");
-        assert!(e.contains("line 3"), "{e}");
+        assert_eq!(e.line, 3);
         assert_eq!(inputs.targets, before, "a refused paste keeps the targets");
+    }
+
+    /// A targets file that `linkage synth path` reads (a header, a comment) reads the
+    /// same when pasted into the app.
+    #[test]
+    fn a_targets_file_the_cli_reads_pastes_into_the_app() {
+        let mut inputs = PathInputs::default();
+        let text = "x_mm, y_mm\n# traced from the drawing\n10, 20\n\n30, 40.5\n";
+        inputs.read_csv(text).expect("reads the CLI's file");
+        let at: Vec<[f64; 2]> = inputs.targets.iter().map(|t| t.at_mm).collect();
+        assert_eq!(at, [[10.0, 20.0], [30.0, 40.5]]);
     }
 
     /// A clicked target's sixteen digits are written to 1e-7 of the targets' extent,

@@ -183,16 +183,8 @@ fn die([h_mm, k, l_mm, rpm]: [f64; 4]) -> Result<Design, String> {
     })
 }
 
-/// Rows of `width` numbers, one per line (blank lines skipped).
+/// Rows of `width` numbers, as the CLI reads its files (a header and `#` comments
+/// skipped): a targets file pasted into the app reads as it does there.
 pub(crate) fn numbers(text: &str, width: usize) -> Result<Vec<Vec<f64>>, String> {
-    text.lines()
-        .enumerate()
-        .filter(|(_, l)| !l.trim().is_empty())
-        .map(|(i, line)| {
-            let v: Result<Vec<f64>, _> = line.split(',').map(|c| c.trim().parse()).collect();
-            v.ok()
-                .filter(|v| v.len() == width && v.iter().all(|x| x.is_finite()))
-                .ok_or_else(|| format!("line {}: {:?} is not {width} numbers", i + 1, line.trim()))
-        })
-        .collect()
+    linkage::synthesis::rows::read_rows(text, width).map_err(|e| e.to_string())
 }

@@ -3,10 +3,12 @@
 //! poles, the centre-point curve (four), the Burmester points (five), and the
 //! pivots.
 
-use linkage::synthesis::burmester::{burmester_points, centre_curve, four_bar_of, four_positions};
-use linkage::synthesis::motion::{BodyPose, MotionFourBar, three_positions};
+use linkage::synthesis::burmester::centre_curve;
+use linkage::synthesis::motion::{BodyPose, MotionFourBar};
+use linkage::synthesis::positions::{PositionsChoice, PositionsDesign, through_positions};
+use linkage::synthesis::rows::read_rows;
 
-use crate::synthesis::{Design, Figure, numbers, row};
+use crate::synthesis::{Design, Figure, row};
 
 /// A motion generator's construction, mm.
 #[derive(Clone, Debug, PartialEq)]
@@ -48,39 +50,26 @@ impl Default for MotionChoice {
 
 /// The four-bar through the positions in `text` (`x mm, y mm, angle deg` rows).
 pub fn motion(text: &str, choice: &MotionChoice) -> Result<Design, String> {
-    let poses: Vec<BodyPose> = numbers(text, 3)?
+    let poses: Vec<BodyPose> = read_rows(text, 3)
+        .map_err(|e| e.to_string())?
         .iter()
         .map(|v| BodyPose {
             at: [v[0] * 1e-3, v[1] * 1e-3],
             angle_rad: v[2].to_radians(),
         })
         .collect();
-    let mut burmester = vec![];
-    let d = match poses.len() {
-        3 => {
-            let [x1, y1, x2, y2] = choice.moving_mm.map(|v| v * 1e-3);
-            three_positions([poses[0], poses[1], poses[2]], [[x1, y1], [x2, y2]])
-        }
-        4 => {
-            let [x1, y1, x2, y2] = choice.fixed_near_mm.map(|v| v * 1e-3);
-            four_positions(&poses, [[x1, y1], [x2, y2]])
-        }
-        5 => {
-            burmester = burmester_points(&poses).map_err(|e| e.to_string())?;
-            let pick = |i: usize| {
-                burmester.get(i.wrapping_sub(1)).copied().ok_or_else(|| {
-                    format!(
-                        "Burmester point {i}: there are {} (1 to {})",
-                        burmester.len(),
-                        burmester.len()
-                    )
-                })
-            };
-            four_bar_of(&poses, [pick(choice.pair[0])?, pick(choice.pair[1])?])
-        }
-        n => return Err(format!("{n} positions: three, four or five are needed")),
-    }
-    .map_err(|e| e.to_string())?;
+    let metres =
+        |[x1, y1, x2, y2]: [f64; 4]| Some([[x1, y1], [x2, y2]].map(|p| p.map(|v| v * 1e-3)));
+    let positions = PositionsChoice {
+        moving: metres(choice.moving_mm),
+        fixed_near: metres(choice.fixed_near_mm),
+        burmester_pair: choice.pair,
+    };
+    let PositionsDesign {
+        four_bar: d,
+        burmester,
+    } = through_positions(&poses, &positions).map_err(|e| e.to_string())?;
+    let burmester = burmester.unwrap_or_default();
     let checked = d.check().map_err(|e| e.to_string())?;
     let points: Vec<[f64; 2]> = burmester.iter().map(|c| c.centre).collect();
     Ok(Design {

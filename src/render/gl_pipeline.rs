@@ -1,7 +1,7 @@
 //! The WebGL2 renderer (the web demo's build for browsers without WebGPU): the same
 //! instanced draw as the wgpu one, through eframe's glow painter, with the GLSL ES
 //! 3.00 that naga translated from `shaders/linkage.wgsl` (`shaders/gl/`, kept equal
-//! to the translation by `tests/gl_shaders.rs`).
+//! to the translation by `tests/app/gl_shaders.rs`).
 //!
 //! Why glow here and not wgpu's own WebGL2 back-end: that one carries wgpu-core and
 //! naga into the download (0.5 MB gzipped, a quarter of it), to translate at run time

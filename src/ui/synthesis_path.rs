@@ -25,7 +25,7 @@ pub struct PathTab {
     /// The targets as the text field shows them.
     csv: String,
     /// Why the text field's rows were not taken.
-    csv_error: Option<String>,
+    csv_error: Option<linkage::synthesis::rows::RowError>,
     /// The search, once started.
     pub job: Option<PathJob>,
     /// Why the search did not start.
@@ -119,7 +119,7 @@ fn targets(
         tab.csv_error = inputs.read_csv(&tab.csv).err();
     }
     if let Some(why) = &tab.csv_error {
-        ui.colored_label(ui.visuals().error_fg_color, why);
+        ui.colored_label(ui.visuals().error_fg_color, why.to_string());
     }
     let clear = ui.button("Clear targets");
     controls.note(ui, ControlKind::FileButton, "Clear targets", &clear);

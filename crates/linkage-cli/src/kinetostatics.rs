@@ -1,7 +1,7 @@
 //! `linkage kinetostatics`: input torque (Newton–Euler and virtual work), every joint
 //! reaction and the force amplification over one input cycle.
 
-use linkage::kinetostatics::Kinetostatics;
+use linkage::kinetostatics::{JointKind, Kinetostatics};
 use serde_json::{Value, json};
 
 use crate::Format;
@@ -30,7 +30,7 @@ pub fn run(args: &SceneArgs, steps: usize, format: Format) -> Result<String, Str
             for j in &s.joints {
                 header.push(format!("{}_fx", j.name));
                 header.push(format!("{}_fy", j.name));
-                if j.name.contains("_on_") {
+                if j.kind == JointKind::Prismatic {
                     header.push(format!("{}_couple", j.name));
                 }
             }
@@ -43,7 +43,7 @@ pub fn run(args: &SceneArgs, steps: usize, format: Format) -> Result<String, Str
         ];
         for j in &s.joints {
             row.extend([Some(j.force.0), Some(j.force.1)]);
-            if j.name.contains("_on_") {
+            if j.kind == JointKind::Prismatic {
                 row.push(Some(j.couple));
             }
         }

@@ -5,6 +5,7 @@
 use std::path::Path;
 
 use linkage::synthesis::function::{PrecisionPoint, freudenstein, structural_error};
+use linkage::synthesis::rows::read_rows;
 use serde_json::json;
 
 use crate::commands::json_text;
@@ -44,46 +45,12 @@ pub fn run(csv: &Path, ground_m: f64, scene_out: Option<&Path>) -> Result<String
 
 /// The rows `input_deg, output_deg` as precision points.
 fn parse(text: &str) -> Result<Vec<PrecisionPoint>, String> {
-    Ok(rows(text, 2)?
+    Ok(read_rows(text, 2)
+        .map_err(|e| e.to_string())?
         .into_iter()
         .map(|v| PrecisionPoint {
             input_rad: v[0].to_radians(),
             output_rad: v[1].to_radians(),
         })
         .collect())
-}
-
-/// The rows of `width` numbers; blank lines, `#` comments and a header line (a first
-/// row that is not numbers) are skipped.
-///
-/// # Errors
-/// A row that is not `width` numbers, named by its line.
-pub fn rows(text: &str, width: usize) -> Result<Vec<Vec<f64>>, String> {
-    let mut out = Vec::new();
-    let header = first_row(text);
-    for (i, line) in text.lines().enumerate() {
-        let line = line.trim();
-        if line.is_empty() || line.starts_with('#') {
-            continue;
-        }
-        let numbers: Result<Vec<f64>, _> = line.split(',').map(|c| c.trim().parse()).collect();
-        match numbers {
-            Ok(v) if v.len() == width && v.iter().all(|x| x.is_finite()) => out.push(v),
-            Err(_) if i == header => {} // a header
-            _ => {
-                return Err(format!(
-                    "line {}: {line:?} is not {width} comma-separated numbers",
-                    i + 1
-                ));
-            }
-        }
-    }
-    Ok(out)
-}
-
-/// The index of the first line that is neither blank nor a comment.
-fn first_row(text: &str) -> usize {
-    text.lines()
-        .position(|l| !(l.trim().is_empty() || l.trim().starts_with('#')))
-        .unwrap_or(0)
 }

@@ -6,8 +6,11 @@
 
 use std::path::Path;
 
-use linkage::synthesis::burmester::{burmester_points, four_bar_of, four_positions};
-use linkage::synthesis::motion::{BodyPose, MotionFourBar, three_positions};
+use linkage::synthesis::motion::BodyPose;
+use linkage::synthesis::positions::{
+    PositionsChoice, PositionsDesign, PositionsError, through_positions,
+};
+use linkage::synthesis::rows::read_rows;
 use serde_json::json;
 
 use crate::commands::json_text;
@@ -31,8 +34,7 @@ pub struct Choice {
 pub fn run(csv: &Path, choice: &Choice, scene_out: Option<&Path>) -> Result<String, String> {
     let text =
         std::fs::read_to_string(csv).map_err(|e| format!("cannot read {}: {e}", csv.display()))?;
-    let rows =
-        crate::synth_function::rows(&text, 3).map_err(|e| format!("{}: {e}", csv.display()))?;
+    let rows = read_rows(&text, 3).map_err(|e| format!("{}: {e}", csv.display()))?;
     let poses: Vec<BodyPose> = rows
         .iter()
         .map(|r| BodyPose {
@@ -40,36 +42,29 @@ pub fn run(csv: &Path, choice: &Choice, scene_out: Option<&Path>) -> Result<Stri
             angle_rad: r[2].to_radians(),
         })
         .collect();
-    let mut burmester = None;
-    let design = match poses.len() {
-        3 => three(&poses, &choice.moving)?,
-        4 => {
-            let [x1, y1, x2, y2] = four_numbers(&choice.fixed_near, "--fixed-near")?;
-            four_positions(&poses, [[x1, y1], [x2, y2]]).map_err(|e| e.to_string())?
-        }
-        5 => {
-            let points = burmester_points(&poses).map_err(|e| e.to_string())?;
-            let pick = |k: usize| {
-                let i = choice.pair.get(k).copied().unwrap_or(k + 1);
-                points.get(i.wrapping_sub(1)).copied().ok_or_else(|| {
-                    format!(
-                        "--pair {i}: there are {} Burmester points (1 to {})",
-                        points.len(),
-                        points.len()
-                    )
-                })
-            };
-            let cranks = [pick(0)?, pick(1)?];
-            burmester = Some(points);
-            four_bar_of(&poses, cranks).map_err(|e| e.to_string())?
-        }
-        n => {
-            return Err(format!(
-                "{}: {n} positions; 3, 4 or 5 are needed",
-                csv.display()
-            ));
-        }
+    // A choice is read only where the number of positions uses it.
+    let pivots = |v: &[f64], flag: &str, used: bool| -> Result<Option<[[f64; 2]; 2]>, String> {
+        used.then(|| four_numbers(v, flag).map(|[x1, y1, x2, y2]| [[x1, y1], [x2, y2]]))
+            .transpose()
     };
+    let pair = |k: usize| choice.pair.get(k).copied().unwrap_or(k + 1);
+    let positions = PositionsChoice {
+        moving: pivots(&choice.moving, "--moving", poses.len() == 3)?,
+        fixed_near: pivots(&choice.fixed_near, "--fixed-near", poses.len() == 4)?,
+        burmester_pair: [pair(0), pair(1)],
+    };
+    let PositionsDesign {
+        four_bar: design,
+        burmester,
+    } = through_positions(&poses, &positions).map_err(|e| match e {
+        PositionsError::Count(n) => {
+            format!("{}: {n} positions; 3, 4 or 5 are needed", csv.display())
+        }
+        PositionsError::NoSuchBurmesterPoint { asked, count } => {
+            format!("--pair {asked}: there are {count} Burmester points (1 to {count})")
+        }
+        other => other.to_string(),
+    })?;
     let checked = design.check().map_err(|e| e.to_string())?;
     if let Some(path) = scene_out {
         let text = checked.scene.to_ron().map_err(|e| e.to_string())?;
@@ -93,10 +88,4 @@ pub fn run(csv: &Path, choice: &Choice, scene_out: Option<&Path>) -> Result<Stri
 fn four_numbers(v: &[f64], flag: &str) -> Result<[f64; 4], String> {
     v.try_into()
         .map_err(|_| format!("{flag} takes 4 numbers (x1 y1 x2 y2), not {}", v.len()))
-}
-
-fn three(poses: &[BodyPose], moving: &[f64]) -> Result<MotionFourBar, String> {
-    let [x1, y1, x2, y2] = four_numbers(moving, "--moving")?;
-    let three: [BodyPose; 3] = [poses[0], poses[1], poses[2]];
-    three_positions(three, [[x1, y1], [x2, y2]]).map_err(|e| e.to_string())
 }

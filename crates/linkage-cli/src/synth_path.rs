@@ -21,8 +21,8 @@ pub fn run(args: &PathSearchArgs) -> Result<String, String> {
     let text =
         std::fs::read_to_string(csv).map_err(|e| format!("cannot read {}: {e}", csv.display()))?;
     let width = if args.timed { 3 } else { 2 };
-    let rows =
-        crate::synth_function::rows(&text, width).map_err(|e| format!("{}: {e}", csv.display()))?;
+    let rows = linkage::synthesis::rows::read_rows(&text, width)
+        .map_err(|e| format!("{}: {e}", csv.display()))?;
     let targets = PathTargets {
         points_m: rows.iter().map(|r| [r[0], r[1]]).collect(),
         crank_deg: args.timed.then(|| rows.iter().map(|r| r[2]).collect()),

@@ -408,6 +408,41 @@ fn kinetostatics_prints_torques_reactions_and_amplification() {
     assert!(!ok && err.contains("models kinematics only"), "{err}");
 }
 
+/// The couple columns follow the joints' kinds, not their names: a link named
+/// `crank_on_shaft` puts no couple column on the revolutes it joins.
+#[test]
+fn a_link_named_like_a_slider_joint_gets_no_couple_column() {
+    let text = std::fs::read_to_string(scene("die_cutter.ron")).expect("scene");
+    let renamed = text.replace("\"crank\"", "\"crank_on_shaft\"");
+    assert_ne!(renamed, text);
+    let file = std::env::temp_dir().join(format!("linkage-on-{}.ron", std::process::id()));
+    std::fs::write(&file, renamed).expect("write");
+    let (ok, out, err) = linkage(&[
+        "kinetostatics",
+        file.to_str().expect("path"),
+        "--steps",
+        "4",
+        "--format",
+        "json",
+    ]);
+    let _ = std::fs::remove_file(&file);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    let columns: Vec<&str> = v["columns"]
+        .as_array()
+        .expect("columns")
+        .iter()
+        .map(|c| c.as_str().expect("text"))
+        .collect();
+    assert!(columns.iter().any(|c| c.contains("crank_on_shaft")));
+    let couples: Vec<&str> = columns
+        .iter()
+        .copied()
+        .filter(|c| c.ends_with("_couple"))
+        .collect();
+    assert_eq!(couples, ["die_on_ground_couple"]);
+}
+
 #[test]
 fn a_newton_only_chain_at_outside_its_range_names_it_and_sweep_covers_it() {
     let file = format!(

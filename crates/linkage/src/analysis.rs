@@ -5,114 +5,30 @@
 use serde::Serialize;
 
 use crate::closed_form::Group;
-use crate::error::{LinkageError, Result};
+use crate::error::{AssemblyFailure, LinkageError, Result};
 use crate::kinematics::Kinematics;
 use crate::motion::{Solution, Vec2, cross, perp};
 use crate::roots_util::{refine, sign_changes};
 
+pub use crate::assembly::AssemblyRanges;
+
 const TAU: f64 = std::f64::consts::TAU;
-/// Grid used to bracket roots: 0.5 deg over a full turn.
-const GRID: usize = 720;
 /// Velocity ratio below which an output counts as at rest, per radian of input and,
 /// for a slider, per metre of the mechanism's size: dimensionless, so that a 50 µm
 /// mechanism rests exactly when its 50 m twin does (round-off of a ratio of order 1 is
 /// 1e-16; a real limit's neighbours on the grid have ratios of 1e-3 and up).
 const RESTING_RATE: f64 = 1e-9;
 
-/// Input intervals (rad) over which the chain assembles on its branch.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct AssemblyRanges {
-    /// True when the input turns fully (a crank).
-    pub full_rotation: bool,
-    /// Intervals `[start, end]` in rad, ascending within [0, 2π) (end may pass 2π).
-    pub intervals: Vec<[f64; 2]>,
-}
-
 /// Assembly ranges: of a closed-form chain by root-finding on the groups' margins; of
 /// a chain solved by Newton alone, the range its branch was traced over (between
 /// folds) when it was built.
 pub fn assembly_ranges_of(k: &Kinematics) -> AssemblyRanges {
-    let Some(cf) = k.closed_form() else {
-        return match k.traced_range() {
-            Some([lo, hi]) => crate::newton::range_of(lo, hi),
-            None => AssemblyRanges {
-                full_rotation: true,
-                intervals: vec![[0.0, TAU]],
-            },
-        };
-    };
-    let mut links = vec![Default::default(); k.mechanism().links.len()];
-    // A margin that only touches zero (a dyad stretched straight, or its end pins
-    // coinciding: the branch points of a change-point chain) assembles: counted as
-    // positive, it is no root and no interval ends there.
-    let mut margin = |x: f64| {
-        let m = cf.margin(x, &mut links).0;
-        if m >= -crate::closed_form::TANGENT_SLACK {
-            m.max(f64::MIN_POSITIVE)
-        } else {
-            m
-        }
-    };
-    let xs: Vec<f64> = (0..=GRID).map(|i| TAU * i as f64 / GRID as f64).collect();
-    let ms: Vec<f64> = xs.iter().map(|&x| margin(x)).collect();
-    let roots: Vec<f64> = sign_changes(&ms)
-        .into_iter()
-        .filter_map(|i| refine(xs[i], xs[i + 1], &mut margin))
-        .collect();
-    if roots.is_empty() {
-        let full = ms[0] >= 0.0;
-        return AssemblyRanges {
-            full_rotation: full,
-            intervals: if full { vec![[0.0, TAU]] } else { vec![] },
-        };
-    }
-    // Walk the circle from the first root; an interval starts where the margin rises.
-    let mut intervals = Vec::new();
-    for (n, &r) in roots.iter().enumerate() {
-        let next = if n + 1 < roots.len() {
-            roots[n + 1]
-        } else {
-            roots[0] + TAU
-        };
-        let mid = 0.5 * (r + next);
-        if margin(mid.rem_euclid(TAU)) > 0.0 {
-            intervals.push([r, next]);
-        }
-    }
-    AssemblyRanges {
-        full_rotation: false,
-        intervals,
-    }
+    k.assembly_ranges()
 }
 
-impl AssemblyRanges {
-    /// The interval holding input `x` (any turn), else the first; `None` when the
-    /// chain assembles nowhere.
-    pub fn containing(&self, x: f64) -> Option<[f64; 2]> {
-        let x = x.rem_euclid(TAU);
-        let holds = |[a, b]: &&[f64; 2]| (*a <= x && x <= *b) || (*a <= x + TAU && x + TAU <= *b);
-        self.intervals
-            .iter()
-            .find(holds)
-            .or(self.intervals.first())
-            .copied()
-    }
-}
-
-/// "the reachable input range is 34.30..117.70 deg" and similar.
+/// "reachable input range: 34.30..117.70 deg" and similar: the ranges' `Display`.
 pub fn describe_ranges(r: &AssemblyRanges) -> String {
-    if r.full_rotation {
-        return "the chain assembles at every input angle".into();
-    }
-    if r.intervals.is_empty() {
-        return "the chain assembles at no input angle (check link lengths)".into();
-    }
-    let parts: Vec<String> = r
-        .intervals
-        .iter()
-        .map(|[a, b]| format!("{:.2}..{:.2} deg", a.to_degrees(), b.to_degrees()))
-        .collect();
-    format!("reachable input range: {}", parts.join(" or "))
+    r.to_string()
 }
 
 /// An output whose extremes are sought: a link pinned to ground, or a slider.
@@ -408,31 +324,6 @@ impl Probe<'_> {
     }
 }
 
-/// Grid over the assembly ranges: for a full turn one closed loop, else each interval
-/// shrunk by a hair (the ends are dead points where velocities are undefined).
-pub(crate) fn grids(r: &AssemblyRanges, start: f64) -> Vec<Vec<f64>> {
-    if r.full_rotation {
-        // Offset by a fraction of a step: scenes start at symmetric angles (0, 90 deg)
-        // where limits often sit exactly, and a root on a grid point has no sign change.
-        const OFFSET: f64 = 0.3713;
-        return vec![
-            (0..=GRID)
-                .map(|i| start + TAU * (i as f64 + OFFSET) / GRID as f64)
-                .collect(),
-        ];
-    }
-    r.intervals
-        .iter()
-        .map(|&[a, b]| {
-            let n = ((b - a) / TAU * GRID as f64).ceil().max(16.0) as usize;
-            let eps = 1e-9 * (b - a);
-            (0..=n)
-                .map(|i| a + eps + (b - a - 2.0 * eps) * i as f64 / n as f64)
-                .collect()
-        })
-        .collect()
-}
-
 /// Limit positions of `out` over the assembly ranges, by root-finding on its rate.
 pub fn limit_positions(
     k: &mut Kinematics,
@@ -462,7 +353,7 @@ fn found_limits(k: &mut Kinematics, out: &Output, ranges: &AssemblyRanges) -> Ve
     let ratio =
         |probe: &mut Probe, x: f64| probe.at(x).map_or(f64::NAN, |s| out.relative_rate(s, size));
     let mut found = Vec::new();
-    for xs in grids(ranges, start) {
+    for xs in ranges.grids(start) {
         let rates: Vec<f64> = xs.iter().map(|&x| ratio(&mut probe, x)).collect();
         for i in sign_changes(&rates) {
             // An output at rest (a change-point chain's folded mode holds its rocker
@@ -765,7 +656,7 @@ pub fn transmission_angle(
             let (l1, w1, l2, w2) = transmission_lines(k, g, sol)?;
             Some((acute(&l1, &l2), w1 - w2, l1.dot(&l2)))
         };
-        for xs in grids(ranges, start) {
+        for xs in ranges.grids(start) {
             let vals: Vec<Option<(f64, f64, f64)>> =
                 xs.iter().map(|&x| eval(k, x, &mut sol)).collect();
             if vals.iter().all(Option::is_none) {
@@ -856,8 +747,8 @@ pub fn report(k: &mut Kinematics) -> Result<Report> {
     if ranges.intervals.is_empty() {
         return Err(LinkageError::CannotAssemble {
             input_deg: k.mechanism().driver.start_rad.to_degrees(),
-            reason: "no input angle assembles the chain".into(),
-            reachable: describe_ranges(&ranges),
+            reason: AssemblyFailure::Nowhere,
+            reachable: ranges.clone(),
         });
     }
     // Extremes, strokes and toggles belong to the interval the mechanism starts in: a

@@ -7,7 +7,7 @@
 
 use serde::Serialize;
 
-use crate::analysis::{AssemblyRanges, grids};
+use crate::assembly::AssemblyRanges;
 use crate::kinematics::Kinematics;
 
 /// Conditioning below which a grid minimum is refined.
@@ -34,7 +34,7 @@ pub fn branch_points(k: &mut Kinematics, ranges: &AssemblyRanges) -> Vec<BranchP
     let groups = k.group_count();
     let start = k.mechanism().driver.start_rad;
     let mut found = Vec::new();
-    for grid in grids(ranges, start) {
+    for grid in ranges.grids(start) {
         // Every 4th point of the analyses' grid (2 deg on a full turn): the
         // conditioning is V-shaped at a branch point, so a minimum still shows, and the
         // report, drawn on the frame of an edit, pays a quarter of a sweep for it.

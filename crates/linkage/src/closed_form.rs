@@ -10,12 +10,17 @@
 //! position, [`crate::lanes::Lanes`] several at once in SIMD lanes. Their tests are
 //! lane masks: a group fails if it fails in any lane.
 
+use std::f64::consts::TAU;
+
 use nalgebra::{SimdBool, UnitComplex, Vector2};
 
+use crate::assembly::{AssemblyRanges, GRID};
+use crate::dyad::DyadKind;
 use crate::error::{LinkageError, Result};
 use crate::lanes::{Real, splat, splat_vec};
 use crate::model::{Mechanism, Prismatic};
 use crate::motion::{LinkMotion, PointMotion, SlideMotion, Vec2, cross, perp};
+use crate::roots_util::{refine, sign_changes};
 use crate::scene::Branch;
 
 /// A pin: a point fixed on a link, given in that link's coordinates.
@@ -282,12 +287,12 @@ impl Group {
     }
 
     /// The group type in Assur notation.
-    pub(crate) fn kind(&self) -> &'static str {
+    pub(crate) fn kind(&self) -> DyadKind {
         match self {
-            Group::Rrr(_) => "RRR",
-            Group::Rrp(_) => "RRP",
-            Group::Rpr(_) => "RPR",
-            Group::Prp(_) => "PRP",
+            Group::Rrr(_) => DyadKind::Rrr,
+            Group::Rrp(_) => DyadKind::Rrp,
+            Group::Rpr(_) => DyadKind::Rpr,
+            Group::Prp(_) => DyadKind::Prp,
         }
     }
 }
@@ -722,9 +727,9 @@ impl ClosedForm {
         // A provisional branch is any valid one of the right kind; match_pose fixes it.
         let provisional_rrr = Branch::Left(String::new(), String::new());
         let provisional_slide = Branch::Along;
-        let branch_of = |point: usize, describe: &str| -> Result<&Branch> {
+        let branch_of = |point: usize, kind: DyadKind| -> Result<&Branch> {
             if provisional_branches && m.branch_for(point).is_none() {
-                return Ok(if describe == "RRR" {
+                return Ok(if kind == DyadKind::Rrr {
                     &provisional_rrr
                 } else {
                     &provisional_slide
@@ -732,7 +737,7 @@ impl ClosedForm {
             }
             m.branch_for(point).ok_or_else(|| {
                 LinkageError::SceneInvalid(format!(
-                    "the {describe} dyad with inner joint `{}` needs an assembly branch in `branches`",
+                    "the {kind} dyad with inner joint `{}` needs an assembly branch in `branches`",
                     m.points[point].name
                 ))
             })
@@ -747,7 +752,7 @@ impl ClosedForm {
                 let mid = m.revolutes[rm].point;
                 let (pa, pc) = (m.revolutes[ra].point, m.revolutes[rc].point);
                 let names = |p: usize| m.points[p].name.clone();
-                let sign = match branch_of(mid, "RRR")? {
+                let sign = match branch_of(mid, DyadKind::Rrr)? {
                     Branch::Left(f, t) if f.is_empty() && t.is_empty() => 1.0,
                     Branch::Left(f, t) | Branch::Right(f, t) => {
                         let left = if (f, t) == (&names(pa), &names(pc)) {
@@ -806,7 +811,7 @@ impl ClosedForm {
                 let (mid_on_i, mid_on_j) = (rev_local(m, rm, i), rev_local(m, rm, j));
                 let (len_i, dir_i) = link_len(m, a_on_i, mid_on_i, i, "two")?;
                 let mid = m.revolutes[rm].point;
-                let sign = match branch_of(mid, "RRP")? {
+                let sign = match branch_of(mid, DyadKind::Rrp)? {
                     Branch::Along => 1.0,
                     Branch::Against => -1.0,
                     _ => {
@@ -837,7 +842,7 @@ impl ClosedForm {
                 let (g, g_on_guide) = rev_pin(m, g_rev, g_known, slide.guide);
                 let q_line = slide.through_local + slide.relative * (s_on_slider - slide.slider_local);
                 let offset = cross(&slide.direction_local, &(g_on_guide - q_line));
-                let sign = match branch_of(slide.point, "RPR")? {
+                let sign = match branch_of(slide.point, DyadKind::Rpr)? {
                     Branch::Along => 1.0,
                     Branch::Against => -1.0,
                     _ => {
@@ -1024,5 +1029,54 @@ pub(crate) fn finish_solution<T: Real>(
     }
     for (out, s) in slides.iter_mut().zip(&m.sliders) {
         *out = s.motion(links);
+    }
+}
+
+impl ClosedForm {
+    /// The input intervals over which every group closes, by root-finding on the
+    /// groups' margins over a 0.5 deg grid (`link_count` links in the mechanism).
+    pub(crate) fn assembly_ranges(&self, link_count: usize) -> AssemblyRanges {
+        let mut links = vec![Default::default(); link_count];
+        // A margin that only touches zero (a dyad stretched straight, or its end pins
+        // coinciding: the branch points of a change-point chain) assembles: counted as
+        // positive, it is no root and no interval ends there.
+        let mut margin = |x: f64| {
+            let m = self.margin(x, &mut links).0;
+            if m >= -TANGENT_SLACK {
+                m.max(f64::MIN_POSITIVE)
+            } else {
+                m
+            }
+        };
+        let xs: Vec<f64> = (0..=GRID).map(|i| TAU * i as f64 / GRID as f64).collect();
+        let ms: Vec<f64> = xs.iter().map(|&x| margin(x)).collect();
+        let roots: Vec<f64> = sign_changes(&ms)
+            .into_iter()
+            .filter_map(|i| refine(xs[i], xs[i + 1], &mut margin))
+            .collect();
+        if roots.is_empty() {
+            let full = ms[0] >= 0.0;
+            return AssemblyRanges {
+                full_rotation: full,
+                intervals: if full { vec![[0.0, TAU]] } else { vec![] },
+            };
+        }
+        // Walk the circle from the first root; an interval starts where the margin rises.
+        let mut intervals = Vec::new();
+        for (n, &r) in roots.iter().enumerate() {
+            let next = if n + 1 < roots.len() {
+                roots[n + 1]
+            } else {
+                roots[0] + TAU
+            };
+            let mid = 0.5 * (r + next);
+            if margin(mid.rem_euclid(TAU)) > 0.0 {
+                intervals.push([r, next]);
+            }
+        }
+        AssemblyRanges {
+            full_rotation: false,
+            intervals,
+        }
     }
 }

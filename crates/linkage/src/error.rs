@@ -3,6 +3,37 @@
 
 use thiserror::Error;
 
+use crate::assembly::AssemblyRanges;
+use crate::dyad::DyadLabel;
+
+/// Why a chain does not close at an input, as data ([`LinkageError::CannotAssemble`]).
+#[derive(Debug, Error, Clone, PartialEq)]
+pub enum AssemblyFailure {
+    /// A dyad does not close at this input.
+    #[error("the {dyad} does not close (margin {margin:.3e})")]
+    DyadOpen {
+        /// The dyad.
+        dyad: Box<DyadLabel>,
+        /// How far from closing: its assembly margin (dimensionless, < 0).
+        margin: f64,
+    },
+    /// The branch traced by Newton folds at its ends, dead points of the input.
+    #[error(
+        "the branch folds (a dead point of the input) at {:.4} and {:.4} deg",
+        lo_rad.to_degrees(),
+        hi_rad.to_degrees()
+    )]
+    BranchFolds {
+        /// The lower fold, rad (unwrapped).
+        lo_rad: f64,
+        /// The upper fold, rad (unwrapped).
+        hi_rad: f64,
+    },
+    /// No input angle assembles the chain.
+    #[error("no input angle assembles the chain")]
+    Nowhere,
+}
+
 /// Everything that can go wrong between a scene file and a solved position.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum LinkageError {
@@ -35,9 +66,9 @@ pub enum LinkageError {
         /// Input angle asked for, in degrees.
         input_deg: f64,
         /// Which group failed and why.
-        reason: String,
-        /// The reachable input range(s) in words.
-        reachable: String,
+        reason: AssemblyFailure,
+        /// The input ranges over which the chain does assemble.
+        reachable: AssemblyRanges,
     },
     /// The chain sits exactly on a dead point: velocities are undefined there.
     #[error("singular position at input {input_deg:.4} deg: {reason}")]

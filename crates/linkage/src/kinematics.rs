@@ -1,8 +1,10 @@
 //! The kinematics facade: one mechanism, one chosen solver path, solutions with
 //! named errors (the reachable input range included when a chain cannot assemble).
 
+use crate::assembly::AssemblyRanges;
 use crate::closed_form::{ClosedForm, Failure, finish_solution};
-use crate::error::{LinkageError, Result};
+use crate::dyad::DyadLabel;
+use crate::error::{AssemblyFailure, LinkageError, Result};
 use crate::lanes::{LANES, LaneSolution, Lanes};
 use crate::model::Mechanism;
 use crate::motion::{LinkMotion, Solution};
@@ -379,35 +381,53 @@ impl Kinematics {
         self.closed.as_ref()
     }
 
-    /// "RRR dyad (coupler, rocker) at C".
+    /// "RRR dyad (coupler, rocker) at C"; "group 2" in a chain without a closed form.
     pub fn group_name(&self, g: usize) -> String {
-        let Some(cf) = &self.closed else {
-            return format!("group {g}");
-        };
+        self.dyad(g)
+            .map_or_else(|| format!("group {g}"), |d| d.to_string())
+    }
+
+    /// Group `g` of the closed-form decomposition as its user knows it; `None` in a
+    /// chain solved by Newton alone.
+    pub fn dyad(&self, g: usize) -> Option<DyadLabel> {
+        let cf = self.closed.as_ref()?;
         let group = &cf.groups[g];
         let (i, j) = group.links();
-        format!(
-            "{} dyad ({}, {}) at {}",
-            group.kind(),
-            self.mech.links[i].name,
-            self.mech.links[j].name,
-            self.mech.points[cf.group_points[g]].name
-        )
+        Some(DyadLabel {
+            kind: group.kind(),
+            links: [
+                self.mech.links[i].name.clone(),
+                self.mech.links[j].name.clone(),
+            ],
+            inner_point: self.mech.points[cf.group_points[g]].name.clone(),
+        })
+    }
+
+    /// The input intervals over which the chain assembles on its branch: of a
+    /// closed-form chain by root-finding on the groups' margins; of a chain solved by
+    /// Newton alone, the range its branch was traced over (between folds) when it was
+    /// built.
+    pub fn assembly_ranges(&self) -> AssemblyRanges {
+        match (&self.closed, self.traced_range()) {
+            (Some(cf), _) => cf.assembly_ranges(self.mech.links.len()),
+            (None, Some([lo, hi])) => AssemblyRanges::between(lo, hi),
+            (None, None) => AssemblyRanges::full_turn(),
+        }
     }
 
     fn describe(&self, f: Failure, input_rad: f64) -> LinkageError {
         match f {
-            Failure::CannotAssemble { group, margin } => {
-                let ranges = crate::analysis::assembly_ranges_of(self);
-                LinkageError::CannotAssemble {
-                    input_deg: input_rad.to_degrees(),
-                    reason: format!(
-                        "the {} does not close (margin {margin:.3e})",
-                        self.group_name(group)
-                    ),
-                    reachable: crate::analysis::describe_ranges(&ranges),
-                }
-            }
+            Failure::CannotAssemble { group, margin } => LinkageError::CannotAssemble {
+                input_deg: input_rad.to_degrees(),
+                reason: match self.dyad(group) {
+                    Some(dyad) => AssemblyFailure::DyadOpen {
+                        dyad: Box::new(dyad),
+                        margin,
+                    },
+                    None => AssemblyFailure::Nowhere,
+                },
+                reachable: self.assembly_ranges(),
+            },
             Failure::Singular { group } => LinkageError::Singular {
                 input_deg: input_rad.to_degrees(),
                 reason: format!(

@@ -14,11 +14,23 @@ use crate::error::{LinkageError, Result};
 use crate::kinematics::Kinematics;
 use crate::motion::{Solution, Vec2, cross, perp};
 
+/// Which kind of joint a reaction acts in: a revolute carries a force, a prismatic
+/// joint a force across its guide and a couple.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum JointKind {
+    /// A pin: the reaction is a force.
+    Revolute,
+    /// A slider on its guide: a force normal to the guide and a couple.
+    Prismatic,
+}
+
 /// The reaction in one joint.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct JointReaction {
     /// Column-ready name: revolute `POINT_LINKA_LINKB`, prismatic `SLIDER_on_GUIDE`.
     pub name: String,
+    /// The joint's kind: whether `couple` is part of its reaction.
+    pub kind: JointKind,
     /// Force on the second link from the first (revolute), or on the slider from the
     /// guide (prismatic), N, as (x, y).
     pub force: (f64, f64),
@@ -154,6 +166,7 @@ impl Kinetostatics {
         for (j, rv) in m.revolutes.iter().enumerate() {
             joints.push(JointReaction {
                 name: format!("{}_{}_{}", m.points[rv.point].name, name(rv.a), name(rv.b)),
+                kind: JointKind::Revolute,
                 force: (x[2 * j], x[2 * j + 1]),
                 couple: 0.0,
             });
@@ -162,6 +175,7 @@ impl Kinetostatics {
             let normal = perp(&sl.direction(&sol.links));
             joints.push(JointReaction {
                 name: format!("{}_on_{}", name(sl.slider), name(sl.guide)),
+                kind: JointKind::Prismatic,
                 force: (normal.x * x[2 * nr + 2 * j], normal.y * x[2 * nr + 2 * j]),
                 couple: x[2 * nr + 2 * j + 1],
             });

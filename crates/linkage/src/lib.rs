@@ -15,8 +15,10 @@
 #![forbid(unsafe_code)]
 
 pub mod analysis;
+pub mod assembly;
 pub mod branch_points;
 pub mod closed_form;
+pub mod dyad;
 pub mod dynamics;
 pub mod error;
 pub mod instant_centres;

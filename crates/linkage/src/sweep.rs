@@ -2,8 +2,9 @@
 //! CSV contract of `linkage sweep`: `input_rad`, then `P_x,P_y,P_vx,P_vy,P_ax,P_ay`
 //! per named point, then `L_theta,L_omega,L_alpha` per moving link, SI units.
 
-use crate::analysis::{AssemblyRanges, assembly_ranges_of, describe_ranges};
-use crate::error::{LinkageError, Result};
+use crate::analysis::assembly_ranges_of;
+use crate::assembly::AssemblyRanges;
+use crate::error::{AssemblyFailure, LinkageError, Result};
 use crate::kinematics::Kinematics;
 use crate::lanes::LANES;
 use crate::model::Mechanism;
@@ -38,8 +39,8 @@ pub fn sweep_range(k: &Kinematics) -> Result<([f64; 2], bool)> {
         .containing(start)
         .ok_or_else(|| LinkageError::CannotAssemble {
             input_deg: start.to_degrees(),
-            reason: "no input angle assembles the chain".into(),
-            reachable: describe_ranges(&ranges),
+            reason: AssemblyFailure::Nowhere,
+            reachable: ranges.clone(),
         })?;
     // Velocities grow as 1/√(distance to the dead point) and accelerations as its
     // -3/2 power: a hair of 1e-6 of the range keeps the round-off in the range's ends

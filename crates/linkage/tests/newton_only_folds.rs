@@ -272,7 +272,7 @@ fn a_newton_only_solve_outside_the_range_names_it() {
             let a = lo.rem_euclid(TAU).to_degrees();
             let b = a + (hi - lo).to_degrees();
             let want = format!("reachable input range: {a:.2}..{b:.2} deg");
-            assert_eq!(reachable, want);
+            assert_eq!(reachable.to_string(), want);
         }
         other => panic!("expected the range named, got {other:?}"),
     }

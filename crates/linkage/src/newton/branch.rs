@@ -12,8 +12,8 @@
 use std::f64::consts::{PI, TAU};
 
 use super::{CONTINUATION_STEP, MAX_PREDICTED_CHANGE, Newton};
-use crate::analysis::{AssemblyRanges, describe_ranges};
-use crate::error::{LinkageError, Result};
+use crate::assembly::AssemblyRanges;
+use crate::error::{AssemblyFailure, LinkageError, Result};
 use crate::motion::LinkMotion;
 
 /// Shortest step an ordinary solve halves down to before it gives up, rad.
@@ -58,12 +58,11 @@ impl Newton {
         }
         Err(LinkageError::CannotAssemble {
             input_deg: input_rad.to_degrees(),
-            reason: format!(
-                "the branch folds (a dead point of the input) at {:.4} and {:.4} deg",
-                lo.to_degrees(),
-                hi.to_degrees()
-            ),
-            reachable: describe_ranges(&range_of(lo, hi)),
+            reason: AssemblyFailure::BranchFolds {
+                lo_rad: lo,
+                hi_rad: hi,
+            },
+            reachable: AssemblyRanges::between(lo, hi),
         })
     }
 
@@ -215,14 +214,5 @@ impl Newton {
                 super::TreeKind::Prismatic { .. } => dq.abs() / self.size_m,
             })
             .fold(0.0, f64::max)
-    }
-}
-
-/// The assembly range `[lo, hi]` (unwrapped) in the form the analyses use.
-pub(crate) fn range_of(lo: f64, hi: f64) -> AssemblyRanges {
-    let a = lo.rem_euclid(TAU);
-    AssemblyRanges {
-        full_rotation: false,
-        intervals: vec![[a, a + (hi - lo)]],
     }
 }

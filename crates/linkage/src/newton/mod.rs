@@ -20,7 +20,6 @@ use crate::small_lu::SmallLu;
 mod branch;
 mod mobility;
 
-pub(crate) use branch::range_of;
 use branch::{FOLD_STEP, MIN_STEP};
 
 #[derive(Clone, Debug, PartialEq)]

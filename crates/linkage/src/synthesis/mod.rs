@@ -12,6 +12,8 @@ pub mod burmester;
 pub mod function;
 pub mod motion;
 pub mod path;
+pub mod positions;
+pub mod rows;
 
 use indexmap::IndexMap;
 use serde::Serialize;

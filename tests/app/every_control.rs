@@ -16,7 +16,7 @@ use linkage_lab::LinkageApp;
 use linkage_lab::session::Session;
 use linkage_lab::ui::control_map::ControlKind;
 
-mod common;
+use crate::common;
 
 fn harness() -> Harness<'static, LinkageApp> {
     let mut h = common::app_harness();

@@ -2,9 +2,6 @@
 //! through wgpu (Mesa's lavapipe in CI) with timings hidden so that the pixels
 //! repeat, or without a GPU for tests that read state only; and pointer events.
 
-// Each test binary compiles this module and uses a part of it.
-#![allow(dead_code)]
-
 use eframe::egui;
 use egui_kittest::Harness;
 use linkage_lab::{LinkageApp, StartOptions};

@@ -11,7 +11,7 @@ use linkage::{Kinematics, Mechanism, Vec2};
 use linkage_lab::LinkageApp;
 use linkage_lab::ui::control_map::ControlKind;
 
-mod common;
+use crate::common;
 
 use common::click_label as click;
 

@@ -8,7 +8,7 @@ use linkage::analysis::report;
 use linkage::{Kinematics, Mechanism};
 use linkage_lab::LinkageApp;
 
-mod common;
+use crate::common;
 
 use common::click_label as click;
 

@@ -14,7 +14,7 @@ use linkage_lab::LinkageApp;
 use linkage_lab::session::SceneEdit;
 use linkage_lab::ui::control_map::ControlKind;
 
-mod common;
+use crate::common;
 use common::click;
 
 fn harness() -> Harness<'static, LinkageApp> {

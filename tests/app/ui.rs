@@ -16,7 +16,7 @@ use linkage_lab::session::SceneSource;
 use linkage_lab::session::derived::Shown;
 use linkage_lab::ui::controls::CRANK_LABEL;
 
-mod common;
+use crate::common;
 
 fn harness() -> Harness<'static, LinkageApp> {
     let mut h = common::app_harness();

@@ -78,7 +78,12 @@ fn run_child(action: &str, path_dirs: &[&Path], keep_system_path: bool) -> Strin
         path.extend(std::env::split_paths(&system));
     }
     let out = Command::new(std::env::current_exe().expect("test binary"))
-        .args(["dialog_in_child", "--exact", "--ignored", "--nocapture"])
+        .args([
+            "system_file_dialog::dialog_in_child",
+            "--exact",
+            "--ignored",
+            "--nocapture",
+        ])
         .env("PATH", std::env::join_paths(path).expect("PATH"))
         .env(
             "DBUS_SESSION_BUS_ADDRESS",

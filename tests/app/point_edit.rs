@@ -8,7 +8,7 @@ use eframe::egui;
 use linkage_lab::session::notice::{Notice, PointRefusal};
 use linkage_lab::session::{SceneEdit, Session};
 
-mod common;
+use crate::common;
 use common::pointer;
 
 fn joints(s: &Session) -> Vec<(String, [f64; 2])> {

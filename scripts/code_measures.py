@@ -1,0 +1,226 @@
+#!/usr/bin/env python3
+"""Measures the code's text as issue 23 asks: file-level import cycles (between the
+.rs files of one crate, following `pub use` re-exports to the file that defines the
+name), functions over 80 lines, functions returning `Result<_, String>`, and the app
+state's fields. Reads source, builds nothing. Test code (`#[cfg(test)]` modules and
+`tests/`) is left out of the function counts, as it is of the product.
+
+    python3 scripts/code_measures.py            # the summary
+    python3 scripts/code_measures.py --list     # and every cycle and long function
+"""
+import re
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+CRATES = {"linkage-lab": ROOT / "src"} | {
+    p.name: p / "src" for p in sorted((ROOT / "crates").iterdir()) if (p / "src").is_dir()
+}
+LONG = 80
+
+
+def strip_comments(text):
+    text = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    return "\n".join(re.sub(r"//.*", "", line) for line in text.split("\n"))
+
+
+def strip_tests(text):
+    """The text without `#[cfg(test)] mod x { ... }` blocks (lines kept blank)."""
+    lines = text.split("\n")
+    out, i = [], 0
+    while i < len(lines):
+        if lines[i].strip() == "#[cfg(test)]" and i + 1 < len(lines) and re.match(r"\s*mod \w+ \{", lines[i + 1]):
+            depth, j = 0, i + 1
+            while j < len(lines):
+                depth += lines[j].count("{") - lines[j].count("}")
+                if depth == 0:
+                    break
+                j += 1
+            out += [""] * (j - i + 1)
+            i = j + 1
+            continue
+        out.append(lines[i])
+        i += 1
+    return "\n".join(out)
+
+
+def module_of(src, f):
+    rel = f.relative_to(src).with_suffix("")
+    parts = list(rel.parts)
+    if parts in (["lib"], ["main"]):
+        return ()
+    if parts[-1] == "mod":
+        parts = parts[:-1]
+    return tuple(parts)
+
+
+def use_paths(text):
+    """Every path a `use` names, its braces expanded, and every `crate::`/`super::`
+    path written inline."""
+    paths = []
+
+    def expand(prefix, body):
+        depth, start = 0, 0
+        items = []
+        for k, ch in enumerate(body):
+            if ch == "{":
+                depth += 1
+            elif ch == "}":
+                depth -= 1
+            elif ch == "," and depth == 0:
+                items.append(body[start:k])
+                start = k + 1
+        items.append(body[start:])
+        for item in items:
+            item = item.strip()
+            if not item:
+                continue
+            m = re.match(r"^([\w:]*?)::\{(.*)\}$", item, flags=re.S)
+            if m:
+                expand(prefix + m.group(1).split("::"), m.group(2))
+            elif item.startswith("{"):
+                expand(prefix, item[1:-1])
+            else:
+                name = re.split(r"\s+as\s+", item)[0].strip()
+                paths.append(prefix + [s for s in name.split("::") if s])
+
+    # A `pub use` is a facade: followed to the file that defines the name, no edge.
+    for m in re.finditer(r"(\bpub(?:\([\w:]+\))?\s+)?\buse\s+([^;]+);", text):
+        if not m.group(1):
+            expand([], m.group(2))
+    for m in re.finditer(r"\b((?:crate|super)(?:::\w+)+)", text):
+        paths.append(m.group(1).split("::"))
+    return paths
+
+
+def crate_graph(src):
+    files = sorted(src.rglob("*.rs"))
+    is_bin_root = {src / "main.rs"} if (src / "lib.rs").exists() else set()
+    mods = {module_of(src, f): f for f in files if f not in is_bin_root}
+    texts = {f: strip_comments(f.read_text()) for f in files}
+    reexports = {}
+    for mod, f in mods.items():
+        for m in re.finditer(r"\bpub(?:\([\w:]+\))?\s+use\s+([^;]+);", texts[f]):
+            for p in use_paths("use " + m.group(1) + ";"):  # noqa: the facade itself
+                reexports[(mod, p[-1])] = p
+
+    def absolute(mod, path):
+        path = list(path)
+        base = list(mod)
+        if path[0] == "crate":
+            base, path = [], path[1:]
+        elif path[0] in ("super", "self"):
+            while path and path[0] in ("super", "self"):
+                if path[0] == "super":
+                    base = base[:-1]
+                path = path[1:]
+        elif tuple(base + [path[0]]) in mods:
+            pass
+        else:
+            return None
+        return base + path
+
+    def target(mod, path, seen=0):
+        full = absolute(mod, path)
+        if full is None or seen > 8:
+            return None
+        for n in range(len(full), -1, -1):
+            if tuple(full[:n]) in mods:
+                owner = tuple(full[:n])
+                if n < len(full) and (owner, full[n]) in reexports:
+                    return target(owner, reexports[(owner, full[n])], seen + 1) or mods[owner]
+                return mods[owner]
+        return None
+
+    edges = {f: set() for f in files}
+    for f in files:
+        mod = () if f in is_bin_root else module_of(src, f)
+        for p in use_paths(texts[f]):
+            t = target(mod, p) if f not in is_bin_root else None
+            if t and t != f:
+                edges[f].add(t)
+    return edges
+
+
+def cycles(edges):
+    index, low, stack, on, out, counter = {}, {}, [], set(), [], [0]
+    sys.setrecursionlimit(10000)
+
+    def visit(v):
+        index[v] = low[v] = counter[0]
+        counter[0] += 1
+        stack.append(v)
+        on.add(v)
+        for w in edges[v]:
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            comp = []
+            while True:
+                w = stack.pop()
+                on.discard(w)
+                comp.append(w)
+                if w == v:
+                    break
+            if len(comp) > 1:
+                out.append(sorted(comp))
+
+    for v in edges:
+        if v not in index:
+            visit(v)
+    return out
+
+
+def functions(text):
+    lines = text.split("\n")
+    for i, line in enumerate(lines):
+        m = re.match(r"\s*(?:pub(?:\([\w:]+\))?\s+)?(?:const\s+)?(?:async\s+)?fn\s+(\w+)", line)
+        if not m:
+            continue
+        depth, opened = 0, False
+        for j in range(i, len(lines)):
+            if not opened and ";" in lines[j] and "{" not in lines[j]:
+                break
+            depth += lines[j].count("{") - lines[j].count("}")
+            opened = opened or "{" in lines[j]
+            if opened and depth <= 0:
+                yield m.group(1), i + 1, j - i + 1
+                break
+
+
+def main():
+    listing = "--list" in sys.argv
+    all_cycles, long_fns, string_results = [], [], []
+    for name, src in CRATES.items():
+        for comp in cycles(crate_graph(src)):
+            all_cycles.append([str(f.relative_to(ROOT)) for f in comp])
+        for f in sorted(src.rglob("*.rs")):
+            text = strip_tests(strip_comments(f.read_text()))
+            rel = f.relative_to(ROOT)
+            for fn, line, n in functions(text):
+                if n > LONG:
+                    long_fns.append((n, f"{rel}:{line} {fn}"))
+            for m in re.finditer(r"Result<[^;{]*?,\s*String\s*>", text):
+                string_results.append(f"{rel}:{text[:m.start()].count(chr(10)) + 1}")
+    app_state = re.search(r"pub struct AppState \{(.*?)\n\}", (ROOT / "src/app.rs").read_text(), re.S)
+    fields = len(re.findall(r"^\s*pub \w+:", app_state.group(1), re.M)) if app_state else 0
+    tests = [p for p in (ROOT / "tests").iterdir() if p.suffix == ".rs" or (p / "main.rs").exists()]
+    print(f"import cycles: {len(all_cycles)} over {sum(map(len, all_cycles))} files")
+    print(f"functions over {LONG} lines: {len(long_fns)}")
+    print(f"Result<_, String>: {len(string_results)}")
+    print(f"AppState public fields: {fields}")
+    print(f"app test binaries: {len(tests)}")
+    if listing:
+        for c in all_cycles:
+            print("cycle:", " <-> ".join(c))
+        for n, where in sorted(long_fns, reverse=True):
+            print(f"long: {n:4} {where}")
+        for where in string_results:
+            print("string error:", where)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,18 @@
+//! The app's tests, in one test binary: each linked eframe, wgpu and kittest on its
+//! own when they were twelve (about 400 MB and a link each in a debug build). One
+//! module per subject; `common` holds the harnesses and pointer events they share.
+
+mod common;
+
+mod drawing;
+mod every_control;
+mod file_actions;
+mod gl_shaders;
+mod newton_only_scene;
+mod path_synthesis_ui;
+mod point_edit;
+mod polygon_snapshots;
+mod synthesis;
+mod system_file_dialog;
+mod ui;
+mod undo;
