@@ -98,7 +98,11 @@ fn items(r: &Report) -> Vec<(String, String)> {
         ),
         None => ("Grashof: not a four-bar".into(), String::new()),
     });
-    let note = r.time_ratio_note.clone().unwrap_or_default();
+    let note = r
+        .time_ratio_note
+        .as_ref()
+        .map(ToString::to_string)
+        .unwrap_or_default();
     out.push(match r.time_ratio {
         Some(k) => (format!("K = {k:.4}"), note),
         None => ("K: none".into(), note),

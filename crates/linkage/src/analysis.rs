@@ -6,7 +6,7 @@ use serde::Serialize;
 
 use crate::closed_form::Group;
 use crate::error::{AssemblyFailure, LinkageError, Result};
-use crate::kinematics::Kinematics;
+use crate::kinematics::{Kinematics, PathKind};
 use crate::motion::{Solution, Vec2, cross, perp};
 use crate::roots_util::{refine, sign_changes};
 
@@ -279,7 +279,7 @@ pub struct Report {
     /// Mechanism name.
     pub name: String,
     /// Solver path used.
-    pub solver_path: &'static str,
+    pub solver_path: PathKind,
     /// Assembly ranges, rad.
     pub assembly_range_rad: Vec<[f64; 2]>,
     /// Whether the input turns fully.
@@ -292,8 +292,8 @@ pub struct Report {
     pub swings_rad: indexmap::IndexMap<String, f64>,
     /// Time ratio K ≥ 1 of the main output (null when undefined).
     pub time_ratio: Option<f64>,
-    /// Which output K refers to and which stroke is slower.
-    pub time_ratio_note: Option<String>,
+    /// Which output K refers to and which stroke is slower, or why there is no K.
+    pub time_ratio_note: Option<TimeRatioNote>,
     /// Grashof class (null when the chain has no driving four-bar loop).
     pub grashof: Option<Grashof>,
     /// Transmission angle summary (null when no group has one).
@@ -513,9 +513,75 @@ fn dead_point_value(
     Some(v1 - 2.0 * dist * r1 * inward)
 }
 
-/// Time ratio of an output with exactly two limits on a fully turning input:
-/// slower stroke angle / faster stroke angle, and a note saying which is slower.
-pub fn time_ratio(limits: &[LimitPosition], speed_rad_s: f64) -> Option<(f64, String)> {
+/// Which stroke of an output: from its minimum to its maximum, or back.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stroke {
+    /// Minimum to maximum.
+    Rising,
+    /// Maximum to minimum.
+    Falling,
+}
+
+/// Which output the time ratio K refers to and which stroke is slower, or why the
+/// report has no K; worded by `Display` (and so serialized).
+#[derive(Clone, Debug, PartialEq)]
+pub enum TimeRatioNote {
+    /// The two strokes of `output`: crank angles spent rising and falling, rad.
+    Strokes {
+        /// The output's name.
+        output: String,
+        /// The slower stroke.
+        slower: Stroke,
+        /// Crank angle from the minimum to the maximum, rad.
+        rising_rad: f64,
+        /// Crank angle from the maximum back to the minimum, rad.
+        falling_rad: f64,
+    },
+    /// The main output has not exactly two limit positions.
+    NotTwoLimits,
+    /// The input does not turn fully.
+    InputDoesNotTurn,
+}
+
+impl std::fmt::Display for TimeRatioNote {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Strokes {
+                output,
+                slower,
+                rising_rad,
+                falling_rad,
+            } => write!(
+                f,
+                "{output}: {} stroke is slower; crank turns {:.3} deg rising, {:.3} deg falling; \
+                 angle between limit positions theta = {:.3} deg",
+                match slower {
+                    Stroke::Rising => "rising (min to max)",
+                    Stroke::Falling => "falling (max to min)",
+                },
+                rising_rad.to_degrees(),
+                falling_rad.to_degrees(),
+                (rising_rad - std::f64::consts::PI).abs().to_degrees()
+            ),
+            Self::NotTwoLimits => {
+                f.write_str("the main output does not have exactly two limit positions")
+            }
+            Self::InputDoesNotTurn => {
+                f.write_str("the input does not turn fully, so no time ratio")
+            }
+        }
+    }
+}
+
+impl Serialize for TimeRatioNote {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        s.collect_str(self)
+    }
+}
+
+/// Time ratio K of an output with exactly two limits on a fully turning input (slower
+/// stroke angle / faster stroke angle), with its strokes.
+pub fn time_ratio(limits: &[LimitPosition], speed_rad_s: f64) -> Option<(f64, TimeRatioNote)> {
     let [a, b] = limits else { return None };
     let (max, min) = if a.kind == Extreme::Max {
         (a, b)
@@ -533,20 +599,18 @@ pub fn time_ratio(limits: &[LimitPosition], speed_rad_s: f64) -> Option<(f64, St
     let falling = TAU - rising;
     let k = rising.max(falling) / rising.min(falling);
     let slower = if rising > falling {
-        "rising (min to max)"
+        Stroke::Rising
     } else {
-        "falling (max to min)"
+        Stroke::Falling
     };
     Some((
         k,
-        format!(
-            "{}: {slower} stroke is slower; crank turns {:.3} deg rising, {:.3} deg falling; \
-             angle between limit positions theta = {:.3} deg",
-            max.output,
-            rising.to_degrees(),
-            falling.to_degrees(),
-            (rising - std::f64::consts::PI).abs().to_degrees()
-        ),
+        TimeRatioNote::Strokes {
+            output: max.output.clone(),
+            slower,
+            rising_rad: rising,
+            falling_rad: falling,
+        },
     ))
 }
 
@@ -793,15 +857,9 @@ pub fn report(k: &mut Kinematics) -> Result<Report> {
     let (time_ratio, time_ratio_note) = match main {
         Some((_, limits)) if ranges.full_rotation => match time_ratio(limits, speed) {
             Some((kk, note)) => (Some(kk), Some(note)),
-            None => (
-                None,
-                Some("the main output does not have exactly two limit positions".into()),
-            ),
+            None => (None, Some(TimeRatioNote::NotTwoLimits)),
         },
-        _ => (
-            None,
-            Some("the input does not turn fully, so no time ratio".into()),
-        ),
+        _ => (None, Some(TimeRatioNote::InputDoesNotTurn)),
     };
     let mut toggles = Vec::new();
     let mut sol = k.empty_solution();
@@ -844,7 +902,7 @@ pub fn report(k: &mut Kinematics) -> Result<Report> {
     let m = k.mechanism();
     Ok(Report {
         name: m.name.clone(),
-        solver_path: k.path().label(),
+        solver_path: k.path(),
         assembly_range_rad: ranges.intervals.clone(),
         full_rotation: ranges.full_rotation,
         limit_positions: all_limits,

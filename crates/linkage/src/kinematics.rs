@@ -11,10 +11,11 @@ use crate::motion::{LinkMotion, Solution};
 use crate::newton::Newton;
 use crate::scene::SolverPath;
 
-/// The solver path in use.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The solver path in use; serialized as its label.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub enum PathKind {
     /// Closed-form Assur dyads.
+    #[serde(rename = "closed form")]
     ClosedForm,
     /// Newton–Raphson on the loop-closure constraints.
     Newton,

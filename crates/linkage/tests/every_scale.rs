@@ -104,7 +104,9 @@ fn check_report(what: &str, a: &Report, b: &Report, k: &Similarity, size: f64) {
         (Some(x), Some(y)) => close(&format!("{what}: K"), x, y, 1.0, x),
         (x, y) => assert_eq!(x, y, "{what}: K"),
     }
-    assert_eq!(a.time_ratio_note, b.time_ratio_note, "{what}: K's note");
+    // The note's angles as shown (to 1e-3 deg): equal at every scale.
+    let shown = |r: &Report| r.time_ratio_note.as_ref().map(ToString::to_string);
+    assert_eq!(shown(a), shown(b), "{what}: K's note");
     match (&a.grashof, &b.grashof) {
         (Some(x), Some(y)) => {
             assert_eq!(x.class, y.class, "{what}: Grashof class");

@@ -214,7 +214,7 @@ fn the_report_of_a_newton_only_chain_has_the_reference_swings() {
         v.clone().fold(f64::MIN, f64::max) - v.fold(f64::MAX, f64::min)
     };
     let rep = report(&mut kinematics(&t)).expect("report");
-    assert_eq!(rep.solver_path, "Newton");
+    assert_eq!(rep.solver_path, linkage::PathKind::Newton);
     assert!(!rep.full_rotation);
     for (name, i) in [("l2", 2), ("l3", 3)] {
         let got = rep.swings_rad[name];

@@ -5,7 +5,7 @@
 mod common;
 
 use common::{kinematics, mechanism, scene_text};
-use linkage::analysis::report;
+use linkage::analysis::{Stroke, TimeRatioNote, report};
 use linkage::scene::{SceneFile, SolverPath};
 use linkage::synthesis::{DieCutterSpec, die_cutter};
 
@@ -28,9 +28,12 @@ fn synthesized_die_cutter_meets_stroke_k_and_toggle_at_top() {
     assert!((kk - 1.3).abs() <= 0.005, "K {kk}");
     // The slower stroke is the upward working stroke.
     assert!(
+        matches!(
+            &r.time_ratio_note,
+            Some(TimeRatioNote::Strokes { output, slower: Stroke::Rising, .. }) if output == "die"
+        ),
+        "{:?}",
         r.time_ratio_note
-            .as_deref()
-            .is_some_and(|n| n.contains("rising (min to max) stroke is slower"))
     );
     // Toggle at the top: the die's max limit, where C lies on DE (rocker and CE collinear).
     let top = r
