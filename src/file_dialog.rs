@@ -10,7 +10,7 @@ use web_time::Instant;
 
 use raw_window_handle::{HasDisplayHandle, HasWindowHandle};
 
-use crate::ui::files::FileAction;
+use crate::file_action::FileAction;
 
 /// One question to the dialog.
 #[derive(Clone, Debug, PartialEq, Eq)]

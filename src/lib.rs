@@ -6,6 +6,7 @@
 mod app;
 pub mod builder;
 pub mod catalog;
+pub mod file_action;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod file_dialog;
 pub mod fonts;

@@ -11,7 +11,7 @@ use linkage_diagram::label::Label;
 use linkage_diagram::layout::LaidPolygon;
 
 use crate::app::AppState;
-use crate::ui::polygons::{INK, Paper, pos};
+use crate::ui::polygon_paint::{INK, Paper, pos};
 use crate::ui::typeset::{galley, job};
 
 /// Which equation is being constructed, and how far.
@@ -104,7 +104,7 @@ fn draw_step(ui: &mut egui::Ui, step: &linkage_diagram::construction::Step, fit:
     for line in &step.lines {
         direction_line(painter, &laid, line, rect);
     }
-    crate::ui::polygons::draw(painter, &step.figure, &laid, None, INK);
+    crate::ui::polygon_paint::draw(painter, &step.figure, &laid, None, INK);
 }
 
 /// A direction line across the pane, dashed, named near where it enters the figure.

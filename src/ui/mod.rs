@@ -14,6 +14,7 @@ pub mod files;
 pub mod layout;
 pub mod plots;
 pub mod point_drag;
+pub mod polygon_paint;
 pub mod polygons;
 pub mod report;
 pub mod scene_picker;

@@ -11,7 +11,7 @@ use linkage::polygon::polygons;
 use linkage_diagram::svg::{Parts, Position, sheet};
 
 use crate::SceneArgs;
-use crate::commands::load;
+use crate::io::load;
 
 /// A part of the sheet.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]

@@ -6,7 +6,7 @@ use serde_json::{Value, json};
 
 use crate::Format;
 use crate::SceneArgs;
-use crate::commands::{describe, json_text, load, records_to_csv};
+use crate::io::{describe, json_text, load, records_to_csv};
 
 /// Runs the cycle and formats it; a singular amplification is an empty CSV field
 /// (JSON null), never infinity.

@@ -8,6 +8,7 @@
 mod commands;
 mod counts;
 mod diagram;
+mod io;
 mod kinetostatics;
 mod plot;
 mod simulate;

@@ -6,7 +6,7 @@ use linkage::dynamics::{Method, Settings, Simulation, simulate};
 use linkage::{Kinematics, Mechanism};
 use serde_json::{Value, json};
 
-use crate::commands::{check_finite, json_text, load, to_csv};
+use crate::io::{check_finite, json_text, load, to_csv};
 use crate::{Format, SceneArgs};
 
 /// Integration method.

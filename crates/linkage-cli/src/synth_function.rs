@@ -8,7 +8,7 @@ use linkage::synthesis::function::{PrecisionPoint, freudenstein, structural_erro
 use linkage::synthesis::rows::read_rows;
 use serde_json::json;
 
-use crate::commands::json_text;
+use crate::io::json_text;
 
 /// Designs the generator through the points in `csv` with ground `ground_m`; writes
 /// it as a scene to `scene_out` if given; returns the design as JSON text.

@@ -13,7 +13,7 @@ use linkage::synthesis::positions::{
 use linkage::synthesis::rows::read_rows;
 use serde_json::json;
 
-use crate::commands::json_text;
+use crate::io::json_text;
 
 /// The choice that fixes the four-bar, per number of positions.
 pub struct Choice {

@@ -8,7 +8,7 @@ use linkage::synthesis::path::{
 use serde_json::json;
 
 use crate::PathSearchArgs;
-use crate::commands::json_text;
+use crate::io::json_text;
 
 /// Runs the search `args` describes; writes the best design's scene to `args.out`
 /// if given; returns the result as JSON text.

@@ -6,7 +6,7 @@ use linkage::dynamics::tradeoff::{default_plan, measure, plan_settings, referenc
 use linkage::dynamics::{Method, Settings};
 
 use crate::SceneArgs;
-use crate::commands::{load, records_to_csv};
+use crate::io::{load, records_to_csv};
 use crate::plot::{Series, work_precision_png};
 
 /// Options of `linkage tradeoff`.

@@ -215,7 +215,9 @@ pub fn layout_polygon_fitting(
         })
         .collect();
     let vertices: Vec<Pt> = fig.vertices.iter().map(|v| px(v.at)).collect();
-    let mut obstacles = Obstacles::new(pane.expand(-2.0), &arrows, &vertices);
+    let shafts: Vec<[Pt; 2]> = arrows.iter().map(|a| [a.from, a.to]).collect();
+    let heads: Vec<[Pt; 3]> = arrows.iter().filter_map(|a| a.head).collect();
+    let mut obstacles = Obstacles::new(pane.expand(-2.0), &shafts, &heads, &vertices);
     let mut labels = vertex_labels(fig, &vertices, &mut obstacles, measure);
     labels.extend(arrow_labels(fig, &arrows, &mut obstacles, measure));
     let scale_bar =

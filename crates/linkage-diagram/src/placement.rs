@@ -6,7 +6,6 @@
 //! the figures have tens of labels, so every candidate is checked directly.
 
 use crate::geometry::{Pt, Rect, along, distance};
-use crate::layout::LaidArrow;
 
 /// What a label must keep clear of.
 #[derive(Clone, Debug)]
@@ -31,11 +30,12 @@ pub struct Placed {
 pub const DOT_PX: f64 = 2.5;
 
 impl Obstacles {
-    /// Labels must stay inside `bounds`, off the arrows' heads and the vertices.
-    pub fn new(bounds: Rect, arrows: &[LaidArrow], vertices: &[Pt]) -> Self {
-        let heads = arrows
+    /// Labels must stay inside `bounds`, off the arrows' heads (tip, left, right) and
+    /// the vertices; the arrows' shafts `[tail, head]` are crossed as little as may be.
+    pub fn new(bounds: Rect, shafts: &[[Pt; 2]], heads: &[[Pt; 3]], vertices: &[Pt]) -> Self {
+        let heads = heads
             .iter()
-            .filter_map(|a| a.head)
+            .copied()
             .filter_map(Rect::around)
             .map(|r| r.expand(1.0));
         let dots = vertices
@@ -44,7 +44,7 @@ impl Obstacles {
         Self {
             bounds,
             hard: heads.chain(dots).collect(),
-            segments: arrows.iter().map(|a| [a.from, a.to]).collect(),
+            segments: shafts.to_vec(),
         }
     }
 

@@ -31,6 +31,29 @@ pub fn describe_ranges(r: &AssemblyRanges) -> String {
     r.to_string()
 }
 
+/// The input interval a sweep covers: a full turn from the start angle, or the
+/// assembly interval that holds the start angle (ends pulled in by a hair, since
+/// the ends are dead points).
+pub fn sweep_range(k: &Kinematics) -> Result<([f64; 2], bool)> {
+    let start = k.mechanism().driver.start_rad;
+    let ranges = assembly_ranges_of(k);
+    if ranges.full_rotation {
+        return Ok(([start, start + std::f64::consts::TAU], true));
+    }
+    let [a, b] = ranges
+        .containing(start)
+        .ok_or_else(|| LinkageError::CannotAssemble {
+            input_deg: start.to_degrees(),
+            reason: AssemblyFailure::Nowhere,
+            reachable: ranges.clone(),
+        })?;
+    // Velocities grow as 1/√(distance to the dead point) and accelerations as its
+    // -3/2 power: a hair of 1e-6 of the range keeps the round-off in the range's ends
+    // (an ulp of the input) below 1e-9 of the end rows' values.
+    let hair = 1e-6 * (b - a);
+    Ok(([a + hair, b - hair], false))
+}
+
 /// An output whose extremes are sought: a link pinned to ground, or a slider.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Output {

@@ -17,9 +17,9 @@ use nalgebra::{SimdBool, UnitComplex, Vector2};
 use crate::assembly::{AssemblyRanges, GRID};
 use crate::dyad::DyadKind;
 use crate::error::{LinkageError, Result};
-use crate::lanes::{Real, splat, splat_vec};
 use crate::model::{Mechanism, Prismatic};
 use crate::motion::{LinkMotion, PointMotion, SlideMotion, Vec2, cross, perp};
+use crate::real::{Real, splat, splat_vec};
 use crate::roots_util::{refine, sign_changes};
 use crate::scene::Branch;
 

@@ -30,6 +30,7 @@ pub mod motion;
 pub mod newton;
 pub mod overflow;
 pub mod polygon;
+pub mod real;
 mod roots_util;
 pub mod scene;
 pub mod scene_scale;

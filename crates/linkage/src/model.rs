@@ -3,8 +3,8 @@
 use nalgebra::{UnitComplex, Vector2};
 
 use crate::error::{LinkageError, Result};
-use crate::lanes::{Real, splat, splat_vec};
 use crate::motion::{LinkMotion, SlideMotion, Vec2, perp};
+use crate::real::{Real, splat, splat_vec};
 use crate::scene::{Branch, ForcesSpec, FreeLength, Models, SceneFile, SolverSpec, Speed};
 
 /// A rigid link.

@@ -6,7 +6,7 @@
 
 use nalgebra::{UnitComplex, Vector2};
 
-use crate::lanes::{Real, splat_vec};
+use crate::real::{Real, splat_vec};
 
 /// A plane vector in metres (or m/s, m/s²), world frame.
 pub type Vec2 = Vector2<f64>;

@@ -2,9 +2,8 @@
 //! CSV contract of `linkage sweep`: `input_rad`, then `P_x,P_y,P_vx,P_vy,P_ax,P_ay`
 //! per named point, then `L_theta,L_omega,L_alpha` per moving link, SI units.
 
-use crate::analysis::assembly_ranges_of;
-use crate::assembly::AssemblyRanges;
-use crate::error::{AssemblyFailure, LinkageError, Result};
+pub use crate::analysis::sweep_range;
+use crate::error::{LinkageError, Result};
 use crate::kinematics::Kinematics;
 use crate::lanes::LANES;
 use crate::model::Mechanism;
@@ -24,29 +23,6 @@ pub struct Sweep {
     pub near_singular: Vec<f64>,
     /// The range swept, rad.
     pub range: [f64; 2],
-}
-
-/// The input interval a sweep covers: a full turn from the start angle, or the
-/// assembly interval that holds the start angle (ends pulled in by a hair, since
-/// the ends are dead points).
-pub fn sweep_range(k: &Kinematics) -> Result<([f64; 2], bool)> {
-    let start = k.mechanism().driver.start_rad;
-    let ranges: AssemblyRanges = assembly_ranges_of(k);
-    if ranges.full_rotation {
-        return Ok(([start, start + std::f64::consts::TAU], true));
-    }
-    let [a, b] = ranges
-        .containing(start)
-        .ok_or_else(|| LinkageError::CannotAssemble {
-            input_deg: start.to_degrees(),
-            reason: AssemblyFailure::Nowhere,
-            reachable: ranges.clone(),
-        })?;
-    // Velocities grow as 1/√(distance to the dead point) and accelerations as its
-    // -3/2 power: a hair of 1e-6 of the range keeps the round-off in the range's ends
-    // (an ulp of the input) below 1e-9 of the end rows' values.
-    let hair = 1e-6 * (b - a);
-    Ok(([a + hair, b - hair], false))
 }
 
 /// Most positions [`sweep`] holds in memory (about 1 kB each for a six-bar).

@@ -11,17 +11,10 @@
 
 use std::f64::consts::{PI, TAU};
 
-use super::{CONTINUATION_STEP, MAX_PREDICTED_CHANGE, Newton};
+use super::{CONTINUATION_STEP, FOLD_STEP, MAX_PREDICTED_CHANGE, Newton};
 use crate::assembly::AssemblyRanges;
 use crate::error::{AssemblyFailure, LinkageError, Result};
 use crate::motion::LinkMotion;
-
-/// Shortest step an ordinary solve halves down to before it gives up, rad.
-pub(super) const MIN_STEP: f64 = 1e-7;
-
-/// Shortest step when tracing a branch to its folds, rad: the fold is located to
-/// about twice this (the tests ask for 1e-6 rad).
-pub(super) const FOLD_STEP: f64 = 1e-10;
 
 /// Accepted steps in a row after which a halved step is doubled again (up to
 /// [`CONTINUATION_STEP`]), so one hard spot does not slow the rest of the path.

@@ -20,8 +20,6 @@ use crate::small_lu::SmallLu;
 mod branch;
 mod mobility;
 
-use branch::{FOLD_STEP, MIN_STEP};
-
 #[derive(Clone, Debug, PartialEq)]
 enum TreeKind {
     Revolute {
@@ -185,6 +183,13 @@ const MAX_PREDICTED_CHANGE: f64 = 0.2;
 
 /// Largest step of the input between two Newton solves on one branch, rad.
 const CONTINUATION_STEP: f64 = 2.0 * std::f64::consts::PI / 180.0;
+
+/// Shortest step an ordinary solve halves down to before it gives up, rad.
+const MIN_STEP: f64 = 1e-7;
+
+/// Shortest step when tracing a branch to its folds, rad: the fold is located to
+/// about twice this (the tests ask for 1e-6 rad).
+const FOLD_STEP: f64 = 1e-10;
 
 impl Newton {
     /// Builds the tree and cut joints and the starting pose. `start` gives every
