@@ -28,7 +28,7 @@ for build in webgpu webgl2; do
 done
 # wasm-opt (binaryen 132 from npm; Debian's 108 breaks this wasm) only when asked for
 # (WASM_OPT=1): measured here, -Os takes 3.5 min and makes the wasm 5 % smaller raw but
-# no smaller gzipped, and the first frame no sooner (README, "The viewer").
+# no smaller gzipped, and the first frame no sooner (docs/journal.md, "The viewer").
 if [ "${WASM_OPT:-0}" = 1 ]; then
     (cd scripts/web_tools && npm ci --no-audit --no-fund --silent)
     for wasm in dist/*/linkage-lab_bg.wasm; do

@@ -4,20 +4,12 @@
 //! (wasm32, started by [`start_web`]).
 
 mod app;
-pub mod builder;
-pub mod catalog;
 pub mod file_action;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod file_dialog;
 pub mod fonts;
-pub mod path_inputs;
-pub mod path_job;
 pub mod render;
-pub mod session;
 pub mod start;
-pub mod synthesis;
-pub mod synthesis_function;
-pub mod synthesis_motion;
 pub mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;
@@ -30,6 +22,11 @@ pub fn controls_json() -> String {
 }
 
 pub use app::{AppState, LinkageApp};
+// The model lives in its own crate (no GUI); the app and its tests reach it here too.
+pub use linkage_model::{
+    builder, catalog, path_inputs, path_job, session, synthesis, synthesis_function,
+    synthesis_motion,
+};
 
 pub use start::StartOptions;
 

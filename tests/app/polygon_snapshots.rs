@@ -1,6 +1,6 @@
 //! The polygon pane of each seed scene at three crank angles, drawn through wgpu
 //! (Mesa's lavapipe in CI) and compared with the images committed under
-//! `docs/polygons/` (shown in the README; `UPDATE_SNAPSHOTS=1` rewrites them). The
+//! `docs/polygons/` (shown in docs/journal.md; `UPDATE_SNAPSHOTS=1` rewrites them). The
 //! die cutter as printed is shown at the paper's "position 1" (crank at 50°).
 //! Each pane is also checked as a user would read it: both polygons drawn, no label
 //! without a free place.

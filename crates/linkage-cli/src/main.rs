@@ -1,6 +1,6 @@
 //! `linkage`: the headless command line over scene files.
 //!
-//! A contract scripts depend on: see README.md, "CLI". Errors go to stderr with a
+//! A contract scripts depend on: see docs/cli.md. Errors go to stderr with a
 //! non-zero exit status and a message naming the cause.
 
 #![forbid(unsafe_code)]

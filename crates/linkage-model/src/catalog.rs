@@ -15,7 +15,7 @@ macro_rules! embedded {
     ($folder:literal, $key:literal) => {
         BuiltinScene {
             key: $key,
-            text: include_str!(concat!("../assets/", $folder, "/", $key, ".ron")),
+            text: include_str!(concat!("../../../assets/", $folder, "/", $key, ".ron")),
         }
     };
 }
@@ -60,7 +60,9 @@ mod tests {
     use super::*;
 
     fn keys_on_disk(folder: &str) -> Vec<String> {
-        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(folder);
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../..")
+            .join(folder);
         let mut keys: Vec<String> = std::fs::read_dir(&dir)
             .expect("asset folder")
             .filter_map(|e| {
@@ -89,7 +91,7 @@ mod tests {
 
     #[test]
     fn the_catalog_lists_exactly_the_scene_files() {
-        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("assets/scenes");
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../assets/scenes");
         let mut on_disk: Vec<String> = std::fs::read_dir(&dir)
             .expect("assets/scenes")
             .filter_map(|e| {

@@ -9,7 +9,7 @@
 //! A drawn four-bar's point dragged with the drawing tools is measured too: each move
 //! remakes the scene from the drawing and opens it.
 //!
-//! `cargo bench --bench edit`; the target is 4 ms per edit (a 60 Hz frame with room
+//! `cargo bench -p linkage-model --bench edit`; the target is 4 ms per edit (a 60 Hz frame with room
 //! for drawing).
 
 use std::hint::black_box;
@@ -17,11 +17,11 @@ use std::path::PathBuf;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use linkage::analysis::report;
-use linkage_lab::session::{SceneEdit, SceneSource, Session};
+use linkage_model::session::{SceneEdit, SceneSource, Session};
 
 /// Every scene file in `assets/scenes`, read from the directory.
 fn scene_files() -> Vec<PathBuf> {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes");
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../assets/scenes");
     let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
         .expect("the scene directory")
         .map(|e| e.expect("an entry").path())
@@ -184,17 +184,16 @@ fn edits(c: &mut Criterion) {
 }
 
 /// A drawn four-bar with its coupler pin dragged (the drawing tools' Move): the
-/// drawing's edit, and the scene it makes opened as the session, every frame.
+/// drawing's edit, and the scene it makes opened as the session, every frame (what
+/// the app's `ui::drawing::edit` does).
 fn drawing_drag(c: &mut Criterion) {
     use linkage::Vec2;
     use linkage::sketch::Sketch;
-    use linkage_lab::builder::edit::{End, SketchEdit};
-    use linkage_lab::ui::drawing;
+    use linkage_model::builder::Builder;
+    use linkage_model::builder::edit::{End, SketchEdit};
 
-    let first = scene_files().into_iter().next().expect("a scene");
-    let mut st = linkage_lab::AppState::new(open(&first));
-    drawing::resume(&mut st, Sketch::new("drawn"));
     let at = |x: f64, y: f64| Vec2::new(x, y);
+    let mut builder = Builder::new(Sketch::new("drawn"));
     for e in [
         SketchEdit::AddPivot(at(0.0, 0.0)),
         SketchEdit::AddPivot(at(0.3, 0.0)),
@@ -203,25 +202,27 @@ fn drawing_drag(c: &mut Criterion) {
         SketchEdit::AddLink(End::Point(3), End::Point(1)),
         SketchEdit::SetDriver(0),
     ] {
-        drawing::edit(&mut st, e);
+        builder.apply(e);
     }
-    let complete =
-        |st: &linkage_lab::AppState| st.builder.as_ref().is_some_and(|b| b.problem.is_none());
-    assert!(complete(&st), "the drawing is a four-bar");
+    let open = |builder: &mut Builder| {
+        let scene = builder.refresh().expect("the drawing is a four-bar");
+        Session::open_scene(SceneSource::File("my_mechanism.ron".into()), scene)
+            .expect("the four-bar solves")
+    };
+    open(&mut builder);
     // One gesture: the drag's moves are one undo step, so the history does not grow.
-    if let Some(b) = st.builder.as_mut() {
-        b.dragged = Some(3);
-    }
+    builder.dragged = Some(3);
     let mut flip = false;
     c.bench_function("edit/drawing/point dragged", |b| {
         b.iter(|| {
             flip = !flip;
             let to = if flip { at(0.21, 0.2) } else { at(0.2, 0.2) };
-            drawing::edit(&mut st, SketchEdit::MovePoint { point: 3, to });
-            black_box(st.session.polygons());
+            builder.apply(SketchEdit::MovePoint { point: 3, to });
+            let session = open(&mut builder);
+            black_box(session.polygons());
         });
     });
-    assert!(complete(&st));
+    assert!(builder.problem.is_none());
 }
 
 criterion_group!(benches, edits, drawing_drag);
