@@ -7,6 +7,7 @@
 
 pub mod builder;
 pub mod catalog;
+pub mod job;
 pub mod path_inputs;
 pub mod path_job;
 pub mod session;
