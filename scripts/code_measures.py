@@ -6,7 +6,8 @@ state's fields. Reads source, builds nothing. Test code (`#[cfg(test)]` modules 
 `tests/`) is left out of the function counts, as it is of the product.
 
     python3 scripts/code_measures.py            # the summary
-    python3 scripts/code_measures.py --list     # and every cycle and long function
+    python3 scripts/code_measures.py --list     # and every cycle (with its edges),
+                                                # long function and Result<_, String>
 """
 import re
 import sys
@@ -97,7 +98,8 @@ def crate_graph(src):
     files = sorted(src.rglob("*.rs"))
     is_bin_root = {src / "main.rs"} if (src / "lib.rs").exists() else set()
     mods = {module_of(src, f): f for f in files if f not in is_bin_root}
-    texts = {f: strip_comments(f.read_text()) for f in files}
+    # Test modules are left out: a test may reach anywhere in its crate.
+    texts = {f: strip_tests(strip_comments(f.read_text())) for f in files}
     reexports = {}
     for mod, f in mods.items():
         for m in re.finditer(r"\bpub(?:\([\w:]+\))?\s+use\s+([^;]+);", texts[f]):
@@ -134,9 +136,22 @@ def crate_graph(src):
 
     edges = {f: set() for f in files}
     for f in files:
-        mod = () if f in is_bin_root else module_of(src, f)
-        for p in use_paths(texts[f]):
-            t = target(mod, p) if f not in is_bin_root else None
+        if f in is_bin_root:
+            continue
+        mod = module_of(src, f)
+        paths = use_paths(texts[f])
+        # A module brought in by `use` (`use crate::ui;`) is then named inline
+        # (`ui::plots::panel(..)`): those paths count too.
+        aliases = {}
+        for p in paths:
+            full = absolute(mod, p)
+            if full and tuple(full) in mods and tuple(full) != mod[: len(full)]:
+                aliases[p[-1]] = full
+        for alias, full in aliases.items():
+            for m in re.finditer(rf"(?<![\w:]){alias}((?:::\w+)+)", texts[f]):
+                paths.append(["crate"] + full + m.group(1).split("::")[1:])
+        for p in paths:
+            t = target(mod, p)
             if t and t != f:
                 edges[f].add(t)
     return edges
@@ -193,10 +208,18 @@ def functions(text):
 
 def main():
     listing = "--list" in sys.argv
-    all_cycles, long_fns, string_results = [], [], []
+    all_cycles, long_fns, string_results, cycle_edges = [], [], [], []
     for name, src in CRATES.items():
-        for comp in cycles(crate_graph(src)):
+        graph = crate_graph(src)
+        for comp in cycles(graph):
             all_cycles.append([str(f.relative_to(ROOT)) for f in comp])
+            members = set(comp)
+            cycle_edges += [
+                f"{a.relative_to(ROOT)} -> {b.relative_to(ROOT)}"
+                for a in comp
+                for b in sorted(graph[a])
+                if b in members
+            ]
         for f in sorted(src.rglob("*.rs")):
             text = strip_tests(strip_comments(f.read_text()))
             rel = f.relative_to(ROOT)
@@ -216,6 +239,8 @@ def main():
     if listing:
         for c in all_cycles:
             print("cycle:", " <-> ".join(c))
+        for e in cycle_edges:
+            print("  edge:", e)
         for n, where in sorted(long_fns, reverse=True):
             print(f"long: {n:4} {where}")
         for where in string_results:

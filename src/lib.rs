@@ -10,6 +10,7 @@ pub mod file_dialog;
 pub mod fonts;
 pub mod render;
 pub mod start;
+pub mod state;
 pub mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;
@@ -21,7 +22,8 @@ pub fn controls_json() -> String {
     web::controls_json()
 }
 
-pub use app::{AppState, LinkageApp};
+pub use app::LinkageApp;
+pub use state::AppState;
 // The model lives in its own crate (no GUI); the app and its tests reach it here too.
 pub use linkage_model::{
     builder, catalog, path_inputs, path_job, session, synthesis, synthesis_function,

@@ -25,7 +25,7 @@ struct Published<'a> {
     /// The status line: what the last file, link or drop did, or why it did not.
     status: Option<&'a str>,
     /// CPU time of the frames that carried an edit (performance.now() in the browser).
-    edit_timing: crate::app::EditTiming,
+    edit_timing: crate::state::EditTiming,
     /// Whether a dynamic run is still being computed.
     run_pending: bool,
     /// Current input angle, deg: the value that `--input-deg` turns back into exactly
@@ -80,8 +80,8 @@ struct PublishedSearch {
 }
 
 /// The path search of the synthesis window, if one was started.
-fn path_search(st: &crate::app::AppState) -> Option<PublishedSearch> {
-    let view = st.synthesis.as_ref()?;
+fn path_search(panels: &crate::ui::panels::Panels) -> Option<PublishedSearch> {
+    let view = panels.synthesis.as_ref()?;
     let job = view.path.job.as_ref()?;
     let p = job.snapshot().progress;
     Some(PublishedSearch {
@@ -114,7 +114,10 @@ struct PublishedJoint<'a> {
 }
 
 /// The joints of the pose, with their places on screen in the mechanism view.
-fn joints(st: &crate::app::AppState) -> Vec<PublishedJoint<'_>> {
+fn joints<'a>(
+    st: &'a crate::state::AppState,
+    camera: &crate::render::view::Camera,
+) -> Vec<PublishedJoint<'a>> {
     let m = st.session.mechanism();
     let view = st.controls.view.map(|[x0, y0, x1, y1]| {
         eframe::egui::Rect::from_min_max(eframe::egui::pos2(x0, y0), eframe::egui::pos2(x1, y1))
@@ -126,7 +129,7 @@ fn joints(st: &crate::app::AppState) -> Vec<PublishedJoint<'_>> {
         .map(|&p| {
             let q = st.session.pose().points[p].position;
             let screen = view.map_or([f32::NAN; 2], |r| {
-                let s = st.camera.to_screen([q.x, q.y], r);
+                let s = camera.to_screen([q.x, q.y], r);
                 [s.x, s.y]
             });
             PublishedJoint {
@@ -152,39 +155,41 @@ fn degrees_exactly(rad: f64) -> f64 {
 
 /// Keeps this frame's controls for [`controls_json`]; `renderer`: whether the view's
 /// GPU renderer started.
-pub fn publish_controls(st: &crate::app::AppState, frame: u64, renderer: bool) {
+pub fn publish_controls(
+    st: &crate::state::AppState,
+    panels: &crate::ui::panels::Panels,
+    frame: u64,
+    renderer: bool,
+) {
+    let camera = &panels.viewport.camera;
     let pose = st.session.pose();
     let published = Published {
         frame,
         controls: &st.controls,
         message: st.session.message(),
         status: st.status.as_deref(),
-        edit_timing: st.edit_timing,
+        edit_timing: st.timing.edit_timing,
         run_pending: st.session.run_progress().is_some(),
         input_deg: degrees_exactly(st.session.input_rad()),
         scene_name: &st.session.scene().name,
         dirty: st.session.is_dirty(),
-        joints: joints(st),
+        joints: joints(st, camera),
         pose_finite: pose.points.iter().all(|p| {
             p.position.x.is_finite() && p.position.y.is_finite() && p.velocity.x.is_finite()
         }),
         renderer,
-        camera: [
-            st.camera.center_m[0],
-            st.camera.center_m[1],
-            st.camera.points_per_m,
-        ],
+        camera: [camera.center_m[0], camera.center_m[1], camera.points_per_m],
         drawing: st.builder.as_ref().map(|b| PublishedDrawing {
             points: b.sketch().points.len(),
             links: b.sketch().links.len(),
             complete: b.problem.is_none(),
         }),
-        path_targets: st
+        path_targets: panels
             .synthesis
             .as_ref()
             .map_or(0, |v| v.inputs.path.targets.len()),
-        path_search: path_search(st),
-        path_refused: st.synthesis.as_ref().and_then(|v| v.path.refused()),
+        path_search: path_search(panels),
+        path_refused: panels.synthesis.as_ref().and_then(|v| v.path.refused()),
         arrangement: st.layout.arrangement,
         sheet_tab: st.layout.tab,
     };
@@ -282,7 +287,7 @@ impl FragmentWatch {
 /// first over unsaved edits, as opening a file does); a link that does not open is
 /// said in the status line. The address then follows the app again (`url` writes it
 /// afresh): the current scene's until the new one opens.
-pub fn follow_fragment(st: &mut crate::app::AppState, url: &mut UrlSync) {
+pub fn follow_fragment(st: &mut crate::state::AppState, url: &mut UrlSync) {
     let fragment = fragment();
     let wanted = fragment.trim_start_matches('#');
     if wanted == url_state::encode(&st.session) {

@@ -7,8 +7,8 @@ use linkage::PathKind;
 use linkage::dynamics::Method;
 use linkage::scene::Models;
 
-use crate::app::AppState;
 use crate::session::dynamic_run::METHODS;
+use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
 
 /// "degrees of freedom: 3(n − 1) − 2j = …" for the mechanism's links and joints.
@@ -43,10 +43,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     .on_hover_text("Smallest singular value ratio of the group Jacobians: how far from a dead point or toggle.");
     ui.label(mobility_line(k.mechanism()))
         .on_hover_text("Grübler–Kutzbach count over links and lower pairs; the solver also checks the true mobility from the constraint Jacobian's rank, which redundant joints do not fool.");
-    if st.show_timings {
+    if st.timing.show {
         ui.label(format!(
             "CPU per frame: {:.0} µs (pose, polygons and shapes {:.0} µs)",
-            st.cost.frame_us, st.cost.solver_us
+            st.timing.cost.frame_us, st.timing.cost.solver_us
         ));
     }
 
@@ -108,7 +108,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         }
         Some(Ok(run)) => {
             let s = run.stats();
-            let cpu = if st.show_timings {
+            let cpu = if st.timing.show {
                 format!(", {:.2} ms CPU", s.cpu_seconds * 1e3)
             } else {
                 String::new()

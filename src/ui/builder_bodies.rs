@@ -6,8 +6,8 @@ use eframe::egui;
 use linkage::Vec2;
 use linkage::scene::Models;
 
-use crate::app::AppState;
 use crate::builder::edit::SketchEdit;
+use crate::state::AppState;
 use crate::ui::drawing;
 
 /// One row per link with a mass: "uniform", or its centroid (x, y) and inertia.

@@ -7,13 +7,13 @@ use eframe::egui::{self, Align2, Color32, FontId, Pos2, Rect, Sense, Stroke};
 use linkage::Vec2;
 use linkage::sketch::Sketch;
 
-use crate::app::AppState;
 use crate::builder::edit::{End, SketchEdit};
 use crate::builder::{Pending, Tool};
 use crate::render::Renderer;
 use crate::render::shape::SharedShapes;
 use crate::render::sketch_shapes::build_sketch;
 use crate::render::view::Camera;
+use crate::state::AppState;
 use crate::ui::drawing;
 use crate::ui::viewport::navigate;
 
@@ -30,6 +30,7 @@ const EMPTY_VIEW_M: [f64; 4] = [-0.1, -0.15, 0.4, 0.25];
 pub fn show(
     ui: &mut egui::Ui,
     st: &mut AppState,
+    camera: &mut Camera,
     shapes: &SharedShapes,
     renderer: Option<&Renderer>,
 ) {
@@ -39,12 +40,12 @@ pub fn show(
         return;
     };
     if b.fit_pending && rect.width() > 1.0 {
-        st.camera.fit(bounds(b.sketch()), rect);
+        camera.fit(bounds(b.sketch()), rect);
         b.fit_pending = false;
     }
-    let dragging_point = pointer(ui, &response, rect, st);
-    navigate(ui, &response, rect, &mut st.camera, !dragging_point);
-    draw(ui, rect, st, shapes, renderer);
+    let dragging_point = pointer(ui, &response, rect, st, camera);
+    navigate(ui, &response, rect, camera, !dragging_point);
+    draw(ui, rect, st, camera, shapes, renderer);
 }
 
 /// The drawing's box, or a default view when it has fewer than two points.
@@ -72,17 +73,23 @@ fn bounds(sketch: &Sketch) -> [f64; 4] {
 
 /// Handles this frame's clicks and drags; returns whether a point is being dragged
 /// (then the view does not pan).
-fn pointer(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut AppState) -> bool {
+fn pointer(
+    ui: &egui::Ui,
+    response: &egui::Response,
+    rect: Rect,
+    st: &mut AppState,
+    cam: &Camera,
+) -> bool {
     let Some(b) = st.builder.as_ref() else {
         return false;
     };
     let tool = b.tool;
     if tool == Tool::Move {
-        return drag_point(ui, response, rect, st);
+        return drag_point(ui, response, rect, st, cam);
     }
     if response.clicked()
         && let Some(at) = response.interact_pointer_pos()
-        && let Some(edit) = click(st, at, rect)
+        && let Some(edit) = click(st, cam, at, rect)
     {
         drawing::edit(st, edit);
     }
@@ -91,13 +98,12 @@ fn pointer(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut AppSta
 
 /// The edit a click at `at` makes with the tool in hand (a link's first click only
 /// notes its end).
-fn click(st: &mut AppState, at: Pos2, rect: Rect) -> Option<SketchEdit> {
-    let cam = st.camera;
+fn click(st: &mut AppState, cam: &Camera, at: Pos2, rect: Rect) -> Option<SketchEdit> {
     let b = st.builder.as_mut()?;
     let mut pending = b.pending.take();
     let sketch = b.sketch();
-    let near = point_near(sketch, &cam, at, rect);
-    let place = snapped(&cam, at, rect);
+    let near = point_near(sketch, cam, at, rect);
+    let place = snapped(cam, at, rect);
     let end = near.map_or(End::New(place), End::Point);
     let edit = match b.tool {
         Tool::Pivot => Some(match near {
@@ -109,7 +115,7 @@ fn click(st: &mut AppState, at: Pos2, rect: Rect) -> Option<SketchEdit> {
         }),
         Tool::Link => match pending.take() {
             None | Some(Pending::ElementFrom { .. }) => {
-                pending = Some(match (near, link_near(sketch, &cam, at, rect)) {
+                pending = Some(match (near, link_near(sketch, cam, at, rect)) {
                     (None, Some(link)) => Pending::OnLink(link),
                     _ => Pending::LinkFrom(end),
                 });
@@ -122,10 +128,10 @@ fn click(st: &mut AppState, at: Pos2, rect: Rect) -> Option<SketchEdit> {
             point,
             angle_rad: 0.0,
         }),
-        Tool::Driver => link_at(sketch, &cam, at, rect).map(SketchEdit::SetDriver),
+        Tool::Driver => link_at(sketch, cam, at, rect).map(SketchEdit::SetDriver),
         Tool::Delete => match near {
             Some(p) => Some(SketchEdit::DeletePoint(p)),
-            None => link_near(sketch, &cam, at, rect).map(SketchEdit::DeleteLink),
+            None => link_near(sketch, cam, at, rect).map(SketchEdit::DeleteLink),
         },
         Tool::Spring | Tool::Damper => {
             let damper = b.tool == Tool::Damper;
@@ -152,8 +158,13 @@ fn click(st: &mut AppState, at: Pos2, rect: Rect) -> Option<SketchEdit> {
 
 /// The move tool: the point under the press follows the pointer, snapped; the drag
 /// is one undo step.
-fn drag_point(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut AppState) -> bool {
-    let cam = st.camera;
+fn drag_point(
+    ui: &egui::Ui,
+    response: &egui::Response,
+    rect: Rect,
+    st: &mut AppState,
+    cam: &Camera,
+) -> bool {
     let Some(b) = st.builder.as_mut() else {
         return false;
     };
@@ -162,7 +173,7 @@ fn drag_point(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut App
             .input(|i| i.pointer.press_origin())
             .or_else(|| response.interact_pointer_pos())
     {
-        b.dragged = point_near(b.sketch(), &cam, at, rect);
+        b.dragged = point_near(b.sketch(), cam, at, rect);
     }
     if response.drag_stopped() || !ui.input(|i| i.pointer.any_down()) {
         b.end_gesture();
@@ -172,7 +183,7 @@ fn drag_point(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut App
         return false;
     };
     if let Some(at) = response.interact_pointer_pos() {
-        let to = aligned(b.sketch(), point, snapped(&cam, at, rect), &cam, at, rect);
+        let to = aligned(b.sketch(), point, snapped(cam, at, rect), cam, at, rect);
         if b.sketch().points[point].at != to {
             drawing::edit(st, SketchEdit::MovePoint { point, to });
         }
@@ -271,6 +282,7 @@ fn draw(
     ui: &egui::Ui,
     rect: Rect,
     st: &AppState,
+    camera: &Camera,
     shapes: &SharedShapes,
     renderer: Option<&Renderer>,
 ) {
@@ -279,19 +291,19 @@ fn draw(
     };
     let painter = ui.painter_at(rect);
     painter.rect_filled(rect, 0.0, Color32::from_rgb(246, 246, 242));
-    grid(&painter, rect, &st.camera);
+    grid(&painter, rect, camera);
     let marked = match b.pending {
         Some(Pending::LinkFrom(End::Point(p))) => Some(p),
         _ => b.dragged,
     };
     if let Ok(mut list) = shapes.lock() {
-        build_sketch(&mut list, b.sketch(), &st.camera, marked);
+        build_sketch(&mut list, b.sketch(), camera, marked);
     }
-    let view = st.camera.uniform(rect, ui.ctx().pixels_per_point());
+    let view = camera.uniform(rect, ui.ctx().pixels_per_point());
     crate::ui::viewport::paint_shapes(&painter, rect, view, shapes, renderer);
     let font = FontId::proportional(13.0);
     for p in &b.sketch().points {
-        let s = screen(&st.camera, p.at, rect);
+        let s = screen(camera, p.at, rect);
         painter.text(
             s + egui::vec2(8.0, -8.0),
             Align2::LEFT_BOTTOM,
@@ -302,9 +314,9 @@ fn draw(
     }
     let from = match b.pending {
         Some(Pending::LinkFrom(End::Point(p))) => {
-            Some(screen(&st.camera, b.sketch().points[p].at, rect))
+            Some(screen(camera, b.sketch().points[p].at, rect))
         }
-        Some(Pending::LinkFrom(End::New(at))) => Some(screen(&st.camera, at, rect)),
+        Some(Pending::LinkFrom(End::New(at))) => Some(screen(camera, at, rect)),
         _ => None,
     };
     if let (Some(from), Some(to)) = (from, ui.input(|i| i.pointer.hover_pos())) {

@@ -8,8 +8,8 @@ use linkage::Vec2;
 use linkage::scene::{ForceWhen, Models};
 use linkage::sketch::Sketch;
 
-use crate::app::AppState;
 use crate::builder::edit::{Element, SketchEdit};
+use crate::state::AppState;
 use crate::ui::drawing;
 
 /// The springs, dampers and point forces, each editable.

@@ -5,9 +5,9 @@
 use eframe::egui;
 use linkage::Vec2;
 
-use crate::app::AppState;
 use crate::builder::edit::{Body, Named, SketchEdit};
 use crate::builder::{Builder, Tool};
+use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
 use crate::ui::drawing;
 use linkage::scene::{Models, Speed};

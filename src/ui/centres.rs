@@ -9,13 +9,14 @@ use linkage::Mechanism;
 use linkage::instant_centres::{Centre, FoundBy, InstantCentres, instant_centres};
 use linkage_diagram::pose_figure::{centre_label, link_number};
 
-use crate::app::AppState;
+use crate::render::view::Camera;
+use crate::state::AppState;
 use crate::ui::typeset::galley;
 
 const CENTRE_COLOUR: Color32 = Color32::from_rgb(176, 48, 106);
 
 /// Draws the centres over the view in `rect`.
-pub fn overlay(painter: &egui::Painter, rect: Rect, st: &AppState) {
+pub fn overlay(painter: &egui::Painter, rect: Rect, st: &AppState, camera: &Camera) {
     let m = st.session.mechanism();
     let pose = st.session.pose();
     let found = instant_centres(m, pose);
@@ -24,7 +25,7 @@ pub fn overlay(painter: &egui::Painter, rect: Rect, st: &AppState) {
         let label = centre_label(link_number(m, c.links[0]), link_number(m, c.links[1]));
         match c.centre {
             Centre::At(p) if p[0].is_finite() && p[1].is_finite() => {
-                let at = st.camera.to_screen(p, rect);
+                let at = camera.to_screen(p, rect);
                 if rect.contains(at) {
                     painter.circle_filled(at, 3.5, CENTRE_COLOUR);
                     let g = galley(painter, &label, 13.0, CENTRE_COLOUR);

@@ -10,7 +10,7 @@ use linkage_diagram::construction::{DirectionLine, construct};
 use linkage_diagram::label::Label;
 use linkage_diagram::layout::LaidPolygon;
 
-use crate::app::AppState;
+use crate::state::AppState;
 use crate::ui::polygon_paint::{INK, Paper, pos};
 use crate::ui::typeset::{galley, job};
 
@@ -25,73 +25,78 @@ pub struct ConstructionView {
 
 const LINE: Color32 = Color32::from_rgb(120, 60, 160);
 
-/// The construction section of the polygon pane.
-pub fn section(ui: &mut egui::Ui, st: &mut AppState) {
-    let equations = st.session.polygons();
-    if equations.is_empty() {
-        ui.weak("no equations at this position");
-        return;
-    }
-    let view = &mut st.construction;
-    view.equation = view.equation.min(equations.len() - 1);
-    let eq = &equations[view.equation];
-    let ink = ui.visuals().text_color();
-    egui::ComboBox::from_label("equation")
-        .selected_text(job(&Label::of_equation(eq), 14.0, ink))
-        .width(ui.available_width() - 80.0)
-        .show_ui(ui, |ui| {
-            for (i, e) in equations.iter().enumerate() {
-                if ui
-                    .selectable_label(i == view.equation, job(&Label::of_equation(e), 14.0, ink))
-                    .clicked()
-                {
-                    view.equation = i;
-                    view.step = 0;
-                }
-            }
-        });
-    let pole = if eq.kind == Quantity::Velocity {
-        "p"
-    } else {
-        "p'"
-    };
-    let crossing = eq.lhs.first().map_or("x".to_string(), |t| {
-        let prime = if eq.kind == Quantity::Velocity {
-            ""
-        } else {
-            "'"
-        };
-        format!("{}{prime}", t.symbol.point.to_lowercase())
-    });
-    let steps = match construct(eq, pole, &crossing) {
-        Ok(steps) => steps,
-        Err(e) => {
-            ui.colored_label(ui.visuals().warn_fg_color, e.to_string());
+impl ConstructionView {
+    /// The construction section of the polygon pane.
+    pub fn ui(&mut self, ui: &mut egui::Ui, st: &AppState) {
+        let equations = st.session.polygons();
+        if equations.is_empty() {
+            ui.weak("no equations at this position");
             return;
         }
-    };
-    view.step = view.step.min(steps.len() - 1);
-    ui.horizontal(|ui| {
-        if ui
-            .add_enabled(view.step > 0, egui::Button::new("back"))
-            .clicked()
-        {
-            view.step -= 1;
-        }
-        ui.label(format!("step {} of {}", view.step + 1, steps.len()));
-        if ui
-            .add_enabled(view.step + 1 < steps.len(), egui::Button::new("next"))
-            .clicked()
-        {
-            view.step += 1;
-        }
-    });
-    let Some(last) = steps.last() else {
-        return;
-    };
-    let step = &steps[view.step];
-    draw_step(ui, step, last.figure.extent());
-    ui.label(job(&step.says, 14.0, ink));
+        let view = self;
+        view.equation = view.equation.min(equations.len() - 1);
+        let eq = &equations[view.equation];
+        let ink = ui.visuals().text_color();
+        egui::ComboBox::from_label("equation")
+            .selected_text(job(&Label::of_equation(eq), 14.0, ink))
+            .width(ui.available_width() - 80.0)
+            .show_ui(ui, |ui| {
+                for (i, e) in equations.iter().enumerate() {
+                    if ui
+                        .selectable_label(
+                            i == view.equation,
+                            job(&Label::of_equation(e), 14.0, ink),
+                        )
+                        .clicked()
+                    {
+                        view.equation = i;
+                        view.step = 0;
+                    }
+                }
+            });
+        let pole = if eq.kind == Quantity::Velocity {
+            "p"
+        } else {
+            "p'"
+        };
+        let crossing = eq.lhs.first().map_or("x".to_string(), |t| {
+            let prime = if eq.kind == Quantity::Velocity {
+                ""
+            } else {
+                "'"
+            };
+            format!("{}{prime}", t.symbol.point.to_lowercase())
+        });
+        let steps = match construct(eq, pole, &crossing) {
+            Ok(steps) => steps,
+            Err(e) => {
+                ui.colored_label(ui.visuals().warn_fg_color, e.to_string());
+                return;
+            }
+        };
+        view.step = view.step.min(steps.len() - 1);
+        ui.horizontal(|ui| {
+            if ui
+                .add_enabled(view.step > 0, egui::Button::new("back"))
+                .clicked()
+            {
+                view.step -= 1;
+            }
+            ui.label(format!("step {} of {}", view.step + 1, steps.len()));
+            if ui
+                .add_enabled(view.step + 1 < steps.len(), egui::Button::new("next"))
+                .clicked()
+            {
+                view.step += 1;
+            }
+        });
+        let Some(last) = steps.last() else {
+            return;
+        };
+        let step = &steps[view.step];
+        draw_step(ui, step, last.figure.extent());
+        ui.label(job(&step.says, 14.0, ink));
+    }
 }
 
 fn draw_step(ui: &mut egui::Ui, step: &linkage_diagram::construction::Step, fit: Rect) {

@@ -4,9 +4,9 @@
 use eframe::egui;
 use linkage::scene::Models;
 
-use crate::app::AppState;
 use crate::session::params::{mass_range, spring_range};
 use crate::session::{SceneEdit, unit_label};
+use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
 
 /// Label of the crank-angle slider (UI tests find it by this).
@@ -56,7 +56,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     let speed = |ui: &mut egui::Ui, st: &mut AppState| {
         labelled(
             ui,
-            egui::Slider::new(&mut st.speed, 0.01..=4.0).logarithmic(true),
+            egui::Slider::new(&mut st.play.speed, 0.01..=4.0).logarithmic(true),
             "speed ×",
             touch,
         );
@@ -64,11 +64,11 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     // The longest row: Play, the speed slider, its number and label.
     let narrow = touch && too_narrow(ui, 140.0);
     ui.horizontal(|ui| {
-        let label = if st.playing { "Pause" } else { "Play" };
+        let label = if st.play.playing { "Pause" } else { "Play" };
         let play = ui.button(label);
         st.controls.note(ui, ControlKind::Play, label, &play);
         if play.clicked() {
-            st.playing = !st.playing;
+            st.play.playing = !st.play.playing;
         }
         if !narrow {
             speed(ui, st);
@@ -89,7 +89,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     st.controls
         .note(ui, ControlKind::Crank, CRANK_LABEL, &crank);
     if crank.changed() {
-        st.playing = false;
+        st.play.playing = false;
         st.edit(SceneEdit::Input { deg: input });
     }
 
@@ -105,7 +105,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         st.controls
             .note(ui, ControlKind::RunTime, "run time (s)", &r);
         if r.changed() {
-            st.playing = false;
+            st.play.playing = false;
             st.edit(SceneEdit::RunTime { s: t });
         }
     }

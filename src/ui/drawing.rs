@@ -4,10 +4,10 @@
 
 use linkage::sketch::Sketch;
 
-use crate::app::AppState;
 use crate::builder::Builder;
 use crate::builder::edit::SketchEdit;
 use crate::session::{SceneEdit, SceneSource, Session};
+use crate::state::AppState;
 
 /// The file name a drawing is saved and shared under until the user names one.
 const DRAWING_FILE: &str = "my_mechanism.ron";
@@ -17,7 +17,7 @@ const DRAWING_FILE: &str = "my_mechanism.ron";
 /// first (`ui::scene_picker`'s question).
 pub fn start(st: &mut AppState) {
     if st.session.is_dirty() {
-        st.pending_drawing = true;
+        st.commands.drawing = true;
         return;
     }
     start_now(st);
@@ -41,11 +41,11 @@ pub fn draw_current(st: &mut AppState) {
 /// Goes on with `sketch` (a drawing kept over a reload), opening it as the scene
 /// when it is a mechanism.
 pub fn resume(st: &mut AppState, sketch: Sketch) {
-    st.pending_drawing = false;
+    st.commands.drawing = false;
     st.builder = Some(Builder::new(sketch));
     sync(st);
-    st.playing = false;
-    st.edit_points = false;
+    st.play.playing = false;
+    st.view.edit_points = false;
 }
 
 /// Makes `edit` on the drawing.
@@ -55,7 +55,7 @@ pub fn edit(st: &mut AppState, edit: SketchEdit) {
     if st.builder.as_mut().is_some_and(|b| b.apply(edit)) {
         sync(st);
     }
-    st.edit_ms += started.elapsed().as_secs_f64() * 1e3;
+    st.timing.edit_ms += started.elapsed().as_secs_f64() * 1e3;
 }
 
 /// Takes back the drawing's last edit.
@@ -93,7 +93,7 @@ pub fn redo_any(st: &mut AppState) {
 /// Leaves the drawing tools; the last complete drawing stays open as the scene.
 pub fn finish(st: &mut AppState) {
     st.builder = None;
-    st.fit_pending = true;
+    st.commands.fit = true;
 }
 
 /// Opens the drawing as the session when it is a mechanism.
@@ -105,7 +105,7 @@ fn sync(st: &mut AppState) {
         Ok(mut session) => {
             session.mark_unsaved();
             st.session = session;
-            st.opened += 1;
+            st.timing.opened += 1;
         }
         Err(why) => st.status = Some(format!("the drawing does not solve: {why}")),
     }

@@ -5,9 +5,9 @@
 
 use eframe::egui;
 
-use crate::app::AppState;
 pub use crate::file_action::FileAction;
 use crate::session::{SceneSource, Session};
+use crate::state::AppState;
 
 /// File dialog, prompt and upload state.
 #[derive(Default)]
@@ -51,7 +51,7 @@ impl Default for DesktopDialog {
 }
 
 /// The file buttons of the top bar; `frame` is the window a dialog stays above.
-pub fn buttons(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
+pub fn buttons(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &eframe::Frame) {
     for (label, action) in [
         ("Open scene…", FileAction::Open),
         ("Save scene…", FileAction::SaveScene),
@@ -67,7 +67,7 @@ pub fn buttons(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
             &button,
         );
         if button.clicked() {
-            start(ui.ctx(), st, action, frame);
+            start(ui.ctx(), st, files, action, frame);
         }
     }
     #[cfg(target_arch = "wasm32")]
@@ -91,13 +91,13 @@ pub fn buttons(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
             }
         }
     }
-    take_answers(st);
+    take_answers(st, files);
 }
 
 /// Acts on a file the browser delivered.
 #[cfg(target_arch = "wasm32")]
-fn take_answers(st: &mut AppState) {
-    let uploaded = st.files.upload.borrow_mut().take();
+fn take_answers(st: &mut AppState, files: &mut Files) {
+    let uploaded = files.upload.borrow_mut().take();
     if let Some((name, text)) = uploaded {
         open_text(st, name, &text);
     }
@@ -105,10 +105,10 @@ fn take_answers(st: &mut AppState) {
 
 /// Acts on the desktop dialog's answer, once it has come.
 #[cfg(not(target_arch = "wasm32"))]
-fn take_answers(st: &mut AppState) {
+fn take_answers(st: &mut AppState, files: &mut Files) {
     use crate::file_dialog::PathAnswer;
-    while let Ok((action, answer)) = st.files.dialog.receive.try_recv() {
-        st.files.dialog.waiting = None;
+    while let Ok((action, answer)) = files.dialog.receive.try_recv() {
+        files.dialog.waiting = None;
         match answer {
             PathAnswer::Chosen(path) => {
                 let path = match action {
@@ -120,7 +120,7 @@ fn take_answers(st: &mut AppState) {
                         crate::file_dialog::with_extension(path, action.file_type().1)
                     }
                 };
-                st.files.dialog.last_dir = path.parent().map(std::path::Path::to_path_buf);
+                files.dialog.last_dir = path.parent().map(std::path::Path::to_path_buf);
                 run(st, action, &path);
             }
             PathAnswer::Cancelled => st.status = Some("no file chosen".into()),
@@ -130,7 +130,7 @@ fn take_answers(st: &mut AppState) {
                      type the path instead"
                         .into(),
                 );
-                st.files.prompt = Some((action, default_name(st, action)));
+                files.prompt = Some((action, default_name(st, action)));
             }
         }
     }
@@ -165,7 +165,7 @@ fn contents(st: &AppState, action: FileAction) -> Result<Vec<u8>, String> {
 
 /// The sheet of the current position, instant centres as the view shows them.
 fn sheet(st: &AppState) -> String {
-    st.session.sheet_svg(st.layers.centres)
+    st.session.sheet_svg(st.view.layers.centres)
 }
 
 /// Resolution of the exported PNG sheet: 150 dpi, print quality for A4.
@@ -209,14 +209,16 @@ pub fn open_text(st: &mut AppState, name: String, text: &str) {
 /// Opens the scene file at `path` (from the command line, or dropped on the window),
 /// asking first over unsaved edits as Open does; later dialogs start in its folder.
 #[cfg(not(target_arch = "wasm32"))]
-pub fn open_path(st: &mut AppState, path: &std::path::Path) {
-    st.files.dialog.last_dir = path.parent().map(std::path::Path::to_path_buf);
+pub fn open_path(st: &mut AppState, files: &mut Files, path: &std::path::Path) {
+    files.dialog.last_dir = path.parent().map(std::path::Path::to_path_buf);
     run(st, FileAction::Open, path);
 }
 
 /// Opens a scene file dropped on the window, or on the page (read by the browser,
 /// then opened in a later frame as an upload is). Of several, the first.
-pub fn take_dropped(ctx: &egui::Context, st: &mut AppState) {
+// In the browser the file is read first and opened with the uploads.
+#[cfg_attr(target_arch = "wasm32", allow(unused_variables))]
+pub fn take_dropped(ctx: &egui::Context, st: &mut AppState, files: &mut Files) {
     let dropped = ctx.input(|i| i.raw.dropped_files.clone());
     let Some(file) = dropped.first() else {
         return;
@@ -225,9 +227,9 @@ pub fn take_dropped(ctx: &egui::Context, st: &mut AppState) {
         log::info!("{} files dropped: opening the first", dropped.len());
     }
     #[cfg(not(target_arch = "wasm32"))]
-    open_path(st, file.path());
+    open_path(st, files, file.path());
     #[cfg(target_arch = "wasm32")]
-    crate::web::read_dropped(file.clone(), &st.files.upload, ctx);
+    crate::web::read_dropped(file.clone(), &files.upload, ctx);
 }
 
 /// While files are dragged over the window: a veil that says what a drop does.
@@ -252,22 +254,28 @@ pub fn drop_hint(ctx: &egui::Context) {
 
 /// Opens the system's dialog for `action`; its answer comes back in a later frame.
 #[cfg(not(target_arch = "wasm32"))]
-fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, frame: &eframe::Frame) {
+fn start(
+    ctx: &egui::Context,
+    st: &mut AppState,
+    files: &mut Files,
+    action: FileAction,
+    frame: &eframe::Frame,
+) {
     use crate::file_dialog::PathRequest;
-    if st.files.dialog.waiting.is_some() {
+    if files.dialog.waiting.is_some() {
         st.status = Some("a file dialog is already open".into());
         return;
     }
     let request = PathRequest {
         action,
         suggested_name: default_name(st, action),
-        directory: st.files.dialog.last_dir.clone(),
+        directory: files.dialog.last_dir.clone(),
     };
-    let send = st.files.dialog.send.clone();
+    let send = files.dialog.send.clone();
     let ctx = ctx.clone();
-    st.files.dialog.waiting = Some(action);
+    files.dialog.waiting = Some(action);
     st.status = Some(format!("{}: waiting for the file dialog", action.title()));
-    st.files.dialog.chooser.clone().choose(
+    files.dialog.chooser.clone().choose(
         request,
         Some(frame),
         Box::new(move |answer| {
@@ -280,9 +288,15 @@ fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, frame: &efr
 }
 
 #[cfg(target_arch = "wasm32")]
-fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, _frame: &eframe::Frame) {
+fn start(
+    ctx: &egui::Context,
+    st: &mut AppState,
+    files: &mut Files,
+    action: FileAction,
+    _frame: &eframe::Frame,
+) {
     let result = match action {
-        FileAction::Open => crate::web::pick_file(&st.files.upload, ctx),
+        FileAction::Open => crate::web::pick_file(&files.upload, ctx),
         FileAction::ExportSheetPng => {
             crate::web::download_svg_as_png(&default_name(st, action), &sheet(st), SHEET_DPI)
         }
@@ -305,8 +319,8 @@ fn start(ctx: &egui::Context, st: &mut AppState, action: FileAction, _frame: &ef
 
 /// The desktop's path prompt, while one is open.
 #[cfg(not(target_arch = "wasm32"))]
-pub fn prompt_window(ctx: &egui::Context, st: &mut AppState) {
-    let Some((action, mut path)) = st.files.prompt.take() else {
+pub fn prompt_window(ctx: &egui::Context, st: &mut AppState, files: &mut Files) {
+    let Some((action, mut path)) = files.prompt.take() else {
         return;
     };
     let title = action.title();
@@ -326,12 +340,12 @@ pub fn prompt_window(ctx: &egui::Context, st: &mut AppState) {
     if go {
         run(st, action, std::path::Path::new(&path));
     } else if keep {
-        st.files.prompt = Some((action, path));
+        files.prompt = Some((action, path));
     }
 }
 
 #[cfg(target_arch = "wasm32")]
-pub fn prompt_window(_ctx: &egui::Context, _st: &mut AppState) {}
+pub fn prompt_window(_ctx: &egui::Context, _st: &mut AppState, _files: &mut Files) {}
 
 #[cfg(not(target_arch = "wasm32"))]
 fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {

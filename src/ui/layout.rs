@@ -127,6 +127,8 @@ pub struct LayoutState {
     pub arrangement: Arrangement,
     /// The sheet's tab shown.
     pub tab: SheetTab,
+    /// Whether the polygon pane takes half the window (desktop).
+    pub polygons_wide: bool,
     /// Whether the style was set for the arrangement (the first frame sets it).
     styled: bool,
 }

@@ -7,10 +7,25 @@ use eframe::egui;
 use egui_plot::{Line, Plot, PlotPoints, VLine};
 use linkage::scene::Models;
 
-use crate::app::{AppState, PlotTab};
 use crate::session::Session;
 use crate::session::curves::ModelCurves;
 use crate::session::derived::Shown;
+use crate::state::AppState;
+
+/// Which plot the plot pane shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlotTab {
+    /// Output displacement, velocity and acceleration against crank angle.
+    Output,
+    /// Transmission angle against crank angle.
+    Transmission,
+    /// Input torque and force amplification (kinetostatic scenes).
+    Torque,
+    /// omega-phi, omega-t and phi-t of the dynamic run.
+    Motion,
+    /// J(q) and M(q) (dynamic scenes).
+    ReducedModel,
+}
 
 /// Whether `tab` has anything to show for `s` (a slider appears only where its
 /// parameter exists; so does a plot).
@@ -36,132 +51,149 @@ fn cursor_deg(s: &Session) -> f64 {
     }
 }
 
-/// The plot pane.
-pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
-    ui.horizontal_wrapped(|ui| {
-        for (tab, label) in [
-            (PlotTab::Output, "Output s, v, a"),
-            (PlotTab::Transmission, "Transmission angle"),
-            (PlotTab::Torque, "Input torque, amplification"),
-            (PlotTab::Motion, "ω–φ, ω–t, φ–t"),
-            (PlotTab::ReducedModel, "J(q), M(q)"),
-        ] {
-            if tab_available(tab, &st.session) {
-                ui.selectable_value(&mut st.plot_tab, tab, label);
+/// The plot pane's own state: the tab shown.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PlotsPanel {
+    /// The plot shown.
+    pub tab: PlotTab,
+}
+
+impl Default for PlotsPanel {
+    fn default() -> Self {
+        Self {
+            tab: PlotTab::Output,
+        }
+    }
+}
+
+impl PlotsPanel {
+    /// The plot pane.
+    pub fn ui(&mut self, ui: &mut egui::Ui, st: &mut AppState) {
+        ui.horizontal_wrapped(|ui| {
+            for (tab, label) in [
+                (PlotTab::Output, "Output s, v, a"),
+                (PlotTab::Transmission, "Transmission angle"),
+                (PlotTab::Torque, "Input torque, amplification"),
+                (PlotTab::Motion, "ω–φ, ω–t, φ–t"),
+                (PlotTab::ReducedModel, "J(q), M(q)"),
+            ] {
+                if tab_available(tab, &st.session) {
+                    ui.selectable_value(&mut self.tab, tab, label);
+                }
             }
-        }
-    });
-    let s = &st.session;
-    let c = s.curves();
-    let x = cursor_deg(s);
-    let key = (s.scene().name.as_str(), s.generation());
-    let crank = "crank angle (deg)";
-    match st.plot_tab {
-        PlotTab::Output => {
-            // The scene's main output first: that is the one the papers plot.
-            let main = &s.mechanism().links[s.mechanism().output].name;
-            let Some(out) = c
-                .outputs
-                .iter()
-                .find(|o| &o.name == main)
-                .or(c.outputs.first())
-            else {
-                return;
-            };
-            let (u, v, a) = if out.is_angle {
-                ("deg", "deg/s", "deg/s²")
-            } else {
-                ("m", "m/s", "m/s²")
-            };
-            let plots = [
-                (format!("{} ({u})", out.name), &out.value),
-                (format!("{} rate ({v})", out.name), &out.rate),
-                (
-                    format!("{} acceleration ({a})", out.name),
-                    &out.acceleration,
-                ),
-            ];
-            row(
-                ui,
-                "output",
-                key,
-                &plots
+        });
+        let s = &st.session;
+        let c = s.curves();
+        let x = cursor_deg(s);
+        let key = (s.scene().name.as_str(), s.generation());
+        let crank = "crank angle (deg)";
+        match self.tab {
+            PlotTab::Output => {
+                // The scene's main output first: that is the one the papers plot.
+                let main = &s.mechanism().links[s.mechanism().output].name;
+                let Some(out) = c
+                    .outputs
                     .iter()
-                    .map(|(l, d)| (l.as_str(), crank, d.as_slice(), Some(x)))
-                    .collect::<Vec<_>>(),
-            );
-        }
-        PlotTab::Transmission => {
-            row(
-                ui,
-                "transmission",
-                key,
-                &[(
-                    "transmission angle (deg)",
-                    crank,
-                    &c.transmission_deg,
-                    Some(x),
-                )],
-            );
-        }
-        PlotTab::Torque => {
-            let Some(c) = model_curves(ui, s) else {
-                return;
-            };
-            let log_amp: Vec<[f64; 2]> = c
-                .amplification
-                .iter()
-                .filter(|p| p[1] > 0.0)
-                .map(|p| [p[0], p[1].log10()])
-                .collect();
-            row(
-                ui,
-                "torque",
-                key,
-                &[
-                    ("input torque (N·m)", crank, &c.torque_n_m, Some(x)),
+                    .find(|o| &o.name == main)
+                    .or(c.outputs.first())
+                else {
+                    return;
+                };
+                let (u, v, a) = if out.is_angle {
+                    ("deg", "deg/s", "deg/s²")
+                } else {
+                    ("m", "m/s", "m/s²")
+                };
+                let plots = [
+                    (format!("{} ({u})", out.name), &out.value),
+                    (format!("{} rate ({v})", out.name), &out.rate),
                     (
-                        "log10 force amplification (N per N·m)",
-                        crank,
-                        &log_amp,
-                        Some(x),
+                        format!("{} acceleration ({a})", out.name),
+                        &out.acceleration,
                     ),
-                ],
-            );
-        }
-        PlotTab::Motion => {
-            if let Some(Ok(run)) = s.dynamics() {
-                let t = s.time_s();
+                ];
                 row(
                     ui,
-                    "motion",
+                    "output",
+                    key,
+                    &plots
+                        .iter()
+                        .map(|(l, d)| (l.as_str(), crank, d.as_slice(), Some(x)))
+                        .collect::<Vec<_>>(),
+                );
+            }
+            PlotTab::Transmission => {
+                row(
+                    ui,
+                    "transmission",
+                    key,
+                    &[(
+                        "transmission angle (deg)",
+                        crank,
+                        &c.transmission_deg,
+                        Some(x),
+                    )],
+                );
+            }
+            PlotTab::Torque => {
+                let Some(c) = model_curves(ui, s) else {
+                    return;
+                };
+                let log_amp: Vec<[f64; 2]> = c
+                    .amplification
+                    .iter()
+                    .filter(|p| p[1] > 0.0)
+                    .map(|p| [p[0], p[1].log10()])
+                    .collect();
+                row(
+                    ui,
+                    "torque",
                     key,
                     &[
+                        ("input torque (N·m)", crank, &c.torque_n_m, Some(x)),
                         (
-                            "ω (rad/s)",
-                            "φ (deg)",
-                            &run.omega_phi,
-                            Some(s.input_rad().to_degrees()),
+                            "log10 force amplification (N per N·m)",
+                            crank,
+                            &log_amp,
+                            Some(x),
                         ),
-                        ("ω (rad/s)", "t (s)", &run.omega_t, Some(t)),
-                        ("φ (deg)", "t (s)", &run.phi_t, Some(t)),
                     ],
                 );
             }
-        }
-        PlotTab::ReducedModel => {
-            let Some(c) = model_curves(ui, s) else {
-                return;
-            };
-            row(
-                ui,
-                "reduced",
-                key,
-                &[
-                    ("J(q) (kg·m²)", "q (deg)", &c.inertia_kg_m2, Some(x)),
-                    ("M(q) at rest (N·m)", "q (deg)", &c.moment_n_m, Some(x)),
-                ],
-            );
+            PlotTab::Motion => {
+                if let Some(Ok(run)) = s.dynamics() {
+                    let t = s.time_s();
+                    row(
+                        ui,
+                        "motion",
+                        key,
+                        &[
+                            (
+                                "ω (rad/s)",
+                                "φ (deg)",
+                                &run.omega_phi,
+                                Some(s.input_rad().to_degrees()),
+                            ),
+                            ("ω (rad/s)", "t (s)", &run.omega_t, Some(t)),
+                            ("φ (deg)", "t (s)", &run.phi_t, Some(t)),
+                        ],
+                    );
+                }
+            }
+            PlotTab::ReducedModel => {
+                let Some(c) = model_curves(ui, s) else {
+                    return;
+                };
+                row(
+                    ui,
+                    "reduced",
+                    key,
+                    &[
+                        ("J(q) (kg·m²)", "q (deg)", &c.inertia_kg_m2, Some(x)),
+                        ("M(q) at rest (N·m)", "q (deg)", &c.moment_n_m, Some(x)),
+                    ],
+                );
+            }
         }
     }
 }

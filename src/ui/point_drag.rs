@@ -8,8 +8,10 @@
 
 use eframe::egui::{self, Pos2, Rect};
 
-use crate::app::AppState;
+use crate::render::view::Camera;
 use crate::session::SceneEdit;
+use crate::state::AppState;
+use crate::ui::viewport::Viewport;
 
 /// How near a joint (points) a press must be to grab it.
 const GRAB_PT: f32 = 10.0;
@@ -20,46 +22,52 @@ const GRID_M: f64 = 1e-3;
 
 /// Handles the view's pointer in edit mode; returns whether a point is being dragged
 /// (then the view does not pan).
-pub fn handle(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut AppState) -> bool {
+pub fn handle(
+    ui: &egui::Ui,
+    response: &egui::Response,
+    rect: Rect,
+    st: &mut AppState,
+    vp: &mut Viewport,
+) -> bool {
     // Grab by where the button went down: by the frame that sees the drag start the
     // pointer may have gone several points on (a slow frame, a quick hand).
     let pressed_at = ui.input(|i| i.pointer.press_origin());
     if response.drag_started()
         && let Some(at) = pressed_at.or_else(|| response.interact_pointer_pos())
     {
-        if st.edit_points {
-            st.dragged_point = joint_near(st, at, rect);
+        if st.view.edit_points {
+            vp.dragged_point = joint_near(st, &vp.camera, at, rect);
         } else {
-            st.turning = driver_handle(st, at, rect);
+            vp.turning = driver_handle(st, &vp.camera, at, rect);
         }
     }
     if response.drag_stopped() {
-        st.dragged_point = None;
-        st.turning = None;
+        vp.dragged_point = None;
+        vp.turning = None;
         return false;
     }
     // A pointer held still asks for nothing: an edit in every frame would keep the
     // app repainting (and a refused one would be asked again and again).
     let moved = response.drag_delta() != egui::Vec2::ZERO;
-    if let Some(offset) = st.turning {
+    if let Some(offset) = vp.turning {
         if moved && let Some(at) = response.interact_pointer_pos() {
-            turn_to(st, at, rect, offset);
+            turn_to(st, &vp.camera, at, rect, offset);
         }
         return true;
     }
-    if !st.edit_points {
-        st.dragged_point = None;
+    if !st.view.edit_points {
+        vp.dragged_point = None;
         return false;
     }
-    let Some(name) = st.dragged_point.clone() else {
+    let Some(name) = vp.dragged_point.clone() else {
         return false;
     };
     if moved && let Some(at) = response.interact_pointer_pos() {
         let free = ui.input(|i| i.modifiers.alt);
         let to = if free {
-            st.camera.to_world(at, rect)
+            vp.camera.to_world(at, rect)
         } else {
-            snapped(st, &name, at, rect)
+            snapped(st, &vp.camera, &name, at, rect)
         };
         let current = point_position(st, &name);
         if current.is_none_or(|c| (c[0] - to[0]).hypot(c[1] - to[1]) > 1e-12) {
@@ -72,7 +80,7 @@ pub fn handle(ui: &egui::Ui, response: &egui::Response, rect: Rect, st: &mut App
 /// A point of the driver link (not its pivot) within [`GRAB_PT`] of `at`: the angle
 /// between that point's direction from the pivot and the input angle, which the drag
 /// keeps.
-fn driver_handle(st: &AppState, at: Pos2, rect: Rect) -> Option<f64> {
+fn driver_handle(st: &AppState, cam: &Camera, at: Pos2, rect: Rect) -> Option<f64> {
     let m = st.session.mechanism();
     let pose = st.session.pose();
     let pivot_point = m.revolutes[m.driver.pivot].point;
@@ -84,7 +92,7 @@ fn driver_handle(st: &AppState, at: Pos2, rect: Rect) -> Option<f64> {
         .filter(|&p| p != pivot_point)
         .map(|p| {
             let q = pose.points[p].position;
-            (st.camera.to_screen([q.x, q.y], rect).distance(at), q)
+            (cam.to_screen([q.x, q.y], rect).distance(at), q)
         })
         .filter(|(d, _)| *d <= GRAB_PT)
         .min_by(|a, b| a.0.total_cmp(&b.0))
@@ -92,10 +100,10 @@ fn driver_handle(st: &AppState, at: Pos2, rect: Rect) -> Option<f64> {
 }
 
 /// Turns the driver so that its grabbed point points at `at`.
-fn turn_to(st: &mut AppState, at: Pos2, rect: Rect, offset: f64) {
+fn turn_to(st: &mut AppState, cam: &Camera, at: Pos2, rect: Rect, offset: f64) {
     let m = st.session.mechanism();
     let pivot = st.session.pose().points[m.revolutes[m.driver.pivot].point].position;
-    let w = st.camera.to_world(at, rect);
+    let w = cam.to_world(at, rect);
     let pointed = (w[1] - pivot.y).atan2(w[0] - pivot.x) - offset;
     // The turn nearest the current angle: a range such as 242°..326° is reached from
     // atan2's (-180°, 180°] without a jump.
@@ -108,7 +116,7 @@ fn turn_to(st: &mut AppState, at: Pos2, rect: Rect, offset: f64) {
 }
 
 /// The joint within [`GRAB_PT`] of `at`, the nearest.
-fn joint_near(st: &AppState, at: Pos2, rect: Rect) -> Option<String> {
+fn joint_near(st: &AppState, cam: &Camera, at: Pos2, rect: Rect) -> Option<String> {
     let m = st.session.mechanism();
     let pose = st.session.pose();
     st.session
@@ -117,7 +125,7 @@ fn joint_near(st: &AppState, at: Pos2, rect: Rect) -> Option<String> {
         .iter()
         .map(|&p| {
             let q = pose.points[p].position;
-            (st.camera.to_screen([q.x, q.y], rect).distance(at), p)
+            (cam.to_screen([q.x, q.y], rect).distance(at), p)
         })
         .filter(|(d, _)| *d <= GRAB_PT)
         .min_by(|a, b| a.0.total_cmp(&b.0))
@@ -132,8 +140,8 @@ fn point_position(st: &AppState, name: &str) -> Option<[f64; 2]> {
 
 /// The pointer's world place on the grid, then into line with any other joint whose
 /// x or y is within [`ALIGN_PT`].
-fn snapped(st: &AppState, name: &str, at: Pos2, rect: Rect) -> [f64; 2] {
-    let w = st.camera.to_world(at, rect);
+fn snapped(st: &AppState, cam: &Camera, name: &str, at: Pos2, rect: Rect) -> [f64; 2] {
+    let w = cam.to_world(at, rect);
     let mut to = [
         (w[0] / GRID_M).round() * GRID_M,
         (w[1] / GRID_M).round() * GRID_M,
@@ -145,7 +153,7 @@ fn snapped(st: &AppState, name: &str, at: Pos2, rect: Rect) -> [f64; 2] {
             continue;
         }
         let q = pose.points[p].position;
-        let s = st.camera.to_screen([q.x, q.y], rect);
+        let s = cam.to_screen([q.x, q.y], rect);
         if (s.x - at.x).abs() <= ALIGN_PT {
             to[0] = q.x;
         }

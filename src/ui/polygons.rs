@@ -11,47 +11,59 @@ use linkage_diagram::PolygonFigure;
 use linkage_diagram::label::Label;
 use linkage_diagram::layout::LaidPolygon;
 
-use crate::app::AppState;
+use crate::state::AppState;
+use crate::ui::construction::ConstructionView;
 use crate::ui::control_map::ControlKind;
 use crate::ui::polygon_paint::{INK, Paper, draw, pos};
 
 /// An arrow this close to the pointer (points) is the hovered one.
 const HOVER_PX: f32 = 6.0;
 
-/// The polygon pane.
-pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
-    ui.horizontal(|ui| {
-        ui.heading("Polygons");
-        let (text, tip) = match (st.polygons_wide, st.layout.compact()) {
-            (true, _) => ("narrower", "Give the mechanism its room back"),
-            (false, false) => ("enlarge", "Polygons and mechanism share the window equally"),
-            (false, true) => ("enlarge", "Give the sheet the larger part of the screen"),
-        };
-        let button = ui.button(text).on_hover_text(tip);
-        st.controls
-            .note(ui, ControlKind::PolygonLayout, text, &button);
-        if button.clicked() {
-            st.polygons_wide = !st.polygons_wide;
+/// The polygon pane's own state.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PolygonPane {
+    /// The polygon term under the pointer last frame (in a figure or its table row).
+    pub hover: Option<Symbol>,
+    /// The equation being constructed step by step, and the step.
+    pub construction: ConstructionView,
+}
+
+impl PolygonPane {
+    /// The polygon pane.
+    pub fn ui(&mut self, ui: &mut egui::Ui, st: &mut AppState) {
+        ui.horizontal(|ui| {
+            ui.heading("Polygons");
+            let (text, tip) = match (st.layout.polygons_wide, st.layout.compact()) {
+                (true, _) => ("narrower", "Give the mechanism its room back"),
+                (false, false) => ("enlarge", "Polygons and mechanism share the window equally"),
+                (false, true) => ("enlarge", "Give the sheet the larger part of the screen"),
+            };
+            let button = ui.button(text).on_hover_text(tip);
+            st.controls
+                .note(ui, ControlKind::PolygonLayout, text, &button);
+            if button.clicked() {
+                st.layout.polygons_wide = !st.layout.polygons_wide;
+            }
+        });
+        let before = self.hover.take();
+        let mut hovered = None;
+        let s = &st.session;
+        for q in [Quantity::Velocity, Quantity::Acceleration] {
+            ui.strong(title(q));
+            let fig = PolygonFigure::of_position(q, s.mechanism(), s.pose(), s.polygons());
+            let over_figure = figure(ui, &fig, before.as_ref());
+            let over_table = egui::CollapsingHeader::new(format!("{}: vector equations", title(q)))
+                .default_open(false)
+                .show(ui, |ui| table(ui, s.polygons(), q, before.as_ref()))
+                .body_returned
+                .flatten();
+            hovered = hovered.or(over_figure).or(over_table);
         }
-    });
-    let before = st.polygon_hover.take();
-    let mut hovered = None;
-    let s = &st.session;
-    for q in [Quantity::Velocity, Quantity::Acceleration] {
-        ui.strong(title(q));
-        let fig = PolygonFigure::of_position(q, s.mechanism(), s.pose(), s.polygons());
-        let over_figure = figure(ui, &fig, before.as_ref());
-        let over_table = egui::CollapsingHeader::new(format!("{}: vector equations", title(q)))
+        self.hover = hovered;
+        egui::CollapsingHeader::new("Construct an equation step by step")
             .default_open(false)
-            .show(ui, |ui| table(ui, s.polygons(), q, before.as_ref()))
-            .body_returned
-            .flatten();
-        hovered = hovered.or(over_figure).or(over_table);
+            .show(ui, |ui| self.construction.ui(ui, st));
     }
-    st.polygon_hover = hovered;
-    egui::CollapsingHeader::new("Construct an equation step by step")
-        .default_open(false)
-        .show(ui, |ui| crate::ui::construction::section(ui, st));
 }
 
 fn title(q: Quantity) -> &'static str {

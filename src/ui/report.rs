@@ -5,8 +5,8 @@ use eframe::egui;
 
 use linkage::analysis::Report;
 
-use crate::app::AppState;
 use crate::session::derived::Shown;
+use crate::state::AppState;
 
 /// The strip along the bottom. While edits come (a slider dragged) it shows the
 /// report from before them, greyed, until a frame without an edit makes the new one.

@@ -4,11 +4,11 @@ use std::sync::OnceLock;
 
 use eframe::egui;
 
-use crate::app::AppState;
 use crate::catalog::{BUILTIN_SCENES, BuiltinScene};
 use crate::session::{SceneSource, Session};
+use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
-use crate::ui::files;
+use crate::ui::files::{self, Files};
 
 /// Display names of the shipped scenes (their `name` field), read once.
 fn names() -> &'static [String] {
@@ -18,24 +18,24 @@ fn names() -> &'static [String] {
 
 /// The top bar: on a desktop screen every action in a row; on a phone or tablet the
 /// scene, undo, redo and fit, with the rest in a menu.
-pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
+pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &eframe::Frame) {
     egui::Panel::top("scene_bar").show(ui, |ui| {
         if st.layout.compact() {
-            compact_bar(ui, st, frame);
+            compact_bar(ui, st, files, frame);
         } else {
-            wide_bar(ui, st, frame);
+            wide_bar(ui, st, files, frame);
         }
     });
-    files::prompt_window(ui.ctx(), st);
+    files::prompt_window(ui.ctx(), st, files);
     discard_question(ui.ctx(), st);
 }
 
-fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
+fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &eframe::Frame) {
     ui.horizontal_wrapped(|ui| {
         ui.strong("Linkage Lab");
         // The file buttons come before the scene's name, whose width varies, so that
         // they stay in place whichever scene is open.
-        files::buttons(ui, st, frame);
+        files::buttons(ui, st, files, frame);
         scene_picker(ui, st, 300.0);
         new_menu(ui, st);
         synthesis_button(ui, st);
@@ -45,7 +45,7 @@ fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
         history_buttons(ui, st);
         edited_mark(ui, st);
         if ui.button("Fit view").clicked() {
-            st.fit_pending = true;
+            st.commands.fit = true;
         }
         view_toggles(ui, st);
         if let Some(status) = &st.status {
@@ -54,14 +54,14 @@ fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
     });
 }
 
-fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
+fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &eframe::Frame) {
     // On a tablet lying down everything shares one row; on a phone the scene's name
     // takes the rest of the first (its frame and arrow take about 32 points more)
     // and undo, redo and fit go below.
     let one_row = ui.available_width() >= 700.0;
     ui.horizontal(|ui| {
         let menu = ui.menu_button("Menu", |ui| {
-            files::buttons(ui, st, frame);
+            files::buttons(ui, st, files, frame);
             new_menu(ui, st);
             synthesis_button(ui, st);
             if ui.button("Reset edits").clicked() {
@@ -92,7 +92,7 @@ fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
 fn history_and_status(ui: &mut egui::Ui, st: &mut AppState) {
     history_buttons(ui, st);
     if ui.button("Fit view").clicked() {
-        st.fit_pending = true;
+        st.commands.fit = true;
     }
     edited_mark(ui, st);
     if let Some(status) = &st.status {
@@ -175,10 +175,7 @@ fn synthesis_button(ui: &mut egui::Ui, st: &mut AppState) {
     st.controls
         .note(ui, ControlKind::FileButton, "Synthesis…", &synthesis);
     if synthesis.clicked() {
-        st.synthesis = match st.synthesis.take() {
-            Some(_) => None,
-            None => Some(Default::default()),
-        };
+        st.commands.toggle_synthesis = true;
     }
 }
 
@@ -193,15 +190,15 @@ fn edited_mark(ui: &mut egui::Ui, st: &AppState) {
 /// "move points" and the overlays of the view.
 fn view_toggles(ui: &mut egui::Ui, st: &mut AppState) {
     let edit = ui
-        .checkbox(&mut st.edit_points, "move points")
+        .checkbox(&mut st.view.edit_points, "move points")
         .on_hover_text("Drag a joint in the view to move it; Undo takes a drag back");
     st.controls
         .note(ui, ControlKind::Layer, "move points", &edit);
     for (on, label) in [
-        (&mut st.layers.velocities, "v vectors"),
-        (&mut st.layers.accelerations, "a vectors"),
-        (&mut st.layers.traces, "traces"),
-        (&mut st.layers.centres, "instant centres"),
+        (&mut st.view.layers.velocities, "v vectors"),
+        (&mut st.view.layers.accelerations, "a vectors"),
+        (&mut st.view.layers.traces, "traces"),
+        (&mut st.view.layers.centres, "instant centres"),
     ] {
         let r = ui.checkbox(on, label);
         st.controls.note(ui, ControlKind::Layer, label, &r);
@@ -294,7 +291,7 @@ fn menu_item(ui: &mut egui::Ui, st: &mut AppState, label: &str) -> bool {
 
 /// Asks before a scene with unsaved edits is replaced by the one waiting.
 fn discard_question(ctx: &egui::Context, st: &mut AppState) {
-    let next = match (&st.pending_open, st.pending_drawing) {
+    let next = match (&st.commands.open, st.commands.drawing) {
         (Some(waiting), _) => format!("Open \"{}\"", waiting.scene().name),
         (None, true) => "Start a new drawing".to_owned(),
         (None, false) => return,
@@ -321,15 +318,15 @@ fn discard_question(ctx: &egui::Context, st: &mut AppState) {
         });
     match answer {
         Some(true) => {
-            if let Some(s) = st.pending_open.take() {
+            if let Some(s) = st.commands.open.take() {
                 st.open_now(*s);
-            } else if std::mem::take(&mut st.pending_drawing) {
+            } else if std::mem::take(&mut st.commands.drawing) {
                 crate::ui::drawing::start_now(st);
             }
         }
         Some(false) => {
-            st.pending_open = None;
-            st.pending_drawing = false;
+            st.commands.open = None;
+            st.commands.drawing = false;
         }
         None => {}
     }

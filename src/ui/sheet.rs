@@ -4,18 +4,24 @@
 
 use eframe::egui;
 
-use crate::app::AppState;
+use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
 use crate::ui::layout::{SheetTab, VIEW_SHARE};
+use crate::ui::panels::Panels;
 
 /// Lays out the sheet in its part of `ui`'s area and returns the rest, the view's.
 /// The sheet comes first so that the controls' edits land before the view is drawn
 /// (they are applied here): the view shows them in the same frame.
-pub fn show(ui: &mut egui::Ui, st: &mut AppState, drawing: bool) -> egui::Rect {
+pub fn show(
+    ui: &mut egui::Ui,
+    st: &mut AppState,
+    panels: &mut Panels,
+    drawing: bool,
+) -> egui::Rect {
     let area = ui.available_rect_before_wrap();
     let screen = ui.ctx().content_rect().size();
     // "enlarge" (the polygon pane's button) gives the sheet the larger part.
-    let share = if st.polygons_wide {
+    let share = if st.layout.polygons_wide {
         1.0 - VIEW_SHARE
     } else {
         VIEW_SHARE
@@ -30,7 +36,7 @@ pub fn show(ui: &mut egui::Ui, st: &mut AppState, drawing: bool) -> egui::Rect {
     ui.separator();
     egui::ScrollArea::vertical()
         .auto_shrink(false)
-        .show(&mut ui, |ui| page(ui, st, drawing));
+        .show(&mut ui, |ui| page(ui, st, panels, drawing));
     st.apply_edits();
     view
 }
@@ -68,12 +74,12 @@ fn tabs(ui: &mut egui::Ui, st: &mut AppState, drawing: bool) {
     });
 }
 
-fn page(ui: &mut egui::Ui, st: &mut AppState, drawing: bool) {
+fn page(ui: &mut egui::Ui, st: &mut AppState, panels: &mut Panels, drawing: bool) {
     match st.layout.tab {
         SheetTab::Controls if drawing => crate::ui::builder_panel::panel(ui, st),
         SheetTab::Controls => crate::ui::controls::panel(ui, st),
-        SheetTab::Polygons => crate::ui::polygons::panel(ui, st),
-        SheetTab::Plots => crate::ui::plots::panel(ui, st),
+        SheetTab::Polygons => panels.polygons.ui(ui, st),
+        SheetTab::Plots => panels.plots.ui(ui, st),
         SheetTab::Report => crate::ui::report::page(ui, st),
         SheetTab::Accuracy => crate::ui::accuracy::panel(ui, st),
     }

@@ -6,13 +6,14 @@
 //! over unsaved edits), unsaved. The designs are closed form: computed on the click.
 
 use eframe::egui;
-use linkage::SceneFile;
 
-use crate::app::AppState;
 use crate::session::SceneEdit;
 use crate::session::{SceneSource, Session};
+use crate::state::AppState;
 use crate::synthesis::{Design, SynthInputs, SynthKind};
-use crate::ui::control_map::{ControlKind, ControlMap};
+use crate::ui::control_map::ControlKind;
+use crate::ui::fields::number;
+pub use crate::ui::synthesis_design::{Chosen, design_view};
 use crate::ui::synthesis_path::PathTab;
 
 /// The window's inputs and its last design.
@@ -26,17 +27,9 @@ pub struct SynthesisView {
     pub path: PathTab,
 }
 
-/// What to do with a design.
-pub enum Chosen {
-    /// Open it as a new scene.
-    Open(SceneFile),
-    /// Put it in place of the current scene (undo-able).
-    Replace(SceneFile),
-}
-
 /// The window, while open.
-pub fn window(ctx: &egui::Context, st: &mut AppState) {
-    let Some(mut view) = st.synthesis.take() else {
+pub fn window(ctx: &egui::Context, st: &mut AppState, slot: &mut Option<SynthesisView>) {
+    let Some(mut view) = slot.take() else {
         return;
     };
     let mut open = true;
@@ -95,7 +88,7 @@ pub fn window(ctx: &egui::Context, st: &mut AppState) {
         }
     }
     if open {
-        st.synthesis = Some(view);
+        *slot = Some(view);
     }
 }
 
@@ -117,15 +110,6 @@ fn tab(ui: &mut egui::Ui, st: &mut AppState, view: &mut SynthesisView) -> Option
         view.result = Some(crate::synthesis::design(&view.inputs));
     }
     result(ui, st, view)
-}
-
-/// A number field with its label (which names it for screen readers and tests).
-pub(crate) fn number(ui: &mut egui::Ui, v: &mut f64, label: &str, speed: f64) {
-    ui.horizontal(|ui| {
-        let name = ui.label(label);
-        ui.add(egui::DragValue::new(v).speed(speed))
-            .labelled_by(name.id);
-    });
 }
 
 /// The inputs of the design chosen.
@@ -154,19 +138,6 @@ fn inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {
     }
 }
 
-/// A labelled text field for rows of numbers (typed or pasted CSV).
-pub(crate) fn text_area(ui: &mut egui::Ui, text: &mut String, label: &str) {
-    ui.label(label);
-    let r = ui.add(
-        egui::TextEdit::multiline(text)
-            .desired_rows(4)
-            .code_editor(),
-    );
-    r.widget_info(|| {
-        egui::WidgetInfo::labeled(egui::accesskit::Role::MultilineTextInput, true, label)
-    });
-}
-
 /// The design table, or why there is none; returns what to do with it when asked.
 fn result(ui: &mut egui::Ui, st: &mut AppState, view: &SynthesisView) -> Option<Chosen> {
     match &view.result {
@@ -177,39 +148,4 @@ fn result(ui: &mut egui::Ui, st: &mut AppState, view: &SynthesisView) -> Option<
         }
         Some(Ok(design)) => design_view(ui, &mut st.controls, design),
     }
-}
-
-/// A design: its figure, the buttons that open it or put it in place, and its
-/// table; returns what was asked.
-pub fn design_view(
-    ui: &mut egui::Ui,
-    controls: &mut ControlMap,
-    design: &Design,
-) -> Option<Chosen> {
-    crate::ui::synthesis_figure::figure(ui, &design.figure);
-    let chosen = ui
-        .horizontal(|ui| {
-            let open = ui.button("Open as scene");
-            controls.note(ui, ControlKind::FileButton, "Open as scene", &open);
-            let replace = ui.button("Replace this scene");
-            controls.note(ui, ControlKind::FileButton, "Replace this scene", &replace);
-            if open.clicked() {
-                Some(Chosen::Open(design.scene.clone()))
-            } else {
-                replace
-                    .clicked()
-                    .then(|| Chosen::Replace(design.scene.clone()))
-            }
-        })
-        .inner;
-    egui::Grid::new("design table")
-        .striped(true)
-        .show(ui, |ui| {
-            for (what, value) in &design.table {
-                ui.label(what);
-                ui.label(value);
-                ui.end_row();
-            }
-        });
-    chosen
 }

@@ -9,7 +9,7 @@ use egui_plot::{Legend, Line, Plot, PlotPoints, Points};
 use crate::synthesis::{Figure, SynthInputs};
 use crate::synthesis_function::{Desired, FunctionSpec};
 use crate::synthesis_motion::Construction;
-use crate::ui::synthesis::{number, text_area};
+use crate::ui::fields::{number, text_area};
 
 /// The function tab: typed precision points, or a function and its ranges.
 pub fn function_inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {

@@ -4,11 +4,27 @@
 
 use eframe::egui::{self, Align2, FontId, Sense};
 
-use crate::app::AppState;
 use crate::render::Renderer;
-use crate::render::build::build;
+use crate::render::build::{VectorScales, build};
 use crate::render::shape::SharedShapes;
 use crate::render::view::Camera;
+use crate::state::AppState;
+
+/// The view's own state: where it looks, what it drew, and the point being dragged.
+#[derive(Clone, Debug, Default)]
+pub struct Viewport {
+    /// The view camera.
+    pub camera: Camera,
+    /// Vector scales of the last drawn frame.
+    pub scales: VectorScales,
+    /// The mechanism the view drew last: its generation and input angle, rad (UI
+    /// tests check that an edit shows in the frame that makes it).
+    pub drawn: Option<(u64, f64)>,
+    /// The point being dragged, by name.
+    pub dragged_point: Option<String>,
+    /// While the driver is turned by hand: its grabbed point's angle from the input.
+    pub turning: Option<f64>,
+}
 
 /// Pans the camera by a drag (where `pan`) or two fingers, and zooms it by the wheel
 /// about the pointer or by a pinch about the fingers' centre.
@@ -56,37 +72,38 @@ pub fn navigate(
 pub fn show(
     ui: &mut egui::Ui,
     st: &mut AppState,
+    vp: &mut Viewport,
     shapes: &SharedShapes,
     renderer: Option<&Renderer>,
 ) -> f64 {
     let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
     st.controls.view = Some([rect.min.x, rect.min.y, rect.max.x, rect.max.y]);
-    if st.fit_pending && rect.width() > 1.0 {
-        st.camera.fit(st.session.curves().bounds_m, rect);
-        st.fit_pending = false;
+    if st.commands.fit && rect.width() > 1.0 {
+        vp.camera.fit(st.session.curves().bounds_m, rect);
+        st.commands.fit = false;
     }
-    let moving_point = crate::ui::point_drag::handle(ui, &response, rect, st);
+    let moving_point = crate::ui::point_drag::handle(ui, &response, rect, st, vp);
     // A dragged point or a crank turned by hand shows where the pointer is now.
     st.apply_edits();
-    navigate(ui, &response, rect, &mut st.camera, !moving_point);
+    navigate(ui, &response, rect, &mut vp.camera, !moving_point);
     if response.double_clicked() {
-        st.fit_pending = true;
+        st.commands.fit = true;
     }
 
     let ppp = ui.ctx().pixels_per_point();
-    let view = st.camera.uniform(rect, ppp);
+    let view = vp.camera.uniform(rect, ppp);
     let started = web_time::Instant::now();
     if let Ok(mut list) = shapes.lock() {
-        st.scales = build(
+        vp.scales = build(
             &mut list,
             &st.session,
-            &st.camera,
-            st.layers,
+            &vp.camera,
+            st.view.layers,
             f64::from(view.m_per_px),
         );
     }
     let build_us = started.elapsed().as_secs_f64() * 1e6;
-    st.view_drawn = Some((st.session.generation(), st.session.input_rad()));
+    vp.drawn = Some((st.session.generation(), st.session.input_rad()));
 
     let painter = ui.painter_at(rect);
     painter.rect_filled(rect, 0.0, egui::Color32::from_rgb(246, 246, 242));
@@ -100,7 +117,7 @@ pub fn show(
     for &p in &st.session.topology().joint_points {
         let q = pose.points[p].position;
         if q.x.is_finite() && q.y.is_finite() {
-            let at = st.camera.to_screen([q.x, q.y], rect) + offset;
+            let at = vp.camera.to_screen([q.x, q.y], rect) + offset;
             painter.text(
                 at,
                 Align2::LEFT_BOTTOM,
@@ -111,8 +128,8 @@ pub fn show(
         }
     }
 
-    if st.layers.centres {
-        crate::ui::centres::overlay(&painter, rect, st);
+    if st.view.layers.centres {
+        crate::ui::centres::overlay(&painter, rect, st, &vp.camera);
     }
 
     let small = FontId::proportional(12.0);
@@ -120,13 +137,13 @@ pub fn show(
     if let Some(Ok(_)) = st.session.dynamics() {
         legend += &format!(", t = {:.3} s", st.session.time_s());
     }
-    if st.layers.velocities && st.scales.velocity > 0.0 {
-        legend += &format!("\nv: 1 m/s drawn {:.4} m", st.scales.velocity);
+    if st.view.layers.velocities && vp.scales.velocity > 0.0 {
+        legend += &format!("\nv: 1 m/s drawn {:.4} m", vp.scales.velocity);
     }
-    if st.layers.accelerations && st.scales.acceleration > 0.0 {
-        legend += &format!("\na: 1 m/s² drawn {:.4} m", st.scales.acceleration);
+    if st.view.layers.accelerations && vp.scales.acceleration > 0.0 {
+        legend += &format!("\na: 1 m/s² drawn {:.4} m", vp.scales.acceleration);
     }
-    legend += match (st.edit_points, st.layout.compact()) {
+    legend += match (st.view.edit_points, st.layout.compact()) {
         (true, _) => "\ndrag a joint to move it (Alt: off the grid), elsewhere to pan",
         (false, false) => "\ndrag to pan, wheel to zoom, double-click to fit",
         (false, true) => "\ndrag to pan, pinch to zoom, double-tap to fit",

@@ -12,7 +12,7 @@ pub fn app_harness() -> Harness<'static, LinkageApp> {
         .with_size(egui::vec2(1500.0, 950.0))
         .wgpu()
         .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
-    h.state_mut().state.show_timings = false;
+    h.state_mut().state.timing.show = false;
     h
 }
 
@@ -23,8 +23,21 @@ pub fn sized_harness(w: f32, h: f32) -> Harness<'static, LinkageApp> {
         .with_size(egui::vec2(w, h))
         .wgpu()
         .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
-    h.state_mut().state.show_timings = false;
+    h.state_mut().state.timing.show = false;
     h
+}
+
+/// Runs frames until the app is idle, waiting for a dynamic run computed off the
+/// frame as a user waits for it to appear. The run is waited for by its end, not
+/// counted in frames: on a busy machine its thread spans more of them.
+pub fn settle(h: &mut Harness<'static, LinkageApp>) {
+    for _ in 0..100 {
+        h.state_mut().state.session.wait_for_run();
+        if h.try_run().is_ok() {
+            return;
+        }
+    }
+    panic!("the app kept repainting with no run left to wait for");
 }
 
 /// The app at its default scene, 1500×950, with no GPU renderer (the view draws no
@@ -89,7 +102,7 @@ pub fn synthesis_inputs<'h>(
 ) -> &'h mut linkage_lab::synthesis::SynthInputs {
     &mut h
         .state_mut()
-        .state
+        .panels
         .synthesis
         .as_mut()
         .expect("the synthesis window is open")

@@ -40,7 +40,12 @@ fn click_mm(h: &mut Harness<'static, LinkageApp>, x: f64, y: f64) {
     let st = &h.state().state;
     let [x0, y0, x1, y1] = st.controls.view.expect("the canvas is drawn");
     let rect = egui::Rect::from_min_max(egui::pos2(x0, y0), egui::pos2(x1, y1));
-    let at = st.camera.to_screen([x * 1e-3, y * 1e-3], rect);
+    let at = h
+        .state()
+        .panels
+        .viewport
+        .camera
+        .to_screen([x * 1e-3, y * 1e-3], rect);
     click(h, at);
 }
 
@@ -341,7 +346,7 @@ fn a_six_bar_template_edited_by_dragging_a_joint() {
     h.get_by_label("move points").click();
     h.run();
     h.run();
-    assert!(h.state().state.edit_points);
+    assert!(h.state().state.view.edit_points);
     let template = h.state().state.session.scene().clone();
     let swing = |h: &Harness<'static, LinkageApp>| {
         report_of(h.state().state.session.scene()).swings_rad["output"]
@@ -352,7 +357,7 @@ fn a_six_bar_template_edited_by_dragging_a_joint() {
     let rect = egui::Rect::from_min_max(egui::pos2(x0, y0), egui::pos2(x1, y1));
     let e = st.session.mechanism().point_index("E").expect("E");
     let q = st.session.pose().points[e].position;
-    let from = st.camera.to_screen([q.x, q.y], rect);
+    let from = h.state().panels.viewport.camera.to_screen([q.x, q.y], rect);
     let to = from + egui::vec2(12.0, -10.0);
     h.event(egui::Event::PointerMoved(from));
     h.event(egui::Event::PointerButton {
@@ -379,7 +384,7 @@ fn a_six_bar_template_edited_by_dragging_a_joint() {
     let st = &h.state().state;
     assert_eq!(st.session.message(), None);
     let q = st.session.pose().points[e].position;
-    let landed = st.camera.to_screen([q.x, q.y], rect);
+    let landed = h.state().panels.viewport.camera.to_screen([q.x, q.y], rect);
     assert!(
         landed.distance(to) < 3.0,
         "E at {landed:?}, the pointer at {to:?}"
@@ -406,7 +411,7 @@ fn two_fingers_pan_and_zoom_the_drawing() {
     let [x0, y0, x1, y1] = st.controls.view.expect("the canvas is drawn");
     let centre = egui::pos2(0.5 * (x0 + x1), 0.5 * (y0 + y1));
     let (camera, sketch) = (
-        st.camera,
+        h.state().panels.viewport.camera,
         st.builder.as_ref().expect("drawing").sketch().clone(),
     );
     let touch = |h: &mut Harness<'static, LinkageApp>, id: u64, phase, pos| {
@@ -435,7 +440,7 @@ fn two_fingers_pan_and_zoom_the_drawing() {
         touch(&mut h, 2, Move, b);
         h.run();
     }
-    let panned = h.state().state.camera;
+    let panned = h.state().panels.viewport.camera;
     assert!(
         panned.center_m[0] < camera.center_m[0],
         "the view follows the fingers right"
@@ -457,11 +462,11 @@ fn two_fingers_pan_and_zoom_the_drawing() {
     h.run();
     let st = &h.state().state;
     assert!(
-        st.camera.points_per_m > 1.5 * camera.points_per_m,
+        h.state().panels.viewport.camera.points_per_m > 1.5 * camera.points_per_m,
         "spread fingers zoom in"
     );
     // About the fingers' centre: what was under it stays under it (to a point).
-    let stays = st.camera.to_screen(under, rect);
+    let stays = h.state().panels.viewport.camera.to_screen(under, rect);
     assert!(
         stays.distance(pinch_centre) < 1.0,
         "{stays:?} vs {pinch_centre:?}"
@@ -517,7 +522,7 @@ fn a_template_becomes_a_drawing_and_takes_structural_edits() {
         .map(|e| e.label.clone());
     if let Some(label) = flipper {
         click_control(&mut h, ControlKind::SceneItem, &label);
-        if h.state().state.pending_open.is_some() {
+        if h.state().state.commands.open.is_some() {
             click_control(&mut h, ControlKind::FileButton, "Drop the edits and open");
         }
         click_control(&mut h, ControlKind::FileButton, "New…");

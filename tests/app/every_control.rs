@@ -24,13 +24,7 @@ fn harness() -> Harness<'static, LinkageApp> {
     h
 }
 
-/// Runs frames until the app is idle, waiting for a dynamic run being computed off
-/// the frame, as a user waits for it to appear.
-fn settle(h: &mut Harness<'static, LinkageApp>) {
-    h.run();
-    h.state_mut().state.session.wait_for_run();
-    h.run();
-}
+use common::settle;
 
 /// The display name of every scene file in `assets/scenes`.
 fn shipped_scene_names() -> Vec<(PathBuf, String)> {
@@ -62,7 +56,7 @@ fn open_by_picker(h: &mut Harness<'static, LinkageApp>, name: &str) {
             .click();
         settle(h);
     }
-    assert!(h.state().state.pending_open.is_none());
+    assert!(h.state().state.commands.open.is_none());
 }
 
 /// Everything the user sees is finite: pose, polygon tables, plotted curves.
@@ -208,7 +202,7 @@ fn open_template(h: &mut Harness<'static, LinkageApp>, name: &str) {
     settle(h);
     h.get_by_role_and_label(Role::Button, name).click();
     settle(h);
-    if h.state().state.pending_open.is_some() {
+    if h.state().state.commands.open.is_some() {
         h.get_by_role_and_label(Role::Button, "Drop the edits and open")
             .click();
         settle(h);
@@ -279,11 +273,11 @@ fn exercise(h: &mut Harness<'static, LinkageApp>, scene: &str, tally: &mut Tally
         h.get_by_role_and_label(Role::CheckBox, "instant centres")
             .click();
         settle(h);
-        assert_eq!(h.state().state.layers.centres, on, "{scene}");
+        assert_eq!(h.state().state.view.layers.centres, on, "{scene}");
     }
     for (label, wide) in [("enlarge", true), ("narrower", false)] {
         h.get_by_role_and_label(Role::Button, label).click();
         settle(h);
-        assert_eq!(h.state().state.polygons_wide, wide, "{scene}");
+        assert_eq!(h.state().state.layout.polygons_wide, wide, "{scene}");
     }
 }

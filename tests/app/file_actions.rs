@@ -40,8 +40,8 @@ fn harness_answering(answer: PathAnswer) -> (Harness<'static, LinkageApp>, Arc<S
         answer,
         asked: Mutex::new(Vec::new()),
     });
-    h.state_mut().state.files.dialog.chooser = dialog.clone();
-    h.state_mut().state.show_timings = false;
+    h.state_mut().panels.files.dialog.chooser = dialog.clone();
+    h.state_mut().state.timing.show = false;
     h.run();
     (h, dialog)
 }
@@ -88,7 +88,7 @@ fn open_reads_the_scene_the_dialog_chose() {
     assert!(h.query_by_label("opened slider_crank.ron").is_some());
     // The next dialog starts where this file was.
     assert_eq!(
-        h.state().state.files.dialog.last_dir.as_deref(),
+        h.state().panels.files.dialog.last_dir.as_deref(),
         path.parent(),
         "last folder"
     );
@@ -154,8 +154,8 @@ fn a_cancelled_dialog_changes_nothing() {
     click(&mut h, "Open scene…");
     assert_eq!(h.state().state.session.scene(), &before);
     assert_eq!(status(&h), "no file chosen");
-    assert!(h.state().state.files.prompt.is_none());
-    assert!(h.state().state.files.dialog.waiting.is_none());
+    assert!(h.state().panels.files.prompt.is_none());
+    assert!(h.state().panels.files.dialog.waiting.is_none());
 }
 
 #[test]
@@ -177,7 +177,7 @@ fn without_a_dialog_a_typed_path_opens_the_scene() {
         h.state().state.session.source(),
         &SceneSource::File("quick_return.ron".into())
     );
-    assert!(h.state().state.files.prompt.is_none());
+    assert!(h.state().panels.files.prompt.is_none());
 }
 
 #[test]
@@ -353,7 +353,7 @@ fn a_scene_file_dropped_on_the_window_opens() {
     h.run();
     drop(&mut h, "quick_return.ron");
     assert!(
-        h.state().state.pending_open.is_some(),
+        h.state().state.commands.open.is_some(),
         "asks over unsaved edits"
     );
 }

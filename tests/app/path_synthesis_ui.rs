@@ -33,7 +33,7 @@ fn progress(h: &Harness<'static, LinkageApp>) -> linkage::synthesis::path::Progr
 
 fn tab<'h>(h: &'h Harness<'static, LinkageApp>) -> &'h linkage_lab::ui::synthesis::SynthesisView {
     h.state()
-        .state
+        .panels
         .synthesis
         .as_ref()
         .expect("the window is open")
@@ -169,7 +169,7 @@ fn targets_clicked_on_the_canvas_are_searched_to_a_design_that_opens() {
     h.get_by_label("Open as scene").scroll_to_me();
     h.run();
     click(&mut h, "Open as scene");
-    if h.state().state.pending_open.is_some() {
+    if h.state().state.commands.open.is_some() {
         click(&mut h, "Drop the edits and open");
     }
     assert_eq!(h.state().state.session.scene().name, "Path generator");

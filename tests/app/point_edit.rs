@@ -124,14 +124,14 @@ fn a_place_on_the_other_branch_is_refused() {
 #[test]
 fn dragging_a_joint_moves_it_and_dragging_elsewhere_pans() {
     let mut h = common::stateful_harness();
-    h.state_mut().state.edit_points = true;
+    h.state_mut().state.view.edit_points = true;
     h.run();
     let [x0, y0, x1, y1] = h.state().state.controls.view.expect("the view is drawn");
     let rect = egui::Rect::from_min_max(egui::pos2(x0, y0), egui::pos2(x1, y1));
     let st = &h.state().state;
     let c = st.session.mechanism().point_index("C").expect("C");
     let q = st.session.pose().points[c].position;
-    let from = st.camera.to_screen([q.x, q.y], rect);
+    let from = h.state().panels.viewport.camera.to_screen([q.x, q.y], rect);
     let to = from + egui::vec2(-40.0, 25.0);
     let scene = st.session.scene().clone();
     pointer(&mut h, from, Some(true));
@@ -143,7 +143,7 @@ fn dragging_a_joint_moves_it_and_dragging_elsewhere_pans() {
     assert_eq!(st.session.message(), None);
     assert_ne!(st.session.scene(), &scene, "the drag moved C");
     let q = st.session.pose().points[c].position;
-    let landed = st.camera.to_screen([q.x, q.y], rect);
+    let landed = h.state().panels.viewport.camera.to_screen([q.x, q.y], rect);
     // The grid (1 mm) and alignment may move it a little from the pointer.
     assert!(
         landed.distance(to) < 8.0,
@@ -173,12 +173,12 @@ fn dragging_a_joint_moves_it_and_dragging_elsewhere_pans() {
     h.state_mut().state.session.apply(SceneEdit::Undo);
 
     // A drag on empty space pans.
-    let camera = h.state().state.camera;
+    let camera = h.state().panels.viewport.camera;
     let empty = rect.left_bottom() + egui::vec2(30.0, -60.0);
     pointer(&mut h, empty, Some(true));
     pointer(&mut h, empty + egui::vec2(50.0, 0.0), None);
     pointer(&mut h, empty + egui::vec2(50.0, 0.0), Some(false));
-    assert_ne!(h.state().state.camera, camera, "panned");
+    assert_ne!(h.state().panels.viewport.camera, camera, "panned");
     assert_eq!(h.state().state.session.scene(), &scene);
 }
 
@@ -203,7 +203,7 @@ fn dragging_the_crank_pin_turns_the_crank() {
     let turned = |deg: f64| {
         let (s, c) = deg.to_radians().sin_cos();
         let r = q - pivot;
-        st.camera.to_screen(
+        h.state().panels.viewport.camera.to_screen(
             [pivot.x + c * r.x - s * r.y, pivot.y + s * r.x + c * r.y],
             rect,
         )

@@ -9,6 +9,7 @@ use eframe::egui;
 use egui_kittest::{Harness, SnapshotOptions};
 use linkage_lab::AppState;
 use linkage_lab::session::{SceneEdit, Session};
+use linkage_lab::ui::polygons::PolygonPane;
 
 /// Scene, crank angles (deg): the paper-cup feed, both die cutters, the flipper.
 const SHOTS: [(&str, [f64; 3]); 4] = [
@@ -21,6 +22,7 @@ const SHOTS: [(&str, [f64; 3]); 4] = [
 /// The pane's state: the app's, and whether its fonts are set yet.
 struct Pane {
     st: AppState,
+    pane: PolygonPane,
     fonts_set: bool,
 }
 
@@ -33,7 +35,7 @@ fn pane(scene: &str, deg: f64) -> Harness<'static, Pane> {
         session.message()
     );
     let mut st = AppState::new(session);
-    st.show_timings = false;
+    st.timing.show = false;
     Harness::builder()
         .with_size(egui::vec2(620.0, 980.0))
         .wgpu()
@@ -46,11 +48,11 @@ fn pane(scene: &str, deg: f64) -> Harness<'static, Pane> {
                     p.fonts_set = true;
                     return;
                 }
-                egui::ScrollArea::vertical()
-                    .show(ui, |ui| linkage_lab::ui::polygons::panel(ui, &mut p.st));
+                egui::ScrollArea::vertical().show(ui, |ui| p.pane.ui(ui, &mut p.st));
             },
             Pane {
                 st,
+                pane: PolygonPane::default(),
                 fonts_set: false,
             },
         )

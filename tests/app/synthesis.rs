@@ -17,7 +17,7 @@ fn design_and_open(h: &mut Harness<'static, LinkageApp>, tab: &str) -> Kinematic
     click(h, tab);
     click(h, "Design");
     click(h, "Open as scene");
-    if h.state().state.pending_open.is_some() {
+    if h.state().state.commands.open.is_some() {
         click(h, "Drop the edits and open");
     }
     let session = &h.state().state.session;
@@ -32,7 +32,7 @@ fn each_design_opens_as_a_scene_that_meets_its_requirements() {
     h.run();
     h.run();
     click(&mut h, "Synthesis…");
-    assert!(h.state().state.synthesis.is_some(), "the window is open");
+    assert!(h.state().panels.synthesis.is_some(), "the window is open");
     click(&mut h, "Design");
     h.snapshot("synthesis_crank_rocker");
 
@@ -66,7 +66,7 @@ fn each_design_opens_as_a_scene_that_meets_its_requirements() {
     let mut k = design_and_open(&mut h, "function");
     let inputs = h
         .state()
-        .state
+        .panels
         .synthesis
         .as_ref()
         .expect("open")
@@ -147,7 +147,7 @@ fn five_positions_and_a_function_show_their_constructions() {
     // A frame to lay the window out for five positions before clicking in it.
     h.run();
     click(&mut h, "Design");
-    let view = h.state().state.synthesis.as_ref().expect("open");
+    let view = h.state().panels.synthesis.as_ref().expect("open");
     let Some(Ok(design)) = &view.result else {
         panic!("{:?}", view.result);
     };
@@ -164,7 +164,7 @@ fn five_positions_and_a_function_show_their_constructions() {
     click(&mut h, "function");
     click(&mut h, "a function");
     click(&mut h, "Design");
-    let view = h.state().state.synthesis.as_ref().expect("open");
+    let view = h.state().panels.synthesis.as_ref().expect("open");
     let Some(Ok(design)) = &view.result else {
         panic!("{:?}", view.result);
     };

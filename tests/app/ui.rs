@@ -35,15 +35,12 @@ fn open_scene(h: &mut Harness<'static, LinkageApp>, key: &str) {
     h.get_by_role_and_label(Role::ComboBox, "Scene").click();
     h.run();
     h.get_by_label(&name).click();
-    h.run();
-    if h.state().state.pending_open.is_some() {
+    common::settle(h);
+    if h.state().state.commands.open.is_some() {
         h.get_by_role_and_label(Role::Button, "Drop the edits and open")
             .click();
-        h.run();
+        common::settle(h);
     }
-    // A dynamic scene's run is computed off the frame: wait for it, as a user would.
-    h.state_mut().state.session.wait_for_run();
-    h.run();
     assert_eq!(
         h.state().state.session.source(),
         &SceneSource::Builtin(key.into())
@@ -158,7 +155,7 @@ fn an_edit_shows_in_the_view_in_the_frame_that_makes_it() {
         let now = (st.session.generation(), st.session.input_rad());
         assert!((now.1.to_degrees() - 77.0).abs() < 1e-9, "{key}: {now:?}");
         assert_eq!(
-            st.view_drawn,
+            h.state().panels.viewport.drawn,
             Some(now),
             "{key}: the crank, in the same frame"
         );
@@ -173,12 +170,12 @@ fn an_edit_shows_in_the_view_in_the_frame_that_makes_it() {
         assert!(st.session.generation() > before, "{key}: rebuilt");
         let now = (st.session.generation(), st.session.input_rad());
         assert_eq!(
-            st.view_drawn,
+            h.state().panels.viewport.drawn,
             Some(now),
             "{key}: a length, in the same frame"
         );
         assert!(
-            st.edits.is_empty(),
+            st.commands.edits.is_empty(),
             "{key}: every edit asked for is applied"
         );
     }
@@ -371,6 +368,6 @@ fn phone_menu_and_synthesis(h: &mut Harness<'static, LinkageApp>) {
     common::click(h, synthesis);
     h.run();
     h.run();
-    assert!(h.state().state.synthesis.is_some());
+    assert!(h.state().panels.synthesis.is_some());
     h.snapshot("phone_390x844_synthesis");
 }

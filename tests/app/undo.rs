@@ -14,7 +14,7 @@ fn harness() -> Harness<'static, LinkageApp> {
     let mut h = Harness::builder()
         .with_size(egui::vec2(1500.0, 950.0))
         .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
-    h.state_mut().state.show_timings = false;
+    h.state_mut().state.timing.show = false;
     h.run();
     h
 }
@@ -126,7 +126,7 @@ fn opening_another_scene_over_unsaved_edits_asks_first() {
         .click();
     h.run();
     assert_eq!(h.state().state.session.scene(), &edited, "kept");
-    assert!(h.state().state.pending_open.is_none());
+    assert!(h.state().state.commands.open.is_none());
 
     h.state_mut()
         .state

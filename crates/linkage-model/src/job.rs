@@ -159,7 +159,9 @@ impl<W: Work> Job<W> {
     /// (`None` if its thread panicked).
     pub fn finish(mut self) -> Option<Box<W>> {
         #[cfg(not(target_arch = "wasm32"))]
-        if let State::Thread(w) = std::mem::replace(&mut self.state, State::Gone) {
+        if matches!(self.state, State::Thread(_))
+            && let State::Thread(w) = std::mem::replace(&mut self.state, State::Gone)
+        {
             return w.join();
         }
         while self.is_running() {
@@ -304,6 +306,17 @@ mod tests {
         assert_eq!(sliced.snapshot(), &1000);
         assert_eq!(sliced.take().map(|c| c.n), Some(1000));
         assert!(sliced.take().is_none(), "the work is handed out once");
+    }
+
+    /// A job polled to its end, then finished, hands its work back (the dynamic run
+    /// waited for after the frames saw it end).
+    #[test]
+    fn a_job_seen_done_still_hands_its_work_back() {
+        let mut job = Job::start(Count { n: 0, end: 50 });
+        while job.is_running() {
+            job.poll(f64::INFINITY);
+        }
+        assert_eq!(job.finish().map(|c| c.n), Some(50));
     }
 
     #[test]

@@ -12,5 +12,6 @@ pub mod path_inputs;
 pub mod path_job;
 pub mod session;
 pub mod synthesis;
+pub mod synthesis_design;
 pub mod synthesis_function;
 pub mod synthesis_motion;

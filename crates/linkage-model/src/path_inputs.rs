@@ -8,7 +8,7 @@ use linkage::synthesis::path::{
 };
 use linkage::synthesis::rows::{RowError, read_rows};
 
-use crate::synthesis::Design;
+use crate::synthesis_design::{Design, Figure};
 
 /// One target, in the units the window shows.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -237,7 +237,7 @@ pub fn design_of(d: &PathDesign, member: Member) -> Option<Design> {
     Some(Design {
         table,
         scene,
-        figure: crate::synthesis::Figure::None,
+        figure: Figure::None,
     })
 }
 

@@ -2,8 +2,10 @@
 //! kind, in the units a designer types (mm, deg), and the design as a table of words
 //! and a scene. The solver does the synthesis (`linkage::synthesis`).
 
-use linkage::SceneFile;
 use linkage::synthesis::{CrankRocker, DieCutterSpec, crank_rocker, die_cutter, four_bar_scene};
+
+pub use crate::synthesis_design::{Design, Figure};
+use crate::synthesis_design::{deg, mm, row};
 
 /// Which design.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -83,28 +85,6 @@ impl Default for SynthInputs {
     }
 }
 
-/// A design: its table (quantity, value in words) and its scene.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Design {
-    /// What the design is, row by row.
-    pub table: Vec<(String, String)>,
-    /// What to draw beside the table.
-    pub figure: Figure,
-    /// The scene it opens as.
-    pub scene: SceneFile,
-}
-
-/// A figure of a design.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Figure {
-    /// None.
-    None,
-    /// A function generator's structural error: `[crank deg, error deg]`.
-    ErrorCurve(Vec<[f64; 2]>),
-    /// A motion generator's construction.
-    Construction(crate::synthesis_motion::Construction),
-}
-
 /// The design of `inputs`, or why there is none (in words: it is shown at once).
 ///
 /// # Errors
@@ -125,18 +105,6 @@ pub fn design(inputs: &SynthInputs) -> Result<Design, String> {
         // Not closed form: the window runs its search (`crate::path_job`).
         SynthKind::Path => Err("a path design comes from its search: press Search".into()),
     }
-}
-
-pub(crate) fn mm(m: f64) -> String {
-    format!("{:.3} mm", m * 1e3)
-}
-
-pub(crate) fn deg(rad: f64) -> String {
-    format!("{:.3}°", rad.to_degrees())
-}
-
-pub(crate) fn row(what: &str, value: String) -> (String, String) {
-    (what.to_owned(), value)
 }
 
 fn rocker([cd_mm, swing_deg, k]: [f64; 3]) -> Result<Design, String> {
@@ -181,10 +149,4 @@ fn die([h_mm, k, l_mm, rpm]: [f64; 4]) -> Result<Design, String> {
         scene,
         figure: Figure::None,
     })
-}
-
-/// Rows of `width` numbers, as the CLI reads its files (a header and `#` comments
-/// skipped): a targets file pasted into the app reads as it does there.
-pub(crate) fn numbers(text: &str, width: usize) -> Result<Vec<Vec<f64>>, String> {
-    linkage::synthesis::rows::read_rows(text, width).map_err(|e| e.to_string())
 }

@@ -6,7 +6,7 @@ use linkage::synthesis::function::{
     FunctionFourBar, PrecisionPoint, chebyshev_spacing, error_curve, freudenstein, structural_error,
 };
 
-use crate::synthesis::{Design, Figure, deg, mm, numbers, row};
+use crate::synthesis_design::{Design, Figure, deg, mm, numbers, row};
 
 /// A function to generate.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

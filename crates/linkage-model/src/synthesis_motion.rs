@@ -8,24 +8,8 @@ use linkage::synthesis::motion::{BodyPose, MotionFourBar};
 use linkage::synthesis::positions::{PositionsChoice, PositionsDesign, through_positions};
 use linkage::synthesis::rows::read_rows;
 
-use crate::synthesis::{Design, Figure, row};
-
-/// A motion generator's construction, mm.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Construction {
-    /// Each position: the body's reference point and its angle, rad.
-    pub positions: Vec<([f64; 2], f64)>,
-    /// The poles of the pairs of positions that turn.
-    pub poles: Vec<[f64; 2]>,
-    /// Segments of the centre-point curve(s).
-    pub curve: Vec<[[f64; 2]; 2]>,
-    /// The Burmester points (five positions).
-    pub burmester: Vec<[f64; 2]>,
-    /// The fixed pivots.
-    pub fixed: [[f64; 2]; 2],
-    /// The moving pivots in the first position.
-    pub moving: [[f64; 2]; 2],
-}
+pub use crate::synthesis_design::Construction;
+use crate::synthesis_design::{Design, Figure, row};
 
 /// What fixes the four-bar, per number of positions.
 #[derive(Clone, Debug, PartialEq)]

@@ -6,7 +6,7 @@ use linkage::Vec2;
 use linkage::scene::ForceWhen;
 use linkage::sketch::{Sketch, SketchDamper, SketchForce, SketchSpring};
 
-use super::edit::{Element, Refusal, SketchEdit, finite};
+use super::sketch_edit::{Element, Refusal, SketchEdit, finite};
 
 /// Stiffness of a new spring, N/m.
 pub const NEW_SPRING_N_PER_M: f64 = 1000.0;

@@ -7,6 +7,7 @@
 
 pub mod edit;
 pub mod loads;
+pub mod sketch_edit;
 pub mod stored;
 
 use linkage::SceneFile;

@@ -1,0 +1,205 @@
+//! The app's state that every panel reads: the model (the open session and the
+//! drawing), the commands the panels queue for it, the playback, the view settings
+//! the top bar sets, the status line, the layout and the frame's timings. The panels'
+//! own state (the view's camera, the plot tab, the polygon pane's hover, the file
+//! prompts, the synthesis window) is theirs ([`crate::ui::panels::Panels`]). This
+//! module uses no panel: the panels use it.
+
+use crate::builder::Builder;
+use crate::render::build::Layers;
+use crate::session::{SceneEdit, Session};
+use crate::ui::control_map::ControlMap;
+use crate::ui::layout::LayoutState;
+
+/// Scene opened at start when the URL names none.
+pub const DEFAULT_SCENE: &str = "die_cutter";
+
+/// Smoothed CPU cost of a frame's work, µs.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct FrameCost {
+    /// Solver: the pose, polygons and shapes of the frame.
+    pub solver_us: f64,
+    /// The whole `ui` call: solver, panels, plots and layout (not the GPU).
+    pub frame_us: f64,
+}
+
+impl FrameCost {
+    pub(crate) fn add(&mut self, solver_us: f64, frame_us: f64) {
+        // Exponential average over about 30 frames: steady enough to read.
+        let k = if self.frame_us == 0.0 {
+            1.0
+        } else {
+            1.0 / 30.0
+        };
+        self.solver_us += k * (solver_us - self.solver_us);
+        self.frame_us += k * (frame_us - self.frame_us);
+    }
+}
+
+/// CPU time of the frames in which an edit landed: what a user dragging a slider
+/// waits for (the frame's `ui` call: the edit, the panels and plots; not the GPU),
+/// and of the edits alone (what `cargo bench -p linkage-model --bench edit` measures natively).
+#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
+pub struct EditTiming {
+    /// Frames that carried at least one edit.
+    pub frames: u64,
+    /// The last such frame, ms.
+    pub last_ms: f64,
+    /// The slowest such frame, ms.
+    pub max_ms: f64,
+    /// The last such frame's edits applied to the session, ms.
+    pub last_edit_ms: f64,
+    /// The slowest such frame's edits, ms.
+    pub max_edit_ms: f64,
+}
+
+impl EditTiming {
+    pub(crate) fn add(&mut self, frame_ms: f64, edit_ms: f64) {
+        self.frames += 1;
+        self.last_ms = frame_ms;
+        self.max_ms = self.max_ms.max(frame_ms);
+        self.last_edit_ms = edit_ms;
+        self.max_edit_ms = self.max_edit_ms.max(edit_ms);
+    }
+}
+
+/// What the panels asked of the model and the app, not yet done.
+#[derive(Default)]
+pub struct Commands {
+    /// Edits of the session, applied between panels ([`AppState::apply_edits`]).
+    pub edits: Vec<SceneEdit>,
+    /// A scene waiting to replace one with unsaved edits, until the user says so.
+    pub open: Option<Box<Session>>,
+    /// A new drawing waiting, likewise.
+    pub drawing: bool,
+    /// Fit the view at the next frame (after opening a scene or on request).
+    pub fit: bool,
+    /// Open the synthesis window, or close it when open.
+    pub toggle_synthesis: bool,
+}
+
+/// Whether and how fast the animation runs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Playback {
+    /// Whether the animation runs.
+    pub playing: bool,
+    /// Animation speed, times real time.
+    pub speed: f64,
+}
+
+/// What the top bar sets for the view and the exported sheet.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ViewSettings {
+    /// Overlays on the mechanism.
+    pub layers: Layers,
+    /// Whether dragging in the view moves points (else it pans).
+    pub edit_points: bool,
+}
+
+/// What the frames cost, measured.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Timing {
+    /// Frame cost.
+    pub cost: FrameCost,
+    /// How long the frames that carried an edit took.
+    pub edit_timing: EditTiming,
+    /// Time spent applying this frame's edits so far, ms.
+    pub edit_ms: f64,
+    /// Counts scenes opened (a frame that opens one is an edit frame).
+    pub opened: u64,
+    /// Show measured CPU times (off in snapshot tests, whose pixels must repeat).
+    pub show: bool,
+}
+
+/// Everything the panels read and change.
+pub struct AppState {
+    /// The mechanism being viewed.
+    pub session: Session,
+    /// The mechanism being drawn, while the drawing tools are out.
+    pub builder: Option<Builder>,
+    /// What the panels asked for and the app has not yet done.
+    pub commands: Commands,
+    /// The animation.
+    pub play: Playback,
+    /// The view's overlays and mode.
+    pub view: ViewSettings,
+    /// A line about the last file action (saved, exported, failed).
+    pub status: Option<String>,
+    /// Where this frame's controls are (tests drive the app through it).
+    pub controls: ControlMap,
+    /// The arrangement of the panels for the screen, and the sheet's tab.
+    pub layout: LayoutState,
+    /// What the frames cost.
+    pub timing: Timing,
+}
+
+impl AppState {
+    /// State over `session`, paused, fitted at the first frame.
+    pub fn new(session: Session) -> Self {
+        Self {
+            session,
+            builder: None,
+            commands: Commands {
+                fit: true,
+                ..Commands::default()
+            },
+            play: Playback {
+                playing: false,
+                speed: 1.0,
+            },
+            view: ViewSettings::default(),
+            status: None,
+            controls: ControlMap::default(),
+            layout: LayoutState::default(),
+            timing: Timing {
+                cost: FrameCost::default(),
+                edit_timing: EditTiming::default(),
+                edit_ms: 0.0,
+                opened: 0,
+                show: true,
+            },
+        }
+    }
+
+    /// Asks for `edit` to the session: the panels ask while they are laid out, and
+    /// the app applies the edits between panels, so that no panel sees the session
+    /// change under it.
+    pub fn edit(&mut self, edit: SceneEdit) {
+        self.commands.edits.push(edit);
+    }
+
+    /// Applies the edits asked for, in order, and adds their time to the frame's.
+    pub fn apply_edits(&mut self) {
+        if self.commands.edits.is_empty() {
+            return;
+        }
+        let started = web_time::Instant::now();
+        for edit in std::mem::take(&mut self.commands.edits) {
+            self.session.apply(edit);
+        }
+        self.timing.edit_ms += started.elapsed().as_secs_f64() * 1e3;
+    }
+
+    /// Replaces the session (a new scene), keeping the view settings.
+    pub fn open(&mut self, session: Session) {
+        if self.session.is_dirty() {
+            // The user says first whether the unsaved edits may go
+            // (`ui::scene_picker::discard_question`).
+            self.commands.open = Some(Box::new(session));
+            return;
+        }
+        self.open_now(session);
+    }
+
+    /// Opens `session` whatever the current one holds.
+    pub fn open_now(&mut self, session: Session) {
+        self.commands.open = None;
+        self.builder = None;
+        // Edits asked of the old scene mean nothing to the new one.
+        self.commands.edits.clear();
+        self.session = session;
+        self.timing.opened += 1;
+        self.commands.fit = true;
+        self.play.playing = false;
+    }
+}
