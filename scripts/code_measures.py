@@ -228,7 +228,7 @@ def main():
                     long_fns.append((n, f"{rel}:{line} {fn}"))
             for m in re.finditer(r"Result<[^;{]*?,\s*String\s*>", text):
                 string_results.append(f"{rel}:{text[:m.start()].count(chr(10)) + 1}")
-    app_state = re.search(r"pub struct AppState \{(.*?)\n\}", (ROOT / "src/app.rs").read_text(), re.S)
+    app_state = re.search(r"pub struct AppState \{(.*?)\n\}", (ROOT / "src/state.rs").read_text(), re.S)
     fields = len(re.findall(r"^\s*pub \w+:", app_state.group(1), re.M)) if app_state else 0
     tests = [p for p in (ROOT / "tests").iterdir() if p.suffix == ".rs" or (p / "main.rs").exists()]
     print(f"import cycles: {len(all_cycles)} over {sum(map(len, all_cycles))} files")

@@ -388,7 +388,8 @@ impl eframe::App for LinkageApp {
             self.drawing_store.update(self.state.builder.as_ref());
             crate::web::publish_controls(
                 &self.state,
-                &self.panels,
+                &self.panels.viewport.camera,
+                self.panels.synthesis.as_ref(),
                 self.frames_drawn + 1,
                 self.renderer.is_some(),
             );

@@ -80,8 +80,8 @@ struct PublishedSearch {
 }
 
 /// The path search of the synthesis window, if one was started.
-fn path_search(panels: &crate::ui::panels::Panels) -> Option<PublishedSearch> {
-    let view = panels.synthesis.as_ref()?;
+fn path_search(synthesis: Option<&crate::ui::synthesis::SynthesisView>) -> Option<PublishedSearch> {
+    let view = synthesis?;
     let job = view.path.job.as_ref()?;
     let p = job.snapshot().progress;
     Some(PublishedSearch {
@@ -157,11 +157,11 @@ fn degrees_exactly(rad: f64) -> f64 {
 /// GPU renderer started.
 pub fn publish_controls(
     st: &crate::state::AppState,
-    panels: &crate::ui::panels::Panels,
+    camera: &crate::render::view::Camera,
+    synthesis: Option<&crate::ui::synthesis::SynthesisView>,
     frame: u64,
     renderer: bool,
 ) {
-    let camera = &panels.viewport.camera;
     let pose = st.session.pose();
     let published = Published {
         frame,
@@ -184,12 +184,9 @@ pub fn publish_controls(
             links: b.sketch().links.len(),
             complete: b.problem.is_none(),
         }),
-        path_targets: panels
-            .synthesis
-            .as_ref()
-            .map_or(0, |v| v.inputs.path.targets.len()),
-        path_search: path_search(panels),
-        path_refused: panels.synthesis.as_ref().and_then(|v| v.path.refused()),
+        path_targets: synthesis.map_or(0, |v| v.inputs.path.targets.len()),
+        path_search: path_search(synthesis),
+        path_refused: synthesis.and_then(|v| v.path.refused()),
         arrangement: st.layout.arrangement,
         sheet_tab: st.layout.tab,
     };

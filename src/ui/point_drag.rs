@@ -11,7 +11,6 @@ use eframe::egui::{self, Pos2, Rect};
 use crate::render::view::Camera;
 use crate::session::SceneEdit;
 use crate::state::AppState;
-use crate::ui::viewport::Viewport;
 
 /// How near a joint (points) a press must be to grab it.
 const GRAB_PT: f32 = 10.0;
@@ -20,6 +19,15 @@ const ALIGN_PT: f32 = 6.0;
 /// The grid, metres.
 const GRID_M: f64 = 1e-3;
 
+/// A joint being dragged, or the driver turned by hand.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PointDrag {
+    /// The point being dragged, by name.
+    pub dragged_point: Option<String>,
+    /// While the driver is turned by hand: its grabbed point's angle from the input.
+    pub turning: Option<f64>,
+}
+
 /// Handles the view's pointer in edit mode; returns whether a point is being dragged
 /// (then the view does not pan).
 pub fn handle(
@@ -27,7 +35,8 @@ pub fn handle(
     response: &egui::Response,
     rect: Rect,
     st: &mut AppState,
-    vp: &mut Viewport,
+    cam: &Camera,
+    drag: &mut PointDrag,
 ) -> bool {
     // Grab by where the button went down: by the frame that sees the drag start the
     // pointer may have gone several points on (a slow frame, a quick hand).
@@ -36,38 +45,38 @@ pub fn handle(
         && let Some(at) = pressed_at.or_else(|| response.interact_pointer_pos())
     {
         if st.view.edit_points {
-            vp.dragged_point = joint_near(st, &vp.camera, at, rect);
+            drag.dragged_point = joint_near(st, cam, at, rect);
         } else {
-            vp.turning = driver_handle(st, &vp.camera, at, rect);
+            drag.turning = driver_handle(st, cam, at, rect);
         }
     }
     if response.drag_stopped() {
-        vp.dragged_point = None;
-        vp.turning = None;
+        drag.dragged_point = None;
+        drag.turning = None;
         return false;
     }
     // A pointer held still asks for nothing: an edit in every frame would keep the
     // app repainting (and a refused one would be asked again and again).
     let moved = response.drag_delta() != egui::Vec2::ZERO;
-    if let Some(offset) = vp.turning {
+    if let Some(offset) = drag.turning {
         if moved && let Some(at) = response.interact_pointer_pos() {
-            turn_to(st, &vp.camera, at, rect, offset);
+            turn_to(st, cam, at, rect, offset);
         }
         return true;
     }
     if !st.view.edit_points {
-        vp.dragged_point = None;
+        drag.dragged_point = None;
         return false;
     }
-    let Some(name) = vp.dragged_point.clone() else {
+    let Some(name) = drag.dragged_point.clone() else {
         return false;
     };
     if moved && let Some(at) = response.interact_pointer_pos() {
         let free = ui.input(|i| i.modifiers.alt);
         let to = if free {
-            vp.camera.to_world(at, rect)
+            cam.to_world(at, rect)
         } else {
-            snapped(st, &vp.camera, &name, at, rect)
+            snapped(st, cam, &name, at, rect)
         };
         let current = point_position(st, &name);
         if current.is_none_or(|c| (c[0] - to[0]).hypot(c[1] - to[1]) > 1e-12) {

@@ -9,6 +9,7 @@ use crate::render::build::{VectorScales, build};
 use crate::render::shape::SharedShapes;
 use crate::render::view::Camera;
 use crate::state::AppState;
+use crate::ui::point_drag::PointDrag;
 
 /// The view's own state: where it looks, what it drew, and the point being dragged.
 #[derive(Clone, Debug, Default)]
@@ -20,10 +21,8 @@ pub struct Viewport {
     /// The mechanism the view drew last: its generation and input angle, rad (UI
     /// tests check that an edit shows in the frame that makes it).
     pub drawn: Option<(u64, f64)>,
-    /// The point being dragged, by name.
-    pub dragged_point: Option<String>,
-    /// While the driver is turned by hand: its grabbed point's angle from the input.
-    pub turning: Option<f64>,
+    /// A joint dragged, or the driver turned by hand.
+    pub drag: PointDrag,
 }
 
 /// Pans the camera by a drag (where `pan`) or two fingers, and zooms it by the wheel
@@ -82,7 +81,8 @@ pub fn show(
         vp.camera.fit(st.session.curves().bounds_m, rect);
         st.commands.fit = false;
     }
-    let moving_point = crate::ui::point_drag::handle(ui, &response, rect, st, vp);
+    let moving_point =
+        crate::ui::point_drag::handle(ui, &response, rect, st, &vp.camera, &mut vp.drag);
     // A dragged point or a crank turned by hand shows where the pointer is now.
     st.apply_edits();
     navigate(ui, &response, rect, &mut vp.camera, !moving_point);
