@@ -14,7 +14,9 @@ if ! command -v chromium >/dev/null; then
 fi
 (cd tests/browser && npm ci --no-audit --no-fund)
 node --test tests/browser/frames_test.mjs
+started=$(date +%s)
 bash scripts/build_web.sh
+echo "== web builds took $(( $(date +%s) - started )) s"
 # The CLI the browser test compares the app's diagram download with.
 cargo build -q -p linkage-cli
 target_dir="${CARGO_TARGET_DIR:-target}"
@@ -39,7 +41,7 @@ fi
 # SwiftShader's Vulkan as adapter the WebGPU-only one (tests/browser/common.mjs).
 status=0
 for build in webgl2 webgpu; do
-    echo "== $build build"
+    echo "== $build build (browser tests from $(( $(date +%s) - started )) s after the web builds began)"
     export LINKAGE_BUILD=$build
     node tests/browser/browser_test.mjs "http://127.0.0.1:$port/" || status=1
     # Every scene file, every kind of control; the picker and the URL fragment in

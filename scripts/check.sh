@@ -7,16 +7,21 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-echo "== dependencies"
+# Each section's header carries the seconds since the start: where CI's time goes
+# (docs/architecture.md, "CI time").
+checks_started=$(date +%s)
+section() { echo "== $1 (at $(( $(date +%s) - checks_started )) s)"; }
+
+section "dependencies"
 bash scripts/install_deps.sh
 
-echo "== cargo fmt --check"
+section "cargo fmt --check"
 cargo fmt --all -- --check
 
-echo "== clippy (native, all targets)"
+section "clippy (native, all targets)"
 cargo clippy --workspace --all-targets -- -D warnings
 
-echo "== clippy (wasm32: the solver, the CLI and the app compile for the browser)"
+section "clippy (wasm32: the solver, the CLI and the app compile for the browser)"
 # With the browser's own lints: std::time::Instant/SystemTime compile for wasm32 but
 # panic there at run time, so they are refused (use web_time).
 # The app in both web builds: WebGL2 through glow (`webgl`), WebGPU through wgpu (`webgpu`).
@@ -25,18 +30,18 @@ CLIPPY_CONF_DIR=scripts/clippy_wasm cargo clippy --workspace --target wasm32-unk
 CLIPPY_CONF_DIR=scripts/clippy_wasm cargo clippy -p linkage-lab --features webgpu \
     --target wasm32-unknown-unknown -- -D warnings
 
-echo "== tests"
+section "tests"
 # winit and wgpu warn without a runtime dir; the UI tests need none, give them one.
 mkdir -m700 -p /tmp/xdg && export XDG_RUNTIME_DIR=/tmp/xdg
 cargo test --workspace
 
-echo "== fuzzing and properties at scale (release mode)"
+section "fuzzing and properties at scale (release mode)"
 # 10^5 mutated scene files, and 34,000 each of random four-bars, slider-cranks and
 # six-bars on both solver paths (the plain test run above does a few thousand).
 LINKAGE_FUZZ_CASES=100000 LINKAGE_PROPERTY_CASES=34000 \
     cargo test --release -p linkage --test fuzz_scenes --test properties -- --nocapture
 
-echo "== CLI over every scene"
+section "CLI over every scene"
 cargo build -q -p linkage-cli
 bin="${CARGO_TARGET_DIR:-target}/debug"
 for scene in assets/scenes/*.ron; do
@@ -45,11 +50,13 @@ for scene in assets/scenes/*.ron; do
     echo "ok $scene"
 done
 
-echo "== native smoke run (Xvfb)"
+section "native smoke run (Xvfb)"
 bash scripts/smoke_native.sh
 
-echo "== native file dialog (zenity under Xvfb)"
+section "native file dialog (zenity under Xvfb)"
 bash scripts/smoke_file_dialog.sh
 
-echo "== web demo in headless Chromium"
+section "web demo in headless Chromium"
 bash scripts/browser_test.sh
+
+section "done"

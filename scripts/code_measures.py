@@ -6,6 +6,7 @@ state's fields. Reads source, builds nothing. Test code (`#[cfg(test)]` modules 
 `tests/`) is left out of the function counts, as it is of the product.
 
     python3 scripts/code_measures.py            # the summary
+    python3 scripts/code_measures.py --mermaid linkage   # a crate's module graph
     python3 scripts/code_measures.py --list     # and every cycle (with its edges),
                                                 # long function and Result<_, String>
 """
@@ -18,6 +19,8 @@ CRATES = {"linkage-lab": ROOT / "src"} | {
     p.name: p / "src" for p in sorted((ROOT / "crates").iterdir()) if (p / "src").is_dir()
 }
 LONG = 80
+# Folders drawn file by file in the module graphs (the app's panels).
+FILE_LEVEL = {"ui"}
 
 
 def strip_comments(text):
@@ -130,7 +133,8 @@ def crate_graph(src):
             if tuple(full[:n]) in mods:
                 owner = tuple(full[:n])
                 if n < len(full) and (owner, full[n]) in reexports:
-                    return target(owner, reexports[(owner, full[n])], seen + 1) or mods[owner]
+                    # Followed to where it is defined; none when another crate's.
+                    return target(owner, reexports[(owner, full[n])], seen + 1)
                 return mods[owner]
         return None
 
@@ -142,13 +146,20 @@ def crate_graph(src):
         paths = use_paths(texts[f])
         # A module brought in by `use` (`use crate::ui;`) is then named inline
         # (`ui::plots::panel(..)`): those paths count too.
-        aliases = {}
+        # Child modules declared here are named inline too (`commands::run(..)`).
+        aliases = {
+            m.group(1): list(mod) + [m.group(1)]
+            for m in re.finditer(r"^\s*(?:pub(?:\([\w:]+\))?\s+)?mod (\w+);", texts[f], re.M)
+            if tuple(list(mod) + [m.group(1)]) in mods
+        }
         for p in paths:
             full = absolute(mod, p)
             if full and tuple(full) in mods and tuple(full) != mod[: len(full)]:
                 aliases[p[-1]] = full
+        # A facade (`pub use edit::SceneEdit;`) names no use of its own.
+        body = re.sub(r"\bpub(?:\([\w:]+\))?\s+use\s+[^;]+;", "", texts[f])
         for alias, full in aliases.items():
-            for m in re.finditer(rf"(?<![\w:]){alias}((?:::\w+)+)", texts[f]):
+            for m in re.finditer(rf"(?<![\w:]){alias}((?:::\w+)+)", body):
                 paths.append(["crate"] + full + m.group(1).split("::")[1:])
         for p in paths:
             t = target(mod, p)
@@ -206,7 +217,30 @@ def functions(text):
                 break
 
 
+def mermaid(crate):
+    """The crate's modules (a folder counted as one) and which uses which, as a
+    mermaid graph."""
+    src = CRATES[crate]
+    graph = crate_graph(src)
+
+    def top(f):
+        mod = module_of(src, f)
+        if len(mod) > 1 and mod[0] in FILE_LEVEL:
+            return "/".join(mod[:2])
+        return mod[0] if mod else ("main" if f.name == "main.rs" else "lib")
+
+    edges = sorted({(top(a), top(b)) for a in graph for b in graph[a] if top(a) != top(b)})
+    name = lambda m: m.replace("/", "_")  # noqa: E731  mermaid ids take no slash
+    lines = ["graph TD"] + [
+        f"    {name(a)}[{a}] --> {name(b)}[{b}]" for a, b in edges if "lib" not in (a, b)
+    ]
+    return "\n".join(lines)
+
+
 def main():
+    if "--mermaid" in sys.argv:
+        print(mermaid(sys.argv[sys.argv.index("--mermaid") + 1]))
+        return
     listing = "--list" in sys.argv
     all_cycles, long_fns, string_results, cycle_edges = [], [], [], []
     for name, src in CRATES.items():

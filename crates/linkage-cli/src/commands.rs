@@ -8,8 +8,8 @@ use linkage::synthesis::{DieCutterSpec, crank_rocker, die_cutter, die_cutter_as_
 use linkage::{Kinematics, Mechanism, Solution};
 use serde_json::{Value, json};
 
+use crate::args::{Command, Format, SceneArgs, SynthCommand};
 use crate::io::{check_finite, describe, json_text, load, to_csv};
-use crate::{Command, Format, SceneArgs, SynthCommand};
 
 /// Why a command did not finish.
 #[derive(Debug)]

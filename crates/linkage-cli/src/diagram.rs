@@ -3,50 +3,12 @@
 //! as PNG rendered from that SVG by resvg (`linkage_diagram::png`) with the app's own
 //! font.
 
-use std::path::PathBuf;
-
-use clap::ValueEnum;
 use linkage::instant_centres::instant_centres;
 use linkage::polygon::polygons;
 use linkage_diagram::svg::{Parts, Position, sheet};
 
-use crate::SceneArgs;
+use crate::args::{DiagramArgs, Part, SceneArgs};
 use crate::io::load;
-
-/// A part of the sheet.
-#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
-pub enum Part {
-    /// The mechanism's pose, with a scale bar.
-    Pose,
-    /// The velocity polygon.
-    Velocity,
-    /// The acceleration polygon.
-    Acceleration,
-    /// The instant centres on the pose.
-    Centres,
-    /// The vector-equation tables.
-    Table,
-}
-
-/// Options of `linkage diagram`.
-#[derive(clap::Args, Debug)]
-pub struct DiagramArgs {
-    /// Input (crank) angle in degrees.
-    #[arg(long, allow_hyphen_values = true)]
-    pub input_deg: f64,
-    /// Write the SVG here (without --svg or --png it goes to standard output).
-    #[arg(long)]
-    pub svg: Option<PathBuf>,
-    /// Write a PNG here, rendered from the SVG.
-    #[arg(long)]
-    pub png: Option<PathBuf>,
-    /// PNG resolution, dots per inch (the sheet is A4).
-    #[arg(long, default_value_t = 150.0)]
-    pub dpi: f32,
-    /// What the sheet holds, comma-separated.
-    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Part::Pose, Part::Velocity, Part::Acceleration, Part::Table])]
-    pub what: Vec<Part>,
-}
 
 /// The SVG text of the sheet, and the PNG written if asked; returns what goes to
 /// standard output (the SVG when no file was named).

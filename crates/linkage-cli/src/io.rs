@@ -6,7 +6,7 @@ use linkage::scene::{Branch, SolverPath};
 use linkage::{Kinematics, Mechanism};
 use serde_json::Value;
 
-use crate::{PathArg, SceneArgs};
+use crate::args::{PathArg, SceneArgs};
 
 pub(crate) fn load(args: &SceneArgs) -> Result<Kinematics, String> {
     let text = std::fs::read_to_string(&args.scene)

@@ -4,8 +4,7 @@
 use linkage::kinetostatics::{JointKind, Kinetostatics};
 use serde_json::{Value, json};
 
-use crate::Format;
-use crate::SceneArgs;
+use crate::args::{Format, SceneArgs};
 use crate::io::{describe, json_text, load, records_to_csv};
 
 /// Runs the cycle and formats it; a singular amplification is an empty CSV field

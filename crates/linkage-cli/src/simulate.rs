@@ -1,30 +1,12 @@
 //! `linkage simulate`: samples on a uniform time grid with every link's angle and
 //! speed and the energy terms; JSON adds the events and the run's cost.
 
-use clap::ValueEnum;
 use linkage::dynamics::{Method, Settings, Simulation, simulate};
 use linkage::{Kinematics, Mechanism};
 use serde_json::{Value, json};
 
+use crate::args::{Format, MethodArg, SceneArgs, SimArgs};
 use crate::io::{check_finite, json_text, load, to_csv};
-use crate::{Format, SceneArgs};
-
-/// Integration method.
-#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
-pub enum MethodArg {
-    /// The flipper paper's energy increments (steps of --dphi).
-    Energy,
-    /// Semi-implicit (symplectic) Euler, fixed --dt.
-    Euler,
-    /// Classical Runge–Kutta 4, fixed --dt.
-    Rk4,
-    /// Implicit midpoint, fixed --dt: A-stable, for stiff springs.
-    Implicit,
-    /// Adaptive Dormand–Prince 5(4), --rtol/--atol.
-    Dp5,
-    /// Adaptive Dormand–Prince 8(5,3), --rtol/--atol.
-    Dop853,
-}
 
 impl MethodArg {
     /// The solver's method.
@@ -38,43 +20,6 @@ impl MethodArg {
             MethodArg::Dop853 => Method::Dop853,
         }
     }
-}
-
-/// Options of a dynamics run.
-#[derive(clap::Args, Debug, Clone)]
-pub struct SimArgs {
-    /// Integration method.
-    #[arg(long, value_enum, default_value_t = MethodArg::Dop853)]
-    pub method: MethodArg,
-    /// Time step of the fixed-step methods, s; for the adaptive ones the largest step
-    /// (default: none).
-    #[arg(long, allow_hyphen_values = true)]
-    pub dt: Option<f64>,
-    /// Angle step of the energy-increment method, rad.
-    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-4)]
-    pub dphi: f64,
-    /// Relative tolerance of the adaptive methods.
-    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-10)]
-    pub rtol: f64,
-    /// Absolute tolerance of the adaptive methods (rad, rad/s).
-    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-12)]
-    pub atol: f64,
-    /// End time, s (or the first end stop).
-    #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
-    pub t_end: f64,
-    /// Ignore the scene's end stops.
-    #[arg(long)]
-    pub no_stops: bool,
-    /// Output grid, s (the method's dense output).
-    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-3)]
-    pub dt_out: f64,
-    /// Link whose angle is the coordinate at the start (default: the scene's driver).
-    #[arg(long)]
-    pub coordinate: Option<String>,
-    /// Keep the starting coordinate through its dead points (the run then fails
-    /// there instead of switching).
-    #[arg(long)]
-    pub no_switch: bool,
 }
 
 impl SimArgs {

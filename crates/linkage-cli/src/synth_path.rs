@@ -7,7 +7,7 @@ use linkage::synthesis::path::{
 };
 use serde_json::json;
 
-use crate::PathSearchArgs;
+use crate::args::PathSearchArgs;
 use crate::io::json_text;
 
 /// Runs the search `args` describes; writes the best design's scene to `args.out`

@@ -1,30 +1,11 @@
 //! `linkage tradeoff`: the work–precision table (CSV on stdout) and its plot (PNG).
 
-use std::path::PathBuf;
-
 use linkage::dynamics::tradeoff::{default_plan, measure, plan_settings, reference_run};
 use linkage::dynamics::{Method, Settings};
 
-use crate::SceneArgs;
+use crate::args::{SceneArgs, TradeoffArgs};
 use crate::io::{load, records_to_csv};
 use crate::plot::{Series, work_precision_png};
-
-/// Options of `linkage tradeoff`.
-#[derive(clap::Args, Debug)]
-pub struct TradeoffArgs {
-    /// End time, s (or the first end stop).
-    #[arg(long, allow_hyphen_values = true, default_value_t = 2.0)]
-    pub t_end: f64,
-    /// Ignore the scene's end stops.
-    #[arg(long)]
-    pub no_stops: bool,
-    /// Grid on which the error against the reference is measured, s.
-    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-3)]
-    pub grid: f64,
-    /// Also write the error-against-CPU-time plot here (PNG).
-    #[arg(long)]
-    pub png: Option<PathBuf>,
-}
 
 /// Runs every method of the default plan against the DOP853 rtol-1e-13 reference.
 pub fn run(scene: &SceneArgs, args: &TradeoffArgs) -> Result<String, String> {

@@ -1,0 +1,381 @@
+//! The command line as clap reads it: every subcommand and its options. A leaf of
+//! the CLI: the commands read these, and `main` dispatches on them.
+
+use std::path::PathBuf;
+
+use clap::{Parser, Subcommand, ValueEnum};
+
+use crate::counts;
+
+/// Planar linkage kinematics, analysis and synthesis from scene files.
+#[derive(Parser, Debug)]
+#[command(name = "linkage", version, about)]
+pub(crate) struct Cli {
+    #[command(subcommand)]
+    pub(crate) command: Command,
+}
+
+/// Output format.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub(crate) enum Format {
+    Csv,
+    Json,
+}
+
+/// Solver path.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub(crate) enum PathArg {
+    /// Closed form when the chain decomposes into dyads, else Newton.
+    Auto,
+    /// Closed-form Assur dyads.
+    ClosedForm,
+    /// Newton–Raphson on the loop-closure constraints.
+    Newton,
+}
+
+/// Options shared by the commands that solve a scene.
+#[derive(clap::Args, Debug)]
+pub(crate) struct SceneArgs {
+    /// Scene file (RON).
+    pub(crate) scene: PathBuf,
+    /// Override assembly branches: POINT=left|right|along|against|flip[,...]
+    #[arg(long)]
+    pub(crate) branch: Option<String>,
+    /// Solver path.
+    #[arg(long, value_enum, default_value_t = PathArg::Auto)]
+    pub(crate) path: PathArg,
+    /// Input speed in rad/s for velocities (default: the scene's crank speed).
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) speed_rad_s: Option<f64>,
+}
+
+#[derive(Subcommand, Debug)]
+pub(crate) enum Command {
+    /// One input cycle (or the assemblable range) as CSV or JSON.
+    Sweep {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// Number of positions (at least 2: the cycle's ends).
+        #[arg(long, default_value_t = 360, allow_hyphen_values = true, value_parser = counts::at_least_two)]
+        steps: usize,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Csv)]
+        format: Format,
+    },
+    /// One position; JSON adds the velocity and acceleration polygon equations.
+    At {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// Input (crank) angle in degrees.
+        #[arg(long, allow_hyphen_values = true)]
+        input_deg: f64,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Json)]
+        format: Format,
+    },
+    /// Assembly range, limit positions, strokes, swings, K, Grashof, transmission angle, toggles (JSON).
+    Report {
+        #[command(flatten)]
+        scene: SceneArgs,
+    },
+    /// Forward dynamics of the 1-DOF chain from rest at the scene's start angle:
+    /// samples on a uniform time grid (CSV or JSON with events and cost).
+    Simulate {
+        #[command(flatten)]
+        scene: SceneArgs,
+        #[command(flatten)]
+        sim: SimArgs,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Csv)]
+        format: Format,
+    },
+    /// Input torque (Newton-Euler and virtual work), joint reactions and force
+    /// amplification over one input cycle at the scene's crank speed.
+    Kinetostatics {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// Number of positions.
+        #[arg(long, default_value_t = 360, allow_hyphen_values = true, value_parser = counts::at_least_one)]
+        steps: usize,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Csv)]
+        format: Format,
+    },
+    /// The work-precision table: per method and tolerance or step, CPU time, RHS
+    /// evaluations and error against a DOP853 rtol-1e-13 reference (CSV; --png plots it).
+    Tradeoff {
+        #[command(flatten)]
+        scene: SceneArgs,
+        #[command(flatten)]
+        args: TradeoffArgs,
+    },
+    /// An A4 sheet of one position to hand in: pose, velocity and acceleration
+    /// polygons with scales, vector-equation tables, instant centres (SVG; --png too).
+    Diagram {
+        #[command(flatten)]
+        scene: SceneArgs,
+        #[command(flatten)]
+        args: DiagramArgs,
+    },
+    /// A scene as the fragment of a share link (`doc=1.…`: the file deflated and
+    /// base64url-encoded, as the app's share link carries it); with --decode, a link,
+    /// fragment or payload back to the scene file, byte for byte.
+    Share {
+        /// Scene file (RON) to pack.
+        #[arg(required_unless_present = "decode", conflicts_with = "decode")]
+        scene: Option<PathBuf>,
+        /// A share link, its fragment or its payload, to unpack.
+        #[arg(long)]
+        decode: Option<String>,
+    },
+    /// Dimensional synthesis.
+    Synth {
+        #[command(subcommand)]
+        what: SynthCommand,
+    },
+}
+
+#[derive(Subcommand, Debug)]
+pub(crate) enum SynthCommand {
+    /// Crank-rocker from rocker length, swing and time ratio K (JSON; --scene-out writes a scene).
+    CrankRocker {
+        /// Rocker length CD, m.
+        #[arg(long, allow_hyphen_values = true)]
+        rocker: f64,
+        /// Rocker swing, degrees.
+        #[arg(long, allow_hyphen_values = true)]
+        swing_deg: f64,
+        /// Time ratio K (> 1).
+        #[arg(long, allow_hyphen_values = true)]
+        k: f64,
+        /// Angle of the first rocker limit position about D, degrees.
+        #[arg(long, default_value_t = 45.0, allow_hyphen_values = true)]
+        rocker_start_deg: f64,
+        /// The free choice: A's angle on the synthesis circle (default: best transmission angle).
+        #[arg(long, allow_hyphen_values = true)]
+        arc_deg: Option<f64>,
+        /// Which mirror circle A lies on when --arc-deg is given (+1 or -1).
+        #[arg(long, default_value_t = 1, allow_hyphen_values = true)]
+        side: i8,
+        /// Write the four-bar as a scene file here.
+        #[arg(long)]
+        scene_out: Option<PathBuf>,
+    },
+    /// A four-bar function generator through precision points (Freudenstein: exact for
+    /// three, least squares for more; JSON; --scene-out writes a scene).
+    Function {
+        /// CSV of precision points: `input_deg, output_deg` per row (a header allowed).
+        #[arg(long)]
+        points: PathBuf,
+        /// Ground AD, m.
+        #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
+        ground: f64,
+        /// Write the four-bar as a scene file here.
+        #[arg(long)]
+        scene_out: Option<PathBuf>,
+    },
+    /// A four-bar that carries a body through three, four or five positions (three:
+    /// the centre points of two moving pivots; four: two fixed pivots on the
+    /// centre-point curve; five: two of the Burmester points; JSON with the poles and
+    /// a check by the solver; --scene-out).
+    Motion {
+        /// CSV of the body's positions: `x_m, y_m, angle_deg` per row (a header allowed).
+        #[arg(long)]
+        poses: PathBuf,
+        /// Three positions: the moving pivots in the body's frame, m: x1 y1 x2 y2.
+        #[arg(long, num_args = 4, allow_hyphen_values = true, value_names = ["X1", "Y1", "X2", "Y2"])]
+        moving: Vec<f64>,
+        /// Four positions: the fixed pivots are the centre-point curve's points
+        /// nearest these, m: x1 y1 x2 y2.
+        #[arg(long, num_args = 4, allow_hyphen_values = true, value_names = ["X1", "Y1", "X2", "Y2"])]
+        fixed_near: Vec<f64>,
+        /// Five positions: which two Burmester points (as listed, from 1) make the
+        /// four-bar.
+        #[arg(long, num_args = 2, value_names = ["I", "J"], allow_hyphen_values = true, value_parser = counts::at_least_one)]
+        pair: Vec<usize>,
+        /// Write the four-bar as a scene file here.
+        #[arg(long)]
+        scene_out: Option<PathBuf>,
+    },
+    /// A four-bar whose coupler point passes through 3 to 20 target points (a global
+    /// search polished by least squares; JSON with the designs ranked by their
+    /// largest miss and the time taken; the same designs for the same seed).
+    Path(PathSearchArgs),
+    /// The die cutter's toggle six-bar from stroke H, K and CD = CE = L (scene RON on stdout).
+    DieCutter {
+        /// Stroke H, mm.
+        #[arg(long, allow_hyphen_values = true, default_value_t = 50.0)]
+        stroke_mm: f64,
+        /// Time ratio K.
+        #[arg(long, allow_hyphen_values = true, default_value_t = 1.3)]
+        k: f64,
+        /// CD = CE = L, mm.
+        #[arg(long, allow_hyphen_values = true, default_value_t = 600.0)]
+        link_mm: f64,
+        /// Crank speed, rpm.
+        #[arg(long, allow_hyphen_values = true, default_value_t = 50.0)]
+        rpm: f64,
+        /// Build the "as printed" variant with these AB and BC (mm) instead.
+        #[arg(long, allow_hyphen_values = true, num_args = 2, value_names = ["AB_MM", "BC_MM"])]
+        as_printed: Option<Vec<f64>>,
+    },
+}
+
+/// The arguments of `linkage synth path`.
+#[derive(clap::Args, Debug)]
+pub(crate) struct PathSearchArgs {
+    /// CSV of targets: `x_m, y_m` per row, or `x_m, y_m, crank_deg` with --timed
+    /// (a header allowed). Untimed targets are met in the order given, once round
+    /// the coupler curve, in either direction.
+    #[arg(long)]
+    pub(crate) points: PathBuf,
+    /// The third column prescribes the crank angle at each target (only the
+    /// differences matter).
+    #[arg(long)]
+    pub(crate) timed: bool,
+    /// Untimed targets may be met in any order (each where the curve passes nearest).
+    #[arg(long, conflicts_with = "timed")]
+    pub(crate) any_order: bool,
+    /// Seed of the search.
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = counts::any_u64)]
+    pub(crate) seed: u64,
+    /// Write the best design as a scene file here.
+    #[arg(long, alias = "scene-out")]
+    pub(crate) out: Option<PathBuf>,
+    /// Write the best design's two cognates (the other four-bars that trace the same
+    /// curve) as scene files here.
+    #[arg(long, num_args = 2, value_names = ["COGNATE1", "COGNATE2"])]
+    pub(crate) cognate_out: Option<Vec<PathBuf>>,
+    /// Stop after this many distinct families (a design and its two cognates)
+    /// within tolerance (the search also stops when restarts find no new one).
+    #[arg(long, default_value_t = 1, allow_hyphen_values = true, value_parser = counts::at_least_one)]
+    pub(crate) solutions: usize,
+    /// Within tolerance: the largest miss is at most this share of the targets' size.
+    #[arg(long, default_value_t = 1e-6)]
+    pub(crate) tolerance: f64,
+    /// Most evaluations of a candidate linkage.
+    #[arg(long, default_value_t = 3_000_000, allow_hyphen_values = true, value_parser = counts::at_least_one_u64)]
+    pub(crate) max_evaluations: u64,
+    /// The crank must turn through a whole revolution.
+    #[arg(long)]
+    pub(crate) crank_turns: bool,
+    /// Let the crank rock (the default; kept for scripts that ask for it).
+    #[arg(long, hide = true, conflicts_with = "crank_turns")]
+    pub(crate) rocking_crank: bool,
+    /// Least transmission angle over the crank's travel through the targets, degrees.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub(crate) min_transmission_deg: f64,
+    /// Both ground pivots within this box, m (default: within 4 times the targets'
+    /// size of their centroid, each way).
+    #[arg(long, num_args = 4, allow_hyphen_values = true, value_names = ["X0", "Y0", "X1", "Y1"])]
+    pub(crate) ground_region: Option<Vec<f64>>,
+    /// Allow the targets on different assembly branches (through a dead point).
+    #[arg(long)]
+    pub(crate) any_branch: bool,
+}
+
+/// Options of `linkage diagram`.
+#[derive(clap::Args, Debug)]
+pub(crate) struct DiagramArgs {
+    /// Input (crank) angle in degrees.
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) input_deg: f64,
+    /// Write the SVG here (without --svg or --png it goes to standard output).
+    #[arg(long)]
+    pub(crate) svg: Option<PathBuf>,
+    /// Write a PNG here, rendered from the SVG.
+    #[arg(long)]
+    pub(crate) png: Option<PathBuf>,
+    /// PNG resolution, dots per inch (the sheet is A4).
+    #[arg(long, default_value_t = 150.0)]
+    pub(crate) dpi: f32,
+    /// What the sheet holds, comma-separated.
+    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Part::Pose, Part::Velocity, Part::Acceleration, Part::Table])]
+    pub(crate) what: Vec<Part>,
+}
+
+/// Options of a dynamics run.
+#[derive(clap::Args, Debug, Clone)]
+pub(crate) struct SimArgs {
+    /// Integration method.
+    #[arg(long, value_enum, default_value_t = MethodArg::Dop853)]
+    pub(crate) method: MethodArg,
+    /// Time step of the fixed-step methods, s; for the adaptive ones the largest step
+    /// (default: none).
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) dt: Option<f64>,
+    /// Angle step of the energy-increment method, rad.
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-4)]
+    pub(crate) dphi: f64,
+    /// Relative tolerance of the adaptive methods.
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-10)]
+    pub(crate) rtol: f64,
+    /// Absolute tolerance of the adaptive methods (rad, rad/s).
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-12)]
+    pub(crate) atol: f64,
+    /// End time, s (or the first end stop).
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1.0)]
+    pub(crate) t_end: f64,
+    /// Ignore the scene's end stops.
+    #[arg(long)]
+    pub(crate) no_stops: bool,
+    /// Output grid, s (the method's dense output).
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-3)]
+    pub(crate) dt_out: f64,
+    /// Link whose angle is the coordinate at the start (default: the scene's driver).
+    #[arg(long)]
+    pub(crate) coordinate: Option<String>,
+    /// Keep the starting coordinate through its dead points (the run then fails
+    /// there instead of switching).
+    #[arg(long)]
+    pub(crate) no_switch: bool,
+}
+
+/// Options of `linkage tradeoff`.
+#[derive(clap::Args, Debug)]
+pub(crate) struct TradeoffArgs {
+    /// End time, s (or the first end stop).
+    #[arg(long, allow_hyphen_values = true, default_value_t = 2.0)]
+    pub(crate) t_end: f64,
+    /// Ignore the scene's end stops.
+    #[arg(long)]
+    pub(crate) no_stops: bool,
+    /// Grid on which the error against the reference is measured, s.
+    #[arg(long, allow_hyphen_values = true, default_value_t = 1e-3)]
+    pub(crate) grid: f64,
+    /// Also write the error-against-CPU-time plot here (PNG).
+    #[arg(long)]
+    pub(crate) png: Option<PathBuf>,
+}
+
+/// A part of the sheet.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum Part {
+    /// The mechanism's pose, with a scale bar.
+    Pose,
+    /// The velocity polygon.
+    Velocity,
+    /// The acceleration polygon.
+    Acceleration,
+    /// The instant centres on the pose.
+    Centres,
+    /// The vector-equation tables.
+    Table,
+}
+
+/// Integration method.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum MethodArg {
+    /// The flipper paper's energy increments (steps of --dphi).
+    Energy,
+    /// Semi-implicit (symplectic) Euler, fixed --dt.
+    Euler,
+    /// Classical Runge–Kutta 4, fixed --dt.
+    Rk4,
+    /// Implicit midpoint, fixed --dt: A-stable, for stiff springs.
+    Implicit,
+    /// Adaptive Dormand–Prince 5(4), --rtol/--atol.
+    Dp5,
+    /// Adaptive Dormand–Prince 8(5,3), --rtol/--atol.
+    Dop853,
+}
