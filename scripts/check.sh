@@ -18,6 +18,9 @@ bash scripts/install_deps.sh
 section "cargo fmt --check"
 cargo fmt --all -- --check
 
+section "architecture: no import cycle, docs/architecture.md's module graphs true"
+python3 scripts/code_measures.py --check
+
 section "clippy (native, all targets)"
 cargo clippy --workspace --all-targets -- -D warnings
 

@@ -7,6 +7,7 @@ state's fields. Reads source, builds nothing. Test code (`#[cfg(test)]` modules 
 
     python3 scripts/code_measures.py            # the summary
     python3 scripts/code_measures.py --mermaid linkage   # a crate's module graph
+    python3 scripts/code_measures.py --check    # CI: no cycle, docs/architecture.md true
     python3 scripts/code_measures.py --list     # and every cycle (with its edges),
                                                 # long function and Result<_, String>
 """
@@ -237,7 +238,26 @@ def mermaid(crate):
     return "\n".join(lines)
 
 
+def check():
+    """Exit status 1 when a file-level import cycle exists or a module graph in
+    docs/architecture.md no longer matches the code."""
+    failed = False
+    for name, src in CRATES.items():
+        for comp in cycles(crate_graph(src)):
+            print("import cycle:", " <-> ".join(str(f.relative_to(ROOT)) for f in comp))
+            failed = True
+    doc = (ROOT / "docs/architecture.md").read_text()
+    for m in re.finditer(r"<!-- crate: ([\w-]+) -->\n```mermaid\n(.*?)\n```", doc, re.S):
+        if m.group(2).strip() != mermaid(m.group(1)).strip():
+            print(f"docs/architecture.md: the graph of {m.group(1)} is out of date:")
+            print(f"python3 scripts/code_measures.py --mermaid {m.group(1)}")
+            failed = True
+    sys.exit(1 if failed else 0)
+
+
 def main():
+    if "--check" in sys.argv:
+        check()
     if "--mermaid" in sys.argv:
         print(mermaid(sys.argv[sys.argv.index("--mermaid") + 1]))
         return
