@@ -26,6 +26,7 @@ pub mod kinematics;
 pub mod kinetostatics;
 pub mod lanes;
 pub mod model;
+mod model_from_scene;
 pub mod motion;
 pub mod newton;
 pub mod overflow;
