@@ -95,6 +95,30 @@ pub(super) fn ground_pivot(push: &mut impl FnMut(Option<Shape>), c: Vec2, pin: f
     }
 }
 
+/// The pose as drawn: where its points fall in the camera's local coordinates, and
+/// how thick its bars and pins are.
+struct Drawn<'a> {
+    s: &'a Session,
+    cam: &'a Camera,
+    /// A bar's width, m.
+    bar: f32,
+    /// A pin's radius, m.
+    pin: f32,
+}
+
+impl Drawn<'_> {
+    /// Point `p` of the pose, m.
+    fn at(&self, p: usize) -> [f64; 2] {
+        let q = self.s.pose().points[p].position;
+        [q.x, q.y]
+    }
+
+    /// Point `p` in the camera's local coordinates.
+    fn pos(&self, p: usize) -> Vec2 {
+        self.cam.local(self.at(p))
+    }
+}
+
 /// Fills `out` with the shapes of the session's current pose.
 pub fn build(
     out: &mut Vec<Shape>,
@@ -105,28 +129,34 @@ pub fn build(
 ) -> VectorScales {
     out.clear();
     let m = s.mechanism();
-    let pose = s.pose();
     let size = m.size_m.max(1e-12);
-    let bar = (0.016 * size) as f32;
-    let pin = (0.024 * size) as f32;
-    let at = |p: usize| -> [f64; 2] {
-        let q = pose.points[p].position;
-        [q.x, q.y]
+    let d = Drawn {
+        s,
+        cam,
+        bar: (0.016 * size) as f32,
+        pin: (0.024 * size) as f32,
     };
-    let pos = |p: usize| cam.local(at(p));
-    let topo = s.topology();
     let mut push = |shape: Option<Shape>| out.extend(shape);
-
     // Ground pivots: a support triangle on a hatched base.
     for r in m
         .revolutes
         .iter()
         .filter(|r| r.a == m.ground || r.b == m.ground)
     {
-        ground_pivot(&mut push, cam.local(at(r.point)), pin, bar);
+        ground_pivot(&mut push, d.pos(r.point), d.pin, d.bar);
     }
+    ground_guides(&mut push, &d);
+    if layers.traces {
+        push_traces(&mut push, s, cam, 0.22 * d.bar);
+    }
+    links(&mut push, &d);
+    sliders_springs_and_pins(&mut push, &d);
+    arrows(&mut push, &d, layers, m_per_px)
+}
 
-    // Guides fixed to ground: two rails over the slider's travel, hatched outside.
+/// Guides fixed to ground: two rails over the slider's travel, hatched outside.
+fn ground_guides(push: &mut impl FnMut(Option<Shape>), d: &Drawn<'_>) {
+    let (m, pose) = (d.s.mechanism(), d.s.pose());
     for (i, sl) in m
         .sliders
         .iter()
@@ -135,67 +165,61 @@ pub fn build(
     {
         let dir = sl.direction(&pose.links);
         let through = pose.links[sl.guide].world(&sl.through_local);
-        let travel = s
-            .curves()
-            .slide_travel_m
-            .get(i)
-            .copied()
-            .flatten()
-            .unwrap_or([pose.slides[i].displacement_m; 2]);
-        let margin = 4.0 * f64::from(pin);
+        let travel =
+            d.s.curves()
+                .slide_travel_m
+                .get(i)
+                .copied()
+                .flatten()
+                .unwrap_or([pose.slides[i].displacement_m; 2]);
+        let margin = 4.0 * f64::from(d.pin);
         let a = through + dir * (travel[0] - margin);
         let b = through + dir * (travel[1] + margin);
         let n = Vec2::new(-dir.y as f32, dir.x as f32);
-        let (a, b) = (cam.local([a.x, a.y]), cam.local([b.x, b.y]));
-        let off = n * 1.7 * pin;
-        push(Shape::new(
-            Kind::Line,
-            [a + off, b + off, a],
-            0.3 * bar,
-            colour::GROUND,
-            [0.0; 2],
-        ));
-        push(Shape::new(
-            Kind::Line,
-            [a - off, b - off, a],
-            0.3 * bar,
-            colour::GROUND,
-            [0.0; 2],
-        ));
+        let (a, b) = (d.cam.local([a.x, a.y]), d.cam.local([b.x, b.y]));
+        let off = n * 1.7 * d.pin;
+        for rail in [off, -off] {
+            push(Shape::new(
+                Kind::Line,
+                [a + rail, b + rail, a],
+                0.3 * d.bar,
+                colour::GROUND,
+                [0.0; 2],
+            ));
+        }
         push(Shape::new(
             Kind::Ground,
             [a, b - off, a - off],
             0.0,
             colour::GROUND,
-            [1.2 * pin, 0.0],
+            [1.2 * d.pin, 0.0],
         ));
     }
+}
 
-    if layers.traces {
-        push_traces(&mut push, s, cam, 0.22 * bar);
-    }
-
-    // Links: bars, plates for three or more joints (or an offset tool point).
+/// Links: bars, plates for three or more joints (or an offset tool point).
+fn links(push: &mut impl FnMut(Option<Shape>), d: &Drawn<'_>) {
+    let (m, topo, bar) = (d.s.mechanism(), d.s.topology(), d.bar);
     for l in m.moving_links() {
         let colour = if l == m.driver.link {
             colour::DRIVER
         } else {
             colour::LINK
         };
-        let others = topo.link_others[l].iter().map(|&p| pos(p));
+        let others = topo.link_others[l].iter().map(|&p| d.pos(p));
         match topo.link_joints[l].as_slice() {
             &[a, b, c, ..] => push(Shape::new(
                 Kind::Plate,
-                [pos(a), pos(b), pos(c)],
+                [d.pos(a), d.pos(b), d.pos(c)],
                 bar,
                 colour::PLATE,
                 [0.0; 2],
             )),
             &[a, b] => {
-                let (a, b) = (pos(a), pos(b));
+                let (a, b) = (d.pos(a), d.pos(b));
                 let off_line = others
                     .map(|p| (p, distance_to_line(p, a, b)))
-                    .filter(|(_, d)| *d > 2.0 * bar)
+                    .filter(|(_, dist)| *dist > 2.0 * bar)
                     .max_by(|x, y| x.1.total_cmp(&y.1));
                 match off_line {
                     Some((p, _)) => push(Shape::new(
@@ -209,7 +233,7 @@ pub fn build(
                 }
             }
             &[a] => {
-                let a = pos(a);
+                let a = d.pos(a);
                 if let Some(far) = others.max_by(|x, y| x.distance(a).total_cmp(&y.distance(a))) {
                     push(Shape::new(Kind::Bar, [a, far, a], bar, colour, [0.0; 2]));
                 }
@@ -217,35 +241,36 @@ pub fn build(
             [] => {}
         }
     }
+}
 
-    // Slider blocks, along their guide.
+/// Slider blocks along their guides, springs, pins at the joints and marks at the
+/// other named points (centroids, tool points).
+fn sliders_springs_and_pins(push: &mut impl FnMut(Option<Shape>), d: &Drawn<'_>) {
+    let (m, pose, pin) = (d.s.mechanism(), d.s.pose(), d.pin);
     for sl in &m.sliders {
-        let c = cam.local(at(sl.point));
-        let d = sl.direction(&pose.links);
-        let axis = c + Vec2::new(d.x as f32, d.y as f32);
+        let c = d.pos(sl.point);
+        let dir = sl.direction(&pose.links);
+        let axis = c + Vec2::new(dir.x as f32, dir.y as f32);
         push(Shape::new(
             Kind::Block,
             [c, axis, c],
-            0.2 * bar,
+            0.2 * d.bar,
             colour::BLOCK,
             [2.4 * pin, 1.5 * pin],
         ));
     }
-
     // Springs: a coil with a fixed number of turns, so it visibly stretches.
-    for sp in &s.scene().forces.springs {
+    for sp in &d.s.scene().forces.springs {
         if let (Some(a), Some(b)) = (m.point_index(&sp.a), m.point_index(&sp.b)) {
-            push(coil(cam.local(at(a)), cam.local(at(b)), bar, pin));
+            push(coil(d.pos(a), d.pos(b), d.bar, pin));
         }
     }
-
-    // Pins at the joints; marks at the other named points (centroids, tool points).
     for r in &m.revolutes {
-        let c = cam.local(at(r.point));
+        let c = d.pos(r.point);
         push(Shape::new(Kind::Pin, [c, c, c], pin, colour::PIN, [0.0; 2]));
     }
-    for &i in &topo.marks {
-        let c = pos(i);
+    for &i in &d.s.topology().marks {
+        let c = d.pos(i);
         push(Shape::new(
             Kind::Pin,
             [c, c, c],
@@ -254,11 +279,21 @@ pub fn build(
             [0.0; 2],
         ));
     }
+}
 
+/// The velocity and acceleration arrows at the joints, where `layers` shows them:
+/// the largest a third of the mechanism long. Returns the scales they are drawn at.
+fn arrows(
+    push: &mut impl FnMut(Option<Shape>),
+    d: &Drawn<'_>,
+    layers: Layers,
+    m_per_px: f64,
+) -> VectorScales {
+    let (pose, size) = (d.s.pose(), d.s.mechanism().size_m.max(1e-12));
     let mut scales = VectorScales::default();
     let arrow_r = (1.4 * m_per_px) as f32;
     let head = (9.0 * m_per_px) as f32;
-    let joint_points = &topo.joint_points;
+    let joint_points = &d.s.topology().joint_points;
     for (on, colour, field, scale) in [
         (layers.velocities, colour::VELOCITY, 0, &mut scales.velocity),
         (
@@ -284,18 +319,17 @@ pub fn build(
         if !on || largest <= 0.0 {
             continue;
         }
-        // The largest vector is drawn a third of the mechanism long.
         *scale = 0.33 * size / largest;
         for &p in joint_points {
             let v = vec_of(p) * *scale;
             if v.norm() < 2.0 * m_per_px {
                 continue;
             }
-            let a = at(p);
+            let a = d.at(p);
             let tip = [a[0] + v.x, a[1] + v.y];
             push(Shape::new(
                 Kind::Arrow,
-                [cam.local(a), cam.local(tip), cam.local(a)],
+                [d.cam.local(a), d.cam.local(tip), d.cam.local(a)],
                 arrow_r,
                 colour,
                 [head, 0.0],
