@@ -724,172 +724,32 @@ impl ClosedForm {
         provisional_branches: bool,
     ) -> Result<Option<(Group, usize)>> {
         use JointRef::{Pri, Rev};
-        // A provisional branch is any valid one of the right kind; match_pose fixes it.
-        let provisional_rrr = Branch::Left(String::new(), String::new());
-        let provisional_slide = Branch::Along;
-        let branch_of = |point: usize, kind: DyadKind| -> Result<&Branch> {
-            if provisional_branches && m.branch_for(point).is_none() {
-                return Ok(if kind == DyadKind::Rrr {
-                    &provisional_rrr
-                } else {
-                    &provisional_slide
-                });
-            }
-            m.branch_for(point).ok_or_else(|| {
-                LinkageError::SceneInvalid(format!(
-                    "the {kind} dyad with inner joint `{}` needs an assembly branch in `branches`",
-                    m.points[point].name
-                ))
-            })
+        let branches = Branches {
+            m,
+            provisional: provisional_branches,
         };
-        Ok(match (ji.1, jij, jj.1) {
+        match (ji.1, jij, jj.1) {
             (Rev(ra), Rev(rm), Rev(rc)) => {
-                let (a, a_on_i) = rev_pin(m, ra, ji.2, i);
-                let (c, c_on_j) = rev_pin(m, rc, jj.2, j);
-                let (mid_on_i, mid_on_j) = (rev_local(m, rm, i), rev_local(m, rm, j));
-                let (len_i, dir_i) = link_len(m, a_on_i, mid_on_i, i, "two")?;
-                let (len_j, dir_j) = link_len(m, c_on_j, mid_on_j, j, "two")?;
-                let mid = m.revolutes[rm].point;
-                let (pa, pc) = (m.revolutes[ra].point, m.revolutes[rc].point);
-                let names = |p: usize| m.points[p].name.clone();
-                let sign = match branch_of(mid, DyadKind::Rrr)? {
-                    Branch::Left(f, t) if f.is_empty() && t.is_empty() => 1.0,
-                    Branch::Left(f, t) | Branch::Right(f, t) => {
-                        let left = if (f, t) == (&names(pa), &names(pc)) {
-                            1.0
-                        } else if (f, t) == (&names(pc), &names(pa)) {
-                            -1.0
-                        } else {
-                            return Err(LinkageError::SceneInvalid(format!(
-                                "branch of `{}` must name its end joints: Left(\"{}\", \"{}\") or Right(\"{}\", \"{}\")",
-                                names(mid),
-                                names(pa),
-                                names(pc),
-                                names(pa),
-                                names(pc)
-                            )));
-                        };
-                        if matches!(m.branch_for(mid), Some(Branch::Left(..))) { left } else { -left }
-                    }
-                    _ => {
-                        return Err(LinkageError::SceneInvalid(format!(
-                            "branch of RRR joint `{}` must be Left(\"{}\", \"{}\") or Right(..), not Along/Against",
-                            names(mid),
-                            names(pa),
-                            names(pc)
-                        )));
-                    }
-                };
-                (Group::Rrr(Rrr {
-                        i,
-                        j,
-                        a,
-                        a_on_i,
-                        mid_on_i,
-                        mid_on_j,
-                        c,
-                        c_on_j,
-                        len_i,
-                        len_j,
-                        inv_len_i: 1.0 / len_i,
-                        inv_len_j: 1.0 / len_j,
-                        dir_i_inv: dir_i.inverse(),
-                        dir_j_inv: dir_j.inverse(),
-                        sign,
-                        end_points: (pa, pc),
-                    }), mid)
+                rrr_group(m, &branches, (i, ra, ji.2), rm, (j, rc, jj.2)).map(Some)
             }
             (Rev(_), Rev(_), Pri(_)) | (Pri(_), Rev(_), Rev(_)) => {
                 // Normalise: i is pinned, j slides on a known guide.
-                let (i, j, ji, jj) = if matches!(ji.1, Rev(_)) { (i, j, ji, jj) } else { (j, i, jj, ji) };
-                let (Rev(ra), Rev(rm), Pri(p)) = (ji.1, jij, jj.1) else { return Ok(None) };
-                let slide = m.sliders[p].clone();
-                if slide.slider != j {
-                    return Ok(None);
-                }
-                let (a, a_on_i) = rev_pin(m, ra, ji.2, i);
-                let (mid_on_i, mid_on_j) = (rev_local(m, rm, i), rev_local(m, rm, j));
-                let (len_i, dir_i) = link_len(m, a_on_i, mid_on_i, i, "two")?;
-                let mid = m.revolutes[rm].point;
-                let sign = match branch_of(mid, DyadKind::Rrp)? {
-                    Branch::Along => 1.0,
-                    Branch::Against => -1.0,
-                    _ => {
-                        return Err(LinkageError::SceneInvalid(format!(
-                            "branch of slider joint `{}` must be Along or Against (its side along the guide)",
-                            m.points[mid].name
-                        )));
-                    }
+                let (i, j, ji, jj) = if matches!(ji.1, Rev(_)) {
+                    (i, j, ji, jj)
+                } else {
+                    (j, i, jj, ji)
                 };
-                (Group::Rrp(Rrp {
-                        i,
-                        j,
-                        a,
-                        a_on_i,
-                        mid_on_j,
-                        len_i,
-                        inv_len_i: 1.0 / len_i,
-                        dir_i_inv: dir_i.inverse(),
-                        slide,
-                        sign,
-                    }), mid)
+                let (Rev(ra), Rev(rm), Pri(p)) = (ji.1, jij, jj.1) else {
+                    return Ok(None);
+                };
+                rrp_group(m, &branches, (i, ra, ji.2), rm, (j, p))
             }
             (Rev(ra), Pri(p), Rev(rc)) => {
-                let slide = m.sliders[p].clone();
-                let (s_rev, s_known, g_rev, g_known) =
-                    if slide.slider == i { (ra, ji.2, rc, jj.2) } else { (rc, jj.2, ra, ji.2) };
-                let (s, s_on_slider) = rev_pin(m, s_rev, s_known, slide.slider);
-                let (g, g_on_guide) = rev_pin(m, g_rev, g_known, slide.guide);
-                let q_line = slide.through_local + slide.relative * (s_on_slider - slide.slider_local);
-                let offset = cross(&slide.direction_local, &(g_on_guide - q_line));
-                let sign = match branch_of(slide.point, DyadKind::Rpr)? {
-                    Branch::Along => 1.0,
-                    Branch::Against => -1.0,
-                    _ => {
-                        return Err(LinkageError::SceneInvalid(format!(
-                            "branch of sliding joint `{}` must be Along or Against",
-                            m.points[slide.point].name
-                        )));
-                    }
-                };
-                let dir_u = direction(&slide.direction_local);
-                let point = slide.point;
-                (
-                    Group::Rpr(Rpr {
-                        slider: slide.slider,
-                        s,
-                        s_on_slider,
-                        guide: slide.guide,
-                        g,
-                        g_on_guide,
-                        offset,
-                        dir_u,
-                        relative: slide.relative,
-                        sign,
-                    }),
-                    point,
-                )
+                rpr_group(m, &branches, i, (ra, ji.2), p, (rc, jj.2)).map(Some)
             }
-            (Pri(pi), Rev(rm), Pri(pj)) => {
-                let (si, sj) = (m.sliders[pi].clone(), m.sliders[pj].clone());
-                let (si, sj) = if si.slider == i { (si, sj) } else { (sj, si) };
-                if si.slider != i || sj.slider != j {
-                    return Ok(None);
-                }
-                let mid = m.revolutes[rm].point;
-                let g = Prp {
-                    i,
-                    j,
-                    mid_on_i: rev_local(m, rm, i),
-                    mid_on_j: rev_local(m, rm, j),
-                    slide_i: si,
-                    slide_j: sj,
-                };
-                (Group::Prp(g), mid)
-            }
-            _ => return Ok(None),
+            (Pri(pi), Rev(rm), Pri(pj)) => Ok(prp_group(m, (i, pi), rm, (j, pj))),
+            _ => Ok(None),
         }
-        .into())
     }
 
     /// Number of links (ground included) this solver writes.
@@ -1079,4 +939,220 @@ impl ClosedForm {
             intervals,
         }
     }
+}
+
+/// The scene's assembly branches, or while a pose is matched (`provisional`) any
+/// valid branch of the right kind (`ClosedForm::match_pose` fixes it).
+struct Branches<'a> {
+    m: &'a Mechanism,
+    provisional: bool,
+}
+
+impl Branches<'_> {
+    /// The branch of the `kind` dyad whose inner joint is `point`.
+    fn of(&self, point: usize, kind: DyadKind) -> Result<Branch> {
+        match self.m.branch_for(point) {
+            Some(b) => Ok(b.clone()),
+            None if self.provisional && kind == DyadKind::Rrr => {
+                Ok(Branch::Left(String::new(), String::new()))
+            }
+            None if self.provisional => Ok(Branch::Along),
+            None => Err(LinkageError::SceneInvalid(format!(
+                "the {kind} dyad with inner joint `{}` needs an assembly branch in `branches`",
+                self.m.points[point].name
+            ))),
+        }
+    }
+
+    /// An RRR dyad's sign: +1 on the left of its ends `pa` to `pc` as the branch
+    /// names them.
+    fn rrr_sign(&self, mid: usize, pa: usize, pc: usize) -> Result<f64> {
+        let m = self.m;
+        let names = |p: usize| m.points[p].name.clone();
+        match self.of(mid, DyadKind::Rrr)? {
+            Branch::Left(f, t) if f.is_empty() && t.is_empty() => Ok(1.0),
+            Branch::Left(f, t) | Branch::Right(f, t) => {
+                let left = if (&f, &t) == (&names(pa), &names(pc)) {
+                    1.0
+                } else if (&f, &t) == (&names(pc), &names(pa)) {
+                    -1.0
+                } else {
+                    return Err(LinkageError::SceneInvalid(format!(
+                        "branch of `{}` must name its end joints: Left(\"{}\", \"{}\") or Right(\"{}\", \"{}\")",
+                        names(mid),
+                        names(pa),
+                        names(pc),
+                        names(pa),
+                        names(pc)
+                    )));
+                };
+                Ok(if matches!(m.branch_for(mid), Some(Branch::Left(..))) {
+                    left
+                } else {
+                    -left
+                })
+            }
+            _ => Err(LinkageError::SceneInvalid(format!(
+                "branch of RRR joint `{}` must be Left(\"{}\", \"{}\") or Right(..), not Along/Against",
+                names(mid),
+                names(pa),
+                names(pc)
+            ))),
+        }
+    }
+
+    /// A sliding dyad's sign: +1 Along, -1 Against; else the refusal `why`.
+    fn slide_sign(
+        &self,
+        point: usize,
+        kind: DyadKind,
+        why: impl FnOnce() -> String,
+    ) -> Result<f64> {
+        match self.of(point, kind)? {
+            Branch::Along => Ok(1.0),
+            Branch::Against => Ok(-1.0),
+            _ => Err(LinkageError::SceneInvalid(why())),
+        }
+    }
+}
+
+/// Three pins: link `i` pinned at `ra` to known link `ki`, link `j` at `rc` to `kj`,
+/// and the two at `rm`.
+fn rrr_group(
+    m: &Mechanism,
+    branches: &Branches<'_>,
+    (i, ra, ki): (usize, usize, usize),
+    rm: usize,
+    (j, rc, kj): (usize, usize, usize),
+) -> Result<(Group, usize)> {
+    let (a, a_on_i) = rev_pin(m, ra, ki, i);
+    let (c, c_on_j) = rev_pin(m, rc, kj, j);
+    let (mid_on_i, mid_on_j) = (rev_local(m, rm, i), rev_local(m, rm, j));
+    let (len_i, dir_i) = link_len(m, a_on_i, mid_on_i, i, "two")?;
+    let (len_j, dir_j) = link_len(m, c_on_j, mid_on_j, j, "two")?;
+    let mid = m.revolutes[rm].point;
+    let (pa, pc) = (m.revolutes[ra].point, m.revolutes[rc].point);
+    let sign = branches.rrr_sign(mid, pa, pc)?;
+    let group = Group::Rrr(Rrr {
+        i,
+        j,
+        a,
+        a_on_i,
+        mid_on_i,
+        mid_on_j,
+        c,
+        c_on_j,
+        len_i,
+        len_j,
+        inv_len_i: 1.0 / len_i,
+        inv_len_j: 1.0 / len_j,
+        dir_i_inv: dir_i.inverse(),
+        dir_j_inv: dir_j.inverse(),
+        sign,
+        end_points: (pa, pc),
+    });
+    Ok((group, mid))
+}
+
+/// Pin, pin, slider: link `i` pinned at `ra` to known link `ki` and at `rm` to link
+/// `j`, which slides in prismatic joint `p` on a known guide.
+fn rrp_group(
+    m: &Mechanism,
+    branches: &Branches<'_>,
+    (i, ra, ki): (usize, usize, usize),
+    rm: usize,
+    (j, p): (usize, usize),
+) -> Result<Option<(Group, usize)>> {
+    let slide = m.sliders[p].clone();
+    if slide.slider != j {
+        return Ok(None);
+    }
+    let (a, a_on_i) = rev_pin(m, ra, ki, i);
+    let (mid_on_i, mid_on_j) = (rev_local(m, rm, i), rev_local(m, rm, j));
+    let (len_i, dir_i) = link_len(m, a_on_i, mid_on_i, i, "two")?;
+    let mid = m.revolutes[rm].point;
+    let sign = branches.slide_sign(mid, DyadKind::Rrp, || {
+        format!(
+            "branch of slider joint `{}` must be Along or Against (its side along the guide)",
+            m.points[mid].name
+        )
+    })?;
+    let group = Group::Rrp(Rrp {
+        i,
+        j,
+        a,
+        a_on_i,
+        mid_on_j,
+        len_i,
+        inv_len_i: 1.0 / len_i,
+        dir_i_inv: dir_i.inverse(),
+        slide,
+        sign,
+    });
+    Ok(Some((group, mid)))
+}
+
+/// A slider between two pins: prismatic joint `p` between its slider and guide, each
+/// pinned to a known link (`i` pinned at `ra` to `ki`, the other at `rc` to `kc`).
+fn rpr_group(
+    m: &Mechanism,
+    branches: &Branches<'_>,
+    i: usize,
+    (ra, ki): (usize, usize),
+    p: usize,
+    (rc, kc): (usize, usize),
+) -> Result<(Group, usize)> {
+    let slide = m.sliders[p].clone();
+    let (s_rev, s_known, g_rev, g_known) = if slide.slider == i {
+        (ra, ki, rc, kc)
+    } else {
+        (rc, kc, ra, ki)
+    };
+    let (s, s_on_slider) = rev_pin(m, s_rev, s_known, slide.slider);
+    let (g, g_on_guide) = rev_pin(m, g_rev, g_known, slide.guide);
+    let q_line = slide.through_local + slide.relative * (s_on_slider - slide.slider_local);
+    let offset = cross(&slide.direction_local, &(g_on_guide - q_line));
+    let sign = branches.slide_sign(slide.point, DyadKind::Rpr, || {
+        format!(
+            "branch of sliding joint `{}` must be Along or Against",
+            m.points[slide.point].name
+        )
+    })?;
+    let group = Group::Rpr(Rpr {
+        slider: slide.slider,
+        s,
+        s_on_slider,
+        guide: slide.guide,
+        g,
+        g_on_guide,
+        offset,
+        dir_u: direction(&slide.direction_local),
+        relative: slide.relative,
+        sign,
+    });
+    Ok((group, slide.point))
+}
+
+/// A pin between two sliders: link `i` sliding in `pi`, link `j` in `pj`, pinned
+/// together at `rm`; `None` unless each slides on a known guide.
+fn prp_group(
+    m: &Mechanism,
+    (i, pi): (usize, usize),
+    rm: usize,
+    (j, pj): (usize, usize),
+) -> Option<(Group, usize)> {
+    let (si, sj) = (m.sliders[pi].clone(), m.sliders[pj].clone());
+    let (si, sj) = if si.slider == i { (si, sj) } else { (sj, si) };
+    if si.slider != i || sj.slider != j {
+        return None;
+    }
+    let group = Group::Prp(Prp {
+        i,
+        j,
+        mid_on_i: rev_local(m, rm, i),
+        mid_on_j: rev_local(m, rm, j),
+        slide_i: si,
+        slide_j: sj,
+    });
+    Some((group, m.revolutes[rm].point))
 }
