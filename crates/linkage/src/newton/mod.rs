@@ -208,94 +208,7 @@ impl Newton {
                 valid: "must be finite and > 0".into(),
             });
         }
-        let n = m.links.len();
-        let mut visited = vec![false; n];
-        visited[m.ground] = true;
-        let mut used_rev = vec![false; m.revolutes.len()];
-        let mut used_pri = vec![false; m.sliders.len()];
-        let mut tree = Vec::new();
-        let rev_joint = |r: usize, parent: usize| -> TreeJoint {
-            let rv = &m.revolutes[r];
-            let (child, on_parent, on_child) = if rv.a == parent {
-                (rv.b, rv.a_local, rv.b_local)
-            } else {
-                (rv.a, rv.b_local, rv.a_local)
-            };
-            TreeJoint {
-                parent,
-                child,
-                kind: TreeKind::Revolute {
-                    on_parent,
-                    on_child,
-                },
-                contact: Vec2::zeros(),
-                u: Vec2::zeros(),
-            }
-        };
-        tree.push(rev_joint(m.driver.pivot, m.ground));
-        used_rev[m.driver.pivot] = true;
-        visited[m.driver.link] = true;
-        let mut queue = std::collections::VecDeque::from([m.ground, m.driver.link]);
-        while let Some(l) = queue.pop_front() {
-            for (r, rv) in m.revolutes.iter().enumerate() {
-                let Some(other) = across(rv.a, rv.b, l) else {
-                    continue;
-                };
-                if used_rev[r] || visited[other] {
-                    continue;
-                }
-                used_rev[r] = true;
-                visited[other] = true;
-                tree.push(rev_joint(r, l));
-                queue.push_back(other);
-            }
-            for (p, s) in m.sliders.iter().enumerate() {
-                let Some(other) = across(s.slider, s.guide, l) else {
-                    continue;
-                };
-                if used_pri[p] || visited[other] {
-                    continue;
-                }
-                used_pri[p] = true;
-                visited[other] = true;
-                tree.push(TreeJoint {
-                    parent: l,
-                    child: other,
-                    kind: TreeKind::Prismatic {
-                        slide: s.clone(),
-                        parent_is_guide: s.guide == l,
-                    },
-                    contact: Vec2::zeros(),
-                    u: Vec2::zeros(),
-                });
-                queue.push_back(other);
-            }
-        }
-        if let Some(l) = visited.iter().position(|v| !v) {
-            return Err(LinkageError::SceneInvalid(format!(
-                "link `{}` is not connected to the chain",
-                m.links[l].name
-            )));
-        }
-        let mut cuts: Vec<Cut> = m
-            .revolutes
-            .iter()
-            .enumerate()
-            .filter(|(r, _)| !used_rev[*r])
-            .map(|(_, rv)| Cut::Revolute {
-                a: rv.a,
-                a_local: rv.a_local,
-                b: rv.b,
-                b_local: rv.b_local,
-            })
-            .collect();
-        cuts.extend(
-            m.sliders
-                .iter()
-                .enumerate()
-                .filter(|(p, _)| !used_pri[*p])
-                .map(|(_, s)| Cut::Prismatic(s.clone())),
-        );
+        let (tree, cuts) = spanning_tree(m)?;
         let unknowns = tree.len() - 1;
         if 2 * cuts.len() != unknowns {
             return Err(LinkageError::SceneInvalid(format!(
@@ -304,14 +217,7 @@ impl Newton {
             )));
         }
         let cuts_len = cuts.len();
-        // The tree is built breadth first, so a parent's path is known before its child's.
-        let mut moved_by = vec![false; n * tree.len()];
-        for (k, t) in tree.iter().enumerate() {
-            for j in 0..tree.len() {
-                moved_by[t.child * tree.len() + j] = moved_by[t.parent * tree.len() + j];
-            }
-            moved_by[t.child * tree.len() + k] = true;
-        }
+        let moved_by = moved_by(&tree, m.links.len());
         let mut solver = Self {
             turns: vec![JointTurn::UNSET; tree.len()],
             moved_by,
@@ -793,4 +699,113 @@ impl Newton {
         self.ddq.copy_from(&self.rhs);
         Ok(())
     }
+}
+
+/// The chain as a tree from the ground, breadth first, the driver's pivot first,
+/// and the joints left over (cut) to close its loops.
+fn spanning_tree(m: &Mechanism) -> Result<(Vec<TreeJoint>, Vec<Cut>)> {
+    let n = m.links.len();
+    let mut visited = vec![false; n];
+    visited[m.ground] = true;
+    let mut used_rev = vec![false; m.revolutes.len()];
+    let mut used_pri = vec![false; m.sliders.len()];
+    let mut tree = vec![revolute_joint(m, m.driver.pivot, m.ground)];
+    used_rev[m.driver.pivot] = true;
+    visited[m.driver.link] = true;
+    let mut queue = std::collections::VecDeque::from([m.ground, m.driver.link]);
+    while let Some(l) = queue.pop_front() {
+        for (r, rv) in m.revolutes.iter().enumerate() {
+            let Some(other) = across(rv.a, rv.b, l) else {
+                continue;
+            };
+            if used_rev[r] || visited[other] {
+                continue;
+            }
+            used_rev[r] = true;
+            visited[other] = true;
+            tree.push(revolute_joint(m, r, l));
+            queue.push_back(other);
+        }
+        for (p, s) in m.sliders.iter().enumerate() {
+            let Some(other) = across(s.slider, s.guide, l) else {
+                continue;
+            };
+            if used_pri[p] || visited[other] {
+                continue;
+            }
+            used_pri[p] = true;
+            visited[other] = true;
+            tree.push(TreeJoint {
+                parent: l,
+                child: other,
+                kind: TreeKind::Prismatic {
+                    slide: s.clone(),
+                    parent_is_guide: s.guide == l,
+                },
+                contact: Vec2::zeros(),
+                u: Vec2::zeros(),
+            });
+            queue.push_back(other);
+        }
+    }
+    if let Some(l) = visited.iter().position(|v| !v) {
+        return Err(LinkageError::SceneInvalid(format!(
+            "link `{}` is not connected to the chain",
+            m.links[l].name
+        )));
+    }
+    let mut cuts: Vec<Cut> = m
+        .revolutes
+        .iter()
+        .enumerate()
+        .filter(|(r, _)| !used_rev[*r])
+        .map(|(_, rv)| Cut::Revolute {
+            a: rv.a,
+            a_local: rv.a_local,
+            b: rv.b,
+            b_local: rv.b_local,
+        })
+        .collect();
+    cuts.extend(
+        m.sliders
+            .iter()
+            .enumerate()
+            .filter(|(p, _)| !used_pri[*p])
+            .map(|(_, s)| Cut::Prismatic(s.clone())),
+    );
+    Ok((tree, cuts))
+}
+
+/// Revolute `r` as a joint of the tree, from `parent` to the link across it.
+fn revolute_joint(m: &Mechanism, r: usize, parent: usize) -> TreeJoint {
+    let rv = &m.revolutes[r];
+    let (child, on_parent, on_child) = if rv.a == parent {
+        (rv.b, rv.a_local, rv.b_local)
+    } else {
+        (rv.a, rv.b_local, rv.a_local)
+    };
+    TreeJoint {
+        parent,
+        child,
+        kind: TreeKind::Revolute {
+            on_parent,
+            on_child,
+        },
+        contact: Vec2::zeros(),
+        u: Vec2::zeros(),
+    }
+}
+
+/// For every link and tree joint, whether the joint moves the link: `[link * joints +
+/// joint]`. The tree is built breadth first, so a parent's path is known before its
+/// child's.
+fn moved_by(tree: &[TreeJoint], links: usize) -> Vec<bool> {
+    let mut moved_by = vec![false; links * tree.len()];
+    for (k, t) in tree.iter().enumerate() {
+        for j in 0..tree.len() {
+            moved_by[t.child * tree.len() + j] = moved_by[t.parent * tree.len() + j];
+        }
+        moved_by[t.child * tree.len() + k] = true;
+    }
+    moved_by
 }
