@@ -53,6 +53,16 @@ pub(crate) fn labelled(
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     ui.heading("Controls");
     let touch = st.layout.compact();
+    play_and_speed(ui, st, touch);
+    crank_and_run_time(ui, st, touch);
+    lengths(ui, st, touch);
+    springs(ui, st, touch);
+    masses(ui, st, touch);
+    branches(ui, st);
+}
+
+/// Play or pause, and the animation's speed (on a narrow phone, under the button).
+fn play_and_speed(ui: &mut egui::Ui, st: &mut AppState, touch: bool) {
     let speed = |ui: &mut egui::Ui, st: &mut AppState| {
         labelled(
             ui,
@@ -77,7 +87,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     if narrow {
         speed(ui, st);
     }
+}
 
+/// The crank angle, the dynamic run's time, and a refused edit's message.
+fn crank_and_run_time(ui: &mut egui::Ui, st: &mut AppState, touch: bool) {
     let [lo, hi] = st.session.input_range_deg();
     let mut input = st.session.input_rad().to_degrees();
     if st.session.curves().full_rotation {
@@ -113,7 +126,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     if let Some(msg) = st.session.message() {
         ui.colored_label(ui.visuals().warn_fg_color, msg);
     }
+}
 
+/// One slider per link length.
+fn lengths(ui: &mut egui::Ui, st: &mut AppState, touch: bool) {
     ui.separator();
     ui.label(format!("Link lengths ({})", unit_label(st.session.scene())));
     let lengths: Vec<_> = st.session.lengths().to_vec();
@@ -127,7 +143,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             st.edit(SceneEdit::Length { index: i, value: v });
         }
     }
+}
 
+/// One slider per spring's stiffness, where the scene models forces.
+fn springs(ui: &mut egui::Ui, st: &mut AppState, touch: bool) {
     let springs: Vec<(usize, String, f64, f64)> = st
         .session
         .scene()
@@ -163,7 +182,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             }
         }
     }
+}
 
+/// One slider per link mass of a dynamic scene.
+fn masses(ui: &mut egui::Ui, st: &mut AppState, touch: bool) {
     if st.session.models() == Models::Dynamics {
         let masses: Vec<(usize, String, f64, f64)> = st
             .session
@@ -190,7 +212,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             }
         }
     }
+}
 
+/// A checkbox per dyad to flip its assembly branch.
+fn branches(ui: &mut egui::Ui, st: &mut AppState) {
     let branches = st.session.branches();
     if !branches.is_empty() {
         ui.separator();
