@@ -69,6 +69,10 @@ impl Default for PlotsPanel {
 impl PlotsPanel {
     /// The plot pane.
     pub fn ui(&mut self, ui: &mut egui::Ui, st: &mut AppState) {
+        // A scene without the shown plot (a new scene, a changed model) shows the output.
+        if !tab_available(self.tab, &st.session) {
+            self.tab = PlotTab::Output;
+        }
         ui.horizontal_wrapped(|ui| {
             for (tab, label) in [
                 (PlotTab::Output, "Output s, v, a"),
@@ -83,119 +87,141 @@ impl PlotsPanel {
             }
         });
         let s = &st.session;
-        let c = s.curves();
-        let x = cursor_deg(s);
-        let key = (s.scene().name.as_str(), s.generation());
-        let crank = "crank angle (deg)";
         match self.tab {
-            PlotTab::Output => {
-                // The scene's main output first: that is the one the papers plot.
-                let main = &s.mechanism().links[s.mechanism().output].name;
-                let Some(out) = c
-                    .outputs
-                    .iter()
-                    .find(|o| &o.name == main)
-                    .or(c.outputs.first())
-                else {
-                    return;
-                };
-                let (u, v, a) = if out.is_angle {
-                    ("deg", "deg/s", "deg/s²")
-                } else {
-                    ("m", "m/s", "m/s²")
-                };
-                let plots = [
-                    (format!("{} ({u})", out.name), &out.value),
-                    (format!("{} rate ({v})", out.name), &out.rate),
-                    (
-                        format!("{} acceleration ({a})", out.name),
-                        &out.acceleration,
-                    ),
-                ];
-                row(
-                    ui,
-                    "output",
-                    key,
-                    &plots
-                        .iter()
-                        .map(|(l, d)| (l.as_str(), crank, d.as_slice(), Some(x)))
-                        .collect::<Vec<_>>(),
-                );
-            }
+            PlotTab::Output => output_plots(ui, s),
             PlotTab::Transmission => {
+                let x = cursor_deg(s);
                 row(
                     ui,
                     "transmission",
-                    key,
+                    plot_key(s),
                     &[(
                         "transmission angle (deg)",
-                        crank,
-                        &c.transmission_deg,
+                        CRANK,
+                        &s.curves().transmission_deg,
                         Some(x),
                     )],
                 );
             }
-            PlotTab::Torque => {
-                let Some(c) = model_curves(ui, s) else {
-                    return;
-                };
-                let log_amp: Vec<[f64; 2]> = c
-                    .amplification
-                    .iter()
-                    .filter(|p| p[1] > 0.0)
-                    .map(|p| [p[0], p[1].log10()])
-                    .collect();
-                row(
-                    ui,
-                    "torque",
-                    key,
-                    &[
-                        ("input torque (N·m)", crank, &c.torque_n_m, Some(x)),
-                        (
-                            "log10 force amplification (N per N·m)",
-                            crank,
-                            &log_amp,
-                            Some(x),
-                        ),
-                    ],
-                );
-            }
-            PlotTab::Motion => {
-                if let Some(Ok(run)) = s.dynamics() {
-                    let t = s.time_s();
-                    row(
-                        ui,
-                        "motion",
-                        key,
-                        &[
-                            (
-                                "ω (rad/s)",
-                                "φ (deg)",
-                                &run.omega_phi,
-                                Some(s.input_rad().to_degrees()),
-                            ),
-                            ("ω (rad/s)", "t (s)", &run.omega_t, Some(t)),
-                            ("φ (deg)", "t (s)", &run.phi_t, Some(t)),
-                        ],
-                    );
-                }
-            }
-            PlotTab::ReducedModel => {
-                let Some(c) = model_curves(ui, s) else {
-                    return;
-                };
-                row(
-                    ui,
-                    "reduced",
-                    key,
-                    &[
-                        ("J(q) (kg·m²)", "q (deg)", &c.inertia_kg_m2, Some(x)),
-                        ("M(q) at rest (N·m)", "q (deg)", &c.moment_n_m, Some(x)),
-                    ],
-                );
-            }
+            PlotTab::Torque => torque_plots(ui, s),
+            PlotTab::Motion => motion_plots(ui, s),
+            PlotTab::ReducedModel => reduced_model_plots(ui, s),
         }
     }
+}
+
+/// The crank-angle axis' label.
+const CRANK: &str = "crank angle (deg)";
+
+/// What names a plot's curves: the scene and its generation.
+fn plot_key(s: &Session) -> (&str, u64) {
+    (s.scene().name.as_str(), s.generation())
+}
+
+/// The main output's displacement, rate and acceleration against the crank angle.
+fn output_plots(ui: &mut egui::Ui, s: &Session) {
+    let c = s.curves();
+    // The scene's main output first: that is the one the papers plot.
+    let main = &s.mechanism().links[s.mechanism().output].name;
+    let Some(out) = c
+        .outputs
+        .iter()
+        .find(|o| &o.name == main)
+        .or(c.outputs.first())
+    else {
+        return;
+    };
+    let (u, v, a) = if out.is_angle {
+        ("deg", "deg/s", "deg/s²")
+    } else {
+        ("m", "m/s", "m/s²")
+    };
+    let plots = [
+        (format!("{} ({u})", out.name), &out.value),
+        (format!("{} rate ({v})", out.name), &out.rate),
+        (
+            format!("{} acceleration ({a})", out.name),
+            &out.acceleration,
+        ),
+    ];
+    let x = cursor_deg(s);
+    row(
+        ui,
+        "output",
+        plot_key(s),
+        &plots
+            .iter()
+            .map(|(l, d)| (l.as_str(), CRANK, d.as_slice(), Some(x)))
+            .collect::<Vec<_>>(),
+    );
+}
+
+/// The input torque and the force amplification (on a log scale).
+fn torque_plots(ui: &mut egui::Ui, s: &Session) {
+    let Some(c) = model_curves(ui, s) else {
+        return;
+    };
+    let log_amp: Vec<[f64; 2]> = c
+        .amplification
+        .iter()
+        .filter(|p| p[1] > 0.0)
+        .map(|p| [p[0], p[1].log10()])
+        .collect();
+    let x = cursor_deg(s);
+    row(
+        ui,
+        "torque",
+        plot_key(s),
+        &[
+            ("input torque (N·m)", CRANK, &c.torque_n_m, Some(x)),
+            (
+                "log10 force amplification (N per N·m)",
+                CRANK,
+                &log_amp,
+                Some(x),
+            ),
+        ],
+    );
+}
+
+/// The dynamic run: ω against φ and t, φ against t.
+fn motion_plots(ui: &mut egui::Ui, s: &Session) {
+    let Some(Ok(run)) = s.dynamics() else {
+        return;
+    };
+    let t = s.time_s();
+    row(
+        ui,
+        "motion",
+        plot_key(s),
+        &[
+            (
+                "ω (rad/s)",
+                "φ (deg)",
+                &run.omega_phi,
+                Some(s.input_rad().to_degrees()),
+            ),
+            ("ω (rad/s)", "t (s)", &run.omega_t, Some(t)),
+            ("φ (deg)", "t (s)", &run.phi_t, Some(t)),
+        ],
+    );
+}
+
+/// The reduced inertia J(q) and moment M(q).
+fn reduced_model_plots(ui: &mut egui::Ui, s: &Session) {
+    let Some(c) = model_curves(ui, s) else {
+        return;
+    };
+    let x = cursor_deg(s);
+    row(
+        ui,
+        "reduced",
+        plot_key(s),
+        &[
+            ("J(q) (kg·m²)", "q (deg)", &c.inertia_kg_m2, Some(x)),
+            ("M(q) at rest (N·m)", "q (deg)", &c.moment_n_m, Some(x)),
+        ],
+    );
 }
 
 /// The model curves to plot: the current ones, or while edits come (a slider being
