@@ -7,7 +7,7 @@ use linkage::PathKind;
 use linkage::dynamics::Method;
 use linkage::scene::Models;
 
-use crate::session::dynamic_run::METHODS;
+use crate::session::dynamic_run::{IntegratorChoice, METHODS};
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
 
@@ -60,6 +60,16 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     ui.separator();
     ui.label("Dynamics (released from rest)");
     let mut choice = st.session.integrator();
+    integrator_menu(ui, st, &mut choice);
+    let changed = tolerance_slider(ui, st, &mut choice);
+    run_stats(ui, st);
+    if changed || choice.method != st.session.integrator().method {
+        st.edit(crate::session::SceneEdit::Integrator(choice));
+    }
+}
+
+/// The integrator's menu, each item noted for the tests.
+fn integrator_menu(ui: &mut egui::Ui, st: &mut AppState, choice: &mut IntegratorChoice) {
     let mut items = Vec::new();
     let menu = egui::ComboBox::from_label("integrator")
         .selected_text(choice.method.label())
@@ -75,6 +85,11 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         st.controls
             .note_rect(ControlKind::IntegratorItem, label, rect, visible);
     }
+}
+
+/// The adaptive methods' rtol, or the fixed step (Δφ or Δt); returns whether it
+/// changed.
+fn tolerance_slider(ui: &mut egui::Ui, st: &mut AppState, choice: &mut IntegratorChoice) -> bool {
     let tolerance = if choice.method.is_adaptive() {
         ui.add(
             egui::Slider::new(&mut choice.rtol, 1e-12..=1e-3)
@@ -98,7 +113,12 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     };
     st.controls
         .note(ui, ControlKind::Tolerance, "tolerance", &tolerance);
-    let changed = tolerance.changed();
+    tolerance.changed()
+}
+
+/// The run's progress, its cost and accuracy, its warnings and end stops, or why it
+/// failed.
+fn run_stats(ui: &mut egui::Ui, st: &AppState) {
     match st.session.dynamics() {
         None => {
             let [t, end] = st.session.run_progress().unwrap_or([0.0, 0.0]);
@@ -137,9 +157,6 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         Some(Err(e)) => {
             ui.colored_label(ui.visuals().error_fg_color, e.to_string());
         }
-    }
-    if changed || choice.method != st.session.integrator().method {
-        st.edit(crate::session::SceneEdit::Integrator(choice));
     }
 }
 
