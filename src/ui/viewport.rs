@@ -109,6 +109,16 @@ pub fn show(
     painter.rect_filled(rect, 0.0, egui::Color32::from_rgb(246, 246, 242));
     paint_shapes(&painter, rect, view, shapes, renderer);
 
+    point_labels(&painter, rect, st, &vp.camera);
+    if st.view.layers.centres {
+        crate::ui::centres::overlay(&painter, rect, st, &vp.camera);
+    }
+    legend(&painter, rect, st, vp.scales);
+    build_us
+}
+
+/// The joints' names beside them.
+fn point_labels(painter: &egui::Painter, rect: egui::Rect, st: &AppState, camera: &Camera) {
     // Point labels beside each joint.
     let pose = st.session.pose();
     let m = st.session.mechanism();
@@ -117,7 +127,7 @@ pub fn show(
     for &p in &st.session.topology().joint_points {
         let q = pose.points[p].position;
         if q.x.is_finite() && q.y.is_finite() {
-            let at = vp.camera.to_screen([q.x, q.y], rect) + offset;
+            let at = camera.to_screen([q.x, q.y], rect) + offset;
             painter.text(
                 at,
                 Align2::LEFT_BOTTOM,
@@ -127,21 +137,21 @@ pub fn show(
             );
         }
     }
+}
 
-    if st.view.layers.centres {
-        crate::ui::centres::overlay(&painter, rect, st, &vp.camera);
-    }
-
+/// The legend at the top left (the crank, the time, the vectors' scales, what a drag
+/// does) and a refused edit's message at the bottom left.
+fn legend(painter: &egui::Painter, rect: egui::Rect, st: &AppState, scales: VectorScales) {
     let small = FontId::proportional(12.0);
     let mut legend = format!("crank {:.2}°", st.session.input_rad().to_degrees());
     if let Some(Ok(_)) = st.session.dynamics() {
         legend += &format!(", t = {:.3} s", st.session.time_s());
     }
-    if st.view.layers.velocities && vp.scales.velocity > 0.0 {
-        legend += &format!("\nv: 1 m/s drawn {:.4} m", vp.scales.velocity);
+    if st.view.layers.velocities && scales.velocity > 0.0 {
+        legend += &format!("\nv: 1 m/s drawn {:.4} m", scales.velocity);
     }
-    if st.view.layers.accelerations && vp.scales.acceleration > 0.0 {
-        legend += &format!("\na: 1 m/s² drawn {:.4} m", vp.scales.acceleration);
+    if st.view.layers.accelerations && scales.acceleration > 0.0 {
+        legend += &format!("\na: 1 m/s² drawn {:.4} m", scales.acceleration);
     }
     legend += match (st.view.edit_points, st.layout.compact()) {
         (true, _) => "\ndrag a joint to move it (Alt: off the grid), elsewhere to pan",
@@ -164,7 +174,6 @@ pub fn show(
             egui::Color32::from_rgb(170, 40, 20),
         );
     }
-    build_us
 }
 
 /// The GPU-drawn shapes in `rect`, or, without a renderer, a line saying why the view
