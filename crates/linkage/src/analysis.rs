@@ -867,59 +867,8 @@ pub fn report(k: &mut Kinematics) -> Result<Report> {
         all_limits.extend(limits.iter().cloned());
         per_output.push((out.clone(), limits));
     }
-    let m = k.mechanism();
-    let main_link = m.output;
-    let main = per_output
-        .iter()
-        .find(|entry| match &entry.0 {
-            Output::Rocker { link, .. } => *link == main_link,
-            Output::Slide { slider, .. } => m.sliders[*slider].slider == main_link,
-        })
-        .or(per_output.first());
-    let speed = m.driver.speed_rad_s;
-    let (time_ratio, time_ratio_note) = match main {
-        Some((_, limits)) if ranges.full_rotation => match time_ratio(limits, speed) {
-            Some((kk, note)) => (Some(kk), Some(note)),
-            None => (None, Some(TimeRatioNote::NotTwoLimits)),
-        },
-        _ => (None, Some(TimeRatioNote::InputDoesNotTurn)),
-    };
-    let mut toggles = Vec::new();
-    let mut sol = k.empty_solution();
-    for lp in &all_limits {
-        if k.solve_into(lp.input_rad, 1.0, &mut sol).is_ok() {
-            toggles.push(Toggle {
-                input_rad: lp.input_rad,
-                ratio: "zero",
-                output: lp.output.clone(),
-                collinear_joints: collinear_joints(k, &sol, 0.1_f64.to_radians()),
-            });
-        }
-    }
-    if !working.full_rotation {
-        for [a, b] in &working.intervals {
-            // A hair inside the range: exactly at the dead point velocities are undefined.
-            let hair = 1e-9 * (b - a);
-            for x in [*a + hair, *b - hair] {
-                let group = k
-                    .group_conditioning(x)
-                    .into_iter()
-                    .min_by(|p, q| p.1.total_cmp(&q.1))
-                    .map_or_else(|| "chain".to_string(), |(n, _)| n);
-                let collinear = if k.solve_into(x, 1.0, &mut sol).is_ok() {
-                    collinear_joints(k, &sol, 0.1_f64.to_radians())
-                } else {
-                    Vec::new()
-                };
-                toggles.push(Toggle {
-                    input_rad: x.rem_euclid(TAU),
-                    ratio: "infinite",
-                    output: group,
-                    collinear_joints: collinear,
-                });
-            }
-        }
-    }
+    let (time_ratio, time_ratio_note) = main_time_ratio(k, &per_output, ranges.full_rotation);
+    let toggles = toggles(k, &all_limits, &working);
     let transmission_angle_rad = transmission_angle(k, &working);
     let branch_points = crate::branch_points::branch_points(k, &working);
     let m = k.mechanism();
@@ -940,4 +889,71 @@ pub fn report(k: &mut Kinematics) -> Result<Report> {
         input_speed_rad_s: m.driver.speed_rad_s,
         notes: m.notes.clone(),
     })
+}
+
+/// K of the scene's main output (else the first), or why there is none.
+fn main_time_ratio(
+    k: &Kinematics,
+    per_output: &[(Output, Vec<LimitPosition>)],
+    full_rotation: bool,
+) -> (Option<f64>, Option<TimeRatioNote>) {
+    let m = k.mechanism();
+    let main_link = m.output;
+    let main = per_output
+        .iter()
+        .find(|entry| match &entry.0 {
+            Output::Rocker { link, .. } => *link == main_link,
+            Output::Slide { slider, .. } => m.sliders[*slider].slider == main_link,
+        })
+        .or(per_output.first());
+    match main {
+        Some((_, limits)) if full_rotation => match time_ratio(limits, m.driver.speed_rad_s) {
+            Some((kk, note)) => (Some(kk), Some(note)),
+            None => (None, Some(TimeRatioNote::NotTwoLimits)),
+        },
+        _ => (None, Some(TimeRatioNote::InputDoesNotTurn)),
+    }
+}
+
+/// The toggles: every limit position of an output (its rate zero), and the ends of
+/// a range that does not turn fully (the input's rate infinite there).
+fn toggles(k: &mut Kinematics, limits: &[LimitPosition], working: &AssemblyRanges) -> Vec<Toggle> {
+    let mut toggles = Vec::new();
+    let mut sol = k.empty_solution();
+    for lp in limits {
+        if k.solve_into(lp.input_rad, 1.0, &mut sol).is_ok() {
+            toggles.push(Toggle {
+                input_rad: lp.input_rad,
+                ratio: "zero",
+                output: lp.output.clone(),
+                collinear_joints: collinear_joints(k, &sol, 0.1_f64.to_radians()),
+            });
+        }
+    }
+    if working.full_rotation {
+        return toggles;
+    }
+    for [a, b] in &working.intervals {
+        // A hair inside the range: exactly at the dead point velocities are undefined.
+        let hair = 1e-9 * (b - a);
+        for x in [*a + hair, *b - hair] {
+            let group = k
+                .group_conditioning(x)
+                .into_iter()
+                .min_by(|p, q| p.1.total_cmp(&q.1))
+                .map_or_else(|| "chain".to_string(), |(n, _)| n);
+            let collinear = if k.solve_into(x, 1.0, &mut sol).is_ok() {
+                collinear_joints(k, &sol, 0.1_f64.to_radians())
+            } else {
+                Vec::new()
+            };
+            toggles.push(Toggle {
+                input_rad: x.rem_euclid(TAU),
+                ratio: "infinite",
+                output: group,
+                collinear_joints: collinear,
+            });
+        }
+    }
+    toggles
 }
