@@ -118,38 +118,7 @@ impl Kinetostatics {
                 3 * moving.len()
             )));
         }
-        let mut a = DMatrix::<f64>::zeros(n, n);
-        // A force f at point p on `link` in unknown column `col` (times the unknown).
-        let put = |a: &mut DMatrix<f64>, link: usize, col: usize, f: Vec2, p: Vec2| {
-            if let Some(r) = row_of(link) {
-                a[(r, col)] += f.x;
-                a[(r + 1, col)] += f.y;
-                a[(r + 2, col)] += cross(&p, &f);
-            }
-        };
-        for (j, rv) in m.revolutes.iter().enumerate() {
-            let p = sol.points[rv.point].position;
-            for (axis, unit) in [(0, Vec2::x()), (1, Vec2::y())] {
-                put(&mut a, rv.b, 2 * j + axis, unit, p);
-                put(&mut a, rv.a, 2 * j + axis, -unit, p);
-            }
-        }
-        for (j, sl) in m.sliders.iter().enumerate() {
-            let p = sol.points[sl.point].position;
-            let normal = perp(&sl.direction(&sol.links));
-            let col = 2 * nr + 2 * j;
-            put(&mut a, sl.slider, col, normal, p);
-            put(&mut a, sl.guide, col, -normal, p);
-            if let Some(r) = row_of(sl.slider) {
-                a[(r + 2, col + 1)] += 1.0;
-            }
-            if let Some(r) = row_of(sl.guide) {
-                a[(r + 2, col + 1)] -= 1.0;
-            }
-        }
-        if let Some(r) = row_of(m.driver.link) {
-            a[(r + 2, n - 1)] = 1.0;
-        }
+        let a = reaction_matrix(m, sol, &moving);
         let mut b = DVector::<f64>::zeros(n);
         for &l in &moving {
             let r = row_of(l).unwrap_or(0);
@@ -161,25 +130,7 @@ impl Kinetostatics {
             input_deg: input_rad.to_degrees(),
             reason: "the joint reactions are indeterminate here (a dead point of the input)".into(),
         })?;
-        let name = |link: usize| m.links[link].name.as_str();
-        let mut joints = Vec::with_capacity(nr + np);
-        for (j, rv) in m.revolutes.iter().enumerate() {
-            joints.push(JointReaction {
-                name: format!("{}_{}_{}", m.points[rv.point].name, name(rv.a), name(rv.b)),
-                kind: JointKind::Revolute,
-                force: (x[2 * j], x[2 * j + 1]),
-                couple: 0.0,
-            });
-        }
-        for (j, sl) in m.sliders.iter().enumerate() {
-            let normal = perp(&sl.direction(&sol.links));
-            joints.push(JointReaction {
-                name: format!("{}_on_{}", name(sl.slider), name(sl.guide)),
-                kind: JointKind::Prismatic,
-                force: (normal.x * x[2 * nr + 2 * j], normal.y * x[2 * nr + 2 * j]),
-                couple: x[2 * nr + 2 * j + 1],
-            });
-        }
+        let joints = reactions(m, sol, &x);
         Ok(KinetostaticState {
             input_rad,
             torque_newton_euler: x[n - 1],
@@ -188,6 +139,74 @@ impl Kinetostatics {
             amplification: amplification(m, sol, omega),
         })
     }
+}
+
+/// The Newton–Euler system's matrix: three rows per moving link (force x, y, moment
+/// about the origin), a column per unknown: (Fx, Fy) per revolute, (N, C) per
+/// prismatic joint, then the input torque.
+fn reaction_matrix(m: &crate::Mechanism, sol: &Solution, moving: &[usize]) -> DMatrix<f64> {
+    let row_of = |link: usize| moving.iter().position(|&l| l == link).map(|i| 3 * i);
+    let (nr, np) = (m.revolutes.len(), m.sliders.len());
+    let n = 2 * nr + 2 * np + 1;
+    let mut a = DMatrix::<f64>::zeros(n, n);
+    // A force f at point p on `link` in unknown column `col` (times the unknown).
+    let put = |a: &mut DMatrix<f64>, link: usize, col: usize, f: Vec2, p: Vec2| {
+        if let Some(r) = row_of(link) {
+            a[(r, col)] += f.x;
+            a[(r + 1, col)] += f.y;
+            a[(r + 2, col)] += cross(&p, &f);
+        }
+    };
+    for (j, rv) in m.revolutes.iter().enumerate() {
+        let p = sol.points[rv.point].position;
+        for (axis, unit) in [(0, Vec2::x()), (1, Vec2::y())] {
+            put(&mut a, rv.b, 2 * j + axis, unit, p);
+            put(&mut a, rv.a, 2 * j + axis, -unit, p);
+        }
+    }
+    for (j, sl) in m.sliders.iter().enumerate() {
+        let p = sol.points[sl.point].position;
+        let normal = perp(&sl.direction(&sol.links));
+        let col = 2 * nr + 2 * j;
+        put(&mut a, sl.slider, col, normal, p);
+        put(&mut a, sl.guide, col, -normal, p);
+        if let Some(r) = row_of(sl.slider) {
+            a[(r + 2, col + 1)] += 1.0;
+        }
+        if let Some(r) = row_of(sl.guide) {
+            a[(r + 2, col + 1)] -= 1.0;
+        }
+    }
+    if let Some(r) = row_of(m.driver.link) {
+        a[(r + 2, n - 1)] = 1.0;
+    }
+    a
+}
+
+/// Every joint's reaction from the solved unknowns `x`, revolutes then prismatic
+/// joints.
+fn reactions(m: &crate::Mechanism, sol: &Solution, x: &DVector<f64>) -> Vec<JointReaction> {
+    let nr = m.revolutes.len();
+    let name = |link: usize| m.links[link].name.as_str();
+    let mut joints = Vec::with_capacity(nr + m.sliders.len());
+    for (j, rv) in m.revolutes.iter().enumerate() {
+        joints.push(JointReaction {
+            name: format!("{}_{}_{}", m.points[rv.point].name, name(rv.a), name(rv.b)),
+            kind: JointKind::Revolute,
+            force: (x[2 * j], x[2 * j + 1]),
+            couple: 0.0,
+        });
+    }
+    for (j, sl) in m.sliders.iter().enumerate() {
+        let normal = perp(&sl.direction(&sol.links));
+        joints.push(JointReaction {
+            name: format!("{}_on_{}", name(sl.slider), name(sl.guide)),
+            kind: JointKind::Prismatic,
+            force: (normal.x * x[2 * nr + 2 * j], normal.y * x[2 * nr + 2 * j]),
+            couple: x[2 * nr + 2 * j + 1],
+        });
+    }
+    joints
 }
 
 /// 1/|output velocity ratio| of the scene's output (its slider if it has one, else
