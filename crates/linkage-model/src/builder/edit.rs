@@ -17,46 +17,14 @@ pub fn apply(sketch: &Sketch, edit: SketchEdit) -> Result<Sketch, Refusal> {
         }
         SketchEdit::SetGround { point, ground } => next.points[point].ground = ground,
         SketchEdit::AddLink(a, b) => add_link(&mut next, a, b)?,
-        SketchEdit::AddPointToLink { link, end } => {
-            let p = resolve(&mut next, end)?;
-            if next.links[link].points.contains(&p) {
-                return Err(Refusal::AlreadyJoined(next.links[link].name.clone()));
-            }
-            next.links[link].points.push(p);
-        }
-        SketchEdit::AddSlider { point, angle_rad } => {
-            if next.sliders.iter().any(|s| s.point == point) {
-                return Err(Refusal::AlreadySlider(next.points[point].name.clone()));
-            }
-            next.sliders.push(SketchSlider {
-                point,
-                guide: None,
-                angle_rad,
-                mass_kg: None,
-            });
-        }
+        SketchEdit::AddPointToLink { link, end } => add_point_to_link(&mut next, link, end)?,
+        SketchEdit::AddSlider { point, angle_rad } => add_slider(&mut next, point, angle_rad)?,
         SketchEdit::SetGuide {
             slider,
             guide,
             angle_rad,
-        } => {
-            if !angle_rad.is_finite() {
-                return Err(Refusal::NotFinite);
-            }
-            let pin = next.sliders[slider].point;
-            if let Some(l) = guide.filter(|&l| next.links[l].points.contains(&pin)) {
-                return Err(Refusal::GuideThroughPin(next.links[l].name.clone()));
-            }
-            next.sliders[slider].guide = guide;
-            next.sliders[slider].angle_rad = angle_rad;
-        }
-        SketchEdit::SetDriver(link) => {
-            let l = &next.links[link];
-            if !l.points.iter().any(|&p| next.points[p].ground) {
-                return Err(Refusal::DriverNotGrounded(l.name.clone()));
-            }
-            next.driver = Some(link);
-        }
+        } => set_guide(&mut next, slider, guide, angle_rad)?,
+        SketchEdit::SetDriver(link) => set_driver(&mut next, link)?,
         SketchEdit::MovePoint { point, to } => {
             finite(to)?;
             next.points[point].at = to;
@@ -81,17 +49,74 @@ pub fn apply(sketch: &Sketch, edit: SketchEdit) -> Result<Sketch, Refusal> {
         | SketchEdit::SetForce { .. }
         | SketchEdit::DeleteElement(_)
         | SketchEdit::SetBody { .. } => super::loads::apply(&mut next, edit)?,
-        SketchEdit::SetMass(body, kg) => {
-            if let Some(kg) = kg.filter(|kg| !(kg.is_finite() && *kg > 0.0)) {
-                return Err(Refusal::Mass(kg));
-            }
-            match body {
-                Body::Link(l) => next.links[l].mass_kg = kg,
-                Body::Block(b) => next.sliders[b].mass_kg = kg,
-            }
-        }
+        SketchEdit::SetMass(body, kg) => set_mass(&mut next, body, kg)?,
     }
     Ok(next)
+}
+
+/// Joins point `end` (drawn or new) to `link`.
+fn add_point_to_link(next: &mut Sketch, link: usize, end: End) -> Result<(), Refusal> {
+    let p = resolve(next, end)?;
+    if next.links[link].points.contains(&p) {
+        return Err(Refusal::AlreadyJoined(next.links[link].name.clone()));
+    }
+    next.links[link].points.push(p);
+    Ok(())
+}
+
+/// A slider block at `point`, its guide not yet chosen.
+fn add_slider(next: &mut Sketch, point: usize, angle_rad: f64) -> Result<(), Refusal> {
+    if next.sliders.iter().any(|s| s.point == point) {
+        return Err(Refusal::AlreadySlider(next.points[point].name.clone()));
+    }
+    next.sliders.push(SketchSlider {
+        point,
+        guide: None,
+        angle_rad,
+        mass_kg: None,
+    });
+    Ok(())
+}
+
+/// The slider's guide (a link not through its own pin; `None`: ground) and angle.
+fn set_guide(
+    next: &mut Sketch,
+    slider: usize,
+    guide: Option<usize>,
+    angle_rad: f64,
+) -> Result<(), Refusal> {
+    if !angle_rad.is_finite() {
+        return Err(Refusal::NotFinite);
+    }
+    let pin = next.sliders[slider].point;
+    if let Some(l) = guide.filter(|&l| next.links[l].points.contains(&pin)) {
+        return Err(Refusal::GuideThroughPin(next.links[l].name.clone()));
+    }
+    next.sliders[slider].guide = guide;
+    next.sliders[slider].angle_rad = angle_rad;
+    Ok(())
+}
+
+/// The driver: a link with a point on ground.
+fn set_driver(next: &mut Sketch, link: usize) -> Result<(), Refusal> {
+    let l = &next.links[link];
+    if !l.points.iter().any(|&p| next.points[p].ground) {
+        return Err(Refusal::DriverNotGrounded(l.name.clone()));
+    }
+    next.driver = Some(link);
+    Ok(())
+}
+
+/// A link's or a block's mass (`None`: none), kg, finite and positive.
+fn set_mass(next: &mut Sketch, body: Body, kg: Option<f64>) -> Result<(), Refusal> {
+    if let Some(kg) = kg.filter(|kg| !(kg.is_finite() && *kg > 0.0)) {
+        return Err(Refusal::Mass(kg));
+    }
+    match body {
+        Body::Link(l) => next.links[l].mass_kg = kg,
+        Body::Block(b) => next.sliders[b].mass_kg = kg,
+    }
+    Ok(())
 }
 
 /// The first unused name of `A`..`Z`, then `A1`..`Z1`, ...
