@@ -30,6 +30,33 @@ pub fn build_sketch(out: &mut Vec<Shape>, sketch: &Sketch, cam: &Camera, marked:
             ground_pivot(&mut push, pos(p), pin, bar);
         }
     }
+    slider_blocks(&mut push, sketch, &pos, bar, pin);
+    links(&mut push, sketch, &pos, bar);
+    force_elements(&mut push, sketch, &pos, bar, pin);
+    for p in 0..sketch.points.len() {
+        let c = pos(p);
+        push(Shape::new(Kind::Pin, [c, c, c], pin, colour::PIN, [0.0; 2]));
+    }
+    if let Some(p) = marked.filter(|&p| p < sketch.points.len()) {
+        let c = pos(p);
+        push(Shape::new(
+            Kind::Pin,
+            [c, c, c],
+            1.6 * pin,
+            colour::MARK,
+            [0.0; 2],
+        ));
+    }
+}
+
+/// Each slider's block on a short rail along its guide's angle.
+fn slider_blocks(
+    push: &mut impl FnMut(Option<Shape>),
+    sketch: &Sketch,
+    pos: &impl Fn(usize) -> Vec2,
+    bar: f32,
+    pin: f32,
+) {
     for s in &sketch.sliders {
         let c = pos(s.point);
         let d = Vec2::new(s.angle_rad.cos() as f32, s.angle_rad.sin() as f32);
@@ -49,6 +76,15 @@ pub fn build_sketch(out: &mut Vec<Shape>, sketch: &Sketch, cam: &Camera, marked:
             [2.4 * pin, 1.5 * pin],
         ));
     }
+}
+
+/// Links: bars, and plates for three or more points (with bars to the rest).
+fn links(
+    push: &mut impl FnMut(Option<Shape>),
+    sketch: &Sketch,
+    pos: &impl Fn(usize) -> Vec2,
+    bar: f32,
+) {
     for (l, link) in sketch.links.iter().enumerate() {
         let colour = if sketch.driver == Some(l) {
             colour::DRIVER
@@ -83,21 +119,6 @@ pub fn build_sketch(out: &mut Vec<Shape>, sketch: &Sketch, cam: &Camera, marked:
             }
             _ => {}
         }
-    }
-    force_elements(&mut push, sketch, &pos, bar, pin);
-    for p in 0..sketch.points.len() {
-        let c = pos(p);
-        push(Shape::new(Kind::Pin, [c, c, c], pin, colour::PIN, [0.0; 2]));
-    }
-    if let Some(p) = marked.filter(|&p| p < sketch.points.len()) {
-        let c = pos(p);
-        push(Shape::new(
-            Kind::Pin,
-            [c, c, c],
-            1.6 * pin,
-            colour::MARK,
-            [0.0; 2],
-        ));
     }
 }
 

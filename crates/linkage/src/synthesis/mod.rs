@@ -137,30 +137,7 @@ pub fn crank_rocker(
     rocker_start_rad: f64,
     choice: Option<(f64, i8)>,
 ) -> Result<CrankRocker> {
-    if !(rocker_m.is_finite() && rocker_m > 0.0) {
-        return Err(invalid("rocker length", rocker_m, "must be > 0"));
-    }
-    if !(swing_rad > 0.0 && swing_rad < std::f64::consts::PI) {
-        return Err(invalid(
-            "swing (deg)",
-            swing_rad.to_degrees(),
-            "must be in (0, 180) deg",
-        ));
-    }
-    if !(k.is_finite() && k > 1.0 && k < 1e3) {
-        return Err(invalid(
-            "time ratio K",
-            k,
-            "must be in (1, 1000): K = 1 puts A at infinity on this circle (use a centred design)",
-        ));
-    }
-    if !rocker_start_rad.is_finite() {
-        return Err(invalid(
-            "rocker start angle",
-            rocker_start_rad,
-            "must be finite",
-        ));
-    }
+    check_crank_rocker(rocker_m, swing_rad, k, rocker_start_rad)?;
     let theta = std::f64::consts::PI * (k - 1.0) / (k + 1.0);
     let at = |phi: f64| Vec2::new(phi.cos(), phi.sin()) * rocker_m;
     let (c1, c2) = (at(rocker_start_rad), at(rocker_start_rad + swing_rad));
@@ -210,6 +187,35 @@ pub fn crank_rocker(
         }
     }
     Ok(design_at(c1, c2, rocker_m, theta, coarse.side, 0.5 * (lo + hi)).unwrap_or(coarse))
+}
+
+/// The crank-rocker's requirements, each within its valid range.
+fn check_crank_rocker(rocker_m: f64, swing_rad: f64, k: f64, rocker_start_rad: f64) -> Result<()> {
+    if !(rocker_m.is_finite() && rocker_m > 0.0) {
+        return Err(invalid("rocker length", rocker_m, "must be > 0"));
+    }
+    if !(swing_rad > 0.0 && swing_rad < std::f64::consts::PI) {
+        return Err(invalid(
+            "swing (deg)",
+            swing_rad.to_degrees(),
+            "must be in (0, 180) deg",
+        ));
+    }
+    if !(k.is_finite() && k > 1.0 && k < 1e3) {
+        return Err(invalid(
+            "time ratio K",
+            k,
+            "must be in (1, 1000): K = 1 puts A at infinity on this circle (use a centred design)",
+        ));
+    }
+    if !rocker_start_rad.is_finite() {
+        return Err(invalid(
+            "rocker start angle",
+            rocker_start_rad,
+            "must be finite",
+        ));
+    }
+    Ok(())
 }
 
 /// The die-cutter requirements of the second paper.
