@@ -317,6 +317,45 @@ impl Sketch {
                 spec
             })
             .collect();
+        let sliders = self.slider_specs(&mut ground, &mut links);
+        links.insert(
+            0,
+            LinkSpec {
+                ground: true,
+                ..link_spec("ground", ground)
+            },
+        );
+        SceneFile {
+            name: self.name.clone(),
+            description: String::new(),
+            notes: Vec::new(),
+            models: self.models,
+            length_unit: self.length_unit,
+            angle_unit: AngleUnit::Degree,
+            links,
+            sliders,
+            driver: DriverSpec {
+                link: self.links[driver].name.clone(),
+                speed: self.speed,
+                start: 0.0,
+            },
+            branches: IndexMap::new(),
+            output: self.output.map(|l| self.links[l].name.clone()),
+            guess: IndexMap::new(),
+            forces: self.forces_spec(),
+            solver: Default::default(),
+        }
+    }
+
+    /// The sliders' blocks (added to `links`) and joints: each block a link of its own
+    /// at its pin, its guide through the pin on ground or on its link.
+    fn slider_specs(
+        &self,
+        ground: &mut IndexMap<String, (f64, f64)>,
+        links: &mut Vec<LinkSpec>,
+    ) -> Vec<SliderSpec> {
+        let unit = self.length_unit.to_metres();
+        let xy = |p: Vec2| (p.x / unit, p.y / unit);
         let mut sliders = Vec::new();
         for s in &self.sliders {
             let pin = &self.points[s.point];
@@ -347,33 +386,7 @@ impl Sketch {
                 relative_angle: 0.0,
             });
         }
-        links.insert(
-            0,
-            LinkSpec {
-                ground: true,
-                ..link_spec("ground", ground)
-            },
-        );
-        SceneFile {
-            name: self.name.clone(),
-            description: String::new(),
-            notes: Vec::new(),
-            models: self.models,
-            length_unit: self.length_unit,
-            angle_unit: AngleUnit::Degree,
-            links,
-            sliders,
-            driver: DriverSpec {
-                link: self.links[driver].name.clone(),
-                speed: self.speed,
-                start: 0.0,
-            },
-            branches: IndexMap::new(),
-            output: self.output.map(|l| self.links[l].name.clone()),
-            guess: IndexMap::new(),
-            forces: self.forces_spec(),
-            solver: Default::default(),
-        }
+        sliders
     }
 
     /// The centroid (in the world as drawn, m) and the moment of inertia about it
