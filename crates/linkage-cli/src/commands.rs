@@ -9,43 +9,17 @@ use linkage::{Kinematics, Mechanism, Solution};
 use serde_json::{Value, json};
 
 use crate::args::{Command, Format, SceneArgs, SynthCommand};
+use crate::error::{CliError, Result};
 use crate::io::{check_finite, describe, json_text, load, to_csv};
 
-/// Why a command did not finish.
-#[derive(Debug)]
-pub enum Failure {
-    /// The command's own error, as shown to the user.
-    Message(String),
-    /// The solver's error, worded by the command that met it ([`describe`]).
-    Solver(linkage::LinkageError),
-    /// Writing the output failed (a closed pipe, a full disk).
-    Output(std::io::Error),
-}
-
-impl From<String> for Failure {
-    fn from(message: String) -> Self {
-        Self::Message(message)
+/// A CSV writer's failure: a failed write (a closed pipe) is the output's.
+fn csv_failure(e: csv::Error) -> CliError {
+    if !e.is_io_error() {
+        return CliError::Csv(e);
     }
-}
-
-impl From<linkage::LinkageError> for Failure {
-    fn from(e: linkage::LinkageError) -> Self {
-        Self::Solver(e)
-    }
-}
-
-impl From<std::io::Error> for Failure {
-    fn from(e: std::io::Error) -> Self {
-        Self::Output(e)
-    }
-}
-
-impl From<csv::Error> for Failure {
-    fn from(e: csv::Error) -> Self {
-        match e.into_kind() {
-            csv::ErrorKind::Io(io) => Self::Output(io),
-            other => Self::Message(format!("cannot write CSV: {other:?}")),
-        }
+    match e.into_kind() {
+        csv::ErrorKind::Io(io) => CliError::Output(io),
+        other => CliError::refused(format!("cannot write CSV: {other:?}")),
     }
 }
 
@@ -56,7 +30,7 @@ pub const MAX_CSV_STEPS: usize = 100_000_000;
 pub const MAX_JSON_STEPS: usize = 100_000;
 
 /// Runs one command, writing its output to `out`.
-pub fn run(command: Command, out: &mut dyn Write) -> Result<(), Failure> {
+pub fn run(command: Command, out: &mut dyn Write) -> Result<()> {
     let text = match command {
         Command::Sweep {
             scene,
@@ -86,30 +60,27 @@ pub fn run(command: Command, out: &mut dyn Write) -> Result<(), Failure> {
 
 /// `share SCENE`: the fragment for the scene (checked to load first); `share --decode
 /// LINK`: the scene text it carries, exactly.
-fn share(scene: Option<&std::path::Path>, decode: Option<&str>) -> Result<String, String> {
+fn share(scene: Option<&std::path::Path>, decode: Option<&str>) -> Result<String> {
     if let Some(link) = decode {
-        return linkage::share::decode(link).map_err(|e| e.to_string());
+        return Ok(linkage::share::decode(link)?);
     }
-    let path = scene.ok_or("give a scene file, or --decode LINK")?;
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| format!("cannot read scene {}: {e}", path.display()))?;
-    Mechanism::from_ron(&text).map_err(|e| format!("{}: {e}", path.display()))?;
-    let payload = linkage::share::encode(&text).map_err(|e| e.to_string())?;
+    let path = scene.ok_or_else(|| CliError::refused("give a scene file, or --decode LINK"))?;
+    let text = std::fs::read_to_string(path).map_err(|source| CliError::ReadScene {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    Mechanism::from_ron(&text).map_err(|e| CliError::in_file(path, e))?;
+    let payload = linkage::share::encode(&text)?;
     Ok(format!("{}={payload}\n", linkage::share::FRAGMENT_KEY))
 }
 
-fn sweep(
-    args: &SceneArgs,
-    steps: usize,
-    format: Format,
-    out: &mut dyn Write,
-) -> Result<(), Failure> {
+fn sweep(args: &SceneArgs, steps: usize, format: Format, out: &mut dyn Write) -> Result<()> {
     let most = match format {
         Format::Csv => MAX_CSV_STEPS,
         Format::Json => MAX_JSON_STEPS,
     };
     if steps > most {
-        return Err(Failure::Message(format!(
+        return Err(CliError::refused(format!(
             "--steps {steps} is too many for {} output: at most {most}",
             if format == Format::Csv { "CSV" } else { "JSON" }
         )));
@@ -117,7 +88,7 @@ fn sweep(
     let mut k = load(args)?;
     if format == Format::Csv {
         return sweep_csv(&mut k, steps, out).map_err(|f| match f {
-            Failure::Solver(e) => Failure::Message(describe(args, e)),
+            CliError::Solver(e) => describe(args, e),
             other => other,
         });
     }
@@ -148,17 +119,17 @@ fn sweep(
 }
 
 /// The sweep as CSV, each row written as soon as it is solved.
-fn sweep_csv(k: &mut Kinematics, steps: usize, out: &mut dyn Write) -> Result<(), Failure> {
+fn sweep_csv(k: &mut Kinematics, steps: usize, out: &mut dyn Write) -> Result<()> {
     let header = csv_header(k.mechanism());
     let mut w = csv::Writer::from_writer(out);
-    w.write_record(&header)?;
+    w.write_record(&header).map_err(csv_failure)?;
     let mut cells: Vec<String> = Vec::with_capacity(header.len());
-    let info = linkage::sweep::sweep_each(k, steps, |m, s, angles| -> Result<(), Failure> {
+    let info = linkage::sweep::sweep_each(k, steps, |m, s, angles| -> Result<()> {
         let row = csv_row(m, s, angles);
         check_finite(&row, "sweep")?;
         cells.clear();
         cells.extend(row.iter().map(|v| format!("{v:e}")));
-        w.write_record(&cells)?;
+        w.write_record(&cells).map_err(csv_failure)?;
         Ok(())
     })?;
     w.flush()?;
@@ -175,7 +146,7 @@ fn warn_near_singular(inputs_rad: &[f64]) {
     }
 }
 
-fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<String, String> {
+fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<String> {
     let mut k = load(args)?;
     let s: Solution = k
         .solve(input_deg.to_radians())
@@ -225,13 +196,13 @@ fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<String, String
     }
 }
 
-fn report(args: &SceneArgs) -> Result<String, String> {
+fn report(args: &SceneArgs) -> Result<String> {
     let mut k = load(args)?;
-    let r = linkage::analysis::report(&mut k).map_err(|e| e.to_string())?;
-    json_text(&serde_json::to_value(&r).map_err(|e| e.to_string())?)
+    let r = linkage::analysis::report(&mut k)?;
+    json_text(&serde_json::to_value(&r)?)
 }
 
-fn synth(what: SynthCommand) -> Result<String, String> {
+fn synth(what: SynthCommand) -> Result<String> {
     match what {
         SynthCommand::CrankRocker {
             rocker,
@@ -249,15 +220,13 @@ fn synth(what: SynthCommand) -> Result<String, String> {
                 k,
                 rocker_start_deg.to_radians(),
                 choice,
-            )
-            .map_err(|e| e.to_string())?;
+            )?;
             if let Some(path) = scene_out {
                 let scene = linkage::synthesis::four_bar_scene(&d, k);
-                let text = scene.to_ron().map_err(|e| e.to_string())?;
-                std::fs::write(&path, text)
-                    .map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+                let text = scene.to_ron()?;
+                std::fs::write(&path, text).map_err(|source| CliError::Write { path, source })?;
             }
-            json_text(&serde_json::to_value(&d).map_err(|e| e.to_string())?)
+            json_text(&serde_json::to_value(&d)?)
         }
         SynthCommand::Function {
             points,
@@ -296,9 +265,8 @@ fn synth(what: SynthCommand) -> Result<String, String> {
             let (scene, _) = match as_printed.as_deref() {
                 Some([ab, bc]) => die_cutter_as_printed(ab * 1e-3, bc * 1e-3, &spec),
                 _ => die_cutter(&spec),
-            }
-            .map_err(|e| e.to_string())?;
-            scene.to_ron().map(|t| t + "\n").map_err(|e| e.to_string())
+            }?;
+            Ok(scene.to_ron()? + "\n")
         }
     }
 }

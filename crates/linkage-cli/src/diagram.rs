@@ -8,24 +8,26 @@ use linkage::polygon::polygons;
 use linkage_diagram::svg::{Parts, Position, sheet};
 
 use crate::args::{DiagramArgs, Part, SceneArgs};
+use crate::error::{CliError, Result};
 use crate::io::load;
 
 /// The SVG text of the sheet, and the PNG written if asked; returns what goes to
 /// standard output (the SVG when no file was named).
-pub fn run(scene: &SceneArgs, args: &DiagramArgs) -> Result<String, String> {
+pub fn run(scene: &SceneArgs, args: &DiagramArgs) -> Result<String> {
     if !(args.input_deg.is_finite()) {
-        return Err(format!(
+        return Err(CliError::refused(format!(
             "--input-deg {} is invalid: must be a finite number",
             args.input_deg
-        ));
+        )));
     }
     if !(args.dpi.is_finite() && (10.0..=1200.0).contains(&args.dpi)) {
-        return Err(format!("--dpi {} is out of range: 10 to 1200", args.dpi));
+        return Err(CliError::refused(format!(
+            "--dpi {} is out of range: 10 to 1200",
+            args.dpi
+        )));
     }
     let mut k = load(scene)?;
-    let s = k
-        .solve(args.input_deg.to_radians())
-        .map_err(|e| e.to_string())?;
+    let s = k.solve(args.input_deg.to_radians())?;
     let eqs = polygons(&k, &s);
     let m = k.mechanism();
     let centres = instant_centres(m, &s);
@@ -45,11 +47,17 @@ pub fn run(scene: &SceneArgs, args: &DiagramArgs) -> Result<String, String> {
     };
     let svg = sheet(&position, parts);
     if let Some(path) = &args.svg {
-        std::fs::write(path, &svg).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        std::fs::write(path, &svg).map_err(|source| CliError::Write {
+            path: path.to_path_buf(),
+            source,
+        })?;
     }
     if let Some(path) = &args.png {
         let png = render_png(&svg, args.dpi)?;
-        std::fs::write(path, png).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        std::fs::write(path, png).map_err(|source| CliError::Write {
+            path: path.to_path_buf(),
+            source,
+        })?;
     }
     Ok(if args.svg.is_none() && args.png.is_none() {
         svg
@@ -59,6 +67,7 @@ pub fn run(scene: &SceneArgs, args: &DiagramArgs) -> Result<String, String> {
 }
 
 /// The SVG rendered at `dpi`, as PNG bytes, with the app's own font.
-pub fn render_png(svg: &str, dpi: f32) -> Result<Vec<u8>, String> {
+pub fn render_png(svg: &str, dpi: f32) -> Result<Vec<u8>> {
     linkage_diagram::png::render(svg, dpi, epaint_default_fonts::UBUNTU_LIGHT, "Ubuntu")
+        .map_err(CliError::Plot)
 }

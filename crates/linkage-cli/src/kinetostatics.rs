@@ -5,16 +5,17 @@ use linkage::kinetostatics::{JointKind, Kinetostatics};
 use serde_json::{Value, json};
 
 use crate::args::{Format, SceneArgs};
+use crate::error::{CliError, Result};
 use crate::io::{describe, json_text, load, records_to_csv};
 
 /// Runs the cycle and formats it; a singular amplification is an empty CSV field
 /// (JSON null), never infinity.
-pub fn run(args: &SceneArgs, steps: usize, format: Format) -> Result<String, String> {
+pub fn run(args: &SceneArgs, steps: usize, format: Format) -> Result<String> {
     if steps == 0 {
-        return Err("--steps must be at least 1".into());
+        return Err(CliError::refused("--steps must be at least 1"));
     }
     let mut k = load(args)?;
-    let mut ks = Kinetostatics::new(&mut k).map_err(|e| e.to_string())?;
+    let mut ks = Kinetostatics::new(&mut k)?;
     let start = k.mechanism().driver.start_rad;
     let mut header: Vec<String> = ["input_rad", "torque_n_m", "torque_virtual_work_n_m"]
         .map(String::from)
@@ -48,7 +49,9 @@ pub fn run(args: &SceneArgs, steps: usize, format: Format) -> Result<String, Str
         }
         row.push(s.amplification);
         if row.iter().flatten().any(|v| !v.is_finite()) {
-            return Err(format!("non-finite kinetostatics at input {input} rad"));
+            return Err(CliError::refused(format!(
+                "non-finite kinetostatics at input {input} rad"
+            )));
         }
         worst = worst.max((s.torque_newton_euler - s.torque_virtual_work).abs());
         peak = peak.max(s.torque_newton_euler.abs());

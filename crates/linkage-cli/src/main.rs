@@ -9,6 +9,7 @@ mod args;
 mod commands;
 mod counts;
 mod diagram;
+mod error;
 mod io;
 mod kinetostatics;
 mod plot;
@@ -24,6 +25,7 @@ use std::process::ExitCode;
 use clap::Parser as _;
 
 use args::Cli;
+use error::CliError;
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
@@ -32,16 +34,8 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         // A reader that closed the pipe (`| head`) has all it wanted: not an error.
-        Err(commands::Failure::Output(e)) if e.kind() == ErrorKind::BrokenPipe => ExitCode::SUCCESS,
-        Err(commands::Failure::Output(e)) => {
-            eprintln!("error: cannot write the output: {e}");
-            ExitCode::FAILURE
-        }
-        Err(commands::Failure::Message(message)) => {
-            eprintln!("error: {message}");
-            ExitCode::FAILURE
-        }
-        Err(commands::Failure::Solver(e)) => {
+        Err(CliError::Output(e)) if e.kind() == ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(e) => {
             eprintln!("error: {e}");
             ExitCode::FAILURE
         }

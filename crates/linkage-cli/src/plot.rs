@@ -10,6 +10,8 @@ use std::path::Path;
 use ab_glyph::{Font, FontRef, PxScale, ScaleFont, point};
 use plotters::prelude::*;
 
+use crate::error::{CliError, Result};
+
 /// One line of the plot: a label and its (x, y) points.
 pub struct Series {
     /// Legend text.
@@ -41,6 +43,11 @@ fn decades(lo: f64, hi: f64) -> (f64, f64) {
     )
 }
 
+/// The plotting library's or the PNG encoder's error, in its own words.
+fn plot_error(e: impl std::fmt::Display) -> CliError {
+    CliError::Plot(e.to_string())
+}
+
 /// Writes a log–log plot of `series` to `path`.
 pub fn work_precision_png(
     path: &Path,
@@ -48,14 +55,16 @@ pub fn work_precision_png(
     x_label: &str,
     y_label: &str,
     series: &[Series],
-) -> Result<(), String> {
+) -> Result<()> {
     let all: Vec<(f64, f64)> = series
         .iter()
         .flat_map(|s| s.points.iter().copied())
         .filter(|(x, y)| *x > 0.0 && *y > 0.0 && x.is_finite() && y.is_finite())
         .collect();
     if all.is_empty() {
-        return Err("nothing to plot: no point has a positive, finite error and time".into());
+        return Err(CliError::refused(
+            "nothing to plot: no point has a positive, finite error and time",
+        ));
     }
     let fold = |f: fn(f64, f64) -> f64, start: f64, pick: fn(&(f64, f64)) -> f64| {
         all.iter().map(pick).fold(start, f)
@@ -87,14 +96,14 @@ pub fn work_precision_png(
             .margin_top(MARGIN_TOP)
             .margin_right(MARGIN_RIGHT)
             .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
-            .map_err(|e| e.to_string())?;
+            .map_err(plot_error)?;
         chart
             .configure_mesh()
             .x_labels(0)
             .y_labels(0)
             .light_line_style(RGBColor(235, 235, 235))
             .draw()
-            .map_err(|e| e.to_string())?;
+            .map_err(plot_error)?;
         // Decade grid lines and tick labels (plotters' own labels need font-kit).
         let mut decade = x0;
         while decade <= x1 * 1.0001 {
@@ -103,7 +112,7 @@ pub fn work_precision_png(
                     [(decade, y0), (decade, y1)],
                     RGBColor(200, 200, 200),
                 ))
-                .map_err(|e| e.to_string())?;
+                .map_err(plot_error)?;
             let (px, _) = chart.backend_coord(&(decade, y0));
             labels.push(Label {
                 text: format!("1e{}", decade.log10().round()),
@@ -121,7 +130,7 @@ pub fn work_precision_png(
                     [(x0, decade), (x1, decade)],
                     RGBColor(200, 200, 200),
                 ))
-                .map_err(|e| e.to_string())?;
+                .map_err(plot_error)?;
             let (_, py) = chart.backend_coord(&(x0, decade));
             labels.push(Label {
                 text: format!("1e{}", decade.log10().round()),
@@ -142,10 +151,10 @@ pub fn work_precision_png(
                 .collect();
             chart
                 .draw_series(LineSeries::new(points.clone(), color.stroke_width(2)))
-                .map_err(|e| e.to_string())?;
+                .map_err(plot_error)?;
             chart
                 .draw_series(points.iter().map(|&p| Circle::new(p, 4, color.filled())))
-                .map_err(|e| e.to_string())?;
+                .map_err(plot_error)?;
             // Legend: a swatch and the label, bottom left (cheap and exact: empty).
             let (lx, ly) = (
                 MARGIN_LEFT as i32 + 20,
@@ -155,7 +164,7 @@ pub fn work_precision_png(
                 [(lx, ly - 8), (lx + 24, ly - 4)],
                 color.filled(),
             ))
-            .map_err(|e| e.to_string())?;
+            .map_err(plot_error)?;
             labels.push(Label {
                 text: s.label.clone(),
                 x: lx + 32,
@@ -164,7 +173,7 @@ pub fn work_precision_png(
                 color: (color.0, color.1, color.2),
             });
         }
-        root.present().map_err(|e| e.to_string())?;
+        root.present().map_err(plot_error)?;
     }
     labels.push(Label {
         text: title.into(),
@@ -188,7 +197,7 @@ pub fn work_precision_png(
         color: (0, 0, 0),
     });
     let font = FontRef::try_from_slice(epaint_default_fonts::UBUNTU_LIGHT)
-        .map_err(|e| format!("built-in font: {e}"))?;
+        .map_err(|e| CliError::Plot(format!("built-in font: {e}")))?;
     for label in &labels {
         draw_text(&mut buffer, &font, label);
     }
@@ -228,15 +237,15 @@ fn draw_text(buffer: &mut [u8], font: &FontRef<'_>, label: &Label) {
     }
 }
 
-fn write_png(path: &Path, rgb: &[u8]) -> Result<(), String> {
-    let file = std::fs::File::create(path).map_err(|e| format!("{}: {e}", path.display()))?;
+fn write_png(path: &Path, rgb: &[u8]) -> Result<()> {
+    let file = std::fs::File::create(path).map_err(|e| CliError::in_file(path, plot_error(e)))?;
     let mut encoder = png::Encoder::new(std::io::BufWriter::new(file), WIDTH, HEIGHT);
     encoder.set_color(png::ColorType::Rgb);
     encoder.set_depth(png::BitDepth::Eight);
     let mut writer = encoder
         .write_header()
-        .map_err(|e| format!("{}: {e}", path.display()))?;
+        .map_err(|e| CliError::in_file(path, plot_error(e)))?;
     writer
         .write_image_data(rgb)
-        .map_err(|e| format!("{}: {e}", path.display()))
+        .map_err(|e| CliError::in_file(path, plot_error(e)))
 }

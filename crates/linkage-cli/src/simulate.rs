@@ -6,6 +6,7 @@ use linkage::{Kinematics, Mechanism};
 use serde_json::{Value, json};
 
 use crate::args::{Format, MethodArg, SceneArgs, SimArgs};
+use crate::error::{CliError, Result};
 use crate::io::{check_finite, json_text, load, to_csv};
 
 impl MethodArg {
@@ -24,7 +25,7 @@ impl MethodArg {
 
 impl SimArgs {
     /// The solver settings for `mech`.
-    pub fn settings(&self, mech: &Mechanism) -> Result<Settings, String> {
+    pub fn settings(&self, mech: &Mechanism) -> Result<Settings> {
         let method = self.method.method();
         let mut s = Settings::new(method);
         match method {
@@ -43,13 +44,13 @@ impl SimArgs {
         s.switch_coordinates = !self.no_switch;
         if let Some(name) = &self.coordinate {
             let link = mech.link_index(name).ok_or_else(|| {
-                format!(
+                CliError::refused(format!(
                     "no link named `{name}` for --coordinate (links: {})",
                     mech.moving_links()
                         .map(|l| mech.links[l].name.as_str())
                         .collect::<Vec<_>>()
                         .join(", ")
-                )
+                ))
             })?;
             s.coordinate = Some(link);
         }
@@ -59,11 +60,13 @@ impl SimArgs {
 
 /// Every moving link's (name, angle, omega) at each sample, angles unwrapped along
 /// the run like `sweep`.
-fn link_rows(sim: &mut Simulation, mech: &Mechanism) -> Result<Vec<Vec<f64>>, String> {
+fn link_rows(sim: &mut Simulation, mech: &Mechanism) -> Result<Vec<Vec<f64>>> {
     let links: Vec<usize> = mech.moving_links().collect();
     let mut rows: Vec<Vec<f64>> = Vec::with_capacity(sim.samples.len());
     for s in sim.samples.clone() {
-        let pose = sim.pose(&s).map_err(|e| format!("at t = {} s: {e}", s.t))?;
+        let pose = sim
+            .pose(&s)
+            .map_err(|e| CliError::refused(format!("at t = {} s: {e}", s.t)))?;
         let mut row = Vec::with_capacity(2 * links.len());
         for (n, &l) in links.iter().enumerate() {
             let theta = pose.links[l].angle_rad();
@@ -79,11 +82,11 @@ fn link_rows(sim: &mut Simulation, mech: &Mechanism) -> Result<Vec<Vec<f64>>, St
 }
 
 /// Runs the simulation and formats it.
-pub fn run(args: &SceneArgs, sim_args: &SimArgs, format: Format) -> Result<String, String> {
+pub fn run(args: &SceneArgs, sim_args: &SimArgs, format: Format) -> Result<String> {
     let k: Kinematics = load(args)?;
     let m = k.mechanism().clone();
     let settings = sim_args.settings(&m)?;
-    let mut sim = simulate(&k, &settings).map_err(|e| e.to_string())?;
+    let mut sim = simulate(&k, &settings)?;
     let mut header = vec!["t".to_string(), "q".into(), "q_dot".into()];
     for l in m.moving_links() {
         header.push(format!("{}_theta", m.links[l].name));
@@ -117,7 +120,7 @@ pub fn run(args: &SceneArgs, sim_args: &SimArgs, format: Format) -> Result<Strin
         Format::Json => {
             let mut events = Vec::new();
             for e in sim.events.clone() {
-                let pose = sim.pose(&e.state).map_err(|err| err.to_string())?;
+                let pose = sim.pose(&e.state)?;
                 let links: serde_json::Map<String, Value> = m
                     .moving_links()
                     .map(|l| {

@@ -8,6 +8,7 @@ use linkage::synthesis::function::{PrecisionPoint, freudenstein, structural_erro
 use linkage::synthesis::rows::read_rows;
 use serde_json::json;
 
+use crate::error::{CliError, Result};
 use crate::io::json_text;
 
 /// Designs the generator through the points in `csv` with ground `ground_m`; writes
@@ -15,17 +16,19 @@ use crate::io::json_text;
 ///
 /// # Errors
 /// An unreadable file or row (named by line), or why no four-bar meets the points.
-pub fn run(csv: &Path, ground_m: f64, scene_out: Option<&Path>) -> Result<String, String> {
-    let text =
-        std::fs::read_to_string(csv).map_err(|e| format!("cannot read {}: {e}", csv.display()))?;
-    let points = parse(&text).map_err(|e| format!("{}: {e}", csv.display()))?;
-    let design = freudenstein(&points, ground_m).map_err(|e| e.to_string())?;
+pub fn run(csv: &Path, ground_m: f64, scene_out: Option<&Path>) -> Result<String> {
+    let text = std::fs::read_to_string(csv).map_err(|source| CliError::Read {
+        path: csv.to_path_buf(),
+        source,
+    })?;
+    let points = parse(&text).map_err(|e| CliError::in_file(csv, e))?;
+    let design = freudenstein(&points, ground_m)?;
     if let Some(path) = scene_out {
-        let scene = design
-            .scene(points[0])
-            .to_ron()
-            .map_err(|e| e.to_string())?;
-        std::fs::write(path, scene).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        let scene = design.scene(points[0]).to_ron()?;
+        std::fs::write(path, scene).map_err(|source| CliError::Write {
+            path: path.to_path_buf(),
+            source,
+        })?;
     }
     let error = structural_error(&design, &points);
     let [a, b, c, d] = design.lengths;
@@ -44,9 +47,8 @@ pub fn run(csv: &Path, ground_m: f64, scene_out: Option<&Path>) -> Result<String
 }
 
 /// The rows `input_deg, output_deg` as precision points.
-fn parse(text: &str) -> Result<Vec<PrecisionPoint>, String> {
-    Ok(read_rows(text, 2)
-        .map_err(|e| e.to_string())?
+fn parse(text: &str) -> Result<Vec<PrecisionPoint>> {
+    Ok(read_rows(text, 2)?
         .into_iter()
         .map(|v| PrecisionPoint {
             input_rad: v[0].to_radians(),

@@ -13,6 +13,7 @@ use linkage::synthesis::positions::{
 use linkage::synthesis::rows::read_rows;
 use serde_json::json;
 
+use crate::error::{CliError, Result};
 use crate::io::json_text;
 
 /// The choice that fixes the four-bar, per number of positions.
@@ -31,10 +32,12 @@ pub struct Choice {
 /// # Errors
 /// An unreadable file or row (named by line), not three to five positions, a
 /// choice missing or out of range, or why no four-bar meets the positions so.
-pub fn run(csv: &Path, choice: &Choice, scene_out: Option<&Path>) -> Result<String, String> {
-    let text =
-        std::fs::read_to_string(csv).map_err(|e| format!("cannot read {}: {e}", csv.display()))?;
-    let rows = read_rows(&text, 3).map_err(|e| format!("{}: {e}", csv.display()))?;
+pub fn run(csv: &Path, choice: &Choice, scene_out: Option<&Path>) -> Result<String> {
+    let text = std::fs::read_to_string(csv).map_err(|source| CliError::Read {
+        path: csv.to_path_buf(),
+        source,
+    })?;
+    let rows = read_rows(&text, 3).map_err(|e| CliError::in_file(csv, e))?;
     let poses: Vec<BodyPose> = rows
         .iter()
         .map(|r| BodyPose {
@@ -43,7 +46,7 @@ pub fn run(csv: &Path, choice: &Choice, scene_out: Option<&Path>) -> Result<Stri
         })
         .collect();
     // A choice is read only where the number of positions uses it.
-    let pivots = |v: &[f64], flag: &str, used: bool| -> Result<Option<[[f64; 2]; 2]>, String> {
+    let pivots = |v: &[f64], flag: &str, used: bool| -> Result<Option<[[f64; 2]; 2]>> {
         used.then(|| four_numbers(v, flag).map(|[x1, y1, x2, y2]| [[x1, y1], [x2, y2]]))
             .transpose()
     };
@@ -57,18 +60,23 @@ pub fn run(csv: &Path, choice: &Choice, scene_out: Option<&Path>) -> Result<Stri
         four_bar: design,
         burmester,
     } = through_positions(&poses, &positions).map_err(|e| match e {
-        PositionsError::Count(n) => {
-            format!("{}: {n} positions; 3, 4 or 5 are needed", csv.display())
-        }
-        PositionsError::NoSuchBurmesterPoint { asked, count } => {
-            format!("--pair {asked}: there are {count} Burmester points (1 to {count})")
-        }
-        other => other.to_string(),
+        PositionsError::Count(n) => CliError::refused(format!(
+            "{}: {n} positions; 3, 4 or 5 are needed",
+            csv.display()
+        )),
+        PositionsError::NoSuchBurmesterPoint { asked, count } => CliError::refused(format!(
+            "--pair {asked}: there are {count} Burmester points (1 to {count})"
+        )),
+        PositionsError::Method(e) => CliError::Solver(e),
+        other => CliError::refused(other.to_string()),
     })?;
-    let checked = design.check().map_err(|e| e.to_string())?;
+    let checked = design.check()?;
     if let Some(path) = scene_out {
-        let text = checked.scene.to_ron().map_err(|e| e.to_string())?;
-        std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+        let text = checked.scene.to_ron()?;
+        std::fs::write(path, text).map_err(|source| CliError::Write {
+            path: path.to_path_buf(),
+            source,
+        })?;
     }
     let inputs: Vec<f64> = (0..poses.len())
         .map(|i| design.input_at(i).to_degrees())
@@ -85,7 +93,11 @@ pub fn run(csv: &Path, choice: &Choice, scene_out: Option<&Path>) -> Result<Stri
     }))
 }
 
-fn four_numbers(v: &[f64], flag: &str) -> Result<[f64; 4], String> {
-    v.try_into()
-        .map_err(|_| format!("{flag} takes 4 numbers (x1 y1 x2 y2), not {}", v.len()))
+fn four_numbers(v: &[f64], flag: &str) -> Result<[f64; 4]> {
+    v.try_into().map_err(|_| {
+        CliError::refused(format!(
+            "{flag} takes 4 numbers (x1 y1 x2 y2), not {}",
+            v.len()
+        ))
+    })
 }

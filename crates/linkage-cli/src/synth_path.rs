@@ -8,6 +8,7 @@ use linkage::synthesis::path::{
 use serde_json::json;
 
 use crate::args::PathSearchArgs;
+use crate::error::{CliError, Result};
 use crate::io::json_text;
 
 /// Runs the search `args` describes; writes the best design's scene to `args.out`
@@ -16,38 +17,39 @@ use crate::io::json_text;
 /// # Errors
 /// An unreadable file or row (named by line), targets or options the search
 /// refuses (with the valid range), or no design that meets the constraints.
-pub fn run(args: &PathSearchArgs) -> Result<String, String> {
+pub fn run(args: &PathSearchArgs) -> Result<String> {
     let csv = &args.points;
-    let text =
-        std::fs::read_to_string(csv).map_err(|e| format!("cannot read {}: {e}", csv.display()))?;
+    let text = std::fs::read_to_string(csv).map_err(|source| CliError::Read {
+        path: csv.to_path_buf(),
+        source,
+    })?;
     let width = if args.timed { 3 } else { 2 };
-    let rows = linkage::synthesis::rows::read_rows(&text, width)
-        .map_err(|e| format!("{}: {e}", csv.display()))?;
+    let rows =
+        linkage::synthesis::rows::read_rows(&text, width).map_err(|e| CliError::in_file(csv, e))?;
     let targets = PathTargets {
         points_m: rows.iter().map(|r| [r[0], r[1]]).collect(),
         crank_deg: args.timed.then(|| rows.iter().map(|r| r[2]).collect()),
     };
-    let mut search =
-        PathSearch::new(&targets, &constraints(args)?, options(args)).map_err(|e| e.to_string())?;
+    let mut search = PathSearch::new(&targets, &constraints(args)?, options(args))?;
     let progress = search.run();
     let designs = search.designs();
     let Some(best) = designs.first() else {
-        return Err(format!(
+        return Err(CliError::refused(format!(
             "no four-bar meets the constraints after {} evaluations: raise --max-evaluations, \
              or loosen them (--any-branch, --min-transmission-deg, --ground-region, without --crank-turns)",
             progress.evaluations
-        ));
+        )));
     };
     if let Some(path) = &args.out {
         write_scene(&best.scene(), path)?;
     }
     for (k, path) in args.cognate_out.iter().flatten().enumerate() {
         let scene = best.cognate_scene(k).ok_or_else(|| {
-            format!(
+            CliError::refused(format!(
                 "the best design has no cognate {} to write to {} (its coupler point lies on B or C)",
                 k + 1,
                 path.display()
-            )
+            ))
         })?;
         write_scene(&scene, path)?;
     }
@@ -62,20 +64,23 @@ pub fn run(args: &PathSearchArgs) -> Result<String, String> {
     }))
 }
 
-fn write_scene(scene: &linkage::scene::SceneFile, path: &std::path::Path) -> Result<(), String> {
-    let text = scene.to_ron().map_err(|e| e.to_string())?;
-    std::fs::write(path, text).map_err(|e| format!("cannot write {}: {e}", path.display()))
+fn write_scene(scene: &linkage::scene::SceneFile, path: &std::path::Path) -> Result<()> {
+    let text = scene.to_ron()?;
+    std::fs::write(path, text).map_err(|source| CliError::Write {
+        path: path.to_path_buf(),
+        source,
+    })
 }
 
-fn constraints(args: &PathSearchArgs) -> Result<PathConstraints, String> {
+fn constraints(args: &PathSearchArgs) -> Result<PathConstraints> {
     let ground_region_m = match args.ground_region.as_deref() {
         None => None,
         Some(&[x0, y0, x1, y1]) => Some([[x0, y0], [x1, y1]]),
         Some(other) => {
-            return Err(format!(
+            return Err(CliError::refused(format!(
                 "--ground-region takes 4 numbers (x0 y0 x1 y1), not {}",
                 other.len()
-            ));
+            )));
         }
     };
     Ok(PathConstraints {

@@ -4,17 +4,18 @@ use linkage::dynamics::tradeoff::{default_plan, measure, plan_settings, referenc
 use linkage::dynamics::{Method, Settings};
 
 use crate::args::{SceneArgs, TradeoffArgs};
+use crate::error::{CliError, Result};
 use crate::io::{load, records_to_csv};
 use crate::plot::{Series, work_precision_png};
 
 /// Runs every method of the default plan against the DOP853 rtol-1e-13 reference.
-pub fn run(scene: &SceneArgs, args: &TradeoffArgs) -> Result<String, String> {
+pub fn run(scene: &SceneArgs, args: &TradeoffArgs) -> Result<String> {
     let k = load(scene)?;
     let mut base = Settings::new(Method::Dop853);
     base.t_end = args.t_end;
     base.use_stops = !args.no_stops;
-    base.validate().map_err(|e| e.to_string())?;
-    let reference = reference_run(&k, &base, args.grid).map_err(|e| e.to_string())?;
+    base.validate()?;
+    let reference = reference_run(&k, &base, args.grid)?;
     let header: Vec<String> = [
         "method",
         "setting",
@@ -32,8 +33,9 @@ pub fn run(scene: &SceneArgs, args: &TradeoffArgs) -> Result<String, String> {
         let mut points = Vec::new();
         for setting in settings {
             let s = plan_settings(&base, method, setting);
-            let row = measure(&k, &s, args.grid, &reference)
-                .map_err(|e| format!("{} at {setting:e}: {e}", method.label()))?;
+            let row = measure(&k, &s, args.grid, &reference).map_err(|e| {
+                CliError::refused(format!("{} at {setting:e}: {e}", method.label()))
+            })?;
             points.push((row.cpu_seconds, row.max_q_error));
             rows.push(vec![
                 method.label().to_string(),
