@@ -152,14 +152,41 @@ fn default_name(st: &AppState, action: FileAction) -> String {
     }
 }
 
+/// Why a file action has nothing to write.
+#[derive(Debug, thiserror::Error)]
+enum WriteError {
+    /// The scene or its sweep could not be made.
+    #[error(transparent)]
+    Solver(#[from] linkage::LinkageError),
+    /// The sheet could not be rasterised (resvg's own words).
+    #[cfg(not(target_arch = "wasm32"))]
+    #[error("{0}")]
+    Png(String),
+    /// The file could not be written.
+    #[cfg(not(target_arch = "wasm32"))]
+    #[error(transparent)]
+    File(std::io::Error),
+    /// Open reads; it writes nothing.
+    #[error("nothing to write when opening")]
+    Opening,
+    /// The browser refused (its own words).
+    #[cfg(target_arch = "wasm32")]
+    #[error("{0}")]
+    Browser(String),
+    /// In the browser the page rasterises the sheet, not the app.
+    #[cfg(target_arch = "wasm32")]
+    #[error("in the browser the PNG is drawn by the page")]
+    PngInBrowser,
+}
+
 /// The bytes an action writes, or why there are none.
-fn contents(st: &AppState, action: FileAction) -> Result<Vec<u8>, String> {
+fn contents(st: &AppState, action: FileAction) -> Result<Vec<u8>, WriteError> {
     match action {
-        FileAction::SaveScene => st.session.to_ron().map(String::into_bytes),
-        FileAction::ExportCsv => st.session.sweep_csv().map(String::into_bytes),
+        FileAction::SaveScene => Ok(st.session.to_ron()?.into_bytes()),
+        FileAction::ExportCsv => Ok(st.session.sweep_csv()?.into_bytes()),
         FileAction::ExportSheet => Ok(sheet(st).into_bytes()),
         FileAction::ExportSheetPng => sheet_png(st),
-        FileAction::Open => Err("nothing to write when opening".into()),
+        FileAction::Open => Err(WriteError::Opening),
     }
 }
 
@@ -174,18 +201,19 @@ pub const SHEET_DPI: f32 = 150.0;
 /// The sheet rendered by resvg with the app's font (the browser rasterises the SVG
 /// itself instead: `crate::web::download_svg_as_png`).
 #[cfg(not(target_arch = "wasm32"))]
-fn sheet_png(st: &AppState) -> Result<Vec<u8>, String> {
+fn sheet_png(st: &AppState) -> Result<Vec<u8>, WriteError> {
     linkage_diagram::png::render(
         &sheet(st),
         SHEET_DPI,
         epaint_default_fonts::UBUNTU_LIGHT,
         "Ubuntu",
     )
+    .map_err(WriteError::Png)
 }
 
 #[cfg(target_arch = "wasm32")]
-fn sheet_png(_st: &AppState) -> Result<Vec<u8>, String> {
-    Err("in the browser the PNG is drawn by the page".into())
+fn sheet_png(_st: &AppState) -> Result<Vec<u8>, WriteError> {
+    Err(WriteError::PngInBrowser)
 }
 
 /// Shows the outcome of a file action in the top bar and logs it: the browser test
@@ -296,9 +324,10 @@ fn start(
     _frame: &eframe::Frame,
 ) {
     let result = match action {
-        FileAction::Open => crate::web::pick_file(&files.upload, ctx),
+        FileAction::Open => crate::web::pick_file(&files.upload, ctx).map_err(WriteError::Browser),
         FileAction::ExportSheetPng => {
             crate::web::download_svg_as_png(&default_name(st, action), &sheet(st), SHEET_DPI)
+                .map_err(WriteError::Browser)
         }
         FileAction::SaveScene | FileAction::ExportCsv | FileAction::ExportSheet => {
             let mime = match action {
@@ -306,14 +335,16 @@ fn start(
                 FileAction::ExportSheet => "image/svg+xml",
                 _ => "text/plain",
             };
-            contents(st, action)
-                .and_then(|bytes| crate::web::download(&default_name(st, action), mime, &bytes))
+            contents(st, action).and_then(|bytes| {
+                crate::web::download(&default_name(st, action), mime, &bytes)
+                    .map_err(WriteError::Browser)
+            })
         }
     };
     match result {
         Ok(()) if action == FileAction::SaveScene => st.session.mark_saved(),
         Ok(()) => {}
-        Err(e) => st.status = Some(e),
+        Err(e) => st.status = Some(e.to_string()),
     }
 }
 
@@ -363,7 +394,7 @@ fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {
         | FileAction::ExportSheet
         | FileAction::ExportSheetPng => {
             let written = contents(st, action)
-                .and_then(|t| std::fs::write(path, t).map_err(|e| e.to_string()));
+                .and_then(|t| std::fs::write(path, t).map_err(WriteError::File));
             match written {
                 Ok(()) => {
                     if action == FileAction::SaveScene {

@@ -157,7 +157,7 @@ fn scene_picker(ui: &mut egui::Ui, st: &mut AppState, width: f32) {
     if let Some(key) = chosen {
         match Session::open_builtin(key) {
             Ok(s) => st.open(s),
-            Err(e) => st.status = Some(e),
+            Err(e) => st.status = Some(e.to_string()),
         }
     }
 }

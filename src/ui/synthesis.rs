@@ -10,7 +10,7 @@ use eframe::egui;
 use crate::session::SceneEdit;
 use crate::session::{SceneSource, Session};
 use crate::state::AppState;
-use crate::synthesis::{Design, SynthInputs, SynthKind};
+use crate::synthesis::{Design, SynthError, SynthInputs, SynthKind};
 use crate::ui::control_map::ControlKind;
 use crate::ui::fields::number;
 pub use crate::ui::synthesis_design::{Chosen, design_view};
@@ -22,7 +22,7 @@ pub struct SynthesisView {
     /// What to design, from what.
     pub inputs: SynthInputs,
     /// The last design, or why there is none.
-    pub result: Option<Result<Design, String>>,
+    pub result: Option<Result<Design, SynthError>>,
     /// The path tab's search and canvas.
     pub path: PathTab,
 }
@@ -84,7 +84,7 @@ pub fn window(ctx: &egui::Context, st: &mut AppState, slot: &mut Option<Synthesi
                 session.mark_unsaved();
                 st.open(session);
             }
-            Err(e) => view.result = Some(Err(format!("the design does not solve: {e}"))),
+            Err(e) => view.result = Some(Err(SynthError::DoesNotSolve(e))),
         }
     }
     if open {
@@ -143,7 +143,7 @@ fn result(ui: &mut egui::Ui, st: &mut AppState, view: &SynthesisView) -> Option<
     match &view.result {
         None => None,
         Some(Err(why)) => {
-            ui.colored_label(ui.visuals().error_fg_color, why);
+            ui.colored_label(ui.visuals().error_fg_color, why.to_string());
             None
         }
         Some(Ok(design)) => design_view(ui, &mut st.controls, design),

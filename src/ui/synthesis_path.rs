@@ -284,7 +284,7 @@ fn search_buttons(
                     tab.refused = None;
                     tab.chosen = (0, 0);
                 }
-                Err(why) => tab.refused = Some(why),
+                Err(why) => tab.refused = Some(why.to_string()),
             }
         }
         if let Some(job) = tab.job.as_mut() {

@@ -131,7 +131,7 @@ impl PathInputs {
     ///
     /// # Errors
     /// Targets or constraints the search refuses, with the cause and valid range.
-    pub fn search(&self) -> Result<PathSearch, String> {
+    pub fn search(&self) -> Result<PathSearch, linkage::LinkageError> {
         let targets = PathTargets {
             points_m: self
                 .targets
@@ -159,7 +159,7 @@ impl PathInputs {
             max_evaluations: 1_000_000,
             ..SearchOptions::default()
         };
-        PathSearch::new(&targets, &constraints, options).map_err(|e| e.to_string())
+        PathSearch::new(&targets, &constraints, options)
     }
 }
 

@@ -4,7 +4,7 @@
 
 use linkage::synthesis::{CrankRocker, DieCutterSpec, crank_rocker, die_cutter, four_bar_scene};
 
-pub use crate::synthesis_design::{Design, Figure};
+pub use crate::synthesis_design::{Design, Figure, SynthError};
 use crate::synthesis_design::{deg, mm, row};
 
 /// Which design.
@@ -90,7 +90,7 @@ impl Default for SynthInputs {
 /// # Errors
 /// Inputs outside their valid range, rows that are not numbers, or requirements no
 /// linkage of the kind meets; each names its cause.
-pub fn design(inputs: &SynthInputs) -> Result<Design, String> {
+pub fn design(inputs: &SynthInputs) -> Result<Design, SynthError> {
     match inputs.kind {
         SynthKind::CrankRocker => rocker(inputs.rocker),
         SynthKind::DieCutter => die(inputs.die),
@@ -103,19 +103,18 @@ pub fn design(inputs: &SynthInputs) -> Result<Design, String> {
         },
         SynthKind::Motion => crate::synthesis_motion::motion(&inputs.poses, &inputs.motion),
         // Not closed form: the window runs its search (`crate::path_job`).
-        SynthKind::Path => Err("a path design comes from its search: press Search".into()),
+        SynthKind::Path => Err(SynthError::PathIsSearched),
     }
 }
 
-fn rocker([cd_mm, swing_deg, k]: [f64; 3]) -> Result<Design, String> {
+fn rocker([cd_mm, swing_deg, k]: [f64; 3]) -> Result<Design, SynthError> {
     let d = crank_rocker(
         cd_mm * 1e-3,
         swing_deg.to_radians(),
         k,
         45f64.to_radians(),
         None,
-    )
-    .map_err(|e| e.to_string())?;
+    )?;
     Ok(Design {
         table: crank_rocker_rows(&d, "rocker CD", "least transmission angle"),
         scene: four_bar_scene(&d, k),
@@ -136,14 +135,14 @@ fn crank_rocker_rows(d: &CrankRocker, rocker: &str, transmission: &str) -> Vec<(
     ]
 }
 
-fn die([h_mm, k, l_mm, rpm]: [f64; 4]) -> Result<Design, String> {
+fn die([h_mm, k, l_mm, rpm]: [f64; 4]) -> Result<Design, SynthError> {
     let spec = DieCutterSpec {
         stroke_m: h_mm * 1e-3,
         k,
         link_m: l_mm * 1e-3,
         crank_rpm: rpm,
     };
-    let (scene, d) = die_cutter(&spec).map_err(|e| e.to_string())?;
+    let (scene, d) = die_cutter(&spec)?;
     Ok(Design {
         table: crank_rocker_rows(&d, "rocker CD = CE", "least transmission angle (ABCD)"),
         scene,

@@ -2,7 +2,60 @@
 //! words), its figure and the scene it opens as; and the small helpers every tab's
 //! table is written with. A leaf of the synthesis modules.
 
-use linkage::SceneFile;
+use linkage::synthesis::positions::PositionsError;
+use linkage::synthesis::rows::RowError;
+use linkage::{LinkageError, SceneFile};
+use thiserror::Error;
+
+/// Why a tab has no design, as data; the window words it.
+#[derive(Clone, Debug, Error, PartialEq)]
+pub enum SynthError {
+    /// The solver's synthesis refused the requirements.
+    #[error(transparent)]
+    Solver(#[from] LinkageError),
+    /// Typed rows that are not numbers.
+    #[error(transparent)]
+    Rows(#[from] RowError),
+    /// Positions no four-bar is designed through.
+    #[error(transparent)]
+    Positions(#[from] PositionsError),
+    /// A function generator's specification the points cannot be placed for.
+    #[error(transparent)]
+    Function(#[from] FunctionSpecError),
+    /// The path tab designs by its search, not at once.
+    #[error("a path design comes from its search: press Search")]
+    PathIsSearched,
+    /// The design chosen does not open as a scene.
+    #[error("the design does not solve: {0}")]
+    DoesNotSolve(LinkageError),
+}
+
+/// Why a function generator's precision points cannot be placed.
+#[derive(Clone, Debug, Error, PartialEq)]
+pub enum FunctionSpecError {
+    /// Not 3 to 10 points.
+    #[error("{0} precision points: 3 to 10")]
+    PointCount(usize),
+    /// An empty or infinite range of x.
+    #[error("x from {0} to {1}: the range must be finite and not empty")]
+    EmptyRange(f64, f64),
+    /// A crank or rocker that does not turn.
+    #[error("a crank or rocker span of 0°: it must turn")]
+    NoSpan,
+    /// The function is not finite somewhere over the range.
+    #[error("{function} is not defined over x from {x0} to {x1}")]
+    Undefined {
+        /// The function, as the tab names it.
+        function: String,
+        /// The range's start.
+        x0: f64,
+        /// The range's end.
+        x1: f64,
+    },
+    /// The function is equal at both ends: no rise to map.
+    #[error("{0} is equal at both ends of the range")]
+    EqualEnds(String),
+}
 
 /// A design: its table (quantity, value in words) and its scene.
 #[derive(Clone, Debug, PartialEq)]
@@ -60,6 +113,6 @@ pub(crate) fn row(what: &str, value: String) -> (String, String) {
 
 /// Rows of `width` numbers, as the CLI reads its files (a header and `#` comments
 /// skipped): a targets file pasted into the app reads as it does there.
-pub(crate) fn numbers(text: &str, width: usize) -> Result<Vec<Vec<f64>>, String> {
-    linkage::synthesis::rows::read_rows(text, width).map_err(|e| e.to_string())
+pub(crate) fn numbers(text: &str, width: usize) -> Result<Vec<Vec<f64>>, RowError> {
+    linkage::synthesis::rows::read_rows(text, width)
 }

@@ -6,7 +6,9 @@ use linkage::synthesis::function::{
     FunctionFourBar, PrecisionPoint, chebyshev_spacing, error_curve, freudenstein, structural_error,
 };
 
-use crate::synthesis_design::{Design, Figure, deg, mm, numbers, row};
+use crate::synthesis_design::{
+    Design, Figure, FunctionSpecError, SynthError, deg, mm, numbers, row,
+};
 
 /// A function to generate.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -103,31 +105,27 @@ impl FunctionSpec {
     /// # Errors
     /// A range or span that is empty or not finite, a function not defined over
     /// the range or equal at its ends, or not 3 to 10 points.
-    pub fn precision_points(&self) -> Result<Vec<PrecisionPoint>, String> {
+    pub fn precision_points(&self) -> Result<Vec<PrecisionPoint>, FunctionSpecError> {
         let [x0, x1] = self.x_range;
         if !(3..=10).contains(&self.points) {
-            return Err(format!("{} precision points: 3 to 10", self.points));
+            return Err(FunctionSpecError::PointCount(self.points));
         }
         if !(x0.is_finite() && x1.is_finite() && x0 != x1) {
-            return Err(format!(
-                "x from {x0} to {x1}: the range must be finite and not empty"
-            ));
+            return Err(FunctionSpecError::EmptyRange(x0, x1));
         }
         if self.input_deg[1] == 0.0 || self.output_deg[1] == 0.0 {
-            return Err("a crank or rocker span of 0°: it must turn".into());
+            return Err(FunctionSpecError::NoSpan);
         }
         let samples = (0..=100).map(|k| self.f.at(x0 + (x1 - x0) * f64::from(k) / 100.0));
         if samples.clone().any(|y| !y.is_finite()) {
-            return Err(format!(
-                "{} is not defined over x from {x0} to {x1}",
-                self.f.label()
-            ));
+            return Err(FunctionSpecError::Undefined {
+                function: self.f.label().to_string(),
+                x0,
+                x1,
+            });
         }
         if self.f.at(x0) == self.f.at(x1) {
-            return Err(format!(
-                "{} is equal at both ends of the range",
-                self.f.label()
-            ));
+            return Err(FunctionSpecError::EqualEnds(self.f.label().to_string()));
         }
         Ok(chebyshev_spacing(x0, x1, self.points)
             .into_iter()
@@ -143,7 +141,7 @@ impl FunctionSpec {
 }
 
 /// The generator through typed points `input_deg, output_deg`.
-pub fn from_points(text: &str, ground_mm: f64) -> Result<Design, String> {
+pub fn from_points(text: &str, ground_mm: f64) -> Result<Design, SynthError> {
     let points: Vec<PrecisionPoint> = numbers(text, 2)?
         .into_iter()
         .map(|v| PrecisionPoint {
@@ -151,7 +149,7 @@ pub fn from_points(text: &str, ground_mm: f64) -> Result<Design, String> {
             output_rad: v[1].to_radians(),
         })
         .collect();
-    let d = freudenstein(&points, ground_mm * 1e-3).map_err(|e| e.to_string())?;
+    let d = freudenstein(&points, ground_mm * 1e-3)?;
     Ok(Design {
         table: rows(&d, &points),
         scene: d.scene(points[0]),
@@ -160,9 +158,9 @@ pub fn from_points(text: &str, ground_mm: f64) -> Result<Design, String> {
 }
 
 /// The generator of `spec`, with its structural error over the range.
-pub fn from_spec(spec: &FunctionSpec, ground_mm: f64) -> Result<Design, String> {
+pub fn from_spec(spec: &FunctionSpec, ground_mm: f64) -> Result<Design, SynthError> {
     let points = spec.precision_points()?;
-    let d = freudenstein(&points, ground_mm * 1e-3).map_err(|e| e.to_string())?;
+    let d = freudenstein(&points, ground_mm * 1e-3)?;
     let range = [spec.theta(spec.x_range[0]), spec.theta(spec.x_range[1])];
     let curve = error_curve(&d, points[0], range, |t| spec.phi_of_theta(t), 400);
     let largest = curve.iter().map(|e| e[1].abs()).fold(0.0, f64::max);
@@ -224,10 +222,9 @@ mod tests {
             x_range: [-1.0, 2.0],
             ..FunctionSpec::default()
         };
-        assert!(
-            from_spec(&bad, 100.0)
-                .expect_err("log of x ≤ 0")
-                .contains("not defined")
-        );
+        assert!(matches!(
+            from_spec(&bad, 100.0).expect_err("log of x ≤ 0"),
+            SynthError::Function(FunctionSpecError::Undefined { .. })
+        ));
     }
 }

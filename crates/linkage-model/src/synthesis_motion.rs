@@ -9,7 +9,7 @@ use linkage::synthesis::positions::{PositionsChoice, PositionsDesign, through_po
 use linkage::synthesis::rows::read_rows;
 
 pub use crate::synthesis_design::Construction;
-use crate::synthesis_design::{Design, Figure, row};
+use crate::synthesis_design::{Design, Figure, SynthError, row};
 
 /// What fixes the four-bar, per number of positions.
 #[derive(Clone, Debug, PartialEq)]
@@ -33,9 +33,8 @@ impl Default for MotionChoice {
 }
 
 /// The four-bar through the positions in `text` (`x mm, y mm, angle deg` rows).
-pub fn motion(text: &str, choice: &MotionChoice) -> Result<Design, String> {
-    let poses: Vec<BodyPose> = read_rows(text, 3)
-        .map_err(|e| e.to_string())?
+pub fn motion(text: &str, choice: &MotionChoice) -> Result<Design, SynthError> {
+    let poses: Vec<BodyPose> = read_rows(text, 3)?
         .iter()
         .map(|v| BodyPose {
             at: [v[0] * 1e-3, v[1] * 1e-3],
@@ -52,9 +51,9 @@ pub fn motion(text: &str, choice: &MotionChoice) -> Result<Design, String> {
     let PositionsDesign {
         four_bar: d,
         burmester,
-    } = through_positions(&poses, &positions).map_err(|e| e.to_string())?;
+    } = through_positions(&poses, &positions)?;
     let burmester = burmester.unwrap_or_default();
-    let checked = d.check().map_err(|e| e.to_string())?;
+    let checked = d.check()?;
     let points: Vec<[f64; 2]> = burmester.iter().map(|c| c.centre).collect();
     Ok(Design {
         table: table(&d, &points, checked.miss_m, checked.miss_rad),

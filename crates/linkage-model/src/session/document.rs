@@ -150,8 +150,8 @@ impl Document {
     /// The scene as RON text.
     ///
     /// # Errors
-    /// Serialisation failure, as text.
-    pub fn to_ron(&self) -> Result<String, String> {
-        self.scene.to_ron().map_err(|e| e.to_string())
+    /// Serialisation failure.
+    pub fn to_ron(&self) -> Result<String, linkage::LinkageError> {
+        self.scene.to_ron()
     }
 }

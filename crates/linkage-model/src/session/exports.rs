@@ -11,10 +11,10 @@ impl Session {
     /// header, SI units, velocities at the scene's crank speed).
     ///
     /// # Errors
-    /// The sweep's error, as text.
-    pub fn sweep_csv(&self) -> Result<String, String> {
+    /// The sweep's error.
+    pub fn sweep_csv(&self) -> Result<String, linkage::LinkageError> {
         let mut k = self.kinematics().clone();
-        let sw = sweep(&mut k, curves::CURVE_STEPS).map_err(|e| e.to_string())?;
+        let sw = sweep(&mut k, curves::CURVE_STEPS)?;
         let m = k.mechanism();
         let mut out = csv_header(m).join(",");
         out.push('\n');

@@ -66,23 +66,43 @@ pub struct Session {
     edits: u64,
 }
 
+/// Why a shipped scene, or the scene an address names, did not open.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum OpenError {
+    /// No shipped scene has the key.
+    #[error("no built-in scene named {0:?}")]
+    NoSuchScene(String),
+    /// The scene does not parse or solve.
+    #[error(transparent)]
+    Scene(#[from] LinkageError),
+    /// A share link that carries no scene.
+    #[error(transparent)]
+    Share(#[from] linkage::share::ShareError),
+    /// An address that names no scene.
+    #[error("the URL names no scene")]
+    NoScene,
+}
+
 impl Session {
     /// Opens a shipped scene by key (`die_cutter`, ...).
     ///
     /// # Errors
     /// An unknown key, or a scene that does not solve (a bug in the shipped file).
-    pub fn open_builtin(key: &str) -> Result<Self, String> {
-        let b = builtin(key).ok_or_else(|| format!("no built-in scene named {key:?}"))?;
-        Self::open_text(SceneSource::Builtin(key.to_string()), b.text)
+    pub fn open_builtin(key: &str) -> Result<Self, OpenError> {
+        let b = builtin(key).ok_or_else(|| OpenError::NoSuchScene(key.to_string()))?;
+        Ok(Self::open_text(
+            SceneSource::Builtin(key.to_string()),
+            b.text,
+        )?)
     }
 
     /// Opens a scene from its RON text.
     ///
     /// # Errors
     /// The parse error with line and column, or why the mechanism does not assemble.
-    pub fn open_text(source: SceneSource, text: &str) -> Result<Self, String> {
-        let scene = SceneFile::parse(text).map_err(|e| e.to_string())?;
-        Self::open_scene(source, scene).map_err(|e| e.to_string())
+    pub fn open_text(source: SceneSource, text: &str) -> Result<Self, LinkageError> {
+        let scene = SceneFile::parse(text)?;
+        Self::open_scene(source, scene)
     }
 
     /// Opens a scene (a drawing's, or one parsed from a file).
@@ -328,8 +348,8 @@ impl Session {
     /// The edited scene as RON text.
     ///
     /// # Errors
-    /// Serialisation failure, as text.
-    pub fn to_ron(&self) -> Result<String, String> {
+    /// Serialisation failure.
+    pub fn to_ron(&self) -> Result<String, LinkageError> {
         self.doc.to_ron()
     }
 

@@ -7,7 +7,7 @@
 use linkage::dynamics::Method;
 
 use super::dynamic_run::IntegratorChoice;
-use super::{SceneEdit, SceneSource, Session};
+use super::{OpenError, SceneEdit, SceneSource, Session};
 
 /// The state a URL fragment carries.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -155,15 +155,15 @@ pub fn decode(fragment: &str) -> UrlState {
 /// # Errors
 /// No scene named, or an unknown one. Edits that fail leave the session's message
 /// set, as the same edit from a slider would.
-pub fn open(st: &UrlState) -> Result<Session, String> {
+pub fn open(st: &UrlState) -> Result<Session, OpenError> {
     let mut s = match (&st.doc, &st.scene) {
         (Some((payload, name)), _) => {
-            let text = linkage::share::decode(payload).map_err(|e| e.to_string())?;
+            let text = linkage::share::decode(payload)?;
             let name = if name.is_empty() { "shared.ron" } else { name };
             Session::open_text(SceneSource::File(name.to_string()), &text)?
         }
         (None, Some(key)) => Session::open_builtin(key)?,
-        (None, None) => return Err("the URL names no scene".into()),
+        (None, None) => return Err(OpenError::NoScene),
     };
     for point in &st.flips {
         s.apply(SceneEdit::FlipBranch {
@@ -236,6 +236,7 @@ fn unescape(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use linkage::share::ShareError;
 
     #[test]
     fn a_scene_from_a_file_travels_whole_in_the_fragment() {
@@ -262,7 +263,10 @@ mod tests {
         // A damaged link names its cause.
         let damaged = fragment.replace("doc=1.", "doc=1.@");
         let e = open(&decode(&damaged)).err().expect("refused");
-        assert!(e.contains("the link is damaged"), "{e}");
+        assert!(
+            matches!(e, OpenError::Share(ShareError::NotBase64(_))),
+            "{e}"
+        );
     }
 
     #[test]
@@ -306,7 +310,7 @@ mod tests {
         assert!(st.lengths.is_empty() && st.springs.is_empty());
         assert!(open(&st).is_ok());
         match open(&decode("#scene=nope")) {
-            Err(e) => assert!(e.contains("nope"), "{e}"),
+            Err(e) => assert_eq!(e, OpenError::NoSuchScene("nope".into())),
             Ok(_) => panic!("an unknown scene opened"),
         }
     }
