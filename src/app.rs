@@ -62,7 +62,7 @@ impl LinkageApp {
         state.play.playing = start.play;
         #[cfg(target_arch = "wasm32")]
         match crate::web::stored_drawing() {
-            Some(Ok(sketch)) => ui::drawing::resume(&mut state, sketch),
+            Some(Ok(drawing)) => ui::drawing::resume(&mut state, drawing),
             Some(Err(why)) => state.status = Some(why),
             None => {}
         }
@@ -247,7 +247,7 @@ impl LinkageApp {
             egui::CentralPanel::default_margins().show(ui, |ui| {
                 let view = ui::sheet::show(ui, &mut self.state, &mut self.panels, true);
                 let mut ui = ui.new_child(egui::UiBuilder::new().max_rect(view));
-                ui::builder_canvas::show(
+                ui::drawing_canvas::show(
                     &mut ui,
                     &mut self.state,
                     &mut self.panels.viewport.camera,
@@ -259,7 +259,7 @@ impl LinkageApp {
         }
         let complete = self
             .state
-            .builder
+            .drawing
             .as_ref()
             .is_some_and(|b| b.problem.is_none());
         if complete {
@@ -269,7 +269,7 @@ impl LinkageApp {
             .default_size(290.0)
             .show(ui, |ui| {
                 egui::ScrollArea::vertical()
-                    .show(ui, |ui| ui::builder_panel::panel(ui, &mut self.state));
+                    .show(ui, |ui| ui::drawing_panel::panel(ui, &mut self.state));
             });
         if complete {
             egui::Panel::right("polygons")
@@ -283,7 +283,7 @@ impl LinkageApp {
                 .show(ui, |ui| self.panels.plots.ui(ui, &mut self.state));
         }
         egui::CentralPanel::default_margins().show(ui, |ui| {
-            ui::builder_canvas::show(
+            ui::drawing_canvas::show(
                 ui,
                 &mut self.state,
                 &mut self.panels.viewport.camera,
@@ -350,7 +350,7 @@ impl eframe::App for LinkageApp {
             solver_us: 0.0,
         });
         ui::scene_picker::top_bar(ui, &mut self.state, &mut self.panels.files, frame);
-        if self.state.builder.is_some() {
+        if self.state.drawing.is_some() {
             self.drawing_panels(ui);
         } else {
             self.viewer_panels(ui, &mut solver_us);
@@ -385,7 +385,7 @@ impl eframe::App for LinkageApp {
             if let Some(why) = self.url.update(&self.state.session) {
                 self.state.status = Some(why);
             }
-            self.drawing_store.update(self.state.builder.as_ref());
+            self.drawing_store.update(self.state.drawing.as_ref());
             crate::web::publish_controls(
                 &self.state,
                 &self.panels.viewport.camera,

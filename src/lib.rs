@@ -26,7 +26,7 @@ pub use app::LinkageApp;
 pub use state::AppState;
 // The model lives in its own crate (no GUI); the app and its tests reach it here too.
 pub use linkage_model::{
-    builder, catalog, path_inputs, path_job, session, synthesis, synthesis_function,
+    catalog, drawing, path_inputs, path_job, session, synthesis, synthesis_function,
     synthesis_motion,
 };
 

@@ -5,7 +5,7 @@
 //! prompts, the synthesis window) is theirs ([`crate::ui::panels::Panels`]). This
 //! module uses no panel: the panels use it.
 
-use crate::builder::Builder;
+use crate::drawing::DrawingEditor;
 use crate::render::build::Layers;
 use crate::session::{SceneEdit, Session};
 use crate::ui::control_map::ControlMap;
@@ -116,7 +116,7 @@ pub struct AppState {
     /// The mechanism being viewed.
     pub session: Session,
     /// The mechanism being drawn, while the drawing tools are out.
-    pub builder: Option<Builder>,
+    pub drawing: Option<DrawingEditor>,
     /// What the panels asked for and the app has not yet done.
     pub commands: Commands,
     /// The animation.
@@ -138,7 +138,7 @@ impl AppState {
     pub fn new(session: Session) -> Self {
         Self {
             session,
-            builder: None,
+            drawing: None,
             commands: Commands {
                 fit: true,
                 ..Commands::default()
@@ -194,7 +194,7 @@ impl AppState {
     /// Opens `session` whatever the current one holds.
     pub fn open_now(&mut self, session: Session) {
         self.commands.open = None;
-        self.builder = None;
+        self.drawing = None;
         // Edits asked of the old scene mean nothing to the new one.
         self.commands.edits.clear();
         self.session = session;

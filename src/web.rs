@@ -179,9 +179,9 @@ pub fn publish_controls(
         }),
         renderer,
         camera: [camera.center_m[0], camera.center_m[1], camera.points_per_m],
-        drawing: st.builder.as_ref().map(|b| PublishedDrawing {
-            points: b.sketch().points.len(),
-            links: b.sketch().links.len(),
+        drawing: st.drawing.as_ref().map(|b| PublishedDrawing {
+            points: b.drawing().points.len(),
+            links: b.drawing().links.len(),
             complete: b.problem.is_none(),
         }),
         path_targets: synthesis.map_or(0, |v| v.inputs.path.targets.len()),
@@ -471,15 +471,15 @@ pub struct DrawingStore {
 
 impl DrawingStore {
     /// Stores the drawing if it or the address changed, or forgets it.
-    pub fn update(&mut self, builder: Option<&crate::builder::Builder>) {
+    pub fn update(&mut self, drawing: Option<&crate::drawing::DrawingEditor>) {
         let Some(storage) = local_storage() else {
             return;
         };
-        match builder {
+        match drawing {
             Some(b) => {
                 let now = (b.revision(), fragment());
                 if self.stored.as_ref() != Some(&now) {
-                    let text = crate::builder::stored::to_text(b.sketch());
+                    let text = crate::drawing::stored::to_text(b.drawing());
                     // A full or refused store only loses the reload's copy.
                     let _ = storage.set_item(DRAWING_KEY, &format!("{}\n{text}", now.1));
                     self.stored = Some(now);
@@ -496,8 +496,8 @@ impl DrawingStore {
 
 /// The drawing an earlier load of this same address kept, or why it cannot be read;
 /// `None` when there is none for this address (a shared link opens what it names).
-pub fn stored_drawing() -> Option<Result<linkage::sketch::Sketch, String>> {
+pub fn stored_drawing() -> Option<Result<linkage::drawing::Drawing, String>> {
     let text = local_storage()?.get_item(DRAWING_KEY).ok().flatten()?;
     let (address, drawing) = text.split_once('\n')?;
-    (address == fragment()).then(|| crate::builder::stored::from_text(drawing))
+    (address == fragment()).then(|| crate::drawing::stored::from_text(drawing))
 }

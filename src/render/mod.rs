@@ -6,8 +6,8 @@
 //! with the GLSL naga translated from the same WGSL, `shaders/gl/`).
 
 pub mod build;
+pub mod drawing_shapes;
 pub mod shape;
-pub mod sketch_shapes;
 pub mod view;
 
 #[cfg(all(target_arch = "wasm32", feature = "webgl", not(feature = "webgpu")))]

@@ -2,10 +2,10 @@
 //! undo and redo, and opening the drawing as the session each time it is a complete
 //! mechanism (so the analyses follow it), unsaved until the user saves it.
 
-use linkage::sketch::Sketch;
+use linkage::drawing::Drawing;
 
-use crate::builder::Builder;
-use crate::builder::edit::SketchEdit;
+use crate::drawing::DrawingEditor;
+use crate::drawing::edit::DrawingEdit;
 use crate::session::{SceneEdit, SceneSource, Session};
 use crate::state::AppState;
 
@@ -25,34 +25,34 @@ pub fn start(st: &mut AppState) {
 
 /// Starts an empty drawing whatever the current scene holds.
 pub fn start_now(st: &mut AppState) {
-    resume(st, Sketch::new("My mechanism"));
+    resume(st, Drawing::new("My mechanism"));
 }
 
 /// The open scene, in its current pose, as a drawing to edit (add and delete links,
 /// sliders, points), or the reason it cannot be one in the status line.
 pub fn draw_current(st: &mut AppState) {
     let s = &st.session;
-    match Sketch::from_pose(s.scene(), s.mechanism(), s.pose()) {
-        Ok(sketch) => resume(st, sketch),
+    match Drawing::from_pose(s.scene(), s.mechanism(), s.pose()) {
+        Ok(drawing) => resume(st, drawing),
         Err(why) => st.status = Some(format!("this scene cannot become a drawing: {why}")),
     }
 }
 
-/// Goes on with `sketch` (a drawing kept over a reload), opening it as the scene
+/// Goes on with `drawing` (a drawing kept over a reload), opening it as the scene
 /// when it is a mechanism.
-pub fn resume(st: &mut AppState, sketch: Sketch) {
+pub fn resume(st: &mut AppState, drawing: Drawing) {
     st.commands.drawing = false;
-    st.builder = Some(Builder::new(sketch));
+    st.drawing = Some(DrawingEditor::new(drawing));
     sync(st);
     st.play.playing = false;
     st.view.edit_points = false;
 }
 
 /// Makes `edit` on the drawing.
-pub fn edit(st: &mut AppState, edit: SketchEdit) {
+pub fn edit(st: &mut AppState, edit: DrawingEdit) {
     // Timed with the frame's other edits: a drag on the canvas is an edit per frame.
     let started = web_time::Instant::now();
-    if st.builder.as_mut().is_some_and(|b| b.apply(edit)) {
+    if st.drawing.as_mut().is_some_and(|b| b.apply(edit)) {
         sync(st);
     }
     st.timing.edit_ms += started.elapsed().as_secs_f64() * 1e3;
@@ -60,21 +60,21 @@ pub fn edit(st: &mut AppState, edit: SketchEdit) {
 
 /// Takes back the drawing's last edit.
 pub fn undo(st: &mut AppState) {
-    if st.builder.as_mut().is_some_and(Builder::undo) {
+    if st.drawing.as_mut().is_some_and(DrawingEditor::undo) {
         sync(st);
     }
 }
 
 /// Makes the drawing's last undone edit again.
 pub fn redo(st: &mut AppState) {
-    if st.builder.as_mut().is_some_and(Builder::redo) {
+    if st.drawing.as_mut().is_some_and(DrawingEditor::redo) {
         sync(st);
     }
 }
 
 /// Undo: of the drawing while drawing, else of the scene's edits.
 pub fn undo_any(st: &mut AppState) {
-    if st.builder.is_some() {
+    if st.drawing.is_some() {
         undo(st);
     } else {
         st.edit(SceneEdit::Undo);
@@ -83,7 +83,7 @@ pub fn undo_any(st: &mut AppState) {
 
 /// Redo: of the drawing while drawing, else of the scene's edits.
 pub fn redo_any(st: &mut AppState) {
-    if st.builder.is_some() {
+    if st.drawing.is_some() {
         redo(st);
     } else {
         st.edit(SceneEdit::Redo);
@@ -92,13 +92,13 @@ pub fn redo_any(st: &mut AppState) {
 
 /// Leaves the drawing tools; the last complete drawing stays open as the scene.
 pub fn finish(st: &mut AppState) {
-    st.builder = None;
+    st.drawing = None;
     st.commands.fit = true;
 }
 
 /// Opens the drawing as the session when it is a mechanism.
 fn sync(st: &mut AppState) {
-    let Some(scene) = st.builder.as_mut().and_then(Builder::refresh) else {
+    let Some(scene) = st.drawing.as_mut().and_then(DrawingEditor::refresh) else {
         return;
     };
     match Session::open_scene(SceneSource::File(DRAWING_FILE.into()), scene) {

@@ -1,15 +1,15 @@
 //! The panels, one file each.
 
 pub mod accuracy;
-pub mod builder_bodies;
-pub mod builder_canvas;
-pub mod builder_forces;
-pub mod builder_panel;
 pub mod centres;
 pub mod construction;
 pub mod control_map;
 pub mod controls;
 pub mod drawing;
+pub mod drawing_bodies;
+pub mod drawing_canvas;
+pub mod drawing_forces;
+pub mod drawing_panel;
 pub mod fields;
 pub mod files;
 pub mod layout;

@@ -218,7 +218,7 @@ fn template_names() -> &'static [String] {
 
 /// Undo and Redo: of the drawing while drawing, else of the scene's edits.
 fn history_buttons(ui: &mut egui::Ui, st: &mut AppState) {
-    let (can_undo, can_redo) = match &st.builder {
+    let (can_undo, can_redo) = match &st.drawing {
         Some(b) => (b.can_undo(), b.can_redo()),
         None => (st.session.can_undo(), st.session.can_redo()),
     };

@@ -44,7 +44,7 @@ pub fn show(
 /// Whether a tab has anything to show: while drawing, only once the drawing is a
 /// mechanism (the report, polygons, plots and accuracy are of the mechanism).
 fn available(st: &AppState, drawing: bool, tab: SheetTab) -> bool {
-    let complete = st.builder.as_ref().is_none_or(|b| b.problem.is_none());
+    let complete = st.drawing.as_ref().is_none_or(|b| b.problem.is_none());
     tab == SheetTab::Controls || !drawing || complete
 }
 
@@ -76,7 +76,7 @@ fn tabs(ui: &mut egui::Ui, st: &mut AppState, drawing: bool) {
 
 fn page(ui: &mut egui::Ui, st: &mut AppState, panels: &mut Panels, drawing: bool) {
     match st.layout.tab {
-        SheetTab::Controls if drawing => crate::ui::builder_panel::panel(ui, st),
+        SheetTab::Controls if drawing => crate::ui::drawing_panel::panel(ui, st),
         SheetTab::Controls => crate::ui::controls::panel(ui, st),
         SheetTab::Polygons => panels.polygons.ui(ui, st),
         SheetTab::Plots => panels.plots.ui(ui, st),

@@ -54,7 +54,7 @@ fn start_drawing(h: &mut Harness<'static, LinkageApp>) {
     h.run();
     click_control(h, ControlKind::TemplateItem, "Empty: draw your own");
     assert!(
-        h.state().state.builder.is_some(),
+        h.state().state.drawing.is_some(),
         "the drawing tools are out"
     );
 }
@@ -78,7 +78,7 @@ fn assert_close(what: &str, a: f64, b: f64) {
 /// The app's scene (the drawing) reports what `by_hand` does.
 fn assert_reports_as(h: &Harness<'static, LinkageApp>, by_hand: &str) {
     let st = &h.state().state;
-    let b = st.builder.as_ref().expect("drawing");
+    let b = st.drawing.as_ref().expect("drawing");
     assert_eq!(b.problem, None, "the drawing is a mechanism");
     let hand = SceneFile::parse(by_hand).expect("the hand-written scene parses");
     let (drawn, hand) = (report_of(st.session.scene()), report_of(&hand));
@@ -101,15 +101,15 @@ fn assert_reports_as(h: &Harness<'static, LinkageApp>, by_hand: &str) {
 /// Undo to the empty drawing, then redo to the end: the same drawing and scene.
 fn assert_undo_redo_exact(h: &mut Harness<'static, LinkageApp>) {
     let st = &h.state().state;
-    let (sketch, scene) = (
-        st.builder.as_ref().expect("drawing").sketch().clone(),
+    let (drawing, scene) = (
+        st.drawing.as_ref().expect("drawing").drawing().clone(),
         st.session.scene().clone(),
     );
     let mut steps = 0;
     while h
         .state()
         .state
-        .builder
+        .drawing
         .as_ref()
         .is_some_and(|b| b.can_undo())
     {
@@ -117,13 +117,13 @@ fn assert_undo_redo_exact(h: &mut Harness<'static, LinkageApp>) {
         steps += 1;
         assert!(steps < 100, "undo ends");
     }
-    let b = h.state().state.builder.as_ref().expect("drawing");
-    assert!(b.sketch().points.is_empty() && b.sketch().links.is_empty());
+    let b = h.state().state.drawing.as_ref().expect("drawing");
+    assert!(b.drawing().points.is_empty() && b.drawing().links.is_empty());
     for _ in 0..steps {
         click_control(h, ControlKind::History, "Redo");
     }
     let st = &h.state().state;
-    assert_eq!(st.builder.as_ref().expect("drawing").sketch(), &sketch);
+    assert_eq!(st.drawing.as_ref().expect("drawing").drawing(), &drawing);
     assert_eq!(st.session.scene(), &scene);
 }
 
@@ -145,7 +145,7 @@ fn draw_four_bar(h: &mut Harness<'static, LinkageApp>) {
     let problem = h
         .state()
         .state
-        .builder
+        .drawing
         .as_ref()
         .and_then(|b| b.problem.clone());
     assert_eq!(
@@ -183,7 +183,7 @@ fn a_four_bar_drawn_by_pointer_reports_as_its_scene_file() {
     // Done: back to the viewer over the drawn mechanism, unsaved.
     tool(&mut h, "Done");
     let st = &h.state().state;
-    assert!(st.builder.is_none());
+    assert!(st.drawing.is_none());
     assert!(st.session.is_dirty(), "a drawing is unsaved work");
 }
 
@@ -267,12 +267,12 @@ fn a_drawn_link_is_renamed_and_made_the_output() {
         scene.links
     );
     rename(&mut h, "link 1", "rocker");
-    let b = h.state().state.builder.as_ref().expect("drawing");
+    let b = h.state().state.drawing.as_ref().expect("drawing");
     assert_eq!(
         b.refusal.as_ref().map(|r| r.to_string()).as_deref(),
         Some("the name rocker is taken")
     );
-    assert_eq!(b.sketch().links[0].name, "link 1");
+    assert_eq!(b.drawing().links[0].name, "link 1");
     // The rocker's row is the third.
     h.get_all_by_label("output")
         .nth(2)
@@ -306,14 +306,14 @@ fn a_drawing_over_unsaved_edits_asks_first() {
     click_control(&mut h, ControlKind::FileButton, "New…");
     h.run();
     click_control(&mut h, ControlKind::TemplateItem, "Empty: draw your own");
-    assert!(h.state().state.builder.is_none(), "not before the answer");
+    assert!(h.state().state.drawing.is_none(), "not before the answer");
     click_control(&mut h, ControlKind::FileButton, "Keep editing");
-    assert!(h.state().state.builder.is_none() && h.state().state.session.is_dirty());
+    assert!(h.state().state.drawing.is_none() && h.state().state.session.is_dirty());
     click_control(&mut h, ControlKind::FileButton, "New…");
     h.run();
     click_control(&mut h, ControlKind::TemplateItem, "Empty: draw your own");
     click_control(&mut h, ControlKind::FileButton, "Drop the edits and open");
-    assert!(h.state().state.builder.is_some(), "the drawing started");
+    assert!(h.state().state.drawing.is_some(), "the drawing started");
 }
 
 /// What the user sees with the four-bar drawn: the tools, the count, the drawing on
@@ -410,9 +410,9 @@ fn two_fingers_pan_and_zoom_the_drawing() {
     let st = &h.state().state;
     let [x0, y0, x1, y1] = st.controls.view.expect("the canvas is drawn");
     let centre = egui::pos2(0.5 * (x0 + x1), 0.5 * (y0 + y1));
-    let (camera, sketch) = (
+    let (camera, drawing) = (
         h.state().panels.viewport.camera,
-        st.builder.as_ref().expect("drawing").sketch().clone(),
+        st.drawing.as_ref().expect("drawing").drawing().clone(),
     );
     let touch = |h: &mut Harness<'static, LinkageApp>, id: u64, phase, pos| {
         h.event(egui::Event::Touch {
@@ -471,7 +471,7 @@ fn two_fingers_pan_and_zoom_the_drawing() {
         stays.distance(pinch_centre) < 1.0,
         "{stays:?} vs {pinch_centre:?}"
     );
-    assert_eq!(st.builder.as_ref().expect("drawing").sketch(), &sketch);
+    assert_eq!(st.drawing.as_ref().expect("drawing").drawing(), &drawing);
 }
 
 /// The open scene as a drawing (New… > This scene as a drawing): a template becomes
@@ -488,7 +488,7 @@ fn a_template_becomes_a_drawing_and_takes_structural_edits() {
     h.run();
     click_control(&mut h, ControlKind::TemplateItem, "This scene as a drawing");
     let st = &h.state().state;
-    let b = st.builder.as_ref().expect("drawing");
+    let b = st.drawing.as_ref().expect("drawing");
     assert_eq!(b.problem, None, "the template is a complete drawing");
     let (a, d) = (report_of(&template), report_of(st.session.scene()));
     assert_close("K", a.time_ratio.expect("K"), d.time_ratio.expect("K"));
@@ -496,9 +496,9 @@ fn a_template_becomes_a_drawing_and_takes_structural_edits() {
     // The rocker deleted: an open chain of 2 degrees of freedom.
     tool(&mut h, "Delete");
     let st = &h.state().state;
-    let sketch = st.builder.as_ref().expect("drawing").sketch();
+    let drawing = st.drawing.as_ref().expect("drawing").drawing();
     let at = |name: &str| {
-        sketch
+        drawing
             .points
             .iter()
             .find(|p| p.name == name)
@@ -507,9 +507,9 @@ fn a_template_becomes_a_drawing_and_takes_structural_edits() {
     };
     let (c, dp) = (at("C"), at("D"));
     click_mm(&mut h, 500.0 * (c.x + dp.x), 500.0 * (c.y + dp.y));
-    let b = h.state().state.builder.as_ref().expect("drawing");
-    assert_eq!(b.sketch().links.len(), 2);
-    assert_eq!(b.sketch().mobility().dof(), 2);
+    let b = h.state().state.drawing.as_ref().expect("drawing");
+    assert_eq!(b.drawing().links.len(), 2);
+    assert_eq!(b.drawing().mobility().dof(), 2);
     // The flipper has a spring: it stays a scene.
     click_control(&mut h, ControlKind::ScenePicker, "Scene");
     h.run();
@@ -529,7 +529,7 @@ fn a_template_becomes_a_drawing_and_takes_structural_edits() {
         h.run();
         click_control(&mut h, ControlKind::TemplateItem, "This scene as a drawing");
         let st = &h.state().state;
-        assert!(st.builder.is_none());
+        assert!(st.drawing.is_none());
         let status = st.status.clone().unwrap_or_default();
         assert!(
             status.starts_with("this scene cannot become a drawing"),
@@ -546,7 +546,7 @@ fn a_template_becomes_a_drawing_and_takes_structural_edits() {
 /// input 0 is the hand-written start, 90 degrees).
 #[test]
 fn a_drawn_four_bar_with_a_spring_and_a_force_runs_as_its_scene_file() {
-    use linkage_lab::builder::edit::{Body, SketchEdit as Draw};
+    use linkage_lab::drawing::edit::{Body, DrawingEdit as Draw};
     // Rendered through wgpu: the test ends with a picture of the loads.
     let mut h = common::app_harness();
     h.run();
@@ -567,7 +567,7 @@ fn a_drawn_four_bar_with_a_spring_and_a_force_runs_as_its_scene_file() {
     tool(&mut h, "Force");
     click_mm(&mut h, 200.0, 200.0);
     let st = &h.state().state;
-    assert_eq!(st.builder.as_ref().and_then(|b| b.problem.clone()), None);
+    assert_eq!(st.drawing.as_ref().and_then(|b| b.problem.clone()), None);
     let forces = &st.session.scene().forces;
     assert_eq!(forces.springs.len(), 1, "{forces:?}");
     assert_eq!(

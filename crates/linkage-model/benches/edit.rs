@@ -188,41 +188,41 @@ fn edits(c: &mut Criterion) {
 /// the app's `ui::drawing::edit` does).
 fn drawing_drag(c: &mut Criterion) {
     use linkage::Vec2;
-    use linkage::sketch::Sketch;
-    use linkage_model::builder::Builder;
-    use linkage_model::builder::edit::{End, SketchEdit};
+    use linkage::drawing::Drawing;
+    use linkage_model::drawing::DrawingEditor;
+    use linkage_model::drawing::edit::{DrawingEdit, End};
 
     let at = |x: f64, y: f64| Vec2::new(x, y);
-    let mut builder = Builder::new(Sketch::new("drawn"));
+    let mut drawing = DrawingEditor::new(Drawing::new("drawn"));
     for e in [
-        SketchEdit::AddPivot(at(0.0, 0.0)),
-        SketchEdit::AddPivot(at(0.3, 0.0)),
-        SketchEdit::AddLink(End::Point(0), End::New(at(0.0, 0.05))),
-        SketchEdit::AddLink(End::Point(2), End::New(at(0.2, 0.2))),
-        SketchEdit::AddLink(End::Point(3), End::Point(1)),
-        SketchEdit::SetDriver(0),
+        DrawingEdit::AddPivot(at(0.0, 0.0)),
+        DrawingEdit::AddPivot(at(0.3, 0.0)),
+        DrawingEdit::AddLink(End::Point(0), End::New(at(0.0, 0.05))),
+        DrawingEdit::AddLink(End::Point(2), End::New(at(0.2, 0.2))),
+        DrawingEdit::AddLink(End::Point(3), End::Point(1)),
+        DrawingEdit::SetDriver(0),
     ] {
-        builder.apply(e);
+        drawing.apply(e);
     }
-    let open = |builder: &mut Builder| {
-        let scene = builder.refresh().expect("the drawing is a four-bar");
+    let open = |drawing: &mut DrawingEditor| {
+        let scene = drawing.refresh().expect("the drawing is a four-bar");
         Session::open_scene(SceneSource::File("my_mechanism.ron".into()), scene)
             .expect("the four-bar solves")
     };
-    open(&mut builder);
+    open(&mut drawing);
     // One gesture: the drag's moves are one undo step, so the history does not grow.
-    builder.dragged = Some(3);
+    drawing.dragged = Some(3);
     let mut flip = false;
     c.bench_function("edit/drawing/point dragged", |b| {
         b.iter(|| {
             flip = !flip;
             let to = if flip { at(0.21, 0.2) } else { at(0.2, 0.2) };
-            builder.apply(SketchEdit::MovePoint { point: 3, to });
-            let session = open(&mut builder);
+            drawing.apply(DrawingEdit::MovePoint { point: 3, to });
+            let session = open(&mut drawing);
             black_box(session.polygons());
         });
     });
-    assert!(builder.problem.is_none());
+    assert!(drawing.problem.is_none());
 }
 
 criterion_group!(benches, edits, drawing_drag);

@@ -9,10 +9,10 @@
 use serde::Serialize;
 
 use crate::Kinematics;
+use crate::drawing::{Drawing, DrawingLink, DrawingPoint};
 use crate::error::{LinkageError, Result};
 use crate::model::Mechanism;
 use crate::motion::{Vec2, cross};
-use crate::sketch::{Sketch, SketchLink, SketchPoint};
 
 /// A position of the body: where its reference point is and how it is turned.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -154,10 +154,10 @@ pub fn three_positions(poses: [BodyPose; 3], moving: [[f64; 2]; 2]) -> Result<Mo
 impl MotionFourBar {
     /// The four-bar drawn in the first position: fixed pivots A0, B0, moving pivots
     /// A, B, the body's reference point P on the coupler, the crank A0A driving.
-    pub fn sketch(&self) -> Sketch {
+    pub fn drawing(&self) -> Drawing {
         let first = &self.poses[0];
         let place = |m: [f64; 2]| first.place(Vec2::new(m[0], m[1]));
-        let point = |name: &str, at: Vec2, ground: bool| SketchPoint {
+        let point = |name: &str, at: Vec2, ground: bool| DrawingPoint {
             name: name.into(),
             at,
             ground,
@@ -167,7 +167,7 @@ impl MotionFourBar {
             4 => "Four-position motion generator",
             _ => "Five-position motion generator",
         };
-        let mut s = Sketch::new(title);
+        let mut s = Drawing::new(title);
         s.length_unit = crate::scene::LengthUnit::Metre;
         s.points = vec![
             point("A0", Vec2::new(self.fixed[0][0], self.fixed[0][1]), true),
@@ -177,16 +177,16 @@ impl MotionFourBar {
             point("P", Vec2::new(first.at[0], first.at[1]), false),
         ];
         s.links = vec![
-            SketchLink::new("crank", vec![0, 2]),
-            SketchLink::new("coupler", vec![2, 3, 4]),
-            SketchLink::new("rocker", vec![1, 3]),
+            DrawingLink::new("crank", vec![0, 2]),
+            DrawingLink::new("coupler", vec![2, 3, 4]),
+            DrawingLink::new("rocker", vec![1, 3]),
         ];
         s.driver = Some(0);
         s.output = Some(2);
         s
     }
 
-    /// The crank's input angle at position `i` (the scene of [`MotionFourBar::sketch`]
+    /// The crank's input angle at position `i` (the scene of [`MotionFourBar::drawing`]
     /// starts at 0 in the first), rad.
     pub fn input_at(&self, i: usize) -> f64 {
         let a0 = Vec2::new(self.fixed[0][0], self.fixed[0][1]);
@@ -206,8 +206,8 @@ impl MotionFourBar {
     /// # Errors
     /// The chain does not build, or does not assemble at a position's crank angle.
     pub fn check(&self) -> Result<MotionCheck> {
-        let scene = self.sketch().to_scene().map_err(|e| match e {
-            crate::sketch::SketchProblem::Invalid(e) => e,
+        let scene = self.drawing().to_scene().map_err(|e| match e {
+            crate::drawing::DrawingProblem::Invalid(e) => e,
             other => LinkageError::SceneInvalid(other.to_string()),
         })?;
         let mut k = Kinematics::new(Mechanism::from_scene(&scene)?)?;

@@ -5,21 +5,22 @@
 
 use eframe::egui;
 use linkage::Vec2;
+use linkage::drawing::Drawing;
 use linkage::scene::{ForceWhen, Models};
-use linkage::sketch::Sketch;
 
-use crate::builder::edit::{Element, SketchEdit};
+use crate::drawing::edit::{DrawingEdit, Element};
 use crate::state::AppState;
 use crate::ui::drawing;
 
 /// The springs, dampers and point forces, each editable.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
-    let Some(b) = st.builder.as_ref() else {
+    let Some(b) = st.drawing.as_ref() else {
         return;
     };
-    let sketch = b.sketch();
-    let none = sketch.springs.is_empty() && sketch.dampers.is_empty() && sketch.forces.is_empty();
-    if sketch.models == Models::Kinematics || none {
+    let drawing = b.drawing();
+    let none =
+        drawing.springs.is_empty() && drawing.dampers.is_empty() && drawing.forces.is_empty();
+    if drawing.models == Models::Kinematics || none {
         return;
     }
     let mut edits = Vec::new();
@@ -28,26 +29,26 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     egui::Grid::new("drawing force elements")
         .num_columns(5)
         .show(ui, |ui| {
-            springs(ui, sketch, &mut edits);
-            dampers(ui, sketch, &mut edits);
-            forces(ui, sketch, &mut edits);
+            springs(ui, drawing, &mut edits);
+            dampers(ui, drawing, &mut edits);
+            forces(ui, drawing, &mut edits);
         });
     for e in edits {
         drawing::edit(st, e);
     }
 }
 
-fn ends(sketch: &Sketch, a: usize, b: usize) -> String {
-    format!("{}–{}", sketch.points[a].name, sketch.points[b].name)
+fn ends(drawing: &Drawing, a: usize, b: usize) -> String {
+    format!("{}–{}", drawing.points[a].name, drawing.points[b].name)
 }
 
 /// A stiffness in N/m, and a free length: unstretched as drawn, or typed (in the
 /// drawing's length unit).
-fn springs(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
-    let unit = sketch.length_unit.to_metres();
-    let unit_label = crate::session::unit_label_of(sketch.length_unit);
-    for (i, s) in sketch.springs.iter().enumerate() {
-        ui.label(format!("spring {}", ends(sketch, s.a, s.b)));
+fn springs(ui: &mut egui::Ui, drawing: &Drawing, edits: &mut Vec<DrawingEdit>) {
+    let unit = drawing.length_unit.to_metres();
+    let unit_label = crate::session::unit_label_of(drawing.length_unit);
+    for (i, s) in drawing.springs.iter().enumerate() {
+        ui.label(format!("spring {}", ends(drawing, s.a, s.b)));
         let mut k = s.k_n_per_m;
         let stiffness = ui.add(
             egui::DragValue::new(&mut k)
@@ -56,7 +57,7 @@ fn springs(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
                 .suffix(" N/m"),
         );
         let mut as_drawn = s.free_length_m.is_none();
-        let drawn_length = (sketch.points[s.a].at - sketch.points[s.b].at).norm();
+        let drawn_length = (drawing.points[s.a].at - drawing.points[s.b].at).norm();
         let toggled = ui.checkbox(&mut as_drawn, "free as drawn").changed();
         let mut free = s.free_length_m.unwrap_or(drawn_length) / unit;
         let typed = !as_drawn
@@ -72,7 +73,7 @@ fn springs(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
             ui.label("");
         }
         if stiffness.changed() || toggled || typed {
-            edits.push(SketchEdit::SetSpring {
+            edits.push(DrawingEdit::SetSpring {
                 spring: i,
                 k_n_per_m: k,
                 free_length_m: (!as_drawn).then_some(free * unit),
@@ -84,9 +85,9 @@ fn springs(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
 }
 
 /// A coefficient in N·s/m.
-fn dampers(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
-    for (i, d) in sketch.dampers.iter().enumerate() {
-        ui.label(format!("damper {}", ends(sketch, d.a, d.b)));
+fn dampers(ui: &mut egui::Ui, drawing: &Drawing, edits: &mut Vec<DrawingEdit>) {
+    for (i, d) in drawing.dampers.iter().enumerate() {
+        ui.label(format!("damper {}", ends(drawing, d.a, d.b)));
         let mut c = d.c_n_s_per_m;
         if ui
             .add(
@@ -97,7 +98,7 @@ fn dampers(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
             )
             .changed()
         {
-            edits.push(SketchEdit::SetDamper {
+            edits.push(DrawingEdit::SetDamper {
                 damper: i,
                 c_n_s_per_m: c,
             });
@@ -111,9 +112,9 @@ fn dampers(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
 
 /// The force's x and y, N, and whether it acts only on the working stroke (while
 /// its point moves against it, as a cutting force does).
-fn forces(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
-    for (i, f) in sketch.forces.iter().enumerate() {
-        ui.label(format!("force at {}", sketch.points[f.point].name));
+fn forces(ui: &mut egui::Ui, drawing: &Drawing, edits: &mut Vec<DrawingEdit>) {
+    for (i, f) in drawing.forces.iter().enumerate() {
+        ui.label(format!("force at {}", drawing.points[f.point].name));
         let (mut x, mut y) = (f.force_n.x, f.force_n.y);
         let mut working = f.when == ForceWhen::WorkingStroke;
         let speed = 0.01 * f.force_n.norm().max(10.0);
@@ -133,7 +134,7 @@ fn forces(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
             .checkbox(&mut working, "working stroke only")
             .on_hover_text("acts only while its point moves against it, as a cutting force");
         if xr.changed() || yr.changed() || wr.changed() {
-            edits.push(SketchEdit::SetForce {
+            edits.push(DrawingEdit::SetForce {
                 force: i,
                 force_n: Vec2::new(x, y),
                 when: if working {
@@ -148,8 +149,8 @@ fn forces(ui: &mut egui::Ui, sketch: &Sketch, edits: &mut Vec<SketchEdit>) {
     }
 }
 
-fn remove(ui: &mut egui::Ui, element: Element, edits: &mut Vec<SketchEdit>) {
+fn remove(ui: &mut egui::Ui, element: Element, edits: &mut Vec<DrawingEdit>) {
     if ui.button("remove").clicked() {
-        edits.push(SketchEdit::DeleteElement(element));
+        edits.push(DrawingEdit::DeleteElement(element));
     }
 }

@@ -1,19 +1,19 @@
-//! Building one's own mechanism: the drawing being made (a [`Sketch`]), its undo and
+//! Building one's own mechanism: the drawing being made (a [`Drawing`]), its undo and
 //! redo history, the tool in hand and the first end of a link being drawn. The
-//! canvas (`ui::builder_canvas`) turns pointer events into [`edit::SketchEdit`]
-//! values; [`Builder::apply`] makes them. Whenever the drawing is a complete
+//! canvas (`ui::drawing_canvas`) turns pointer events into [`edit::DrawingEdit`]
+//! values; [`DrawingEditor::apply`] makes them. Whenever the drawing is a complete
 //! mechanism the app opens it as its session, so the report, the plots and the
 //! polygons follow the drawing as it grows.
 
+pub mod drawing_edit;
 pub mod edit;
 pub mod loads;
-pub mod sketch_edit;
 pub mod stored;
 
 use linkage::SceneFile;
-use linkage::sketch::{Sketch, SketchProblem};
+use linkage::drawing::{Drawing, DrawingProblem};
 
-use edit::{End, Refusal, SketchEdit};
+use edit::{DrawingEdit, End, Refusal};
 
 /// What a click on the canvas does.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -114,10 +114,10 @@ pub enum Pending {
 }
 
 /// The drawing being built and how.
-pub struct Builder {
-    sketch: Sketch,
-    undo: Vec<Sketch>,
-    redo: Vec<Sketch>,
+pub struct DrawingEditor {
+    drawing: Drawing,
+    undo: Vec<Drawing>,
+    redo: Vec<Drawing>,
     /// Whether a drag's edits are being merged into one undo step.
     gesture_open: bool,
     /// The tool in hand.
@@ -129,8 +129,8 @@ pub struct Builder {
     /// Why the last edit was refused, until the next one.
     pub refusal: Option<Refusal>,
     /// Why the drawing is not yet a mechanism (`None`: it is one), as of the last
-    /// [`Builder::refresh`].
-    pub problem: Option<SketchProblem>,
+    /// [`DrawingEditor::refresh`].
+    pub problem: Option<DrawingProblem>,
     /// Fit the view to the drawing at the next frame.
     pub fit_pending: bool,
     /// Counts the drawing's changes (to store it only when it changed).
@@ -139,11 +139,11 @@ pub struct Builder {
     pub naming: Option<(edit::Named, String)>,
 }
 
-impl Builder {
-    /// Starts from `sketch` (empty for a new drawing).
-    pub fn new(sketch: Sketch) -> Self {
+impl DrawingEditor {
+    /// Starts from `drawing` (empty for a new drawing).
+    pub fn new(drawing: Drawing) -> Self {
         Self {
-            sketch,
+            drawing,
             undo: Vec::new(),
             redo: Vec::new(),
             gesture_open: false,
@@ -151,7 +151,7 @@ impl Builder {
             pending: None,
             dragged: None,
             refusal: None,
-            problem: Some(SketchProblem::NoLinks),
+            problem: Some(DrawingProblem::NoLinks),
             fit_pending: true,
             revision: 0,
             naming: None,
@@ -164,14 +164,14 @@ impl Builder {
     }
 
     /// The drawing.
-    pub fn sketch(&self) -> &Sketch {
-        &self.sketch
+    pub fn drawing(&self) -> &Drawing {
+        &self.drawing
     }
 
     /// The scene of the drawing when it is a mechanism; else notes why not in
-    /// [`Builder::problem`].
+    /// [`DrawingEditor::problem`].
     pub fn refresh(&mut self) -> Option<SceneFile> {
-        match self.sketch.to_scene() {
+        match self.drawing.to_scene() {
             Ok(scene) => {
                 self.problem = None;
                 Some(scene)
@@ -184,23 +184,26 @@ impl Builder {
     }
 
     /// Makes `edit`; returns whether the drawing changed. A refused edit leaves the
-    /// drawing and says why ([`Builder::refusal`]). Edits during a gesture (a drag)
+    /// drawing and says why ([`DrawingEditor::refusal`]). Edits during a gesture (a drag)
     /// are one undo step.
-    pub fn apply(&mut self, edit: SketchEdit) -> bool {
-        let is_move = matches!(edit, SketchEdit::MovePoint { .. });
+    pub fn apply(&mut self, edit: DrawingEdit) -> bool {
+        let is_move = matches!(edit, DrawingEdit::MovePoint { .. });
         // Indices shift when something goes: a name being typed would land elsewhere.
-        if matches!(edit, SketchEdit::DeletePoint(_) | SketchEdit::DeleteLink(_)) {
+        if matches!(
+            edit,
+            DrawingEdit::DeletePoint(_) | DrawingEdit::DeleteLink(_)
+        ) {
             self.naming = None;
         }
-        match edit::apply(&self.sketch, edit) {
-            Ok(next) if next == self.sketch => false,
+        match edit::apply(&self.drawing, edit) {
+            Ok(next) if next == self.drawing => false,
             Ok(next) => {
                 if !self.gesture_open {
-                    self.undo.push(self.sketch.clone());
+                    self.undo.push(self.drawing.clone());
                     self.redo.clear();
                 }
                 self.gesture_open = is_move && self.dragged.is_some();
-                self.sketch = next;
+                self.drawing = next;
                 self.refusal = None;
                 self.revision += 1;
                 true
@@ -247,10 +250,10 @@ impl Builder {
         } else {
             (&mut self.redo, &mut self.undo)
         };
-        let Some(sketch) = from.pop() else {
+        let Some(drawing) = from.pop() else {
             return false;
         };
-        to.push(std::mem::replace(&mut self.sketch, sketch));
+        to.push(std::mem::replace(&mut self.drawing, drawing));
         self.refusal = None;
         self.revision += 1;
         true

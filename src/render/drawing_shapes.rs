@@ -3,7 +3,7 @@
 //! are in screen points, since a drawing starts with no size of its own.
 
 use glam::Vec2;
-use linkage::sketch::Sketch;
+use linkage::drawing::Drawing;
 
 use super::build::{coil, colour, ground_pivot};
 use super::shape::{Kind, Shape};
@@ -16,28 +16,28 @@ const PIN_PT: f32 = 5.0;
 
 /// Fills `out` with the drawing's shapes; `marked`: a point drawn larger (the first
 /// end of a link being drawn, or the point being dragged).
-pub fn build_sketch(out: &mut Vec<Shape>, sketch: &Sketch, cam: &Camera, marked: Option<usize>) {
+pub fn build_drawing(out: &mut Vec<Shape>, drawing: &Drawing, cam: &Camera, marked: Option<usize>) {
     out.clear();
     let m_per_pt = (1.0 / cam.points_per_m) as f32;
     let (bar, pin) = (BAR_PT * m_per_pt, PIN_PT * m_per_pt);
     let pos = |p: usize| {
-        let q = sketch.points[p].at;
+        let q = drawing.points[p].at;
         cam.local([q.x, q.y])
     };
     let mut push = |shape: Option<Shape>| out.extend(shape);
-    for (p, point) in sketch.points.iter().enumerate() {
+    for (p, point) in drawing.points.iter().enumerate() {
         if point.ground {
             ground_pivot(&mut push, pos(p), pin, bar);
         }
     }
-    slider_blocks(&mut push, sketch, &pos, bar, pin);
-    links(&mut push, sketch, &pos, bar);
-    force_elements(&mut push, sketch, &pos, bar, pin);
-    for p in 0..sketch.points.len() {
+    slider_blocks(&mut push, drawing, &pos, bar, pin);
+    links(&mut push, drawing, &pos, bar);
+    force_elements(&mut push, drawing, &pos, bar, pin);
+    for p in 0..drawing.points.len() {
         let c = pos(p);
         push(Shape::new(Kind::Pin, [c, c, c], pin, colour::PIN, [0.0; 2]));
     }
-    if let Some(p) = marked.filter(|&p| p < sketch.points.len()) {
+    if let Some(p) = marked.filter(|&p| p < drawing.points.len()) {
         let c = pos(p);
         push(Shape::new(
             Kind::Pin,
@@ -52,12 +52,12 @@ pub fn build_sketch(out: &mut Vec<Shape>, sketch: &Sketch, cam: &Camera, marked:
 /// Each slider's block on a short rail along its guide's angle.
 fn slider_blocks(
     push: &mut impl FnMut(Option<Shape>),
-    sketch: &Sketch,
+    drawing: &Drawing,
     pos: &impl Fn(usize) -> Vec2,
     bar: f32,
     pin: f32,
 ) {
-    for s in &sketch.sliders {
+    for s in &drawing.sliders {
         let c = pos(s.point);
         let d = Vec2::new(s.angle_rad.cos() as f32, s.angle_rad.sin() as f32);
         let reach = d * 12.0 * pin;
@@ -81,12 +81,12 @@ fn slider_blocks(
 /// Links: bars, and plates for three or more points (with bars to the rest).
 fn links(
     push: &mut impl FnMut(Option<Shape>),
-    sketch: &Sketch,
+    drawing: &Drawing,
     pos: &impl Fn(usize) -> Vec2,
     bar: f32,
 ) {
-    for (l, link) in sketch.links.iter().enumerate() {
-        let colour = if sketch.driver == Some(l) {
+    for (l, link) in drawing.links.iter().enumerate() {
+        let colour = if drawing.driver == Some(l) {
             colour::DRIVER
         } else {
             colour::LINK
@@ -126,15 +126,15 @@ fn links(
 /// of one length (in points) pointing at their point.
 fn force_elements(
     push: &mut impl FnMut(Option<Shape>),
-    sketch: &Sketch,
+    drawing: &Drawing,
     pos: &impl Fn(usize) -> Vec2,
     bar: f32,
     pin: f32,
 ) {
-    for s in &sketch.springs {
+    for s in &drawing.springs {
         push(coil(pos(s.a), pos(s.b), bar, pin));
     }
-    for d in &sketch.dampers {
+    for d in &drawing.dampers {
         let (a, b) = (pos(d.a), pos(d.b));
         let mid = 0.5 * (a + b);
         push(Shape::new(
@@ -152,7 +152,7 @@ fn force_elements(
             [2.0 * pin, 0.8 * pin],
         ));
     }
-    for f in &sketch.forces {
+    for f in &drawing.forces {
         let tip = pos(f.point);
         let d = Vec2::new(f.force_n.x as f32, f.force_n.y as f32).normalize_or_zero();
         // 8 pins long, ending at the pin's edge.

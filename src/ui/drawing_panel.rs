@@ -5,8 +5,8 @@
 use eframe::egui;
 use linkage::Vec2;
 
-use crate::builder::edit::{Body, Named, SketchEdit};
-use crate::builder::{Builder, Tool};
+use crate::drawing::edit::{Body, DrawingEdit, Named};
+use crate::drawing::{DrawingEditor, Tool};
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
 use crate::ui::drawing;
@@ -14,7 +14,7 @@ use linkage::scene::{Models, Speed};
 
 /// Draws the panel; its edits go to the drawing.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
-    let Some(b) = st.builder.as_ref() else {
+    let Some(b) = st.drawing.as_ref() else {
         return;
     };
     ui.heading("Draw a mechanism");
@@ -40,9 +40,9 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     model(ui, st);
     links(ui, st);
     sliders(ui, st);
-    crate::ui::builder_bodies::panel(ui, st);
-    crate::ui::builder_forces::panel(ui, st);
-    if let (Some(tool), Some(b)) = (chosen, st.builder.as_mut()) {
+    crate::ui::drawing_bodies::panel(ui, st);
+    crate::ui::drawing_forces::panel(ui, st);
+    if let (Some(tool), Some(b)) = (chosen, st.drawing.as_mut()) {
         b.tool = tool;
         b.pending = None;
     }
@@ -53,10 +53,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
 
 /// The mobility and what is missing, or that the drawing is a mechanism.
 fn status(ui: &mut egui::Ui, st: &AppState) {
-    let Some(b) = st.builder.as_ref() else {
+    let Some(b) = st.drawing.as_ref() else {
         return;
     };
-    let m = b.sketch().mobility();
+    let m = b.drawing().mobility();
     ui.label(format!(
         "degrees of freedom: 3·{} − 2·{} = {}",
         m.moving,
@@ -78,7 +78,7 @@ fn status(ui: &mut egui::Ui, st: &AppState) {
 /// "Done" (once the drawing is a mechanism): back to the viewer over it. Returns
 /// whether it was clicked.
 fn actions(ui: &mut egui::Ui, st: &mut AppState) -> bool {
-    let Some(b) = st.builder.as_ref() else {
+    let Some(b) = st.drawing.as_ref() else {
         return false;
     };
     let done = ui.add_enabled(b.problem.is_none(), egui::Button::new("Done"));
@@ -88,18 +88,18 @@ fn actions(ui: &mut egui::Ui, st: &mut AppState) -> bool {
 
 /// Every point with its coordinates (mm) to type, and whether it is a ground pivot.
 fn points(ui: &mut egui::Ui, st: &mut AppState) {
-    let Some(b) = st.builder.as_mut() else {
+    let Some(b) = st.drawing.as_mut() else {
         return;
     };
-    let unit = b.sketch().length_unit.to_metres();
+    let unit = b.drawing().length_unit.to_metres();
     let mut edits = Vec::new();
     ui.strong("Points");
     egui::Grid::new("drawing points")
         .num_columns(4)
         .show(ui, |ui| {
-            for p in 0..b.sketch().points.len() {
+            for p in 0..b.drawing().points.len() {
                 name_cell(ui, b, Named::Point(p), &mut edits);
-                let point = &b.sketch().points[p];
+                let point = &b.drawing().points[p];
                 let mut xy = [point.at.x / unit, point.at.y / unit];
                 let mut changed = false;
                 for v in &mut xy {
@@ -109,11 +109,11 @@ fn points(ui: &mut egui::Ui, st: &mut AppState) {
                 }
                 let mut ground = point.ground;
                 if ui.checkbox(&mut ground, "ground").changed() {
-                    edits.push(SketchEdit::SetGround { point: p, ground });
+                    edits.push(DrawingEdit::SetGround { point: p, ground });
                 }
                 if changed {
                     let to = Vec2::new(xy[0] * unit, xy[1] * unit);
-                    edits.push(SketchEdit::MovePoint { point: p, to });
+                    edits.push(DrawingEdit::MovePoint { point: p, to });
                 }
                 ui.end_row();
             }
@@ -126,7 +126,7 @@ fn points(ui: &mut egui::Ui, st: &mut AppState) {
 /// Every link's name, which one is the output for the time ratio, and the input
 /// speed.
 fn links(ui: &mut egui::Ui, st: &mut AppState) {
-    let Some(b) = st.builder.as_mut() else {
+    let Some(b) = st.drawing.as_mut() else {
         return;
     };
     let mut edits = Vec::new();
@@ -136,31 +136,31 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
         .show(ui, |ui| {
             // Without a pick, the scene's output is its last link: slider blocks come
             // after the links, so with sliders it is the last block (none of these).
-            let sketch = b.sketch();
-            let output = sketch.output.or_else(|| {
-                (sketch.sliders.is_empty() && !sketch.links.is_empty())
-                    .then(|| sketch.links.len() - 1)
+            let drawing = b.drawing();
+            let output = drawing.output.or_else(|| {
+                (drawing.sliders.is_empty() && !drawing.links.is_empty())
+                    .then(|| drawing.links.len() - 1)
             });
-            let masses = sketch.models != Models::Kinematics;
-            for l in 0..b.sketch().links.len() {
+            let masses = drawing.models != Models::Kinematics;
+            for l in 0..b.drawing().links.len() {
                 name_cell(ui, b, Named::Link(l), &mut edits);
-                let role = if b.sketch().driver == Some(l) {
+                let role = if b.drawing().driver == Some(l) {
                     "input"
                 } else {
                     ""
                 };
                 ui.label(role);
                 if ui.radio(output == Some(l), "output").clicked() {
-                    edits.push(SketchEdit::SetOutput(Some(l)));
+                    edits.push(DrawingEdit::SetOutput(Some(l)));
                 }
                 if masses {
-                    mass_cell(ui, Body::Link(l), b.sketch().links[l].mass_kg, &mut edits);
+                    mass_cell(ui, Body::Link(l), b.drawing().links[l].mass_kg, &mut edits);
                 }
                 ui.end_row();
             }
         });
     // Shown in rpm whatever the scene wrote; an edit writes rpm.
-    let mut rpm = match b.sketch().speed {
+    let mut rpm = match b.drawing().speed {
         Speed::Rpm(rpm) => rpm,
         Speed::RadPerSecond(w) => w * 60.0 / std::f64::consts::TAU,
     };
@@ -170,7 +170,7 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
             .add(egui::DragValue::new(&mut rpm).speed(1.0).suffix(" rpm"))
             .changed()
         {
-            edits.push(SketchEdit::SetSpeedRpm(rpm));
+            edits.push(DrawingEdit::SetSpeedRpm(rpm));
         }
     });
     for e in edits {
@@ -181,10 +181,10 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
 /// What the drawn scene computes: kinematics, or kinetostatics or dynamics with
 /// masses (set per link and block in their rows), gravity and the force elements.
 fn model(ui: &mut egui::Ui, st: &mut AppState) {
-    let Some(b) = st.builder.as_ref() else {
+    let Some(b) = st.drawing.as_ref() else {
         return;
     };
-    let (mut models, mut gravity) = (b.sketch().models, b.sketch().gravity);
+    let (mut models, mut gravity) = (b.drawing().models, b.drawing().gravity);
     let mut edits = Vec::new();
     ui.horizontal(|ui| {
         ui.label("computes");
@@ -194,7 +194,7 @@ fn model(ui: &mut egui::Ui, st: &mut AppState) {
             (Models::Dynamics, "dynamics"),
         ] {
             if ui.radio_value(&mut models, m, label).changed() {
-                edits.push(SketchEdit::SetModels(models));
+                edits.push(DrawingEdit::SetModels(models));
             }
         }
     });
@@ -203,7 +203,7 @@ fn model(ui: &mut egui::Ui, st: &mut AppState) {
             .checkbox(&mut gravity, "gravity (9.81 m/s² down)")
             .changed()
     {
-        edits.push(SketchEdit::SetGravity(gravity));
+        edits.push(DrawingEdit::SetGravity(gravity));
     }
     for e in edits {
         drawing::edit(st, e);
@@ -211,7 +211,7 @@ fn model(ui: &mut egui::Ui, st: &mut AppState) {
 }
 
 /// A body's mass in kg; 0 is massless.
-fn mass_cell(ui: &mut egui::Ui, body: Body, kg: Option<f64>, edits: &mut Vec<SketchEdit>) {
+fn mass_cell(ui: &mut egui::Ui, body: Body, kg: Option<f64>, edits: &mut Vec<DrawingEdit>) {
     let mut value = kg.unwrap_or(0.0);
     if ui
         .add(
@@ -222,17 +222,17 @@ fn mass_cell(ui: &mut egui::Ui, body: Body, kg: Option<f64>, edits: &mut Vec<Ske
         )
         .changed()
     {
-        edits.push(SketchEdit::SetMass(body, (value > 0.0).then_some(value)));
+        edits.push(DrawingEdit::SetMass(body, (value > 0.0).then_some(value)));
     }
 }
 
 /// Every slider's guide: ground or a link, and its direction (deg).
 fn sliders(ui: &mut egui::Ui, st: &mut AppState) {
-    let Some(b) = st.builder.as_ref() else {
+    let Some(b) = st.drawing.as_ref() else {
         return;
     };
-    let sketch = b.sketch();
-    if sketch.sliders.is_empty() {
+    let drawing = b.drawing();
+    if drawing.sliders.is_empty() {
         return;
     }
     let mut edits = Vec::new();
@@ -241,17 +241,17 @@ fn sliders(ui: &mut egui::Ui, st: &mut AppState) {
     egui::Grid::new("drawing sliders")
         .num_columns(3)
         .show(ui, |ui| {
-            for (i, s) in sketch.sliders.iter().enumerate() {
-                let pin = &sketch.points[s.point].name;
+            for (i, s) in drawing.sliders.iter().enumerate() {
+                let pin = &drawing.points[s.point].name;
                 let name_of =
-                    |g: Option<usize>| g.map_or("ground", |l| sketch.links[l].name.as_str());
+                    |g: Option<usize>| g.map_or("ground", |l| drawing.links[l].name.as_str());
                 let mut guide = s.guide;
                 egui::ComboBox::new(("guide", i), format!("guide of {pin}"))
                     .selected_text(name_of(guide))
                     .show_ui(ui, |ui| {
                         let choices = std::iter::once(None).chain(
-                            (0..sketch.links.len())
-                                .filter(|&l| !sketch.links[l].points.contains(&s.point))
+                            (0..drawing.links.len())
+                                .filter(|&l| !drawing.links[l].points.contains(&s.point))
                                 .map(Some),
                         );
                         for g in choices {
@@ -263,13 +263,13 @@ fn sliders(ui: &mut egui::Ui, st: &mut AppState) {
                     .add(egui::DragValue::new(&mut deg).speed(1.0).suffix("°"))
                     .changed();
                 if guide != s.guide || turned {
-                    edits.push(SketchEdit::SetGuide {
+                    edits.push(DrawingEdit::SetGuide {
                         slider: i,
                         guide,
                         angle_rad: deg.to_radians(),
                     });
                 }
-                if sketch.models != Models::Kinematics {
+                if drawing.models != Models::Kinematics {
                     mass_cell(ui, Body::Block(i), s.mass_kg, &mut edits);
                 }
                 ui.end_row();
@@ -282,10 +282,10 @@ fn sliders(ui: &mut egui::Ui, st: &mut AppState) {
 
 /// A point's or link's name: a button that, clicked, becomes a text field; Enter or
 /// leaving the field renames.
-fn name_cell(ui: &mut egui::Ui, b: &mut Builder, what: Named, edits: &mut Vec<SketchEdit>) {
+fn name_cell(ui: &mut egui::Ui, b: &mut DrawingEditor, what: Named, edits: &mut Vec<DrawingEdit>) {
     let current = match what {
-        Named::Point(p) => b.sketch().points[p].name.clone(),
-        Named::Link(l) => b.sketch().links[l].name.clone(),
+        Named::Point(p) => b.drawing().points[p].name.clone(),
+        Named::Link(l) => b.drawing().links[l].name.clone(),
     };
     match &mut b.naming {
         Some((named, text)) if *named == what => {
@@ -299,7 +299,7 @@ fn name_cell(ui: &mut egui::Ui, b: &mut Builder, what: Named, edits: &mut Vec<Sk
             }
             if r.lost_focus() {
                 if *text != current {
-                    edits.push(SketchEdit::Rename(what, text.clone()));
+                    edits.push(DrawingEdit::Rename(what, text.clone()));
                 }
                 b.naming = None;
             }

@@ -1,11 +1,11 @@
 //! A drawing becomes the same mechanism as the scene it was drawn from: each template
-//! is solved at its start, redrawn as a [`Sketch`] (points at their world places, no
-//! branches, no link coordinates), and the scene the sketch makes must report the
+//! is solved at its start, redrawn as a [`Drawing`] (points at their world places, no
+//! branches, no link coordinates), and the scene the drawing makes must report the
 //! same Grashof class, time ratio, swings and strokes (to 1e-9) as the template.
 
 use linkage::analysis::{Report, report};
+use linkage::drawing::{Drawing, DrawingLink, DrawingPoint, DrawingProblem, NotDrawable};
 use linkage::scene::{Branch, Speed};
-use linkage::sketch::{NotDrawable, Sketch, SketchLink, SketchPoint, SketchProblem};
 use linkage::{Kinematics, Mechanism, SceneFile, Vec2};
 
 fn template(name: &str) -> SceneFile {
@@ -16,14 +16,14 @@ fn template(name: &str) -> SceneFile {
     SceneFile::parse(&std::fs::read_to_string(path).expect("template")).expect("parses")
 }
 
-/// The scene as drawn at its start (`Sketch::from_pose`): world places, links by
+/// The scene as drawn at its start (`Drawing::from_pose`): world places, links by
 /// their points, slider blocks as sliders on their guides; no link coordinates and
 /// no branches.
-fn drawn(scene: &SceneFile) -> Sketch {
+fn drawn(scene: &SceneFile) -> Drawing {
     let m = Mechanism::from_scene(scene).expect("valid");
     let mut k = Kinematics::new(m.clone()).expect("solvable");
     let pose = k.solve(m.driver.start_rad).expect("assembles at start");
-    Sketch::from_pose(scene, &m, &pose).expect("drawable")
+    Drawing::from_pose(scene, &m, &pose).expect("drawable")
 }
 
 fn report_of(scene: &SceneFile) -> Report {
@@ -39,14 +39,14 @@ fn assert_close(what: &str, a: f64, b: f64) {
 }
 
 /// The drawing mirrored in the x-axis: every dyad on its other branch.
-fn mirrored(mut sketch: Sketch) -> Sketch {
-    for p in &mut sketch.points {
+fn mirrored(mut drawing: Drawing) -> Drawing {
+    for p in &mut drawing.points {
         p.at.y = -p.at.y;
     }
-    for s in &mut sketch.sliders {
+    for s in &mut drawing.sliders {
         s.angle_rad = -s.angle_rad;
     }
-    sketch
+    drawing
 }
 
 fn assert_same_mechanism(name: &str) {
@@ -95,8 +95,8 @@ fn left_of(b: &Branch) -> Option<(String, String, bool)> {
     })
 }
 
-fn assert_same_motion(name: &str, original: &SceneFile, sketch: &Sketch) {
-    let scene = sketch.to_scene().unwrap_or_else(|e| panic!("{name}: {e}"));
+fn assert_same_motion(name: &str, original: &SceneFile, drawing: &Drawing) {
+    let scene = drawing.to_scene().unwrap_or_else(|e| panic!("{name}: {e}"));
     // The scene it makes is a scene file like any other: it round-trips through RON.
     let text = scene.to_ron().expect("writes");
     assert_eq!(SceneFile::parse(&text).expect("reads"), scene);
@@ -151,44 +151,44 @@ fn drawn_six_bars_and_the_inverted_slider_crank_are_their_templates() {
 
 #[test]
 fn an_unfinished_drawing_says_what_is_missing() {
-    let mut sketch = Sketch::new("draft");
-    assert_eq!(sketch.to_scene(), Err(SketchProblem::NoLinks));
-    let point = |name: &str, x: f64, y: f64, ground: bool| SketchPoint {
+    let mut drawing = Drawing::new("draft");
+    assert_eq!(drawing.to_scene(), Err(DrawingProblem::NoLinks));
+    let point = |name: &str, x: f64, y: f64, ground: bool| DrawingPoint {
         name: name.into(),
         at: Vec2::new(x, y),
         ground,
     };
-    sketch.points = vec![
+    drawing.points = vec![
         point("A", 0.0, 0.0, true),
         point("B", 0.1, 0.0, false),
         point("C", 0.3, 0.2, false),
         point("D", 0.3, 0.0, true),
     ];
-    let link = SketchLink::new;
-    sketch.links = vec![link("crank", vec![0, 1]), link("coupler", vec![1, 2])];
-    let Err(SketchProblem::Mobility(m)) = sketch.to_scene() else {
+    let link = DrawingLink::new;
+    drawing.links = vec![link("crank", vec![0, 1]), link("coupler", vec![1, 2])];
+    let Err(DrawingProblem::Mobility(m)) = drawing.to_scene() else {
         panic!("open chain")
     };
     assert_eq!(m.dof(), 2);
     assert!(
-        SketchProblem::Mobility(m)
+        DrawingProblem::Mobility(m)
             .to_string()
             .starts_with("2 degrees of freedom")
     );
-    sketch.links.push(link("rocker", vec![2, 3]));
-    assert_eq!(sketch.to_scene(), Err(SketchProblem::NoDriver));
-    sketch.driver = Some(1);
+    drawing.links.push(link("rocker", vec![2, 3]));
+    assert_eq!(drawing.to_scene(), Err(DrawingProblem::NoDriver));
+    drawing.driver = Some(1);
     assert_eq!(
-        sketch.to_scene(),
-        Err(SketchProblem::DriverNotGrounded("coupler".into()))
+        drawing.to_scene(),
+        Err(DrawingProblem::DriverNotGrounded("coupler".into()))
     );
-    sketch.driver = Some(0);
-    sketch.speed = Speed::Rpm(30.0);
-    let scene = sketch.to_scene().expect("a four-bar");
+    drawing.driver = Some(0);
+    drawing.speed = Speed::Rpm(30.0);
+    let scene = drawing.to_scene().expect("a four-bar");
     assert_eq!(scene.branches.len(), 1);
     // A brace across the frame locks it.
-    sketch.links.push(link("brace", vec![1, 3]));
-    let Err(SketchProblem::Mobility(m)) = sketch.to_scene() else {
+    drawing.links.push(link("brace", vec![1, 3]));
+    let Err(DrawingProblem::Mobility(m)) = drawing.to_scene() else {
         panic!("locked")
     };
     assert_eq!(m.dof(), 0);
@@ -233,32 +233,32 @@ fn a_drawn_die_cutter_needs_the_same_input_torque() {
 /// a bar m L²/12, an equilateral plate m a²/12 (the textbook values).
 #[test]
 fn drawn_masses_are_uniform_bodies() {
-    let point = |name: &str, x: f64, y: f64, ground: bool| SketchPoint {
+    let point = |name: &str, x: f64, y: f64, ground: bool| DrawingPoint {
         name: name.into(),
         at: Vec2::new(x, y),
         ground,
     };
     let h = 0.1 * 3f64.sqrt() / 2.0;
-    let mut sketch = Sketch::new("masses");
-    sketch.points = vec![
+    let mut drawing = Drawing::new("masses");
+    drawing.points = vec![
         point("A", 0.0, 0.0, true),
         point("B", 0.0, 0.1, false),
         point("C", 0.1, 0.1, false),
         point("E", 0.05, 0.1 + h, false),
         point("D", 0.3, 0.0, true),
     ];
-    let link = |name: &str, points: Vec<usize>, mass_kg| SketchLink {
+    let link = |name: &str, points: Vec<usize>, mass_kg| DrawingLink {
         mass_kg,
-        ..SketchLink::new(name, points)
+        ..DrawingLink::new(name, points)
     };
-    sketch.links = vec![
+    drawing.links = vec![
         link("crank", vec![0, 1], Some(2.0)),
         link("plate", vec![1, 2, 3], Some(3.0)),
         link("rocker", vec![2, 4], None),
     ];
-    sketch.driver = Some(0);
-    sketch.models = linkage::scene::Models::Kinetostatics;
-    let scene = sketch.to_scene().expect("a four-bar with a coupler plate");
+    drawing.driver = Some(0);
+    drawing.models = linkage::scene::Models::Kinetostatics;
+    let scene = drawing.to_scene().expect("a four-bar with a coupler plate");
     let crank = &scene.links[1];
     assert_eq!(crank.mass, Some(2.0));
     assert_close(
@@ -278,9 +278,9 @@ fn drawn_masses_are_uniform_bodies() {
     assert_eq!(scene.links[3].mass, None);
     // A link's own centroid (world, m) and inertia go through as they are (the
     // scene writes millimetres, and link coordinates are the world's at input 0).
-    sketch.links[0].centroid = Some(Vec2::new(0.01, 0.03));
-    sketch.links[0].inertia_kg_m2 = Some(0.5);
-    let scene = sketch.to_scene().expect("still a four-bar");
+    drawing.links[0].centroid = Some(Vec2::new(0.01, 0.03));
+    drawing.links[0].inertia_kg_m2 = Some(0.5);
+    let scene = drawing.to_scene().expect("still a four-bar");
     let (cx, cy) = scene.links[1].centroid.expect("centroid");
     assert_close("own centroid x", cx, 10.0);
     assert_close("own centroid y", cy, 30.0);
@@ -292,14 +292,14 @@ fn drawn_masses_are_uniform_bodies() {
 /// Newton from the drawing itself, assembles as drawn, and moves.
 #[test]
 fn a_drawn_triad_six_bar_solves_by_newton_from_the_drawing() {
-    let point = |name: &str, x: f64, y: f64, ground: bool| SketchPoint {
+    let point = |name: &str, x: f64, y: f64, ground: bool| DrawingPoint {
         name: name.into(),
         at: Vec2::new(x, y),
         ground,
     };
-    let link = SketchLink::new;
-    let mut sketch = Sketch::new("triad");
-    sketch.points = vec![
+    let link = DrawingLink::new;
+    let mut drawing = Drawing::new("triad");
+    drawing.points = vec![
         point("A", 0.0, 0.0, true),
         point("B", 0.05, 0.0, false),
         point("P", 0.15, 0.2, false),
@@ -308,16 +308,16 @@ fn a_drawn_triad_six_bar_solves_by_newton_from_the_drawing() {
         point("D", 0.45, 0.0, true),
         point("G", 0.3, -0.15, true),
     ];
-    sketch.links = vec![
+    drawing.links = vec![
         link("crank", vec![0, 1]),
         link("plate", vec![2, 3, 4]),
         link("to crank", vec![1, 2]),
         link("to D", vec![3, 5]),
         link("to G", vec![4, 6]),
     ];
-    sketch.driver = Some(0);
-    assert_eq!(sketch.mobility().dof(), 1);
-    let scene = sketch.to_scene().expect("a triad six-bar");
+    drawing.driver = Some(0);
+    assert_eq!(drawing.mobility().dof(), 1);
+    let scene = drawing.to_scene().expect("a triad six-bar");
     assert!(
         scene.branches.is_empty() && scene.guess.len() == 5,
         "{:?}",
@@ -360,9 +360,9 @@ fn every_shipped_scene_is_drawn_as_itself_or_refused_with_the_reason() {
             .expect("solves")
             .solve(m.driver.start_rad)
             .expect("assembles");
-        match Sketch::from_pose(&scene, &m, &pose) {
-            Ok(sketch) => {
-                assert_same_motion(&name, &scene, &sketch);
+        match Drawing::from_pose(&scene, &m, &pose) {
+            Ok(drawing) => {
+                assert_same_motion(&name, &scene, &drawing);
                 drawn_ok.push(name);
             }
             Err(why) => {
@@ -401,7 +401,7 @@ fn a_drawn_flipper_has_the_same_reduced_model() {
         SceneFile::parse(&std::fs::read_to_string(path).expect("scene")).expect("parses");
     let m = Mechanism::from_scene(&original).expect("valid");
     assert_eq!(
-        Sketch::from_pose(
+        Drawing::from_pose(
             &original,
             &m,
             &Kinematics::new(m.clone())
@@ -417,12 +417,12 @@ fn a_drawn_flipper_has_the_same_reduced_model() {
     let mut k = Kinematics::new(m.clone()).expect("solvable");
     let elsewhere = m.driver.start_rad - 10f64.to_radians();
     let pose = k.solve(elsewhere).expect("assembles");
-    let sketch = Sketch::from_pose(&original, &m, &pose).expect("drawable");
+    let drawing = Drawing::from_pose(&original, &m, &pose).expect("drawable");
     assert!(
-        sketch.springs[0].free_length_m.is_some(),
+        drawing.springs[0].free_length_m.is_some(),
         "the start's free length"
     );
-    let drawn_scene = sketch.to_scene().expect("a mechanism");
+    let drawn_scene = drawing.to_scene().expect("a mechanism");
     let reduced = |scene: &SceneFile, at: &[f64]| -> Vec<[f64; 2]> {
         let mut k = Kinematics::new(Mechanism::from_scene(scene).expect("valid")).expect("k");
         let s0 = k.solve(k.mechanism().driver.start_rad).expect("start");

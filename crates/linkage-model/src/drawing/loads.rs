@@ -3,10 +3,10 @@
 //! [`super::edit`], which dispatches them here.
 
 use linkage::Vec2;
+use linkage::drawing::{Drawing, DrawingDamper, DrawingForce, DrawingSpring};
 use linkage::scene::ForceWhen;
-use linkage::sketch::{Sketch, SketchDamper, SketchForce, SketchSpring};
 
-use super::sketch_edit::{Element, Refusal, SketchEdit, finite};
+use super::drawing_edit::{DrawingEdit, Element, Refusal, finite};
 
 /// Stiffness of a new spring, N/m.
 pub const NEW_SPRING_N_PER_M: f64 = 1000.0;
@@ -19,31 +19,31 @@ pub const NEW_FORCE_N: [f64; 2] = [0.0, -100.0];
 ///
 /// # Errors
 /// Two ends at one point, or a number that is not finite or is negative.
-pub(super) fn apply(next: &mut Sketch, edit: SketchEdit) -> Result<(), Refusal> {
+pub(super) fn apply(next: &mut Drawing, edit: DrawingEdit) -> Result<(), Refusal> {
     match edit {
-        SketchEdit::AddSpring(a, b) => {
+        DrawingEdit::AddSpring(a, b) => {
             two_points(a, b)?;
-            next.springs.push(SketchSpring {
+            next.springs.push(DrawingSpring {
                 a,
                 b,
                 k_n_per_m: NEW_SPRING_N_PER_M,
                 free_length_m: None,
             });
         }
-        SketchEdit::AddDamper(a, b) => {
+        DrawingEdit::AddDamper(a, b) => {
             two_points(a, b)?;
-            next.dampers.push(SketchDamper {
+            next.dampers.push(DrawingDamper {
                 a,
                 b,
                 c_n_s_per_m: NEW_DAMPER_N_S_PER_M,
             });
         }
-        SketchEdit::AddForce(point) => next.forces.push(SketchForce {
+        DrawingEdit::AddForce(point) => next.forces.push(DrawingForce {
             point,
             force_n: Vec2::new(NEW_FORCE_N[0], NEW_FORCE_N[1]),
             when: ForceWhen::Always,
         }),
-        SketchEdit::SetSpring {
+        DrawingEdit::SetSpring {
             spring,
             k_n_per_m,
             free_length_m,
@@ -53,11 +53,11 @@ pub(super) fn apply(next: &mut Sketch, edit: SketchEdit) -> Result<(), Refusal> 
             let s = &mut next.springs[spring];
             (s.k_n_per_m, s.free_length_m) = (k_n_per_m, free_length_m);
         }
-        SketchEdit::SetDamper {
+        DrawingEdit::SetDamper {
             damper,
             c_n_s_per_m,
         } => next.dampers[damper].c_n_s_per_m = coefficient(c_n_s_per_m)?,
-        SketchEdit::SetForce {
+        DrawingEdit::SetForce {
             force,
             force_n,
             when,
@@ -65,7 +65,7 @@ pub(super) fn apply(next: &mut Sketch, edit: SketchEdit) -> Result<(), Refusal> 
             finite(force_n)?;
             (next.forces[force].force_n, next.forces[force].when) = (force_n, when);
         }
-        SketchEdit::SetBody {
+        DrawingEdit::SetBody {
             link,
             centroid,
             inertia_kg_m2,
@@ -75,7 +75,7 @@ pub(super) fn apply(next: &mut Sketch, edit: SketchEdit) -> Result<(), Refusal> 
             let l = &mut next.links[link];
             (l.centroid, l.inertia_kg_m2) = (centroid, inertia_kg_m2);
         }
-        SketchEdit::DeleteElement(element) => match element {
+        DrawingEdit::DeleteElement(element) => match element {
             Element::Spring(i) => drop(next.springs.remove(i)),
             Element::Damper(i) => drop(next.dampers.remove(i)),
             Element::Force(i) => drop(next.forces.remove(i)),
@@ -105,36 +105,36 @@ fn coefficient(v: f64) -> Result<f64, Refusal> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::builder::edit::{End, apply as apply_edit};
+    use crate::drawing::edit::{End, apply as apply_edit};
 
     fn at(x: f64, y: f64) -> Vec2 {
         Vec2::new(x, y)
     }
 
-    fn apply(s: &Sketch, edit: SketchEdit) -> Result<Sketch, Refusal> {
+    fn apply(s: &Drawing, edit: DrawingEdit) -> Result<Drawing, Refusal> {
         apply_edit(s, edit)
     }
 
     #[test]
     fn force_elements_follow_their_points_and_refuse_bad_numbers() {
-        let mut s = Sketch::new("loads");
+        let mut s = Drawing::new("loads");
         for edit in [
-            SketchEdit::AddPivot(at(0.0, 0.0)),
-            SketchEdit::AddPivot(at(0.3, 0.0)),
-            SketchEdit::AddLink(End::Point(0), End::New(at(0.0, 0.1))),
-            SketchEdit::AddSpring(2, 1),
-            SketchEdit::AddDamper(0, 2),
-            SketchEdit::AddForce(2),
-            SketchEdit::AddForce(1),
+            DrawingEdit::AddPivot(at(0.0, 0.0)),
+            DrawingEdit::AddPivot(at(0.3, 0.0)),
+            DrawingEdit::AddLink(End::Point(0), End::New(at(0.0, 0.1))),
+            DrawingEdit::AddSpring(2, 1),
+            DrawingEdit::AddDamper(0, 2),
+            DrawingEdit::AddForce(2),
+            DrawingEdit::AddForce(1),
         ] {
             s = apply(&s, edit).expect("applies");
         }
         assert_eq!(
-            apply(&s, SketchEdit::AddSpring(1, 1)),
+            apply(&s, DrawingEdit::AddSpring(1, 1)),
             Err(Refusal::SameEnds)
         );
         for bad in [-1.0, f64::NAN, f64::INFINITY] {
-            let spring = SketchEdit::SetSpring {
+            let spring = DrawingEdit::SetSpring {
                 spring: 0,
                 k_n_per_m: bad,
                 free_length_m: None,
@@ -144,7 +144,7 @@ mod tests {
                 "{bad}"
             );
         }
-        let body = |centroid, inertia_kg_m2| SketchEdit::SetBody {
+        let body = |centroid, inertia_kg_m2| DrawingEdit::SetBody {
             link: 0,
             centroid,
             inertia_kg_m2,
@@ -154,12 +154,12 @@ mod tests {
         let own = apply(&s, body(Some(at(0.0, 0.05)), Some(0.2))).expect("applies");
         assert_eq!(own.links[0].centroid, Some(at(0.0, 0.05)));
         // Deleting the first pivot takes the damper at it; the rest are renumbered.
-        let after = apply(&s, SketchEdit::DeletePoint(0)).expect("applies");
+        let after = apply(&s, DrawingEdit::DeletePoint(0)).expect("applies");
         assert!(after.dampers.is_empty());
         assert_eq!((after.springs[0].a, after.springs[0].b), (1, 0));
         let at_points: Vec<usize> = after.forces.iter().map(|f| f.point).collect();
         assert_eq!(at_points, [1, 0]);
-        let after = apply(&after, SketchEdit::DeleteElement(Element::Force(0))).expect("applies");
+        let after = apply(&after, DrawingEdit::DeleteElement(Element::Force(0))).expect("applies");
         assert_eq!(after.forces.len(), 1);
     }
 }

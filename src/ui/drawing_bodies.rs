@@ -6,24 +6,24 @@ use eframe::egui;
 use linkage::Vec2;
 use linkage::scene::Models;
 
-use crate::builder::edit::SketchEdit;
+use crate::drawing::edit::DrawingEdit;
 use crate::state::AppState;
 use crate::ui::drawing;
 
 /// One row per link with a mass: "uniform", or its centroid (x, y) and inertia.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
-    let Some(b) = st.builder.as_ref() else {
+    let Some(b) = st.drawing.as_ref() else {
         return;
     };
-    let sketch = b.sketch();
-    let massive: Vec<usize> = (0..sketch.links.len())
-        .filter(|&l| sketch.links[l].mass_kg.is_some())
+    let drawing = b.drawing();
+    let massive: Vec<usize> = (0..drawing.links.len())
+        .filter(|&l| drawing.links[l].mass_kg.is_some())
         .collect();
-    if sketch.models == Models::Kinematics || massive.is_empty() {
+    if drawing.models == Models::Kinematics || massive.is_empty() {
         return;
     }
-    let unit = sketch.length_unit.to_metres();
-    let unit_label = crate::session::unit_label_of(sketch.length_unit);
+    let unit = drawing.length_unit.to_metres();
+    let unit_label = crate::session::unit_label_of(drawing.length_unit);
     let mut edits = Vec::new();
     ui.separator();
     ui.strong("Bodies");
@@ -31,8 +31,8 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         .num_columns(5)
         .show(ui, |ui| {
             for l in massive {
-                let link = &sketch.links[l];
-                let Some((centroid, inertia)) = sketch.body(l) else {
+                let link = &drawing.links[l];
+                let Some((centroid, inertia)) = drawing.body(l) else {
                     continue;
                 };
                 ui.label(&link.name);
@@ -64,7 +64,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
                     typed |= ui.add(r).changed();
                 }
                 if toggled || typed {
-                    edits.push(SketchEdit::SetBody {
+                    edits.push(DrawingEdit::SetBody {
                         link: l,
                         centroid: (!uniform).then(|| Vec2::new(x * unit, y * unit)),
                         inertia_kg_m2: (!uniform).then_some(i),

@@ -2,7 +2,7 @@
 //! to add and delete links and sliders in a mechanism one did not draw.
 
 use super::{
-    Sketch, SketchDamper, SketchForce, SketchLink, SketchPoint, SketchSlider, SketchSpring,
+    Drawing, DrawingDamper, DrawingForce, DrawingLink, DrawingPoint, DrawingSlider, DrawingSpring,
 };
 use crate::Solution;
 use crate::model::Mechanism;
@@ -37,7 +37,7 @@ impl std::fmt::Display for NotDrawable {
     }
 }
 
-impl Sketch {
+impl Drawing {
     /// The drawing of `scene` in `pose` (a solved pose of `m`, the scene's
     /// mechanism): every point where it is, links by their points with their masses,
     /// centroids and inertias, slider blocks as sliders on their guides, the driver,
@@ -49,26 +49,26 @@ impl Sketch {
         pose: &Solution,
     ) -> Result<Self, NotDrawable> {
         check_drawable(scene, m)?;
-        let mut sketch = Sketch::new(&scene.name);
-        sketch.length_unit = scene.length_unit;
-        sketch.speed = scene.driver.speed;
-        sketch.models = scene.models;
-        sketch.gravity = scene.forces.gravity.is_some();
+        let mut drawing = Drawing::new(&scene.name);
+        drawing.length_unit = scene.length_unit;
+        drawing.speed = scene.driver.speed;
+        drawing.models = scene.models;
+        drawing.gravity = scene.forces.gravity.is_some();
         let blocks: Vec<usize> = m.sliders.iter().map(|s| s.slider).collect();
         let moving: Vec<usize> = m.moving_links().filter(|l| !blocks.contains(l)).collect();
-        let index = add_points(&mut sketch, m, pose, &moving);
+        let index = add_points(&mut drawing, m, pose, &moving);
         let mut link_index = vec![None; m.links.len()];
         for &l in &moving {
             let link = &m.links[l];
             if l == m.driver.link {
-                sketch.driver = Some(sketch.links.len());
+                drawing.driver = Some(drawing.links.len());
             }
             if scene.output.as_deref() == Some(link.name.as_str()) {
-                sketch.output = Some(sketch.links.len());
+                drawing.output = Some(drawing.links.len());
             }
-            link_index[l] = Some(sketch.links.len());
+            link_index[l] = Some(drawing.links.len());
             let placed = &pose.links[l];
-            sketch.links.push(SketchLink {
+            drawing.links.push(DrawingLink {
                 name: link.name.clone(),
                 points: link.points.iter().filter_map(|(p, _)| index[*p]).collect(),
                 mass_kg: link.mass_kg,
@@ -83,15 +83,15 @@ impl Sketch {
             let Some(point) = index[s.point] else {
                 continue;
             };
-            sketch.sliders.push(SketchSlider {
+            drawing.sliders.push(DrawingSlider {
                 point,
                 guide: link_index[s.guide],
                 angle_rad: direction.y.atan2(direction.x),
                 mass_kg: m.links[s.slider].mass_kg,
             });
         }
-        add_force_elements(&mut sketch, scene, m, pose)?;
-        Ok(sketch)
+        add_force_elements(&mut drawing, scene, m, pose)?;
+        Ok(drawing)
     }
 }
 
@@ -99,13 +99,13 @@ impl Sketch {
 /// spring unstretched at the scene's start stays so where `pose` is the start; from
 /// any other pose its free length is the one at the start.
 fn add_force_elements(
-    sketch: &mut Sketch,
+    drawing: &mut Drawing,
     scene: &SceneFile,
     m: &Mechanism,
     pose: &Solution,
 ) -> Result<(), NotDrawable> {
     let find = |name: &str| {
-        sketch
+        drawing
             .points
             .iter()
             .position(|p| p.name == name)
@@ -125,7 +125,7 @@ fn add_force_elements(
                 at(&s.a).zip(at(&s.b)).map(|(p, q)| (p - q).norm())
             }
         };
-        springs.push(SketchSpring {
+        springs.push(DrawingSpring {
             a,
             b,
             k_n_per_m: s.k_n_per_m,
@@ -135,7 +135,7 @@ fn add_force_elements(
     let mut dampers = Vec::new();
     for d in &scene.forces.dampers {
         if let DamperSpec::Linear { a, b, c_n_s_per_m } = d {
-            dampers.push(SketchDamper {
+            dampers.push(DrawingDamper {
                 a: find(a)?,
                 b: find(b)?,
                 c_n_s_per_m: *c_n_s_per_m,
@@ -144,13 +144,13 @@ fn add_force_elements(
     }
     let mut forces = Vec::new();
     for f in &scene.forces.point_forces {
-        forces.push(SketchForce {
+        forces.push(DrawingForce {
             point: find(&f.point)?,
             force_n: Vec2::new(f.force_n.0, f.force_n.1),
             when: f.when,
         });
     }
-    (sketch.springs, sketch.dampers, sketch.forces) = (springs, dampers, forces);
+    (drawing.springs, drawing.dampers, drawing.forces) = (springs, dampers, forces);
     Ok(())
 }
 
@@ -190,7 +190,7 @@ fn check_drawable(scene: &SceneFile, m: &Mechanism) -> Result<(), NotDrawable> {
 /// drawing. A guide's point on ground that is no joint is left out: `to_scene` makes
 /// it again, and it is no pivot to draw.
 fn add_points(
-    sketch: &mut Sketch,
+    drawing: &mut Drawing,
     m: &Mechanism,
     pose: &Solution,
     moving: &[usize],
@@ -218,8 +218,8 @@ fn add_points(
         |p: usize| ground_points.iter().any(|(q, _)| *q == p) && !through_only.contains(&p);
     let mut index = vec![None; m.points.len()];
     for p in (0..m.points.len()).filter(|&p| on_moving(p) || on_ground(p)) {
-        index[p] = Some(sketch.points.len());
-        sketch.points.push(SketchPoint {
+        index[p] = Some(drawing.points.len());
+        drawing.points.push(DrawingPoint {
             name: m.points[p].name.clone(),
             at: pose.points[p].position,
             ground: on_ground(p),

@@ -1,8 +1,8 @@
 //! A mechanism as drawn: points at their places in the world, links as sets of
 //! points, sliders on guides, perhaps a driver; complete or not. An editor builds
-//! one click by click; [`Sketch::to_scene`] turns a complete one into a scene whose
+//! one click by click; [`Drawing::to_scene`] turns a complete one into a scene whose
 //! start pose is the drawing: every link's coordinates are the world's at input 0,
-//! and each dyad's assembly branch is read off the drawing. [`Sketch::from_pose`]
+//! and each dyad's assembly branch is read off the drawing. [`Drawing::from_pose`]
 //! (`from_scene.rs`) goes the other way.
 
 mod from_scene;
@@ -22,7 +22,7 @@ pub use from_scene::NotDrawable;
 
 /// A point of the drawing.
 #[derive(Clone, Debug, PartialEq)]
-pub struct SketchPoint {
+pub struct DrawingPoint {
     /// Unique name (a joint where links share it).
     pub name: String,
     /// Place in the world, m.
@@ -31,9 +31,9 @@ pub struct SketchPoint {
     pub ground: bool,
 }
 
-/// A rigid link through two or more points (indices into [`Sketch::points`]).
+/// A rigid link through two or more points (indices into [`Drawing::points`]).
 #[derive(Clone, Debug, PartialEq)]
-pub struct SketchLink {
+pub struct DrawingLink {
     /// Unique name.
     pub name: String,
     /// Its points; two make a binary link, three or more a plate.
@@ -43,11 +43,11 @@ pub struct SketchLink {
     /// Centroid in the world as drawn, m; `None`: the mean of its points.
     pub centroid: Option<Vec2>,
     /// Moment of inertia about the centroid, kg·m²; `None`: a uniform body's (see
-    /// [`Sketch::to_scene`]).
+    /// [`Drawing::to_scene`]).
     pub inertia_kg_m2: Option<f64>,
 }
 
-impl SketchLink {
+impl DrawingLink {
     /// A massless link named `name` through `points` (a uniform body once it is
     /// given a mass).
     pub fn new(name: &str, points: Vec<usize>) -> Self {
@@ -64,10 +64,10 @@ impl SketchLink {
 /// A slider block pinned at `point`, sliding on a guide line through the point's
 /// drawn place.
 #[derive(Clone, Debug, PartialEq)]
-pub struct SketchSlider {
+pub struct DrawingSlider {
     /// The block's pin (shared with the links that drive or follow it).
     pub point: usize,
-    /// The link carrying the guide (an index into [`Sketch::links`]); `None`: ground.
+    /// The link carrying the guide (an index into [`Drawing::links`]); `None`: ground.
     pub guide: Option<usize>,
     /// The guide's direction in the world as drawn, rad.
     pub angle_rad: f64,
@@ -75,9 +75,9 @@ pub struct SketchSlider {
     pub mass_kg: Option<f64>,
 }
 
-/// A linear spring between two points (indices into [`Sketch::points`]).
+/// A linear spring between two points (indices into [`Drawing::points`]).
 #[derive(Clone, Debug, PartialEq)]
-pub struct SketchSpring {
+pub struct DrawingSpring {
     /// One end.
     pub a: usize,
     /// The other end.
@@ -90,7 +90,7 @@ pub struct SketchSpring {
 
 /// A linear viscous damper between two points.
 #[derive(Clone, Debug, PartialEq)]
-pub struct SketchDamper {
+pub struct DrawingDamper {
     /// One end.
     pub a: usize,
     /// The other end.
@@ -101,7 +101,7 @@ pub struct SketchDamper {
 
 /// A constant force at a point.
 #[derive(Clone, Debug, PartialEq)]
-pub struct SketchForce {
+pub struct DrawingForce {
     /// Where it acts.
     pub point: usize,
     /// The force in the world, N.
@@ -112,22 +112,22 @@ pub struct SketchForce {
 
 /// A drawing of a mechanism.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Sketch {
+pub struct Drawing {
     /// Title of the scene it becomes.
     pub name: String,
     /// The unit the scene writes lengths in.
     pub length_unit: LengthUnit,
     /// The points.
-    pub points: Vec<SketchPoint>,
+    pub points: Vec<DrawingPoint>,
     /// The moving links (the frame is every ground point together).
-    pub links: Vec<SketchLink>,
+    pub links: Vec<DrawingLink>,
     /// The sliders.
-    pub sliders: Vec<SketchSlider>,
-    /// The input link (an index into [`Sketch::links`]), once picked.
+    pub sliders: Vec<DrawingSlider>,
+    /// The input link (an index into [`Drawing::links`]), once picked.
     pub driver: Option<usize>,
     /// The input speed.
     pub speed: Speed,
-    /// The main output for the time ratio (an index into [`Sketch::links`]); `None`:
+    /// The main output for the time ratio (an index into [`Drawing::links`]); `None`:
     /// the scene's default, its last link (slider blocks come after the links).
     pub output: Option<usize>,
     /// What the scene computes: kinematics, kinetostatics or dynamics, with the
@@ -136,11 +136,11 @@ pub struct Sketch {
     /// Gravity, 9.81 m/s² down the drawing's y-axis, on every mass.
     pub gravity: bool,
     /// Springs.
-    pub springs: Vec<SketchSpring>,
+    pub springs: Vec<DrawingSpring>,
     /// Dampers.
-    pub dampers: Vec<SketchDamper>,
+    pub dampers: Vec<DrawingDamper>,
     /// Point forces.
-    pub forces: Vec<SketchForce>,
+    pub forces: Vec<DrawingForce>,
 }
 
 /// The Grübler–Kutzbach count of a drawing.
@@ -164,7 +164,7 @@ impl Mobility {
 
 /// Why a drawing is not yet a mechanism.
 #[derive(Clone, Debug, PartialEq)]
-pub enum SketchProblem {
+pub enum DrawingProblem {
     /// Nothing moves yet.
     NoLinks,
     /// The count says `dof` degrees of freedom, not 1.
@@ -177,7 +177,7 @@ pub enum SketchProblem {
     Invalid(LinkageError),
 }
 
-impl std::fmt::Display for SketchProblem {
+impl std::fmt::Display for DrawingProblem {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
             Self::NoLinks => {
@@ -209,7 +209,7 @@ impl std::fmt::Display for SketchProblem {
     }
 }
 
-impl Sketch {
+impl Drawing {
     /// An empty drawing in millimetres, at 60 rpm.
     pub fn new(name: &str) -> Self {
         Self {
@@ -254,21 +254,21 @@ impl Sketch {
     /// the inertia of a uniform body there: a bar between its two points (m L²/12),
     /// or the triangle of its first three points (m (a² + b² + c²)/36); a slider
     /// block's mass sits at its pin.
-    pub fn to_scene(&self) -> Result<SceneFile, SketchProblem> {
+    pub fn to_scene(&self) -> Result<SceneFile, DrawingProblem> {
         if self.links.is_empty() {
-            return Err(SketchProblem::NoLinks);
+            return Err(DrawingProblem::NoLinks);
         }
         let mobility = self.mobility();
         if mobility.dof() != 1 {
-            return Err(SketchProblem::Mobility(mobility));
+            return Err(DrawingProblem::Mobility(mobility));
         }
-        let driver = self.driver.ok_or(SketchProblem::NoDriver)?;
+        let driver = self.driver.ok_or(DrawingProblem::NoDriver)?;
         let driver_link = &self.links[driver];
         if !driver_link.points.iter().any(|&p| self.points[p].ground) {
-            return Err(SketchProblem::DriverNotGrounded(driver_link.name.clone()));
+            return Err(DrawingProblem::DriverNotGrounded(driver_link.name.clone()));
         }
         let mut scene = self.scene_without_branches(driver);
-        let m = Mechanism::from_scene(&scene).map_err(SketchProblem::Invalid)?;
+        let m = Mechanism::from_scene(&scene).map_err(DrawingProblem::Invalid)?;
         // Every link sits at the world's own coordinates in the drawing.
         let drawn = vec![LinkMotion::default(); m.links.len()];
         match ClosedForm::new_without_branches(&m) {
@@ -283,7 +283,7 @@ impl Sketch {
                     .map(|l| (l.name.clone(), (0.0, 0.0, 0.0)))
                     .collect();
             }
-            Err(e) => return Err(SketchProblem::Invalid(e)),
+            Err(e) => return Err(DrawingProblem::Invalid(e)),
         }
         self.check_assembles_as_drawn(&scene)?;
         Ok(scene)
@@ -391,7 +391,7 @@ impl Sketch {
 
     /// The centroid (in the world as drawn, m) and the moment of inertia about it
     /// (kg·m²) the scene gives link `link`: its own where set, else a uniform body's
-    /// (see [`Sketch::to_scene`]); `None` for a massless link.
+    /// (see [`Drawing::to_scene`]); `None` for a massless link.
     pub fn body(&self, link: usize) -> Option<(Vec2, f64)> {
         let l = self.links.get(link)?;
         let kg = l.mass_kg?;
@@ -444,21 +444,20 @@ impl Sketch {
     }
 
     /// Solves the scene at its start: every point must land where it was drawn.
-    fn check_assembles_as_drawn(&self, scene: &SceneFile) -> Result<(), SketchProblem> {
-        let m = Mechanism::from_scene(scene).map_err(SketchProblem::Invalid)?;
+    fn check_assembles_as_drawn(&self, scene: &SceneFile) -> Result<(), DrawingProblem> {
+        let m = Mechanism::from_scene(scene).map_err(DrawingProblem::Invalid)?;
         let size = m.size_m.max(1e-9);
-        let mut k = Kinematics::new(m).map_err(SketchProblem::Invalid)?;
-        let pose = k.solve(0.0).map_err(SketchProblem::Invalid)?;
+        let mut k = Kinematics::new(m).map_err(DrawingProblem::Invalid)?;
+        let pose = k.solve(0.0).map_err(DrawingProblem::Invalid)?;
         let m = k.mechanism();
         for p in &self.points {
             let Some(i) = m.points.iter().position(|q| q.name == p.name) else {
                 continue;
             };
             if (pose.points[i].position - p.at).norm() > 1e-9 * size {
-                return Err(SketchProblem::Invalid(LinkageError::SceneInvalid(format!(
-                    "the chain does not assemble as drawn at {}",
-                    p.name
-                ))));
+                return Err(DrawingProblem::Invalid(LinkageError::SceneInvalid(
+                    format!("the chain does not assemble as drawn at {}", p.name),
+                )));
             }
         }
         Ok(())

@@ -1,5 +1,5 @@
 //! What an edit of the drawing says, as a value (the canvas turns clicks and drags
-//! into these), and why one is refused. A leaf of the builder: [`super::edit`] and
+//! into these), and why one is refused. A leaf of the drawing: [`super::edit`] and
 //! [`super::loads`] make the edits.
 
 use linkage::Vec2;
@@ -25,7 +25,7 @@ pub enum Named {
 
 /// One change to a drawing.
 #[derive(Clone, Debug, PartialEq)]
-pub enum SketchEdit {
+pub enum DrawingEdit {
     /// A new ground pivot at a world place.
     AddPivot(Vec2),
     /// Fixes an existing point to the frame, or frees it.

@@ -1,12 +1,12 @@
 //! A drawing as text, so that an unfinished one survives a reload (the browser keeps
-//! it in local storage). RON over a plain mirror of [`Sketch`]; reading checks every
+//! it in local storage). RON over a plain mirror of [`Drawing`]; reading checks every
 //! index, since stored text is user input like any other.
 
 use linkage::Vec2;
-use linkage::scene::{ForceWhen, LengthUnit, Models, Speed};
-use linkage::sketch::{
-    Sketch, SketchDamper, SketchForce, SketchLink, SketchPoint, SketchSlider, SketchSpring,
+use linkage::drawing::{
+    Drawing, DrawingDamper, DrawingForce, DrawingLink, DrawingPoint, DrawingSlider, DrawingSpring,
 };
+use linkage::scene::{ForceWhen, LengthUnit, Models, Speed};
 use serde::{Deserialize, Serialize};
 
 /// The stored form: points as `(name, x m, y m, ground)`, links as `(name, points,
@@ -19,7 +19,7 @@ type StoredBody = (Option<(f64, f64)>, Option<f64>);
 
 #[derive(Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-struct StoredSketch {
+struct StoredDrawing {
     name: String,
     length_unit: LengthUnit,
     points: Vec<(String, f64, f64, bool)>,
@@ -41,46 +41,46 @@ struct StoredSketch {
 }
 
 /// The drawing as RON text.
-pub fn to_text(sketch: &Sketch) -> String {
-    let stored = StoredSketch {
-        name: sketch.name.clone(),
-        length_unit: sketch.length_unit,
-        points: sketch
+pub fn to_text(drawing: &Drawing) -> String {
+    let stored = StoredDrawing {
+        name: drawing.name.clone(),
+        length_unit: drawing.length_unit,
+        points: drawing
             .points
             .iter()
             .map(|p| (p.name.clone(), p.at.x, p.at.y, p.ground))
             .collect(),
-        links: sketch
+        links: drawing
             .links
             .iter()
             .map(|l| (l.name.clone(), l.points.clone(), l.mass_kg))
             .collect(),
-        sliders: sketch
+        sliders: drawing
             .sliders
             .iter()
             .map(|s| (s.point, s.guide, s.angle_rad, s.mass_kg))
             .collect(),
-        driver: sketch.driver,
-        output: sketch.output,
-        speed: sketch.speed,
-        models: sketch.models,
-        gravity: sketch.gravity,
-        bodies: sketch
+        driver: drawing.driver,
+        output: drawing.output,
+        speed: drawing.speed,
+        models: drawing.models,
+        gravity: drawing.gravity,
+        bodies: drawing
             .links
             .iter()
             .map(|l| (l.centroid.map(|c| (c.x, c.y)), l.inertia_kg_m2))
             .collect(),
-        springs: sketch
+        springs: drawing
             .springs
             .iter()
             .map(|s| (s.a, s.b, s.k_n_per_m, s.free_length_m))
             .collect(),
-        dampers: sketch
+        dampers: drawing
             .dampers
             .iter()
             .map(|d| (d.a, d.b, d.c_n_s_per_m))
             .collect(),
-        forces: sketch
+        forces: drawing
             .forces
             .iter()
             .map(|f| (f.point, f.force_n.x, f.force_n.y, f.when))
@@ -91,8 +91,8 @@ pub fn to_text(sketch: &Sketch) -> String {
 }
 
 /// The drawing from [`to_text`]'s text, or why it is not one.
-pub fn from_text(text: &str) -> Result<Sketch, String> {
-    let s: StoredSketch = ron::from_str(text).map_err(|e| format!("a stored drawing: {e}"))?;
+pub fn from_text(text: &str) -> Result<Drawing, String> {
+    let s: StoredDrawing = ron::from_str(text).map_err(|e| format!("a stored drawing: {e}"))?;
     if !indices_valid(&s) {
         return Err("a stored drawing names a point or link it does not have".into());
     }
@@ -103,13 +103,13 @@ pub fn from_text(text: &str) -> Result<Sketch, String> {
         );
     }
     let bodies = s.bodies.into_iter().chain(std::iter::repeat((None, None)));
-    Ok(Sketch {
+    Ok(Drawing {
         name: s.name,
         length_unit: s.length_unit,
         points: s
             .points
             .into_iter()
-            .map(|(name, x, y, ground)| SketchPoint {
+            .map(|(name, x, y, ground)| DrawingPoint {
                 name,
                 at: Vec2::new(x, y),
                 ground,
@@ -120,7 +120,7 @@ pub fn from_text(text: &str) -> Result<Sketch, String> {
             .into_iter()
             .zip(bodies)
             .map(
-                |((name, points, mass_kg), (centroid, inertia))| SketchLink {
+                |((name, points, mass_kg), (centroid, inertia))| DrawingLink {
                     name,
                     points,
                     mass_kg,
@@ -132,7 +132,7 @@ pub fn from_text(text: &str) -> Result<Sketch, String> {
         sliders: s
             .sliders
             .into_iter()
-            .map(|(point, guide, angle_rad, mass_kg)| SketchSlider {
+            .map(|(point, guide, angle_rad, mass_kg)| DrawingSlider {
                 point,
                 guide,
                 angle_rad,
@@ -147,7 +147,7 @@ pub fn from_text(text: &str) -> Result<Sketch, String> {
         springs: s
             .springs
             .into_iter()
-            .map(|(a, b, k_n_per_m, free_length_m)| SketchSpring {
+            .map(|(a, b, k_n_per_m, free_length_m)| DrawingSpring {
                 a,
                 b,
                 k_n_per_m,
@@ -157,12 +157,12 @@ pub fn from_text(text: &str) -> Result<Sketch, String> {
         dampers: s
             .dampers
             .into_iter()
-            .map(|(a, b, c_n_s_per_m)| SketchDamper { a, b, c_n_s_per_m })
+            .map(|(a, b, c_n_s_per_m)| DrawingDamper { a, b, c_n_s_per_m })
             .collect(),
         forces: s
             .forces
             .into_iter()
-            .map(|(point, x, y, when)| SketchForce {
+            .map(|(point, x, y, when)| DrawingForce {
                 point,
                 force_n: Vec2::new(x, y),
                 when,
@@ -172,7 +172,7 @@ pub fn from_text(text: &str) -> Result<Sketch, String> {
 }
 
 /// Whether every point and link index names one the drawing has.
-fn indices_valid(s: &StoredSketch) -> bool {
+fn indices_valid(s: &StoredDrawing) -> bool {
     let n = s.points.len();
     let links = s.links.len();
     let points = s
@@ -193,7 +193,7 @@ fn indices_valid(s: &StoredSketch) -> bool {
 }
 
 /// Whether every place, mass and force element is a valid number.
-fn values_valid(s: &StoredSketch) -> bool {
+fn values_valid(s: &StoredDrawing) -> bool {
     let positive = |v: f64| v.is_finite() && v > 0.0;
     let at_least_zero = |v: f64| v.is_finite() && v >= 0.0;
     s.points.iter().all(|p| p.1.is_finite() && p.2.is_finite())
@@ -216,31 +216,44 @@ fn values_valid(s: &StoredSketch) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::builder::edit::{Body, End, SketchEdit, apply};
+    use crate::drawing::edit::{Body, DrawingEdit, End, apply};
+
+    /// A drawing kept in the browser's storage by an earlier version reads in this
+    /// one: the text names fields, never a type, so renaming the types (a sketch
+    /// became a drawing) changes nothing stored.
+    #[test]
+    fn the_stored_text_names_no_type() {
+        let text = to_text(&Drawing::new("d"));
+        assert!(
+            !text.contains("Drawing") && !text.contains("Sketch"),
+            "{text}"
+        );
+        assert!(from_text(&text).is_ok());
+    }
 
     #[test]
     fn a_drawing_reads_back_as_written_and_damage_is_refused() {
-        let mut s = Sketch::new("stored");
+        let mut s = Drawing::new("stored");
         for edit in [
-            SketchEdit::AddPivot(Vec2::new(0.0, 0.0)),
-            SketchEdit::AddLink(End::Point(0), End::New(Vec2::new(0.0, 0.1))),
-            SketchEdit::AddLink(End::Point(1), End::New(Vec2::new(0.2, -0.03))),
-            SketchEdit::AddSlider {
+            DrawingEdit::AddPivot(Vec2::new(0.0, 0.0)),
+            DrawingEdit::AddLink(End::Point(0), End::New(Vec2::new(0.0, 0.1))),
+            DrawingEdit::AddLink(End::Point(1), End::New(Vec2::new(0.2, -0.03))),
+            DrawingEdit::AddSlider {
                 point: 2,
                 angle_rad: 0.0,
             },
-            SketchEdit::SetDriver(0),
-            SketchEdit::SetModels(Models::Kinetostatics),
-            SketchEdit::SetMass(Body::Block(0), Some(120.0)),
-            SketchEdit::SetGravity(true),
-            SketchEdit::AddSpring(0, 2),
-            SketchEdit::SetSpring {
+            DrawingEdit::SetDriver(0),
+            DrawingEdit::SetModels(Models::Kinetostatics),
+            DrawingEdit::SetMass(Body::Block(0), Some(120.0)),
+            DrawingEdit::SetGravity(true),
+            DrawingEdit::AddSpring(0, 2),
+            DrawingEdit::SetSpring {
                 spring: 0,
                 k_n_per_m: 250.0,
                 free_length_m: Some(0.15),
             },
-            SketchEdit::AddDamper(1, 2),
-            SketchEdit::AddForce(2),
+            DrawingEdit::AddDamper(1, 2),
+            DrawingEdit::AddForce(2),
         ] {
             s = apply(&s, edit).expect("applies");
         }

@@ -5,13 +5,13 @@
 
 use eframe::egui::{self, Align2, Color32, FontId, Pos2, Rect, Sense, Stroke};
 use linkage::Vec2;
-use linkage::sketch::Sketch;
+use linkage::drawing::Drawing;
 
-use crate::builder::edit::{End, SketchEdit};
-use crate::builder::{Pending, Tool};
+use crate::drawing::edit::{DrawingEdit, End};
+use crate::drawing::{Pending, Tool};
 use crate::render::Renderer;
+use crate::render::drawing_shapes::build_drawing;
 use crate::render::shape::SharedShapes;
-use crate::render::sketch_shapes::build_sketch;
 use crate::render::view::Camera;
 use crate::state::AppState;
 use crate::ui::drawing;
@@ -36,11 +36,11 @@ pub fn show(
 ) {
     let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
     st.controls.view = Some([rect.min.x, rect.min.y, rect.max.x, rect.max.y]);
-    let Some(b) = st.builder.as_mut() else {
+    let Some(b) = st.drawing.as_mut() else {
         return;
     };
     if b.fit_pending && rect.width() > 1.0 {
-        camera.fit(bounds(b.sketch()), rect);
+        camera.fit(bounds(b.drawing()), rect);
         b.fit_pending = false;
     }
     let dragging_point = pointer(ui, &response, rect, st, camera);
@@ -49,11 +49,11 @@ pub fn show(
 }
 
 /// The drawing's box, or a default view when it has fewer than two points.
-fn bounds(sketch: &Sketch) -> [f64; 4] {
-    if sketch.points.len() < 2 {
+fn bounds(drawing: &Drawing) -> [f64; 4] {
+    if drawing.points.len() < 2 {
         return EMPTY_VIEW_M;
     }
-    sketch.points.iter().fold(
+    drawing.points.iter().fold(
         [
             f64::INFINITY,
             f64::INFINITY,
@@ -80,7 +80,7 @@ fn pointer(
     st: &mut AppState,
     cam: &Camera,
 ) -> bool {
-    let Some(b) = st.builder.as_ref() else {
+    let Some(b) = st.drawing.as_ref() else {
         return false;
     };
     let tool = b.tool;
@@ -98,49 +98,49 @@ fn pointer(
 
 /// The edit a click at `at` makes with the tool in hand (a link's first click only
 /// notes its end).
-fn click(st: &mut AppState, cam: &Camera, at: Pos2, rect: Rect) -> Option<SketchEdit> {
-    let b = st.builder.as_mut()?;
+fn click(st: &mut AppState, cam: &Camera, at: Pos2, rect: Rect) -> Option<DrawingEdit> {
+    let b = st.drawing.as_mut()?;
     let mut pending = b.pending.take();
-    let sketch = b.sketch();
-    let near = point_near(sketch, cam, at, rect);
+    let drawing = b.drawing();
+    let near = point_near(drawing, cam, at, rect);
     let place = snapped(cam, at, rect);
     let end = near.map_or(End::New(place), End::Point);
     let edit = match b.tool {
         Tool::Pivot => Some(match near {
-            Some(point) => SketchEdit::SetGround {
+            Some(point) => DrawingEdit::SetGround {
                 point,
                 ground: true,
             },
-            None => SketchEdit::AddPivot(place),
+            None => DrawingEdit::AddPivot(place),
         }),
         Tool::Link => match pending.take() {
             None | Some(Pending::ElementFrom { .. }) => {
-                pending = Some(match (near, link_near(sketch, cam, at, rect)) {
+                pending = Some(match (near, link_near(drawing, cam, at, rect)) {
                     (None, Some(link)) => Pending::OnLink(link),
                     _ => Pending::LinkFrom(end),
                 });
                 None
             }
-            Some(Pending::LinkFrom(from)) => Some(SketchEdit::AddLink(from, end)),
-            Some(Pending::OnLink(link)) => Some(SketchEdit::AddPointToLink { link, end }),
+            Some(Pending::LinkFrom(from)) => Some(DrawingEdit::AddLink(from, end)),
+            Some(Pending::OnLink(link)) => Some(DrawingEdit::AddPointToLink { link, end }),
         },
-        Tool::Slider => near.map(|point| SketchEdit::AddSlider {
+        Tool::Slider => near.map(|point| DrawingEdit::AddSlider {
             point,
             angle_rad: 0.0,
         }),
-        Tool::Driver => link_at(sketch, cam, at, rect).map(SketchEdit::SetDriver),
+        Tool::Driver => link_at(drawing, cam, at, rect).map(DrawingEdit::SetDriver),
         Tool::Delete => match near {
-            Some(p) => Some(SketchEdit::DeletePoint(p)),
-            None => link_near(sketch, cam, at, rect).map(SketchEdit::DeleteLink),
+            Some(p) => Some(DrawingEdit::DeletePoint(p)),
+            None => link_near(drawing, cam, at, rect).map(DrawingEdit::DeleteLink),
         },
         Tool::Spring | Tool::Damper => {
             let damper = b.tool == Tool::Damper;
             match (pending.take(), near) {
                 (Some(Pending::ElementFrom { point: a, .. }), Some(point)) if damper => {
-                    Some(SketchEdit::AddDamper(a, point))
+                    Some(DrawingEdit::AddDamper(a, point))
                 }
                 (Some(Pending::ElementFrom { point: a, .. }), Some(point)) => {
-                    Some(SketchEdit::AddSpring(a, point))
+                    Some(DrawingEdit::AddSpring(a, point))
                 }
                 (_, Some(point)) => {
                     pending = Some(Pending::ElementFrom { damper, point });
@@ -149,7 +149,7 @@ fn click(st: &mut AppState, cam: &Camera, at: Pos2, rect: Rect) -> Option<Sketch
                 (_, None) => None,
             }
         }
-        Tool::Force => near.map(SketchEdit::AddForce),
+        Tool::Force => near.map(DrawingEdit::AddForce),
         Tool::Move => None,
     };
     b.pending = pending;
@@ -165,7 +165,7 @@ fn drag_point(
     st: &mut AppState,
     cam: &Camera,
 ) -> bool {
-    let Some(b) = st.builder.as_mut() else {
+    let Some(b) = st.drawing.as_mut() else {
         return false;
     };
     if response.drag_started()
@@ -173,7 +173,7 @@ fn drag_point(
             .input(|i| i.pointer.press_origin())
             .or_else(|| response.interact_pointer_pos())
     {
-        b.dragged = point_near(b.sketch(), cam, at, rect);
+        b.dragged = point_near(b.drawing(), cam, at, rect);
     }
     if response.drag_stopped() || !ui.input(|i| i.pointer.any_down()) {
         b.end_gesture();
@@ -183,9 +183,9 @@ fn drag_point(
         return false;
     };
     if let Some(at) = response.interact_pointer_pos() {
-        let to = aligned(b.sketch(), point, snapped(cam, at, rect), cam, at, rect);
-        if b.sketch().points[point].at != to {
-            drawing::edit(st, SketchEdit::MovePoint { point, to });
+        let to = aligned(b.drawing(), point, snapped(cam, at, rect), cam, at, rect);
+        if b.drawing().points[point].at != to {
+            drawing::edit(st, DrawingEdit::MovePoint { point, to });
         }
     }
     true
@@ -204,14 +204,14 @@ fn snapped(cam: &Camera, at: Pos2, rect: Rect) -> Vec2 {
 /// `to` moved into line with any other point whose x or y is within [`ALIGN_PT`] of
 /// the pointer: a drag lines points up horizontally and vertically.
 fn aligned(
-    sketch: &Sketch,
+    drawing: &Drawing,
     moving: usize,
     mut to: Vec2,
     cam: &Camera,
     at: Pos2,
     rect: Rect,
 ) -> Vec2 {
-    for (_, p) in sketch
+    for (_, p) in drawing
         .points
         .iter()
         .enumerate()
@@ -241,9 +241,9 @@ fn nearest<T>(distances: impl Iterator<Item = (f32, T)>) -> Option<T> {
 }
 
 /// The point within [`GRAB_PT`] of `at`, the nearest.
-fn point_near(sketch: &Sketch, cam: &Camera, at: Pos2, rect: Rect) -> Option<usize> {
+fn point_near(drawing: &Drawing, cam: &Camera, at: Pos2, rect: Rect) -> Option<usize> {
     nearest(
-        sketch
+        drawing
             .points
             .iter()
             .enumerate()
@@ -252,17 +252,17 @@ fn point_near(sketch: &Sketch, cam: &Camera, at: Pos2, rect: Rect) -> Option<usi
 }
 
 /// The link whose outline passes within [`GRAB_PT`] of `at`, the nearest.
-fn link_near(sketch: &Sketch, cam: &Camera, at: Pos2, rect: Rect) -> Option<usize> {
+fn link_near(drawing: &Drawing, cam: &Camera, at: Pos2, rect: Rect) -> Option<usize> {
     let distance = |a: Pos2, b: Pos2| {
         let ab = b - a;
         let t = ((at - a).dot(ab) / ab.length_sq().max(1e-6)).clamp(0.0, 1.0);
         (a + t * ab).distance(at)
     };
-    nearest(sketch.links.iter().enumerate().flat_map(|(l, link)| {
+    nearest(drawing.links.iter().enumerate().flat_map(|(l, link)| {
         let pts: Vec<Pos2> = link
             .points
             .iter()
-            .map(|&p| screen(cam, sketch.points[p].at, rect))
+            .map(|&p| screen(cam, drawing.points[p].at, rect))
             .collect();
         let n = pts.len();
         (0..n).map(move |i| (distance(pts[i], pts[(i + 1) % n]), l))
@@ -270,10 +270,10 @@ fn link_near(sketch: &Sketch, cam: &Camera, at: Pos2, rect: Rect) -> Option<usiz
 }
 
 /// The link under `at`, or one through the point under it (the first).
-fn link_at(sketch: &Sketch, cam: &Camera, at: Pos2, rect: Rect) -> Option<usize> {
-    link_near(sketch, cam, at, rect).or_else(|| {
-        let p = point_near(sketch, cam, at, rect)?;
-        sketch.links.iter().position(|l| l.points.contains(&p))
+fn link_at(drawing: &Drawing, cam: &Camera, at: Pos2, rect: Rect) -> Option<usize> {
+    link_near(drawing, cam, at, rect).or_else(|| {
+        let p = point_near(drawing, cam, at, rect)?;
+        drawing.links.iter().position(|l| l.points.contains(&p))
     })
 }
 
@@ -286,7 +286,7 @@ fn draw(
     shapes: &SharedShapes,
     renderer: Option<&Renderer>,
 ) {
-    let Some(b) = st.builder.as_ref() else {
+    let Some(b) = st.drawing.as_ref() else {
         return;
     };
     let painter = ui.painter_at(rect);
@@ -297,12 +297,12 @@ fn draw(
         _ => b.dragged,
     };
     if let Ok(mut list) = shapes.lock() {
-        build_sketch(&mut list, b.sketch(), camera, marked);
+        build_drawing(&mut list, b.drawing(), camera, marked);
     }
     let view = camera.uniform(rect, ui.ctx().pixels_per_point());
     crate::ui::viewport::paint_shapes(&painter, rect, view, shapes, renderer);
     let font = FontId::proportional(13.0);
-    for p in &b.sketch().points {
+    for p in &b.drawing().points {
         let s = screen(camera, p.at, rect);
         painter.text(
             s + egui::vec2(8.0, -8.0),
@@ -314,7 +314,7 @@ fn draw(
     }
     let from = match b.pending {
         Some(Pending::LinkFrom(End::Point(p))) => {
-            Some(screen(camera, b.sketch().points[p].at, rect))
+            Some(screen(camera, b.drawing().points[p].at, rect))
         }
         Some(Pending::LinkFrom(End::New(at))) => Some(screen(camera, at, rect)),
         _ => None,
