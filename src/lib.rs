@@ -25,10 +25,7 @@ pub fn controls_json() -> String {
 pub use app::LinkageApp;
 pub use state::AppState;
 // The model lives in its own crate (no GUI); the app and its tests reach it here too.
-pub use linkage_model::{
-    catalog, drawing, path_inputs, path_job, session, synthesis, synthesis_function,
-    synthesis_motion,
-};
+pub use linkage_model::{catalog, drawing, job, session, synthesis};
 
 pub use start::StartOptions;
 

@@ -76,7 +76,7 @@ struct PublishedSearch {
     /// What a slice may spend, ms.
     slice_budget_ms: f64,
     /// How the slices went.
-    slices: crate::path_job::Slices,
+    slices: crate::synthesis::path_job::Slices,
 }
 
 /// The path search of the synthesis window, if one was started.
@@ -91,7 +91,7 @@ fn path_search(synthesis: Option<&crate::ui::synthesis::SynthesisView>) -> Optio
         solutions: p.solutions,
         best_relative_error: p.best_relative_error,
         search_ms: p.seconds * 1e3,
-        slice_budget_ms: crate::ui::synthesis_path::SLICE_MS,
+        slice_budget_ms: crate::ui::synthesis::path::SLICE_MS,
         slices: job.slices(),
     })
 }

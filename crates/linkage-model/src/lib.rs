@@ -8,10 +8,5 @@
 pub mod catalog;
 pub mod drawing;
 pub mod job;
-pub mod path_inputs;
-pub mod path_job;
 pub mod session;
 pub mod synthesis;
-pub mod synthesis_design;
-pub mod synthesis_function;
-pub mod synthesis_motion;

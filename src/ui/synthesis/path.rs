@@ -9,10 +9,10 @@ use eframe::egui;
 use egui_plot::{Line, Plot, PlotPoint, PlotPoints, Points, Text};
 use linkage::synthesis::path::{PathDesign, PathLinkage};
 
-use crate::path_inputs::{Member, PathInputs, design_of, member_of, turns_with};
-use crate::path_job::PathJob;
+use crate::synthesis::path_inputs::{Member, PathInputs, design_of, member_of, turns_with};
+use crate::synthesis::path_job::PathJob;
 use crate::ui::control_map::{ControlKind, ControlMap};
-use crate::ui::synthesis_design::{Chosen, design_view};
+use crate::ui::synthesis::design::{Chosen, design_view};
 
 /// Milliseconds of search per frame in the browser.
 pub const SLICE_MS: f64 = 6.0;

@@ -6,10 +6,10 @@
 use eframe::egui;
 use egui_plot::{Legend, Line, Plot, PlotPoints, Points};
 
+use crate::synthesis::function::{Desired, FunctionSpec};
+use crate::synthesis::motion::Construction;
 use crate::synthesis::{Figure, SynthInputs};
-use crate::synthesis_function::{Desired, FunctionSpec};
-use crate::synthesis_motion::Construction;
-use crate::ui::fields::{number, text_area};
+use crate::ui::synthesis::fields::{number, text_area};
 
 /// The function tab: typed precision points, or a function and its ranges.
 pub fn function_inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {

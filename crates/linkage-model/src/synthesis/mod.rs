@@ -2,10 +2,16 @@
 //! kind, in the units a designer types (mm, deg), and the design as a table of words
 //! and a scene. The solver does the synthesis (`linkage::synthesis`).
 
+pub mod design;
+pub mod function;
+pub mod motion;
+pub mod path_inputs;
+pub mod path_job;
+
 use linkage::synthesis::{CrankRocker, DieCutterSpec, crank_rocker, die_cutter, four_bar_scene};
 
-pub use crate::synthesis_design::{Design, Figure, SynthError};
-use crate::synthesis_design::{deg, mm, row};
+pub use crate::synthesis::design::{Design, Figure, SynthError};
+use crate::synthesis::design::{deg, mm, row};
 
 /// Which design.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -58,13 +64,13 @@ pub struct SynthInputs {
     /// Function: ground AD, mm.
     pub function_ground_mm: f64,
     /// Function: the function to generate (else the typed points).
-    pub function_spec: Option<crate::synthesis_function::FunctionSpec>,
+    pub function_spec: Option<crate::synthesis::function::FunctionSpec>,
     /// Motion: the body's three to five positions, `x_mm, y_mm, angle_deg` per line.
     pub poses: String,
     /// Motion: what fixes the four-bar (moving pivots, fixed pivots, Burmester pair).
-    pub motion: crate::synthesis_motion::MotionChoice,
+    pub motion: crate::synthesis::motion::MotionChoice,
     /// Path: the targets and constraints of the search.
-    pub path: crate::path_inputs::PathInputs,
+    pub path: crate::synthesis::path_inputs::PathInputs,
 }
 
 impl Default for SynthInputs {
@@ -79,8 +85,8 @@ impl Default for SynthInputs {
             function_ground_mm: 100.0,
             function_spec: None,
             poses: "0, 0, 0\n200, 100, 20\n350, 300, 45\n".into(),
-            motion: crate::synthesis_motion::MotionChoice::default(),
-            path: crate::path_inputs::PathInputs::default(),
+            motion: crate::synthesis::motion::MotionChoice::default(),
+            path: crate::synthesis::path_inputs::PathInputs::default(),
         }
     }
 }
@@ -95,14 +101,14 @@ pub fn design(inputs: &SynthInputs) -> Result<Design, SynthError> {
         SynthKind::CrankRocker => rocker(inputs.rocker),
         SynthKind::DieCutter => die(inputs.die),
         SynthKind::Function => match &inputs.function_spec {
-            Some(spec) => crate::synthesis_function::from_spec(spec, inputs.function_ground_mm),
-            None => crate::synthesis_function::from_points(
+            Some(spec) => crate::synthesis::function::from_spec(spec, inputs.function_ground_mm),
+            None => crate::synthesis::function::from_points(
                 &inputs.function_points,
                 inputs.function_ground_mm,
             ),
         },
-        SynthKind::Motion => crate::synthesis_motion::motion(&inputs.poses, &inputs.motion),
-        // Not closed form: the window runs its search (`crate::path_job`).
+        SynthKind::Motion => crate::synthesis::motion::motion(&inputs.poses, &inputs.motion),
+        // Not closed form: the window runs its search (`crate::synthesis::path_job`).
         SynthKind::Path => Err(SynthError::PathIsSearched),
     }
 }

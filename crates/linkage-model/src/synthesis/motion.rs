@@ -8,8 +8,8 @@ use linkage::synthesis::motion::{BodyPose, MotionFourBar};
 use linkage::synthesis::positions::{PositionsChoice, PositionsDesign, through_positions};
 use linkage::synthesis::rows::read_rows;
 
-pub use crate::synthesis_design::Construction;
-use crate::synthesis_design::{Design, Figure, SynthError, row};
+pub use crate::synthesis::design::Construction;
+use crate::synthesis::design::{Design, Figure, SynthError, row};
 
 /// What fixes the four-bar, per number of positions.
 #[derive(Clone, Debug, PartialEq)]

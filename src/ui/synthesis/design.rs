@@ -22,7 +22,7 @@ pub fn design_view(
     controls: &mut ControlMap,
     design: &Design,
 ) -> Option<Chosen> {
-    crate::ui::synthesis_figure::figure(ui, &design.figure);
+    crate::ui::synthesis::figure::figure(ui, &design.figure);
     let chosen = ui
         .horizontal(|ui| {
             let open = ui.button("Open as scene");

@@ -5,6 +5,11 @@
 //! points). Each shows its design table; "Open as scene" opens it (asking first
 //! over unsaved edits), unsaved. The designs are closed form: computed on the click.
 
+pub mod design;
+pub mod fields;
+pub mod figure;
+pub mod path;
+
 use eframe::egui;
 
 use crate::session::SceneEdit;
@@ -12,9 +17,9 @@ use crate::session::{SceneSource, Session};
 use crate::state::AppState;
 use crate::synthesis::{Design, SynthError, SynthInputs, SynthKind};
 use crate::ui::control_map::ControlKind;
-use crate::ui::fields::number;
-pub use crate::ui::synthesis_design::{Chosen, design_view};
-use crate::ui::synthesis_path::PathTab;
+pub use crate::ui::synthesis::design::{Chosen, design_view};
+use crate::ui::synthesis::fields::number;
+use crate::ui::synthesis::path::PathTab;
 
 /// The window's inputs and its last design.
 #[derive(Default)]
@@ -95,7 +100,7 @@ pub fn window(ctx: &egui::Context, st: &mut AppState, slot: &mut Option<Synthesi
 /// The chosen tab's inputs, design and result; returns what to do with a design.
 fn tab(ui: &mut egui::Ui, st: &mut AppState, view: &mut SynthesisView) -> Option<Chosen> {
     if view.inputs.kind == SynthKind::Path {
-        return crate::ui::synthesis_path::show(
+        return crate::ui::synthesis::path::show(
             ui,
             &mut st.controls,
             &mut view.inputs.path,
@@ -129,12 +134,12 @@ fn inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {
             number(ui, rpm, "crank speed (rpm)", 1.0);
         }
         SynthKind::Function => {
-            crate::ui::synthesis_figure::function_inputs(ui, view);
+            crate::ui::synthesis::figure::function_inputs(ui, view);
             number(ui, &mut view.function_ground_mm, "ground AD (mm)", 1.0);
         }
         // Shown by `synthesis_path`.
         SynthKind::Path => {}
-        SynthKind::Motion => crate::ui::synthesis_figure::motion_inputs(ui, view),
+        SynthKind::Motion => crate::ui::synthesis::figure::motion_inputs(ui, view),
     }
 }
 

@@ -6,7 +6,7 @@ use linkage::synthesis::function::{
     FunctionFourBar, PrecisionPoint, chebyshev_spacing, error_curve, freudenstein, structural_error,
 };
 
-use crate::synthesis_design::{
+use crate::synthesis::design::{
     Design, Figure, FunctionSpecError, SynthError, deg, mm, numbers, row,
 };
 

@@ -8,7 +8,7 @@ use linkage::synthesis::path::{
 };
 use linkage::synthesis::rows::{RowError, read_rows};
 
-use crate::synthesis_design::{Design, Figure};
+use crate::synthesis::design::{Design, Figure};
 
 /// One target, in the units the window shows.
 #[derive(Clone, Copy, Debug, PartialEq)]
