@@ -1,5 +1,6 @@
-//! The commands: each writes its output as it goes (a sweep row by row), or fails with
-//! a message; a failed write is kept apart so that a closed pipe ends quietly.
+//! The commands without a file of their own (sweep, at, report, share, synth): each
+//! writes its output as it goes (a sweep row by row), or fails with a `CliError`; a
+//! failed write is kept apart so that a closed pipe ends quietly.
 
 use std::io::Write;
 
@@ -8,7 +9,7 @@ use linkage::synthesis::{DieCutterSpec, crank_rocker, die_cutter, die_cutter_as_
 use linkage::{Kinematics, Mechanism, Solution};
 use serde_json::{Value, json};
 
-use crate::args::{Command, Format, SceneArgs, SynthCommand};
+use crate::args::{Format, SceneArgs, SynthCommand};
 use crate::error::{CliError, Result};
 use crate::io::{check_finite, describe, json_text, load, to_csv};
 
@@ -29,38 +30,9 @@ pub const MAX_CSV_STEPS: usize = 100_000_000;
 /// See [`MAX_CSV_STEPS`].
 pub const MAX_JSON_STEPS: usize = 100_000;
 
-/// Runs one command, writing its output to `out`.
-pub fn run(command: Command, out: &mut dyn Write) -> Result<()> {
-    let text = match command {
-        Command::Sweep {
-            scene,
-            steps,
-            format,
-        } => return sweep(&scene, steps, format, out),
-        Command::At {
-            scene,
-            input_deg,
-            format,
-        } => at(&scene, input_deg, format),
-        Command::Report { scene } => report(&scene),
-        Command::Synth { what } => synth(what),
-        Command::Diagram { scene, args } => crate::diagram::run(&scene, &args),
-        Command::Share { scene, decode } => share(scene.as_deref(), decode.as_deref()),
-        Command::Simulate { scene, sim, format } => crate::simulate::run(&scene, &sim, format),
-        Command::Tradeoff { scene, args } => crate::tradeoff::run(&scene, &args),
-        Command::Kinetostatics {
-            scene,
-            steps,
-            format,
-        } => crate::kinetostatics::run(&scene, steps, format),
-    }?;
-    out.write_all(text.as_bytes())?;
-    Ok(())
-}
-
 /// `share SCENE`: the fragment for the scene (checked to load first); `share --decode
 /// LINK`: the scene text it carries, exactly.
-fn share(scene: Option<&std::path::Path>, decode: Option<&str>) -> Result<String> {
+pub(crate) fn share(scene: Option<&std::path::Path>, decode: Option<&str>) -> Result<String> {
     if let Some(link) = decode {
         return Ok(linkage::share::decode(link)?);
     }
@@ -74,7 +46,12 @@ fn share(scene: Option<&std::path::Path>, decode: Option<&str>) -> Result<String
     Ok(format!("{}={payload}\n", linkage::share::FRAGMENT_KEY))
 }
 
-fn sweep(args: &SceneArgs, steps: usize, format: Format, out: &mut dyn Write) -> Result<()> {
+pub(crate) fn sweep(
+    args: &SceneArgs,
+    steps: usize,
+    format: Format,
+    out: &mut dyn Write,
+) -> Result<()> {
     let most = match format {
         Format::Csv => MAX_CSV_STEPS,
         Format::Json => MAX_JSON_STEPS,
@@ -146,7 +123,7 @@ fn warn_near_singular(inputs_rad: &[f64]) {
     }
 }
 
-fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<String> {
+pub(crate) fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<String> {
     let mut k = load(args)?;
     let s: Solution = k
         .solve(input_deg.to_radians())
@@ -196,13 +173,13 @@ fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<String> {
     }
 }
 
-fn report(args: &SceneArgs) -> Result<String> {
+pub(crate) fn report(args: &SceneArgs) -> Result<String> {
     let mut k = load(args)?;
     let r = linkage::analysis::report(&mut k)?;
     json_text(&serde_json::to_value(&r)?)
 }
 
-fn synth(what: SynthCommand) -> Result<String> {
+pub(crate) fn synth(what: SynthCommand) -> Result<String> {
     match what {
         SynthCommand::CrankRocker {
             rocker,

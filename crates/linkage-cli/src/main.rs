@@ -24,13 +24,13 @@ use std::process::ExitCode;
 
 use clap::Parser as _;
 
-use args::Cli;
-use error::CliError;
+use args::{Cli, Command};
+use error::{CliError, Result};
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-    let result = commands::run(cli.command, &mut out).and_then(|()| Ok(out.flush()?));
+    let result = run(cli.command, &mut out).and_then(|()| Ok(out.flush()?));
     match result {
         Ok(()) => ExitCode::SUCCESS,
         // A reader that closed the pipe (`| head`) has all it wanted: not an error.
@@ -40,4 +40,33 @@ fn main() -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+/// Runs one command, writing its output to `out`.
+fn run(command: Command, out: &mut dyn Write) -> Result<()> {
+    let text = match command {
+        Command::Sweep {
+            scene,
+            steps,
+            format,
+        } => return commands::sweep(&scene, steps, format, out),
+        Command::At {
+            scene,
+            input_deg,
+            format,
+        } => commands::at(&scene, input_deg, format),
+        Command::Report { scene } => commands::report(&scene),
+        Command::Synth { what } => commands::synth(what),
+        Command::Diagram { scene, args } => diagram::run(&scene, &args),
+        Command::Share { scene, decode } => commands::share(scene.as_deref(), decode.as_deref()),
+        Command::Simulate { scene, sim, format } => simulate::run(&scene, &sim, format),
+        Command::Tradeoff { scene, args } => tradeoff::run(&scene, &args),
+        Command::Kinetostatics {
+            scene,
+            steps,
+            format,
+        } => kinetostatics::run(&scene, steps, format),
+    }?;
+    out.write_all(text.as_bytes())?;
+    Ok(())
 }
