@@ -191,10 +191,9 @@ impl LinkageApp {
             egui::CentralPanel::default_margins().show(ui, |ui| {
                 let view = ui::sheet::show(ui, &mut self.state, &mut self.panels, false);
                 let mut ui = ui.new_child(egui::UiBuilder::new().max_rect(view));
-                *solver_us += ui::viewport::show(
+                *solver_us += self.panels.viewport.ui(
                     &mut ui,
                     &mut self.state,
-                    &mut self.panels.viewport,
                     &self.shapes,
                     self.renderer.as_ref(),
                 );
@@ -230,13 +229,10 @@ impl LinkageApp {
             .default_size(230.0)
             .show(ui, |ui| self.panels.plots.ui(ui, &mut self.state));
         egui::CentralPanel::default_margins().show(ui, |ui| {
-            *solver_us += ui::viewport::show(
-                ui,
-                &mut self.state,
-                &mut self.panels.viewport,
-                &self.shapes,
-                self.renderer.as_ref(),
-            );
+            *solver_us +=
+                self.panels
+                    .viewport
+                    .ui(ui, &mut self.state, &self.shapes, self.renderer.as_ref());
         });
     }
 

@@ -66,55 +66,57 @@ pub fn navigate(
     }
 }
 
-/// Draws the view with `renderer` (`None`: a message says there is no GPU); returns
-/// the µs spent building its shapes.
-pub fn show(
-    ui: &mut egui::Ui,
-    st: &mut AppState,
-    vp: &mut Viewport,
-    shapes: &SharedShapes,
-    renderer: Option<&Renderer>,
-) -> f64 {
-    let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
-    st.controls.view = Some([rect.min.x, rect.min.y, rect.max.x, rect.max.y]);
-    if st.commands.fit && rect.width() > 1.0 {
-        vp.camera.fit(st.session.curves().bounds_m, rect);
-        st.commands.fit = false;
-    }
-    let moving_point =
-        crate::ui::point_drag::handle(ui, &response, rect, st, &vp.camera, &mut vp.drag);
-    // A dragged point or a crank turned by hand shows where the pointer is now.
-    st.apply_edits();
-    navigate(ui, &response, rect, &mut vp.camera, !moving_point);
-    if response.double_clicked() {
-        st.commands.fit = true;
-    }
+impl Viewport {
+    /// Draws the view with `renderer` (`None`: a message says there is no GPU); returns
+    /// the µs spent building its shapes.
+    pub fn ui(
+        &mut self,
+        ui: &mut egui::Ui,
+        st: &mut AppState,
+        shapes: &SharedShapes,
+        renderer: Option<&Renderer>,
+    ) -> f64 {
+        let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
+        st.controls.view = Some([rect.min.x, rect.min.y, rect.max.x, rect.max.y]);
+        if st.commands.fit && rect.width() > 1.0 {
+            self.camera.fit(st.session.curves().bounds_m, rect);
+            st.commands.fit = false;
+        }
+        let moving_point =
+            crate::ui::point_drag::handle(ui, &response, rect, st, &self.camera, &mut self.drag);
+        // A dragged point or a crank turned by hand shows where the pointer is now.
+        st.apply_edits();
+        navigate(ui, &response, rect, &mut self.camera, !moving_point);
+        if response.double_clicked() {
+            st.commands.fit = true;
+        }
 
-    let ppp = ui.ctx().pixels_per_point();
-    let view = vp.camera.uniform(rect, ppp);
-    let started = web_time::Instant::now();
-    if let Ok(mut list) = shapes.lock() {
-        vp.scales = build(
-            &mut list,
-            &st.session,
-            &vp.camera,
-            st.view.layers,
-            f64::from(view.m_per_px),
-        );
-    }
-    let build_us = started.elapsed().as_secs_f64() * 1e6;
-    vp.drawn = Some((st.session.generation(), st.session.input_rad()));
+        let ppp = ui.ctx().pixels_per_point();
+        let view = self.camera.uniform(rect, ppp);
+        let started = web_time::Instant::now();
+        if let Ok(mut list) = shapes.lock() {
+            self.scales = build(
+                &mut list,
+                &st.session,
+                &self.camera,
+                st.view.layers,
+                f64::from(view.m_per_px),
+            );
+        }
+        let build_us = started.elapsed().as_secs_f64() * 1e6;
+        self.drawn = Some((st.session.generation(), st.session.input_rad()));
 
-    let painter = ui.painter_at(rect);
-    painter.rect_filled(rect, 0.0, egui::Color32::from_rgb(246, 246, 242));
-    paint_shapes(&painter, rect, view, shapes, renderer);
+        let painter = ui.painter_at(rect);
+        painter.rect_filled(rect, 0.0, egui::Color32::from_rgb(246, 246, 242));
+        paint_shapes(&painter, rect, view, shapes, renderer);
 
-    point_labels(&painter, rect, st, &vp.camera);
-    if st.view.layers.centres {
-        crate::ui::centres::overlay(&painter, rect, st, &vp.camera);
+        point_labels(&painter, rect, st, &self.camera);
+        if st.view.layers.centres {
+            crate::ui::centres::overlay(&painter, rect, st, &self.camera);
+        }
+        legend(&painter, rect, st, self.scales);
+        build_us
     }
-    legend(&painter, rect, st, vp.scales);
-    build_us
 }
 
 /// The joints' names beside them.
