@@ -129,7 +129,7 @@ fn a_failing_lane_reports_its_own_input() {
             .to_string();
         assert_eq!(batch.to_string(), alone);
         if bad.is_finite() {
-            assert!(alone.contains("reachable"), "{alone}");
+            assert!(alone.contains("reachable"), "{alone}"); // the refusal names the range
         }
     }
     // The buffer is usable again after a failure.
