@@ -327,7 +327,6 @@ impl eframe::App for LinkageApp {
                 crate::web::follow_fragment(&mut self.state, &mut self.url);
             }
         }
-        self.take_app_commands();
         self.frame_start = Some(FrameStart {
             started,
             edits_before,
@@ -346,13 +345,15 @@ impl eframe::App for LinkageApp {
             solver_us: 0.0,
         });
         ui::scene_picker::top_bar(ui, &mut self.state, &mut self.panels.files, frame);
+        // The top bar's commands for the panels land before the panels are laid out,
+        // so that a window opened from it shows in the same frame.
+        self.take_app_commands();
         if self.state.drawing.is_some() {
             self.drawing_panels(ui);
         } else {
             self.viewer_panels(ui, &mut solver_us);
         }
         ui::synthesis::window(ui.ctx(), &mut self.state, &mut self.panels.synthesis);
-        self.take_app_commands();
         ui::files::drop_hint(ui.ctx());
         // What the panels after the view asked for (the polygons' and plots' own
         // controls, the shortcuts) shows next frame, which `follow_up` asks for.

@@ -26,11 +26,6 @@ pub fn assembly_ranges_of(k: &Kinematics) -> AssemblyRanges {
     k.assembly_ranges()
 }
 
-/// "reachable input range: 34.30..117.70 deg" and similar: the ranges' `Display`.
-pub fn describe_ranges(r: &AssemblyRanges) -> String {
-    r.to_string()
-}
-
 /// The input interval a sweep covers: a full turn from the start angle, or the
 /// assembly interval that holds the start angle (ends pulled in by a hair, since
 /// the ends are dead points).

@@ -128,23 +128,25 @@ impl RunJob {
             return None;
         }
         let work = self.job.take();
-        let gone = if self.taken {
-            RunError::Finished
-        } else {
-            RunError::ThreadEnded
-        };
+        let gone = self.gone();
         self.taken = true;
         Some(outcome(self.choice, work, gone))
     }
 
     /// Waits for the result (blocks; a sliced run is run to its end here).
     pub fn wait(self) -> Result<DynamicRun, RunError> {
-        let gone = if self.taken {
+        let gone = self.gone();
+        outcome(self.choice, self.job.finish(), gone)
+    }
+
+    /// Why there is no work to take a result from: it was taken, or its thread ended
+    /// without one.
+    fn gone(&self) -> RunError {
+        if self.taken {
             RunError::Finished
         } else {
             RunError::ThreadEnded
-        };
-        outcome(self.choice, self.job.finish(), gone)
+        }
     }
 }
 

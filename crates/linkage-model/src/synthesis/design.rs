@@ -110,9 +110,3 @@ pub(crate) fn deg(rad: f64) -> String {
 pub(crate) fn row(what: &str, value: String) -> (String, String) {
     (what.to_owned(), value)
 }
-
-/// Rows of `width` numbers, as the CLI reads its files (a header and `#` comments
-/// skipped): a targets file pasted into the app reads as it does there.
-pub(crate) fn numbers(text: &str, width: usize) -> Result<Vec<Vec<f64>>, RowError> {
-    linkage::synthesis::rows::read_rows(text, width)
-}

@@ -6,9 +6,9 @@ use linkage::synthesis::function::{
     FunctionFourBar, PrecisionPoint, chebyshev_spacing, error_curve, freudenstein, structural_error,
 };
 
-use crate::synthesis::design::{
-    Design, Figure, FunctionSpecError, SynthError, deg, mm, numbers, row,
-};
+use linkage::synthesis::rows::read_rows;
+
+use crate::synthesis::design::{Design, Figure, FunctionSpecError, SynthError, deg, mm, row};
 
 /// A function to generate.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -142,7 +142,7 @@ impl FunctionSpec {
 
 /// The generator through typed points `input_deg, output_deg`.
 pub fn from_points(text: &str, ground_mm: f64) -> Result<Design, SynthError> {
-    let points: Vec<PrecisionPoint> = numbers(text, 2)?
+    let points: Vec<PrecisionPoint> = read_rows(text, 2)?
         .into_iter()
         .map(|v| PrecisionPoint {
             input_rad: v[0].to_radians(),
