@@ -88,7 +88,8 @@ impl LinkageApp {
     }
 
     /// Carries out the commands that reach past the model to the panels: the
-    /// synthesis window opened or closed.
+    /// synthesis window opened or closed. Taken right after the top bar that gives
+    /// them, before the panels are laid out, so that a window opens in that frame.
     fn take_app_commands(&mut self) {
         if std::mem::take(&mut self.state.commands.toggle_synthesis) {
             self.panels.synthesis = match self.panels.synthesis.take() {
@@ -345,8 +346,6 @@ impl eframe::App for LinkageApp {
             solver_us: 0.0,
         });
         ui::scene_picker::top_bar(ui, &mut self.state, &mut self.panels.files, frame);
-        // The top bar's commands for the panels land before the panels are laid out,
-        // so that a window opened from it shows in the same frame.
         self.take_app_commands();
         if self.state.drawing.is_some() {
             self.drawing_panels(ui);
