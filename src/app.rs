@@ -68,7 +68,7 @@ impl LinkageApp {
         }
         #[cfg(not(target_arch = "wasm32"))]
         if let Some(path) = &start.file {
-            ui::files::open_path(&mut state, &mut panels.files, path);
+            panels.files.open_path(&mut state, path);
         }
         Self {
             state,
@@ -92,10 +92,7 @@ impl LinkageApp {
     /// them, before the panels are laid out, so that a window opens in that frame.
     fn take_app_commands(&mut self) {
         if std::mem::take(&mut self.state.commands.toggle_synthesis) {
-            self.panels.synthesis = match self.panels.synthesis.take() {
-                Some(_) => None,
-                None => Some(Default::default()),
-            };
+            self.panels.synthesis.toggle();
         }
     }
 
@@ -320,7 +317,7 @@ impl eframe::App for LinkageApp {
             }
             undo_shortcuts(ctx, st);
         }
-        ui::files::take_dropped(ctx, st, &mut self.panels.files);
+        self.panels.files.take_dropped(ctx, st);
         #[cfg(target_arch = "wasm32")]
         {
             self.fragment_watch.install(ctx);
@@ -352,7 +349,7 @@ impl eframe::App for LinkageApp {
         } else {
             self.viewer_panels(ui, &mut solver_us);
         }
-        ui::synthesis::window(ui.ctx(), &mut self.state, &mut self.panels.synthesis);
+        self.panels.synthesis.ui(ui.ctx(), &mut self.state);
         ui::files::drop_hint(ui.ctx());
         // What the panels after the view asked for (the polygons' and plots' own
         // controls, the shortcuts) shows next frame, which `follow_up` asks for.
@@ -385,7 +382,7 @@ impl eframe::App for LinkageApp {
             crate::web::publish_controls(
                 &self.state,
                 &self.panels.viewport.camera,
-                self.panels.synthesis.as_ref(),
+                self.panels.synthesis.view(),
                 self.frames_drawn + 1,
                 self.renderer.is_some(),
             );

@@ -50,90 +50,218 @@ impl Default for DesktopDialog {
     }
 }
 
-/// The file buttons of the top bar; `frame` is the window a dialog stays above.
-pub fn buttons(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &eframe::Frame) {
-    for (label, action) in [
-        ("Open scene…", FileAction::Open),
-        ("Save scene…", FileAction::SaveScene),
-        ("Export CSV…", FileAction::ExportCsv),
-        ("Export diagram…", FileAction::ExportSheet),
-        ("PNG…", FileAction::ExportSheetPng),
-    ] {
-        let button = ui.button(label);
-        st.controls.note(
-            ui,
-            crate::ui::control_map::ControlKind::FileButton,
-            label,
-            &button,
-        );
-        if button.clicked() {
-            start(ui.ctx(), st, files, action, frame);
-        }
-    }
-    #[cfg(target_arch = "wasm32")]
-    {
-        let copy = ui
-            .button("Copy link")
-            .on_hover_text("The page's address carries the scene and its edits: share it");
-        st.controls.note(
-            ui,
-            crate::ui::control_map::ControlKind::FileButton,
-            "Copy link",
-            &copy,
-        );
-        if copy.clicked() {
-            match crate::web::page_url() {
-                Some(url) => {
-                    st.status = Some(format!("link copied ({} characters)", url.len()));
-                    ui.ctx().copy_text(url);
-                }
-                None => st.status = Some("the page has no address to copy".into()),
+impl Files {
+    /// The file buttons of the top bar (and the answers of dialogs they opened); `frame` is the window a dialog stays above.
+    pub fn ui(&mut self, ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
+        for (label, action) in [
+            ("Open scene…", FileAction::Open),
+            ("Save scene…", FileAction::SaveScene),
+            ("Export CSV…", FileAction::ExportCsv),
+            ("Export diagram…", FileAction::ExportSheet),
+            ("PNG…", FileAction::ExportSheetPng),
+        ] {
+            let button = ui.button(label);
+            st.controls.note(
+                ui,
+                crate::ui::control_map::ControlKind::FileButton,
+                label,
+                &button,
+            );
+            if button.clicked() {
+                self.start(ui.ctx(), st, action, frame);
             }
         }
-    }
-    take_answers(st, files);
-}
-
-/// Acts on a file the browser delivered.
-#[cfg(target_arch = "wasm32")]
-fn take_answers(st: &mut AppState, files: &mut Files) {
-    let uploaded = files.upload.borrow_mut().take();
-    if let Some((name, text)) = uploaded {
-        open_text(st, name, &text);
-    }
-}
-
-/// Acts on the desktop dialog's answer, once it has come.
-#[cfg(not(target_arch = "wasm32"))]
-fn take_answers(st: &mut AppState, files: &mut Files) {
-    use crate::file_dialog::PathAnswer;
-    while let Ok((action, answer)) = files.dialog.receive.try_recv() {
-        files.dialog.waiting = None;
-        match answer {
-            PathAnswer::Chosen(path) => {
-                let path = match action {
-                    FileAction::Open => path,
-                    FileAction::SaveScene
-                    | FileAction::ExportCsv
-                    | FileAction::ExportSheet
-                    | FileAction::ExportSheetPng => {
-                        crate::file_dialog::with_extension(path, action.file_type().1)
+        #[cfg(target_arch = "wasm32")]
+        {
+            let copy = ui
+                .button("Copy link")
+                .on_hover_text("The page's address carries the scene and its edits: share it");
+            st.controls.note(
+                ui,
+                crate::ui::control_map::ControlKind::FileButton,
+                "Copy link",
+                &copy,
+            );
+            if copy.clicked() {
+                match crate::web::page_url() {
+                    Some(url) => {
+                        st.status = Some(format!("link copied ({} characters)", url.len()));
+                        ui.ctx().copy_text(url);
                     }
-                };
-                files.dialog.last_dir = path.parent().map(std::path::Path::to_path_buf);
-                run(st, action, &path);
+                    None => st.status = Some("the page has no address to copy".into()),
+                }
             }
-            PathAnswer::Cancelled => st.status = Some("no file chosen".into()),
-            PathAnswer::Unavailable => {
-                st.status = Some(
-                    "no file dialog could be shown (it needs xdg-desktop-portal or zenity): \
-                     type the path instead"
-                        .into(),
-                );
-                files.prompt = Some((action, default_name(st, action)));
+        }
+        self.take_answers(st);
+    }
+
+    /// Acts on a file the browser delivered.
+    #[cfg(target_arch = "wasm32")]
+    fn take_answers(&mut self, st: &mut AppState) {
+        let uploaded = self.upload.borrow_mut().take();
+        if let Some((name, text)) = uploaded {
+            open_text(st, name, &text);
+        }
+    }
+
+    /// Acts on the desktop dialog's answer, once it has come.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn take_answers(&mut self, st: &mut AppState) {
+        use crate::file_dialog::PathAnswer;
+        while let Ok((action, answer)) = self.dialog.receive.try_recv() {
+            self.dialog.waiting = None;
+            match answer {
+                PathAnswer::Chosen(path) => {
+                    let path = match action {
+                        FileAction::Open => path,
+                        FileAction::SaveScene
+                        | FileAction::ExportCsv
+                        | FileAction::ExportSheet
+                        | FileAction::ExportSheetPng => {
+                            crate::file_dialog::with_extension(path, action.file_type().1)
+                        }
+                    };
+                    self.dialog.last_dir = path.parent().map(std::path::Path::to_path_buf);
+                    run(st, action, &path);
+                }
+                PathAnswer::Cancelled => st.status = Some("no file chosen".into()),
+                PathAnswer::Unavailable => {
+                    st.status = Some(
+                        "no file dialog could be shown (it needs xdg-desktop-portal or zenity): \
+                         type the path instead"
+                            .into(),
+                    );
+                    self.prompt = Some((action, default_name(st, action)));
+                }
             }
         }
     }
+
+    /// Opens the scene file at `path` (from the command line, or dropped on the window),
+    /// asking first over unsaved edits as Open does; later dialogs start in its folder.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub fn open_path(&mut self, st: &mut AppState, path: &std::path::Path) {
+        self.dialog.last_dir = path.parent().map(std::path::Path::to_path_buf);
+        run(st, FileAction::Open, path);
+    }
+
+    /// Opens a scene file dropped on the window, or on the page (read by the browser,
+    /// then opened in a later frame as an upload is). Of several, the first.
+    // In the browser the file is read first and opened with the uploads.
+    #[cfg_attr(target_arch = "wasm32", allow(unused_variables))]
+    pub fn take_dropped(&mut self, ctx: &egui::Context, st: &mut AppState) {
+        let dropped = ctx.input(|i| i.raw.dropped_files.clone());
+        let Some(file) = dropped.first() else {
+            return;
+        };
+        if dropped.len() > 1 {
+            log::info!("{} files dropped: opening the first", dropped.len());
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        self.open_path(st, file.path());
+        #[cfg(target_arch = "wasm32")]
+        crate::web::read_dropped(file.clone(), &self.upload, ctx);
+    }
+
+    /// Opens the system's dialog for `action`; its answer comes back in a later frame.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn start(
+        &mut self,
+        ctx: &egui::Context,
+        st: &mut AppState,
+        action: FileAction,
+        frame: &eframe::Frame,
+    ) {
+        use crate::file_dialog::PathRequest;
+        if self.dialog.waiting.is_some() {
+            st.status = Some("a file dialog is already open".into());
+            return;
+        }
+        let request = PathRequest {
+            action,
+            suggested_name: default_name(st, action),
+            directory: self.dialog.last_dir.clone(),
+        };
+        let send = self.dialog.send.clone();
+        let ctx = ctx.clone();
+        self.dialog.waiting = Some(action);
+        st.status = Some(format!("{}: waiting for the file dialog", action.title()));
+        self.dialog.chooser.clone().choose(
+            request,
+            Some(frame),
+            Box::new(move |answer| {
+                // The receiver lives as long as the app; a closed app needs no answer.
+                let _ = send.send((action, answer));
+                ctx.request_repaint();
+            }),
+        );
+        // A chooser that answers at once is taken by `ui` right after this call.
+    }
+
+    #[cfg(target_arch = "wasm32")]
+    fn start(
+        &mut self,
+        ctx: &egui::Context,
+        st: &mut AppState,
+        action: FileAction,
+        _frame: &eframe::Frame,
+    ) {
+        let result = match action {
+            FileAction::Open => {
+                crate::web::pick_file(&self.upload, ctx).map_err(WriteError::Browser)
+            }
+            FileAction::ExportSheetPng => {
+                crate::web::download_svg_as_png(&default_name(st, action), &sheet(st), SHEET_DPI)
+                    .map_err(WriteError::Browser)
+            }
+            FileAction::SaveScene | FileAction::ExportCsv | FileAction::ExportSheet => {
+                let mime = match action {
+                    FileAction::ExportCsv => "text/csv",
+                    FileAction::ExportSheet => "image/svg+xml",
+                    _ => "text/plain",
+                };
+                contents(st, action).and_then(|bytes| {
+                    crate::web::download(&default_name(st, action), mime, &bytes)
+                        .map_err(WriteError::Browser)
+                })
+            }
+        };
+        match result {
+            Ok(()) if action == FileAction::SaveScene => st.session.mark_saved(),
+            Ok(()) => {}
+            Err(e) => st.status = Some(e.to_string()),
+        }
+    }
+
+    /// The desktop's path prompt, while one is open.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub fn prompt_window(&mut self, ctx: &egui::Context, st: &mut AppState) {
+        let Some((action, mut path)) = self.prompt.take() else {
+            return;
+        };
+        let title = action.title();
+        let mut keep = true;
+        let mut go = false;
+        egui::Window::new(title).collapsible(false).show(ctx, |ui| {
+            let label = ui.label("Path (relative to the working directory):");
+            let edit = ui.text_edit_singleline(&mut path).labelled_by(label.id);
+            if edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
+                go = true;
+            }
+            ui.horizontal(|ui| {
+                go |= ui.button("OK").clicked();
+                keep = !ui.button("Cancel").clicked();
+            });
+        });
+        if go {
+            run(st, action, std::path::Path::new(&path));
+        } else if keep {
+            self.prompt = Some((action, path));
+        }
+    }
+
+    #[cfg(target_arch = "wasm32")]
+    pub fn prompt_window(&mut self, _ctx: &egui::Context, _st: &mut AppState) {}
 }
 
 fn default_name(st: &AppState, action: FileAction) -> String {
@@ -234,32 +362,6 @@ pub fn open_text(st: &mut AppState, name: String, text: &str) {
     }
 }
 
-/// Opens the scene file at `path` (from the command line, or dropped on the window),
-/// asking first over unsaved edits as Open does; later dialogs start in its folder.
-#[cfg(not(target_arch = "wasm32"))]
-pub fn open_path(st: &mut AppState, files: &mut Files, path: &std::path::Path) {
-    files.dialog.last_dir = path.parent().map(std::path::Path::to_path_buf);
-    run(st, FileAction::Open, path);
-}
-
-/// Opens a scene file dropped on the window, or on the page (read by the browser,
-/// then opened in a later frame as an upload is). Of several, the first.
-// In the browser the file is read first and opened with the uploads.
-#[cfg_attr(target_arch = "wasm32", allow(unused_variables))]
-pub fn take_dropped(ctx: &egui::Context, st: &mut AppState, files: &mut Files) {
-    let dropped = ctx.input(|i| i.raw.dropped_files.clone());
-    let Some(file) = dropped.first() else {
-        return;
-    };
-    if dropped.len() > 1 {
-        log::info!("{} files dropped: opening the first", dropped.len());
-    }
-    #[cfg(not(target_arch = "wasm32"))]
-    open_path(st, files, file.path());
-    #[cfg(target_arch = "wasm32")]
-    crate::web::read_dropped(file.clone(), &files.upload, ctx);
-}
-
 /// While files are dragged over the window: a veil that says what a drop does.
 pub fn drop_hint(ctx: &egui::Context) {
     if ctx.input(|i| i.raw.hovered_files.is_empty()) {
@@ -279,104 +381,6 @@ pub fn drop_hint(ctx: &egui::Context) {
         egui::Color32::WHITE,
     );
 }
-
-/// Opens the system's dialog for `action`; its answer comes back in a later frame.
-#[cfg(not(target_arch = "wasm32"))]
-fn start(
-    ctx: &egui::Context,
-    st: &mut AppState,
-    files: &mut Files,
-    action: FileAction,
-    frame: &eframe::Frame,
-) {
-    use crate::file_dialog::PathRequest;
-    if files.dialog.waiting.is_some() {
-        st.status = Some("a file dialog is already open".into());
-        return;
-    }
-    let request = PathRequest {
-        action,
-        suggested_name: default_name(st, action),
-        directory: files.dialog.last_dir.clone(),
-    };
-    let send = files.dialog.send.clone();
-    let ctx = ctx.clone();
-    files.dialog.waiting = Some(action);
-    st.status = Some(format!("{}: waiting for the file dialog", action.title()));
-    files.dialog.chooser.clone().choose(
-        request,
-        Some(frame),
-        Box::new(move |answer| {
-            // The receiver lives as long as the app; a closed app needs no answer.
-            let _ = send.send((action, answer));
-            ctx.request_repaint();
-        }),
-    );
-    // A chooser that answers at once is taken by `buttons` right after this call.
-}
-
-#[cfg(target_arch = "wasm32")]
-fn start(
-    ctx: &egui::Context,
-    st: &mut AppState,
-    files: &mut Files,
-    action: FileAction,
-    _frame: &eframe::Frame,
-) {
-    let result = match action {
-        FileAction::Open => crate::web::pick_file(&files.upload, ctx).map_err(WriteError::Browser),
-        FileAction::ExportSheetPng => {
-            crate::web::download_svg_as_png(&default_name(st, action), &sheet(st), SHEET_DPI)
-                .map_err(WriteError::Browser)
-        }
-        FileAction::SaveScene | FileAction::ExportCsv | FileAction::ExportSheet => {
-            let mime = match action {
-                FileAction::ExportCsv => "text/csv",
-                FileAction::ExportSheet => "image/svg+xml",
-                _ => "text/plain",
-            };
-            contents(st, action).and_then(|bytes| {
-                crate::web::download(&default_name(st, action), mime, &bytes)
-                    .map_err(WriteError::Browser)
-            })
-        }
-    };
-    match result {
-        Ok(()) if action == FileAction::SaveScene => st.session.mark_saved(),
-        Ok(()) => {}
-        Err(e) => st.status = Some(e.to_string()),
-    }
-}
-
-/// The desktop's path prompt, while one is open.
-#[cfg(not(target_arch = "wasm32"))]
-pub fn prompt_window(ctx: &egui::Context, st: &mut AppState, files: &mut Files) {
-    let Some((action, mut path)) = files.prompt.take() else {
-        return;
-    };
-    let title = action.title();
-    let mut keep = true;
-    let mut go = false;
-    egui::Window::new(title).collapsible(false).show(ctx, |ui| {
-        let label = ui.label("Path (relative to the working directory):");
-        let edit = ui.text_edit_singleline(&mut path).labelled_by(label.id);
-        if edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
-            go = true;
-        }
-        ui.horizontal(|ui| {
-            go |= ui.button("OK").clicked();
-            keep = !ui.button("Cancel").clicked();
-        });
-    });
-    if go {
-        run(st, action, std::path::Path::new(&path));
-    } else if keep {
-        files.prompt = Some((action, path));
-    }
-}
-
-#[cfg(target_arch = "wasm32")]
-pub fn prompt_window(_ctx: &egui::Context, _st: &mut AppState, _files: &mut Files) {}
 
 #[cfg(not(target_arch = "wasm32"))]
 fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {

@@ -6,7 +6,7 @@
 use crate::ui::files::Files;
 use crate::ui::plots::PlotsPanel;
 use crate::ui::polygons::PolygonPane;
-use crate::ui::synthesis::SynthesisView;
+use crate::ui::synthesis::SynthesisWindow;
 use crate::ui::viewport::Viewport;
 
 /// Every panel's own state.
@@ -20,6 +20,6 @@ pub struct Panels {
     pub polygons: PolygonPane,
     /// File prompts, dialogs and uploads.
     pub files: Files,
-    /// The synthesis window, while open.
-    pub synthesis: Option<SynthesisView>,
+    /// The synthesis window.
+    pub synthesis: SynthesisWindow,
 }

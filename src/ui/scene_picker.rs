@@ -8,7 +8,7 @@ use crate::catalog::{BUILTIN_SCENES, BuiltinScene};
 use crate::session::{SceneSource, Session};
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
-use crate::ui::files::{self, Files};
+use crate::ui::files::Files;
 
 /// Display names of the shipped scenes (their `name` field), read once.
 fn names() -> &'static [String] {
@@ -26,7 +26,7 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &
             wide_bar(ui, st, files, frame);
         }
     });
-    files::prompt_window(ui.ctx(), st, files);
+    files.prompt_window(ui.ctx(), st);
     discard_question(ui.ctx(), st);
 }
 
@@ -35,7 +35,7 @@ fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &efr
         ui.strong("Linkage Lab");
         // The file buttons come before the scene's name, whose width varies, so that
         // they stay in place whichever scene is open.
-        files::buttons(ui, st, files, frame);
+        files.ui(ui, st, frame);
         scene_picker(ui, st, 300.0);
         new_menu(ui, st);
         synthesis_button(ui, st);
@@ -61,7 +61,7 @@ fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &
     let one_row = ui.available_width() >= 700.0;
     ui.horizontal(|ui| {
         let menu = ui.menu_button("Menu", |ui| {
-            files::buttons(ui, st, files, frame);
+            files.ui(ui, st, frame);
             new_menu(ui, st);
             synthesis_button(ui, st);
             if ui.button("Reset edits").clicked() {

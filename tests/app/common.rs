@@ -104,7 +104,7 @@ pub fn synthesis_inputs<'h>(
         .state_mut()
         .panels
         .synthesis
-        .as_mut()
+        .view_mut()
         .expect("the synthesis window is open")
         .inputs
 }

@@ -35,7 +35,7 @@ fn tab<'h>(h: &'h Harness<'static, LinkageApp>) -> &'h linkage_lab::ui::synthesi
     h.state()
         .panels
         .synthesis
-        .as_ref()
+        .view()
         .expect("the window is open")
 }
 

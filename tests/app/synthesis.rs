@@ -32,7 +32,7 @@ fn each_design_opens_as_a_scene_that_meets_its_requirements() {
     h.run();
     h.run();
     click(&mut h, "Synthesis…");
-    assert!(h.state().panels.synthesis.is_some(), "the window is open");
+    assert!(h.state().panels.synthesis.is_open(), "the window is open");
     click(&mut h, "Design");
     h.snapshot("synthesis_crank_rocker");
 
@@ -68,7 +68,7 @@ fn each_design_opens_as_a_scene_that_meets_its_requirements() {
         .state()
         .panels
         .synthesis
-        .as_ref()
+        .view()
         .expect("open")
         .inputs
         .clone();
@@ -147,7 +147,7 @@ fn five_positions_and_a_function_show_their_constructions() {
     // A frame to lay the window out for five positions before clicking in it.
     h.run();
     click(&mut h, "Design");
-    let view = h.state().panels.synthesis.as_ref().expect("open");
+    let view = h.state().panels.synthesis.view().expect("open");
     let Some(Ok(design)) = &view.result else {
         panic!("{:?}", view.result);
     };
@@ -164,7 +164,7 @@ fn five_positions_and_a_function_show_their_constructions() {
     click(&mut h, "function");
     click(&mut h, "a function");
     click(&mut h, "Design");
-    let view = h.state().panels.synthesis.as_ref().expect("open");
+    let view = h.state().panels.synthesis.view().expect("open");
     let Some(Ok(design)) = &view.result else {
         panic!("{:?}", view.result);
     };

@@ -368,6 +368,6 @@ fn phone_menu_and_synthesis(h: &mut Harness<'static, LinkageApp>) {
     common::click(h, synthesis);
     h.run();
     h.run();
-    assert!(h.state().panels.synthesis.is_some());
+    assert!(h.state().panels.synthesis.is_open());
     h.snapshot("phone_390x844_synthesis");
 }

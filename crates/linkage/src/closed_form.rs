@@ -22,6 +22,7 @@ use crate::motion::{LinkMotion, PointMotion, SlideMotion, Vec2, cross, perp};
 use crate::real::{Real, splat, splat_vec};
 use crate::roots_util::{refine, sign_changes};
 use crate::scene::Branch;
+use crate::scene_problem::SceneProblem;
 
 /// A pin: a point fixed on a link, given in that link's coordinates.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -593,10 +594,10 @@ fn link_len(
     let v = to - from;
     let len = v.norm();
     if len <= 1e-12 * m.size_m {
-        return Err(LinkageError::SceneInvalid(format!(
-            "link `{}` has zero length between its {what} joints",
-            m.links[link].name
-        )));
+        return Err(LinkageError::from(SceneProblem::DyadZeroLength {
+            link: m.links[link].name.clone(),
+            which: what.to_string(),
+        }));
     }
     Ok((len, direction(&(v / len))))
 }
@@ -957,10 +958,10 @@ impl Branches<'_> {
                 Ok(Branch::Left(String::new(), String::new()))
             }
             None if self.provisional => Ok(Branch::Along),
-            None => Err(LinkageError::SceneInvalid(format!(
-                "the {kind} dyad with inner joint `{}` needs an assembly branch in `branches`",
-                self.m.points[point].name
-            ))),
+            None => Err(LinkageError::from(SceneProblem::MissingBranch {
+                kind,
+                joint: self.m.points[point].name.clone(),
+            })),
         }
     }
 
@@ -977,14 +978,11 @@ impl Branches<'_> {
                 } else if (&f, &t) == (&names(pc), &names(pa)) {
                     -1.0
                 } else {
-                    return Err(LinkageError::SceneInvalid(format!(
-                        "branch of `{}` must name its end joints: Left(\"{}\", \"{}\") or Right(\"{}\", \"{}\")",
-                        names(mid),
-                        names(pa),
-                        names(pc),
-                        names(pa),
-                        names(pc)
-                    )));
+                    return Err(LinkageError::from(SceneProblem::BranchEnds {
+                        joint: names(mid),
+                        a: names(pa),
+                        c: names(pc),
+                    }));
                 };
                 Ok(if matches!(m.branch_for(mid), Some(Branch::Left(..))) {
                     left
@@ -992,26 +990,25 @@ impl Branches<'_> {
                     -left
                 })
             }
-            _ => Err(LinkageError::SceneInvalid(format!(
-                "branch of RRR joint `{}` must be Left(\"{}\", \"{}\") or Right(..), not Along/Against",
-                names(mid),
-                names(pa),
-                names(pc)
-            ))),
+            _ => Err(LinkageError::from(SceneProblem::BranchNotASide {
+                joint: names(mid),
+                a: names(pa),
+                c: names(pc),
+            })),
         }
     }
 
-    /// A sliding dyad's sign: +1 Along, -1 Against; else the refusal `why`.
-    fn slide_sign(
-        &self,
-        point: usize,
-        kind: DyadKind,
-        why: impl FnOnce() -> String,
-    ) -> Result<f64> {
+    /// A sliding dyad's sign: +1 Along, -1 Against; else a refusal that names the
+    /// joint as `joint_kind` (how the user knows it).
+    fn slide_sign(&self, point: usize, kind: DyadKind, joint_kind: &str) -> Result<f64> {
         match self.of(point, kind)? {
             Branch::Along => Ok(1.0),
             Branch::Against => Ok(-1.0),
-            _ => Err(LinkageError::SceneInvalid(why())),
+            _ => Err(LinkageError::from(SceneProblem::BranchNotAlong {
+                kind,
+                joint_kind: joint_kind.to_string(),
+                joint: self.m.points[point].name.clone(),
+            })),
         }
     }
 }
@@ -1071,12 +1068,7 @@ fn rrp_group(
     let (mid_on_i, mid_on_j) = (rev_local(m, rm, i), rev_local(m, rm, j));
     let (len_i, dir_i) = link_len(m, a_on_i, mid_on_i, i, "two")?;
     let mid = m.revolutes[rm].point;
-    let sign = branches.slide_sign(mid, DyadKind::Rrp, || {
-        format!(
-            "branch of slider joint `{}` must be Along or Against (its side along the guide)",
-            m.points[mid].name
-        )
-    })?;
+    let sign = branches.slide_sign(mid, DyadKind::Rrp, "slider joint")?;
     let group = Group::Rrp(Rrp {
         i,
         j,
@@ -1112,12 +1104,7 @@ fn rpr_group(
     let (g, g_on_guide) = rev_pin(m, g_rev, g_known, slide.guide);
     let q_line = slide.through_local + slide.relative * (s_on_slider - slide.slider_local);
     let offset = cross(&slide.direction_local, &(g_on_guide - q_line));
-    let sign = branches.slide_sign(slide.point, DyadKind::Rpr, || {
-        format!(
-            "branch of sliding joint `{}` must be Along or Against",
-            m.points[slide.point].name
-        )
-    })?;
+    let sign = branches.slide_sign(slide.point, DyadKind::Rpr, "sliding joint")?;
     let group = Group::Rpr(Rpr {
         slider: slide.slider,
         s,

@@ -5,6 +5,8 @@ use thiserror::Error;
 
 use crate::assembly::AssemblyRanges;
 use crate::dyad::DyadLabel;
+pub use crate::scene_problem::SceneProblem;
+pub use crate::synthesis::refusal::DesignRefusal;
 
 /// Why a chain does not close at an input, as data ([`LinkageError::CannotAssemble`]).
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -49,7 +51,10 @@ pub enum LinkageError {
     },
     /// The scene parsed but describes no valid mechanism.
     #[error("invalid scene: {0}")]
-    SceneInvalid(String),
+    SceneInvalid(Box<SceneProblem>),
+    /// The synthesis requirements give no linkage.
+    #[error("no design: {0}")]
+    NoDesign(Box<DesignRefusal>),
     /// A numeric parameter is outside its valid range (or not finite).
     #[error("{name} = {value} is invalid: {valid}")]
     InvalidParameter {
@@ -131,3 +136,17 @@ pub enum LinkageError {
 
 /// Shorthand for results carrying a [`LinkageError`].
 pub type Result<T> = std::result::Result<T, LinkageError>;
+
+// Boxed: the problems carry names, and an unboxed one would make every `Result` of the
+// solver as large as its largest problem.
+impl From<SceneProblem> for LinkageError {
+    fn from(problem: SceneProblem) -> Self {
+        Self::SceneInvalid(Box::new(problem))
+    }
+}
+
+impl From<DesignRefusal> for LinkageError {
+    fn from(refusal: DesignRefusal) -> Self {
+        Self::NoDesign(Box::new(refusal))
+    }
+}

@@ -10,6 +10,7 @@ use crate::model::Mechanism;
 use crate::motion::{LinkMotion, Solution};
 use crate::newton::Newton;
 use crate::scene::SolverPath;
+use crate::scene_problem::SceneProblem;
 
 /// The solver path in use; serialized as its label.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -74,12 +75,7 @@ impl Kinematics {
                 let start = k.mech.driver.start_rad;
                 let dof = newton.mobility(start, &mut k.scratch);
                 if dof != 1 {
-                    return Err(LinkageError::SceneInvalid(format!(
-                        "the chain moves with {dof} degrees of freedom, though counting links and \
-                         joints gives 1: some joints are redundant (they repeat a constraint the \
-                         others already impose, like a brace between two points of one rigid \
-                         link), so the driver alone does not fix the pose"
-                    )));
+                    return Err(LinkageError::from(SceneProblem::RedundantJoints { dof }));
                 }
                 // No margins to find the assembly range on: trace the branch to its
                 // folds instead, and keep every later solve inside what was found.

@@ -13,6 +13,7 @@ use crate::dynamics::ForceModel;
 use crate::error::{LinkageError, Result};
 use crate::kinematics::Kinematics;
 use crate::motion::{Solution, Vec2, cross, perp};
+use crate::scene_problem::SceneProblem;
 
 /// Which kind of joint a reaction acts in: a revolute carries a force, a prismatic
 /// joint a force across its guide and a couple.
@@ -70,15 +71,12 @@ impl Kinetostatics {
     pub fn new(k: &mut Kinematics) -> Result<Self> {
         let m = k.mechanism().clone();
         if m.models == crate::scene::Models::Kinematics {
-            return Err(LinkageError::SceneInvalid(format!(
-                "scene `{}` models kinematics only: declare `models: Kinetostatics` with its masses and forces for torques and reactions",
-                m.name
-            )));
+            return Err(LinkageError::from(SceneProblem::KinematicsOnly {
+                scene: m.name.clone(),
+            }));
         }
         if m.driver.speed_rad_s == 0.0 {
-            return Err(LinkageError::SceneInvalid(
-                "kinetostatics needs a crank speed: the driver's `speed` is 0".into(),
-            ));
+            return Err(LinkageError::from(SceneProblem::NoCrankSpeed));
         }
         let start = k.solve(m.driver.start_rad)?;
         Ok(Self {

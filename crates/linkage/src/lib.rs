@@ -35,6 +35,7 @@ pub mod polygon;
 pub mod real;
 mod roots_util;
 pub mod scene;
+pub mod scene_problem;
 pub mod scene_scale;
 pub mod share;
 mod small_lu;
@@ -42,7 +43,7 @@ pub mod sweep;
 pub mod synthesis;
 mod unique_map;
 
-pub use error::{LinkageError, Result};
+pub use error::{DesignRefusal, LinkageError, Result, SceneProblem};
 pub use kinematics::{Closure, Kinematics, PathKind};
 pub use model::Mechanism;
 pub use motion::{LinkMotion, PointMotion, SlideMotion, Solution, Vec2};

@@ -6,6 +6,7 @@ use crate::error::{LinkageError, Result};
 use crate::motion::{LinkMotion, SlideMotion, Vec2, perp};
 use crate::real::{Real, splat, splat_vec};
 use crate::scene::{Branch, ForcesSpec, Models, SceneFile, SolverSpec};
+use crate::scene_problem::SceneProblem;
 
 /// A rigid link.
 #[derive(Clone, Debug, PartialEq)]
@@ -220,7 +221,9 @@ impl Mechanism {
     /// Replaces (or adds) the branch of the dyad whose inner joint is named `point`.
     pub fn set_branch(&mut self, point: &str, branch: Branch) -> Result<()> {
         let pi = self.point_index(point).ok_or_else(|| {
-            LinkageError::SceneInvalid(format!("no point named `{point}` to set a branch on"))
+            LinkageError::from(SceneProblem::NoPointForBranch {
+                point: point.to_string(),
+            })
         })?;
         match self.branches.iter_mut().find(|(p, _)| *p == pi) {
             Some(entry) => entry.1 = branch,

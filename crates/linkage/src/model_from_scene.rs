@@ -9,6 +9,7 @@ use crate::error::{LinkageError, Result};
 use crate::model::{Driver, Link, MAX_ANGLE_RAD, Mechanism, Point, Prismatic, Revolute};
 use crate::motion::Vec2;
 use crate::scene::{Branch, ForcesSpec, FreeLength, SceneFile, Speed};
+use crate::scene_problem::{LonePoint, MadeJoint, SceneProblem};
 
 /// The links and their points, in SI, before the joints are made.
 struct Bodies {
@@ -61,7 +62,7 @@ impl Mechanism {
             .links
             .iter()
             .position(|l| l.is_ground)
-            .ok_or_else(|| invalid("no ground link"))?;
+            .ok_or(invalid(SceneProblem::GroundCount { found: 0 }))?;
         let driver = driver(scene, &names, ground, &revolutes, units)?;
         let branches = branches(scene, &bodies.points)?;
         let output = match &scene.output {
@@ -84,9 +85,7 @@ impl Mechanism {
             });
         }
         if bodies.size_m <= 0.0 {
-            return Err(invalid(
-                "all points are at the origin: the mechanism has no size",
-            ));
+            return Err(invalid(SceneProblem::NoSize));
         }
         Ok(Self {
             name: scene.name.clone(),
@@ -114,9 +113,7 @@ impl Mechanism {
 fn bodies(scene: &SceneFile, units: Units) -> Result<Bodies> {
     let grounds = scene.links.iter().filter(|l| l.ground).count();
     if grounds != 1 {
-        return Err(invalid(format!(
-            "exactly one link must have `ground: true`, found {grounds}"
-        )));
+        return Err(invalid(SceneProblem::GroundCount { found: grounds }));
     }
     let mut b = Bodies {
         links: Vec::with_capacity(scene.links.len()),
@@ -127,13 +124,17 @@ fn bodies(scene: &SceneFile, units: Units) -> Result<Bodies> {
     };
     for (li, spec) in scene.links.iter().enumerate() {
         if spec.name.is_empty() {
-            return Err(invalid(format!("link #{} has an empty name", li + 1)));
+            return Err(invalid(SceneProblem::UnnamedLink { number: li + 1 }));
         }
         if scene.links[..li].iter().any(|l| l.name == spec.name) {
-            return Err(invalid(format!("two links are named `{}`", spec.name)));
+            return Err(invalid(SceneProblem::DuplicateLink {
+                link: spec.name.clone(),
+            }));
         }
         if spec.points.is_empty() {
-            return Err(invalid(format!("link `{}` has no points", spec.name)));
+            return Err(invalid(SceneProblem::LinkWithoutPoints {
+                link: spec.name.clone(),
+            }));
         }
         let mut link_points = Vec::with_capacity(spec.points.len());
         for (pname, &xy) in &spec.points {
@@ -212,20 +213,23 @@ fn check_joint_gaps(b: &Bodies) -> Result<()> {
                 let gap = (pos_a - pos_b).norm();
                 let (name_a, name_b) = (&b.points[*pa].name, &b.points[*pb].name);
                 if gap == 0.0 {
-                    return Err(invalid(format!(
-                        "link `{}` has zero length between its joints `{name_a}` and `{name_b}`",
-                        link.name
-                    )));
+                    return Err(invalid(SceneProblem::ZeroLength {
+                        link: link.name.clone(),
+                        a: name_a.to_string(),
+                        b: name_b.to_string(),
+                    }));
                 }
                 if gap <= 1e-12 * b.size_m {
                     // Not zero, but lost beside the largest coordinate: name that.
-                    return Err(invalid(format!(
-                        "link `{}`: joints `{name_a}` and `{name_b}` are {gap:.3e} m apart, below 1e-12 \
-                         of the mechanism's size {:.3e} m, set by point `{}` of link \
-                         `{}`; lengths so far apart cannot be solved together (is that point \
-                         a typo?)",
-                        link.name, b.size_m, b.farthest.1, b.farthest.0
-                    )));
+                    return Err(invalid(SceneProblem::LengthLost {
+                        link: link.name.clone(),
+                        a: name_a.to_string(),
+                        b: name_b.to_string(),
+                        gap_m: gap,
+                        size_m: b.size_m,
+                        farthest_point: b.farthest.1.clone(),
+                        farthest_link: b.farthest.0.clone(),
+                    }));
                 }
             }
         }
@@ -246,14 +250,11 @@ impl Names<'_> {
             .iter()
             .position(|l| l.name == name)
             .ok_or_else(|| {
-                invalid(format!(
-                    "{ctx} names link `{name}`, which does not exist (links: {})",
-                    self.links
-                        .iter()
-                        .map(|l| l.name.as_str())
-                        .collect::<Vec<_>>()
-                        .join(", ")
-                ))
+                invalid(SceneProblem::UnknownLink {
+                    context: ctx.to_string(),
+                    name: name.to_string(),
+                    known: self.links.iter().map(|l| l.name.clone()).collect(),
+                })
             })
     }
 
@@ -262,10 +263,11 @@ impl Names<'_> {
         let pi = self.points.iter().position(|p| p.name == name);
         pi.and_then(|pi| self.links[link].local(pi).map(|v| (pi, v)))
             .ok_or_else(|| {
-                invalid(format!(
-                    "{ctx}: point `{name}` is not on link `{}`",
-                    self.links[link].name
-                ))
+                invalid(SceneProblem::PointNotOnLink {
+                    context: ctx.to_string(),
+                    point: name.to_string(),
+                    link: self.links[link].name.clone(),
+                })
             })
     }
 }
@@ -278,9 +280,7 @@ fn sliders(scene: &SceneFile, names: &Names<'_>, units: Units) -> Result<Vec<Pri
         let slider = names.link(&ctx, &s.slider)?;
         let guide = names.link(&ctx, &s.guide)?;
         if slider == guide {
-            return Err(invalid(format!(
-                "{ctx}: slider and guide are the same link"
-            )));
+            return Err(invalid(SceneProblem::SliderOnItsGuide { context: ctx }));
         }
         let (point, slider_local) = names.point_on(&ctx, slider, &s.point)?;
         let (_, through_local) = names.point_on(&ctx, guide, &s.through)?;
@@ -313,37 +313,35 @@ fn check_mobility(b: &Bodies, revolutes: &[Revolute], sliders: &[Prismatic]) -> 
     }
     // A misspelt point name is the usual cause: it leaves a joint unmade, its point
     // alone on one link. Name those, so the typo can be found.
-    let lone: Vec<String> = b
+    let lone = b
         .on_links
         .iter()
         .enumerate()
         .filter(|(_, users)| users.len() == 1)
-        .map(|(p, users)| format!("`{}` (on `{}`)", b.points[p].name, b.links[users[0].0].name))
+        .map(|(p, users)| LonePoint {
+            point: b.points[p].name.clone(),
+            link: b.links[users[0].0].name.clone(),
+        })
         .collect();
     // With none alone, list the joints that were made, to compare with the drawing.
-    let made: Vec<String> = revolutes
+    let made = revolutes
         .iter()
-        .map(|r| {
-            let (la, lb) = (&b.links[r.a].name, &b.links[r.b].name);
-            format!("`{}` ({la}-{lb})", b.points[r.point].name)
+        .map(|r| MadeJoint::Pin {
+            point: b.points[r.point].name.clone(),
+            a: b.links[r.a].name.clone(),
+            b: b.links[r.b].name.clone(),
         })
-        .chain(
-            sliders
-                .iter()
-                .map(|s| format!("slider `{}`", b.links[s.slider].name)),
-        )
+        .chain(sliders.iter().map(|s| MadeJoint::Slider {
+            link: b.links[s.slider].name.clone(),
+        }))
         .collect();
-    let hint = if lone.is_empty() {
-        format!("none; the joints made are {}", made.join(", "))
-    } else {
-        lone.join(", ")
-    };
-    Err(invalid(format!(
-        "the chain has mobility {mobility} (3 x {moving} moving links - 2 x {} joints); \
-         a single-input mechanism needs exactly 1. Joints are made by a point name \
-         shared between links; these points are on one link only: {hint}",
-        revolutes.len() + sliders.len(),
-    )))
+    Err(invalid(SceneProblem::Mobility {
+        mobility,
+        moving,
+        joints: revolutes.len() + sliders.len(),
+        lone,
+        made,
+    }))
 }
 
 /// The driver: a link other than ground, pinned to it, with its speed and start.
@@ -357,7 +355,7 @@ fn driver(
     let d = &scene.driver;
     let driver_link = names.link("driver", &d.link)?;
     if driver_link == ground {
-        return Err(invalid("the driver cannot be the ground link"));
+        return Err(invalid(SceneProblem::DriverIsGround));
     }
     let pivot = revolutes
         .iter()
@@ -365,10 +363,9 @@ fn driver(
             (r.a == ground && r.b == driver_link) || (r.b == ground && r.a == driver_link)
         })
         .ok_or_else(|| {
-            invalid(format!(
-                "driver link `{}` shares no point with ground, so it cannot be a crank",
-                d.link
-            ))
+            invalid(SceneProblem::DriverNotOnGround {
+                link: d.link.clone(),
+            })
         })?;
     let speed_rad_s = match d.speed {
         Speed::Rpm(n) => finite("driver.speed", n)? * std::f64::consts::TAU / 60.0,
@@ -389,13 +386,14 @@ fn branches(scene: &SceneFile, points: &[Point]) -> Result<Vec<(usize, Branch)>>
         let pi = points
             .iter()
             .position(|p| &p.name == name)
-            .ok_or_else(|| invalid(format!("branch key `{name}` is not a point name")))?;
+            .ok_or_else(|| invalid(SceneProblem::UnknownBranchKey { name: name.clone() }))?;
         if let Branch::Left(f, t) | Branch::Right(f, t) = b {
             for n in [f, t] {
                 if !points.iter().any(|p| &p.name == n) {
-                    return Err(invalid(format!(
-                        "branch of `{name}` names unknown point `{n}`"
-                    )));
+                    return Err(invalid(SceneProblem::BranchNamesUnknownPoint {
+                        of: name.clone(),
+                        name: n.clone(),
+                    }));
                 }
             }
         }
@@ -417,8 +415,8 @@ fn guesses(scene: &SceneFile, names: &Names<'_>, units: Units) -> Result<Vec<Opt
     Ok(guess)
 }
 
-fn invalid(msg: impl Into<String>) -> LinkageError {
-    LinkageError::SceneInvalid(msg.into())
+fn invalid(problem: SceneProblem) -> LinkageError {
+    LinkageError::from(problem)
 }
 
 fn finite(name: &str, v: f64) -> Result<f64> {
@@ -473,14 +471,20 @@ fn convert_forces(
         if points.iter().any(|p| p.name == n) {
             Ok(())
         } else {
-            Err(invalid(format!("{ctx} names unknown point `{n}`")))
+            Err(invalid(SceneProblem::ForceNamesUnknownPoint {
+                element: ctx.to_string(),
+                name: n.to_string(),
+            }))
         }
     };
     let has_link = |n: &str, ctx: &str| -> Result<()> {
         if links.iter().any(|l| l.name == n) {
             Ok(())
         } else {
-            Err(invalid(format!("{ctx} names unknown link `{n}`")))
+            Err(invalid(SceneProblem::ForceNamesUnknownLink {
+                element: ctx.to_string(),
+                name: n.to_string(),
+            }))
         }
     };
     let mut out = f.clone();

@@ -10,6 +10,7 @@ use indexmap::IndexMap;
 use serde::{Deserialize, Serialize};
 
 use crate::error::{LinkageError, Result};
+use crate::scene_problem::SceneProblem;
 
 /// What a scene asks the program to compute.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -388,6 +389,6 @@ impl SceneFile {
     /// Writes the scene as pretty RON.
     pub fn to_ron(&self) -> Result<String> {
         ron::ser::to_string_pretty(self, ron::ser::PrettyConfig::default())
-            .map_err(|e| LinkageError::SceneInvalid(format!("cannot write scene: {e}")))
+            .map_err(|e| LinkageError::from(SceneProblem::CannotWrite { why: e.to_string() }))
     }
 }

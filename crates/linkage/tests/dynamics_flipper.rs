@@ -8,7 +8,7 @@ mod common;
 use common::{kinematics, mechanism, scene_text};
 use linkage::dynamics::{ForceModel, Method, Settings, simulate};
 use linkage::scene::SolverPath;
-use linkage::{Kinematics, LinkageError, Mechanism};
+use linkage::{Kinematics, LinkageError, Mechanism, SceneProblem};
 
 fn reduced_at(k: &mut Kinematics, forces: &ForceModel, q: f64) -> linkage::dynamics::Reduced {
     let mut s = k.empty_solution();
@@ -149,9 +149,15 @@ fn missing_or_invalid_mass_data_is_named() {
     let text = scene_text("gravity_flipper.ron").replace(", inertia: Some(0.012)", "");
     let k = Kinematics::new(Mechanism::from_ron(&text).expect("valid kinematics")).expect("k");
     let err = simulate(&k, &fixed(Method::Rk4, 1e-3, 0.1)).expect_err("missing inertia");
-    assert!(
-        err.to_string().contains("link `table` needs `inertia`"),
-        "{err}"
+    let LinkageError::SceneInvalid(problem) = &err else {
+        panic!("expected the missing inertia named, got {err}");
+    };
+    assert_eq!(
+        **problem,
+        SceneProblem::MissingInertia {
+            link: "table".into(),
+            field: "inertia"
+        }
     );
     let text = scene_text("gravity_flipper.ron").replace("mass: Some(1.0)", "mass: Some(-1.0)");
     let err = Mechanism::from_ron(&text).expect_err("negative mass");

@@ -32,11 +32,51 @@ pub struct SynthesisView {
     pub path: PathTab,
 }
 
-/// The window, while open.
-pub fn window(ctx: &egui::Context, st: &mut AppState, slot: &mut Option<SynthesisView>) {
-    let Some(mut view) = slot.take() else {
-        return;
-    };
+/// The synthesis window: its inputs and results while open, nothing while closed.
+#[derive(Default)]
+pub struct SynthesisWindow {
+    view: Option<SynthesisView>,
+}
+
+impl SynthesisWindow {
+    /// Opens the window (with fresh inputs) or closes it.
+    pub fn toggle(&mut self) {
+        self.view = match self.view.take() {
+            Some(_) => None,
+            None => Some(SynthesisView::default()),
+        };
+    }
+
+    /// Whether the window is open.
+    pub fn is_open(&self) -> bool {
+        self.view.is_some()
+    }
+
+    /// The open window's inputs and results.
+    pub fn view(&self) -> Option<&SynthesisView> {
+        self.view.as_ref()
+    }
+
+    /// The open window's inputs and results, to change.
+    pub fn view_mut(&mut self) -> Option<&mut SynthesisView> {
+        self.view.as_mut()
+    }
+
+    /// Shows the window while it is open; a design chosen in it is opened or put in
+    /// place through the state's commands.
+    pub fn ui(&mut self, ctx: &egui::Context, st: &mut AppState) {
+        if let Some(view) = self.view.take() {
+            self.view = window(ctx, st, view);
+        }
+    }
+}
+
+/// The open window for one frame; the view back while it stays open.
+fn window(
+    ctx: &egui::Context,
+    st: &mut AppState,
+    mut view: SynthesisView,
+) -> Option<SynthesisView> {
     let mut open = true;
     let mut chosen = None;
     let screen = ctx.content_rect();
@@ -92,9 +132,7 @@ pub fn window(ctx: &egui::Context, st: &mut AppState, slot: &mut Option<Synthesi
             Err(e) => view.result = Some(Err(SynthError::DoesNotSolve(e))),
         }
     }
-    if open {
-        *slot = Some(view);
-    }
+    open.then_some(view)
 }
 
 /// The chosen tab's inputs, design and result; returns what to do with a design.

@@ -18,6 +18,7 @@ use crate::scene::{
     AngleUnit, DamperSpec, DriverSpec, ForceWhen, ForcesSpec, FreeLength, LengthUnit, LinkSpec,
     Models, PointForceSpec, SceneFile, SliderSpec, Speed, SpringSpec,
 };
+use crate::scene_problem::SceneProblem;
 pub use from_scene::NotDrawable;
 
 /// A point of the drawing.
@@ -455,8 +456,10 @@ impl Drawing {
                 continue;
             };
             if (pose.points[i].position - p.at).norm() > 1e-9 * size {
-                return Err(DrawingProblem::Invalid(LinkageError::SceneInvalid(
-                    format!("the chain does not assemble as drawn at {}", p.name),
+                return Err(DrawingProblem::Invalid(LinkageError::from(
+                    SceneProblem::NotAsDrawn {
+                        point: p.name.clone(),
+                    },
                 )));
             }
         }

@@ -5,6 +5,7 @@ use crate::kinematics::Kinematics;
 use crate::model::Mechanism;
 use crate::motion::{Solution, Vec2, cross};
 use crate::scene::{DamperSpec, ForceWhen, FreeLength, Models};
+use crate::scene_problem::SceneProblem;
 
 /// Mass data of one moving link, SI.
 #[derive(Clone, Debug, PartialEq)]
@@ -120,10 +121,11 @@ pub struct ForceModel {
     point_links: Vec<usize>,
 }
 
-fn missing(link: &str, field: &str) -> LinkageError {
-    LinkageError::SceneInvalid(format!(
-        "link `{link}` needs `{field}` for dynamics (a Dynamics scene needs mass, centroid and inertia on every moving link)"
-    ))
+fn missing(link: &str, field: &'static str) -> LinkageError {
+    LinkageError::from(SceneProblem::MissingInertia {
+        link: link.to_string(),
+        field,
+    })
 }
 
 impl ForceModel {
@@ -155,12 +157,20 @@ impl ForceModel {
             }
         }
         let point = |name: &str| -> Result<usize> {
-            m.point_index(name)
-                .ok_or_else(|| LinkageError::SceneInvalid(format!("unknown point `{name}`")))
+            m.point_index(name).ok_or_else(|| {
+                LinkageError::from(SceneProblem::ForceNamesUnknownPoint {
+                    element: "a force element".into(),
+                    name: name.to_string(),
+                })
+            })
         };
         let link = |name: &str| -> Result<usize> {
-            m.link_index(name)
-                .ok_or_else(|| LinkageError::SceneInvalid(format!("unknown link `{name}`")))
+            m.link_index(name).ok_or_else(|| {
+                LinkageError::from(SceneProblem::ForceNamesUnknownLink {
+                    element: "a force element".into(),
+                    name: name.to_string(),
+                })
+            })
         };
         let f = &m.forces;
         let mut springs = Vec::new();

@@ -16,6 +16,7 @@ use crate::error::{LinkageError, Result};
 use crate::kinematics::Kinematics;
 use crate::roots_util::refine;
 use crate::scene::StopAction;
+use crate::scene_problem::SceneProblem;
 use crate::sweep::unwrap_near;
 
 /// An end stop resolved to the link it watches.
@@ -189,9 +190,7 @@ impl Run {
         };
         let forces = ForceModel::new(m, &start)?;
         if forces.is_massless() {
-            return Err(LinkageError::SceneInvalid(
-                "no link has a mass: there is nothing to integrate".into(),
-            ));
+            return Err(LinkageError::from(SceneProblem::Massless));
         }
         let (kin, x0, v0) = match settings.coordinate {
             Some(link) if link != m.driver.link => {

@@ -15,6 +15,7 @@ use nalgebra::{DMatrix, DVector, UnitComplex};
 use crate::error::{LinkageError, Result};
 use crate::model::{Mechanism, Prismatic};
 use crate::motion::{LinkMotion, PointMotion, Vec2, cross, perp};
+use crate::scene_problem::SceneProblem;
 use crate::small_lu::SmallLu;
 
 mod branch;
@@ -211,10 +212,10 @@ impl Newton {
         let (tree, cuts) = spanning_tree(m)?;
         let unknowns = tree.len() - 1;
         if 2 * cuts.len() != unknowns {
-            return Err(LinkageError::SceneInvalid(format!(
-                "loop closure gives {} equations for {unknowns} unknowns",
-                2 * cuts.len()
-            )));
+            return Err(LinkageError::from(SceneProblem::EquationCount {
+                equations: 2 * cuts.len(),
+                unknowns,
+            }));
         }
         let cuts_len = cuts.len();
         let moved_by = moved_by(&tree, m.links.len());
@@ -749,10 +750,9 @@ fn spanning_tree(m: &Mechanism) -> Result<(Vec<TreeJoint>, Vec<Cut>)> {
         }
     }
     if let Some(l) = visited.iter().position(|v| !v) {
-        return Err(LinkageError::SceneInvalid(format!(
-            "link `{}` is not connected to the chain",
-            m.links[l].name
-        )));
+        return Err(LinkageError::from(SceneProblem::Unconnected {
+            link: m.links[l].name.clone(),
+        }));
     }
     let mut cuts: Vec<Cut> = m
         .revolutes

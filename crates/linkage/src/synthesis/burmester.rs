@@ -18,6 +18,7 @@ use serde::Serialize;
 use super::motion::{BodyPose, MotionFourBar, poles_of};
 use crate::error::{LinkageError, Result};
 use crate::motion::Vec2;
+use crate::synthesis::refusal::DesignRefusal;
 
 /// One row of the linear equations in a: the coefficients and the right-hand side.
 fn row(first: &BodyPose, other: &BodyPose, m: Vec2) -> ([f64; 2], f64) {
@@ -285,9 +286,7 @@ fn check_poses(poses: &[BodyPose], n: usize) -> Result<()> {
 pub fn four_bar_of(poses: &[BodyPose], cranks: [Crank; 2]) -> Result<MotionFourBar> {
     check_poses(poses, poses.len().clamp(4, 5))?;
     if (Vec2::from(cranks[0].circle) - Vec2::from(cranks[1].circle)).norm() < 1e-12 {
-        return Err(LinkageError::SceneInvalid(
-            "the two cranks share a moving pivot".into(),
-        ));
+        return Err(DesignRefusal::CranksShareMovingPivot.into());
     }
     Ok(MotionFourBar {
         poses: poses.to_vec(),
@@ -307,16 +306,13 @@ pub fn four_positions(poses: &[BodyPose], near: [[f64; 2]; 2]) -> Result<MotionF
     check_poses(poses, 4)?;
     let crank = |k: usize| -> Result<Crank> {
         let m = onto_curve(poses, Vec2::from(near[k])).ok_or_else(|| {
-            LinkageError::SceneInvalid(format!(
-                "no point of the centre-point curve found near fixed pivot {} ({:.6}, {:.6})",
-                k + 1,
-                near[k][0],
-                near[k][1]
-            ))
+            LinkageError::from(DesignRefusal::NoCentrePointNear {
+                number: k + 1,
+                near: near[k],
+            })
         })?;
-        let a = circle_point(poses, m).ok_or_else(|| {
-            LinkageError::SceneInvalid(format!("fixed pivot {} is at a pole: no crank", k + 1))
-        })?;
+        let a = circle_point(poses, m)
+            .ok_or_else(|| LinkageError::from(DesignRefusal::FixedPivotIsPole { number: k + 1 }))?;
         Ok(Crank {
             centre: m.into(),
             circle: a.into(),

@@ -16,6 +16,7 @@ use serde::Serialize;
 
 use crate::error::{LinkageError, Result};
 use crate::scene::SceneFile;
+use crate::synthesis::refusal::DesignRefusal;
 
 /// A prescribed input and output angle pair, rad.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -135,16 +136,16 @@ fn lengths(k: [f64; 3], d: f64) -> Result<FunctionFourBar> {
     let [k1, k2, k3] = k;
     let tiny = 1e-12;
     if k1.abs() < tiny || k2.abs() < tiny {
-        return Err(LinkageError::SceneInvalid(format!(
-            "K1 = {k1:.6e}, K2 = {k2:.6e}: the crank or rocker would be infinitely long"
-        )));
+        return Err(DesignRefusal::InfiniteLink { k1, k2 }.into());
     }
     let (a, c) = (d / k1, d / k2);
     let b2 = a * a + c * c + d * d - 2.0 * a * c * k3;
     if b2.is_nan() || b2 <= tiny * d * d {
-        return Err(LinkageError::SceneInvalid(format!(
-            "K1 = {k1:.6}, K2 = {k2:.6}, K3 = {k3:.6} give a coupler length squared of {b2:.6e}: no four-bar meets these points"
-        )));
+        return Err(DesignRefusal::NoCoupler {
+            k,
+            coupler_squared: b2,
+        }
+        .into());
     }
     Ok(FunctionFourBar {
         k,

@@ -13,6 +13,7 @@ pub mod function;
 pub mod motion;
 pub mod path;
 pub mod positions;
+pub mod refusal;
 pub mod rows;
 
 use indexmap::IndexMap;

@@ -13,6 +13,7 @@ use crate::drawing::{Drawing, DrawingLink, DrawingPoint};
 use crate::error::{LinkageError, Result};
 use crate::model::Mechanism;
 use crate::motion::{Vec2, cross};
+use crate::synthesis::refusal::DesignRefusal;
 
 /// A position of the body: where its reference point is and how it is turned.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -120,26 +121,19 @@ pub fn three_positions(poses: [BodyPose; 3], moving: [[f64; 2]; 2]) -> Result<Mo
     }
     let local = moving.map(|m| Vec2::new(m[0], m[1]));
     if (local[0] - local[1]).norm() < 1e-12 {
-        return Err(LinkageError::SceneInvalid(
-            "the two moving pivots are at one place".into(),
-        ));
+        return Err(DesignRefusal::MovingPivotsCoincide.into());
     }
     let mut fixed = [[0.0; 2]; 2];
     for (k, m) in local.iter().enumerate() {
         let [p, q, r] = poses.map(|pose| pose.place(*m));
         let centre = circumcentre(p, q, r).ok_or_else(|| {
-            LinkageError::SceneInvalid(format!(
-                "moving pivot {} ({:.6}, {:.6}) passes its three places in a line: its centre point is at infinity",
-                k + 1,
-                m.x,
-                m.y
-            ))
+            LinkageError::from(DesignRefusal::CentreAtInfinity {
+                number: k + 1,
+                at: [m.x, m.y],
+            })
         })?;
         if (centre - p).norm() < 1e-9 * (q - p).norm().max(1e-9) {
-            return Err(LinkageError::SceneInvalid(format!(
-                "moving pivot {} stays at one place: it is the pole, not a crank",
-                k + 1
-            )));
+            return Err(DesignRefusal::MovingPivotIsPole { number: k + 1 }.into());
         }
         fixed[k] = [centre.x, centre.y];
     }
@@ -208,17 +202,19 @@ impl MotionFourBar {
     pub fn check(&self) -> Result<MotionCheck> {
         let scene = self.drawing().to_scene().map_err(|e| match e {
             crate::drawing::DrawingProblem::Invalid(e) => e,
-            other => LinkageError::SceneInvalid(other.to_string()),
+            _ => DesignRefusal::DrawingIncomplete.into(),
         })?;
         let mut k = Kinematics::new(Mechanism::from_scene(&scene)?)?;
         let p = k
             .mechanism()
             .point_index("P")
-            .ok_or_else(|| LinkageError::SceneInvalid("the coupler point P is missing".into()))?;
+            .ok_or(DesignRefusal::PartMissing {
+                part: "coupler point P",
+            })?;
         let coupler = k
             .mechanism()
             .link_index("coupler")
-            .ok_or_else(|| LinkageError::SceneInvalid("the coupler is missing".into()))?;
+            .ok_or(DesignRefusal::PartMissing { part: "coupler" })?;
         let mut worst = (0.0f64, 0.0f64);
         for (i, pose) in self.poses.iter().enumerate() {
             let s = k.solve(self.input_at(i))?;
