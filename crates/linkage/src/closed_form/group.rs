@@ -1,0 +1,98 @@
+//! One Assur group of the decomposition: a dyad of one of the four kinds, solved
+//! and measured through one interface.
+
+use super::parts::{Failure, GroupOk};
+use super::prp::Prp;
+use super::rpr::Rpr;
+use super::rrp::Rrp;
+use super::rrr::Rrr;
+use crate::dyad::DyadKind;
+use crate::model::Mechanism;
+use crate::motion::LinkMotion;
+use crate::real::Real;
+use crate::scene::Branch;
+
+/// One Assur group of the decomposition.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Group {
+    Rrr(Rrr),
+    Rrp(Rrp),
+    Rpr(Rpr),
+    Prp(Prp),
+}
+
+impl Group {
+    /// Solves the group from the already-known links. With `motion == false` only
+    /// positions are computed (used for the assembly margin, also at singular points).
+    #[inline(always)]
+    pub(super) fn solve<T: Real>(
+        &self,
+        links: &mut [LinkMotion<T>],
+        motion: bool,
+        group: usize,
+    ) -> std::result::Result<GroupOk<T>, Failure> {
+        match self {
+            Group::Rrr(g) => g.solve(links, motion, group),
+            Group::Rrp(g) => g.solve(links, motion, group),
+            Group::Rpr(g) => g.solve(links, motion, group),
+            Group::Prp(g) => g.solve(links, motion, group),
+        }
+    }
+
+    /// The two unknown links.
+    pub(crate) fn links(&self) -> (usize, usize) {
+        match self {
+            Group::Rrr(g) => (g.i, g.j),
+            Group::Rrp(g) => (g.i, g.j),
+            Group::Rpr(g) => (g.slider, g.guide),
+            Group::Prp(g) => (g.i, g.j),
+        }
+    }
+
+    /// Switches the group to its other assembly branch (a PRP group has only one).
+    pub(super) fn flip_branch(&mut self) {
+        match self {
+            Group::Rrr(g) => g.sign = -g.sign,
+            Group::Rrp(g) => g.sign = -g.sign,
+            Group::Rpr(g) => g.sign = -g.sign,
+            Group::Prp(_) => {}
+        }
+    }
+
+    /// The branch this group is on, as a scene writes it (a PRP group has none).
+    pub(super) fn branch(&self, m: &Mechanism) -> Option<Branch> {
+        let along = |sign: f64| {
+            if sign > 0.0 {
+                Branch::Along
+            } else {
+                Branch::Against
+            }
+        };
+        match self {
+            Group::Rrr(g) => {
+                let (a, c) = (
+                    &m.points[g.end_points.0].name,
+                    &m.points[g.end_points.1].name,
+                );
+                Some(if g.sign > 0.0 {
+                    Branch::Left(a.clone(), c.clone())
+                } else {
+                    Branch::Right(a.clone(), c.clone())
+                })
+            }
+            Group::Rrp(g) => Some(along(g.sign)),
+            Group::Rpr(g) => Some(along(g.sign)),
+            Group::Prp(_) => None,
+        }
+    }
+
+    /// The group type in Assur notation.
+    pub(crate) fn kind(&self) -> DyadKind {
+        match self {
+            Group::Rrr(_) => DyadKind::Rrr,
+            Group::Rrp(_) => DyadKind::Rrp,
+            Group::Rpr(_) => DyadKind::Rpr,
+            Group::Prp(_) => DyadKind::Prp,
+        }
+    }
+}
