@@ -5,7 +5,7 @@ use thiserror::Error;
 
 use crate::assembly::AssemblyRanges;
 use crate::dyad::DyadLabel;
-pub use crate::scene_problem::SceneProblem;
+pub use crate::model::SceneProblem;
 pub use crate::synthesis::refusal::DesignRefusal;
 
 /// Why a chain does not close at an input, as data ([`LinkageError::CannotAssemble`]).

@@ -7,10 +7,10 @@ use crate::dyad::DyadLabel;
 use crate::error::{AssemblyFailure, LinkageError, Result};
 use crate::lanes::{LANES, LaneSolution, Lanes};
 use crate::model::Mechanism;
+use crate::model::SceneProblem;
 use crate::motion::{LinkMotion, Solution};
 use crate::newton::Newton;
 use crate::scene::SolverPath;
-use crate::scene_problem::SceneProblem;
 
 /// The solver path in use; serialized as its label.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]

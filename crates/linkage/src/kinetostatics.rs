@@ -12,8 +12,8 @@ use serde::Serialize;
 use crate::dynamics::ForceModel;
 use crate::error::{LinkageError, Result};
 use crate::kinematics::Kinematics;
+use crate::model::SceneProblem;
 use crate::motion::{Solution, Vec2, cross, perp};
-use crate::scene_problem::SceneProblem;
 
 /// Which kind of joint a reaction acts in: a revolute carries a force, a prismatic
 /// joint a force across its guide and a couple.

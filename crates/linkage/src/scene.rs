@@ -10,7 +10,7 @@ use indexmap::IndexMap;
 use serde::{Deserialize, Serialize};
 
 use crate::error::{LinkageError, Result};
-use crate::scene_problem::SceneProblem;
+use crate::model::SceneProblem;
 
 /// What a scene asks the program to compute.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]

@@ -4,8 +4,8 @@
 use crate::dyad::DyadKind;
 use crate::error::{LinkageError, Result};
 use crate::model::Mechanism;
+use crate::model::SceneProblem;
 use crate::scene::Branch;
-use crate::scene_problem::SceneProblem;
 
 /// The scene's assembly branches, or while a pose is matched (`provisional`) any
 /// valid branch of the right kind (`ClosedForm::match_pose` fixes it).

@@ -6,8 +6,8 @@ use nalgebra::UnitComplex;
 use super::parts::{Pin, direction};
 use crate::error::{LinkageError, Result};
 use crate::model::Mechanism;
+use crate::model::SceneProblem;
 use crate::motion::Vec2;
-use crate::scene_problem::SceneProblem;
 
 /// A joint seen from the decomposition.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

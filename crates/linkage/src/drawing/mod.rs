@@ -13,12 +13,12 @@ use crate::Kinematics;
 use crate::closed_form::ClosedForm;
 use crate::error::LinkageError;
 use crate::model::Mechanism;
+use crate::model::SceneProblem;
 use crate::motion::{LinkMotion, Vec2};
 use crate::scene::{
     AngleUnit, DamperSpec, DriverSpec, ForceWhen, ForcesSpec, FreeLength, LengthUnit, LinkSpec,
     Models, PointForceSpec, SceneFile, SliderSpec, Speed, SpringSpec,
 };
-use crate::scene_problem::SceneProblem;
 pub use from_scene::NotDrawable;
 
 /// A point of the drawing.

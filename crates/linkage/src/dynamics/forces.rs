@@ -3,9 +3,9 @@
 use crate::error::{LinkageError, Result};
 use crate::kinematics::Kinematics;
 use crate::model::Mechanism;
+use crate::model::SceneProblem;
 use crate::motion::{Solution, Vec2, cross};
 use crate::scene::{DamperSpec, ForceWhen, FreeLength, Models};
-use crate::scene_problem::SceneProblem;
 
 /// Mass data of one moving link, SI.
 #[derive(Clone, Debug, PartialEq)]

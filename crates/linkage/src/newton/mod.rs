@@ -13,9 +13,9 @@
 use nalgebra::{DMatrix, DVector, UnitComplex};
 
 use crate::error::{LinkageError, Result};
+use crate::model::SceneProblem;
 use crate::model::{Mechanism, Prismatic};
 use crate::motion::{LinkMotion, PointMotion, Vec2, cross, perp};
-use crate::scene_problem::SceneProblem;
 use crate::small_lu::SmallLu;
 
 mod branch;

@@ -6,7 +6,16 @@ use crate::error::{LinkageError, Result};
 use crate::motion::{LinkMotion, SlideMotion, Vec2, perp};
 use crate::real::{Real, splat, splat_vec};
 use crate::scene::{Branch, ForcesSpec, Models, SceneFile, SolverSpec};
-use crate::scene_problem::SceneProblem;
+
+mod driver;
+mod forces;
+mod from_scene;
+mod joints;
+mod links;
+mod problem;
+mod units;
+
+pub use problem::{LonePoint, MadeJoint, SceneProblem};
 
 /// A rigid link.
 #[derive(Clone, Debug, PartialEq)]

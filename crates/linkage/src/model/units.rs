@@ -1,0 +1,71 @@
+//! The scene's lengths and angles in SI, and the checks every number passes: finite,
+//! positive, an angle a double holds to 1e-11 rad.
+
+use crate::error::{LinkageError, Result};
+use crate::model::MAX_ANGLE_RAD;
+use crate::model::problem::SceneProblem;
+use crate::motion::Vec2;
+
+/// The scene's lengths and angles in SI.
+#[derive(Clone, Copy)]
+pub(super) struct Units {
+    /// Metres per scene length unit.
+    pub(super) len: f64,
+    /// Radians per scene angle unit.
+    pub(super) ang: f64,
+}
+
+impl Units {
+    /// A scene point named `ctx`, in metres.
+    pub(super) fn point(self, ctx: &str, (x, y): (f64, f64)) -> Result<Vec2> {
+        Ok(Vec2::new(
+            finite(&format!("{ctx}.x"), x)? * self.len,
+            finite(&format!("{ctx}.y"), y)? * self.len,
+        ))
+    }
+}
+
+pub(super) fn invalid(problem: SceneProblem) -> LinkageError {
+    LinkageError::from(problem)
+}
+
+pub(super) fn finite(name: &str, v: f64) -> Result<f64> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        Err(LinkageError::InvalidParameter {
+            name: name.to_string(),
+            value: v,
+            valid: "must be a finite number".into(),
+        })
+    }
+}
+
+/// A scene angle `v` in the scene's unit (`rad_per_unit` radians each), in radians.
+pub(super) fn scene_angle(name: &str, v: f64, rad_per_unit: f64) -> Result<f64> {
+    let rad = finite(name, v)? * rad_per_unit;
+    if rad.abs() <= MAX_ANGLE_RAD {
+        Ok(rad)
+    } else {
+        let limit = MAX_ANGLE_RAD / rad_per_unit;
+        Err(LinkageError::InvalidParameter {
+            name: name.to_string(),
+            value: v,
+            valid: format!(
+                "must lie within ±{limit:.6} (the scene's angle unit; about 3200 turns), beyond which a double cannot hold the angle to 1e-11 rad: give it within one turn"
+            ),
+        })
+    }
+}
+
+pub(super) fn positive(name: &str, v: f64) -> Result<f64> {
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        Err(LinkageError::InvalidParameter {
+            name: name.to_string(),
+            value: v,
+            valid: "must be finite and > 0".into(),
+        })
+    }
+}
