@@ -8,6 +8,7 @@ use glam::Vec2;
 use super::shape::{Kind, Shape};
 use super::view::Camera;
 use crate::session::Session;
+use linkage::PointId;
 
 /// Colours, gamma-space RGBA.
 pub(super) mod colour {
@@ -108,13 +109,13 @@ struct Drawn<'a> {
 
 impl Drawn<'_> {
     /// Point `p` of the pose, m.
-    fn at(&self, p: usize) -> [f64; 2] {
+    fn at(&self, p: PointId) -> [f64; 2] {
         let q = self.s.pose().points[p].position;
         [q.x, q.y]
     }
 
     /// Point `p` in the camera's local coordinates.
-    fn pos(&self, p: usize) -> Vec2 {
+    fn pos(&self, p: PointId) -> Vec2 {
         self.cam.local(self.at(p))
     }
 }
@@ -303,7 +304,7 @@ fn arrows(
             &mut scales.acceleration,
         ),
     ] {
-        let vec_of = |p: usize| {
+        let vec_of = |p: PointId| {
             let pm = &pose.points[p];
             if field == 0 {
                 pm.velocity

@@ -6,7 +6,7 @@ use std::io::Write;
 
 use linkage::sweep::{csv_header, csv_row};
 use linkage::synthesis::{DieCutterSpec, crank_rocker, die_cutter, die_cutter_as_printed};
-use linkage::{Kinematics, Mechanism, Solution};
+use linkage::{Kinematics, LinkId, Mechanism, Solution};
 use serde_json::{Value, json};
 
 use crate::args::{Format, SceneArgs, SynthCommand};
@@ -255,7 +255,7 @@ pub(crate) fn synth(what: SynthCommand) -> Result<String> {
 fn instant_centres_json(m: &Mechanism, s: &Solution) -> Value {
     use linkage::instant_centres::{Centre, FoundBy, instant_centres};
     let ic = instant_centres(m, s);
-    let names = |[a, b]: [usize; 2]| json!([m.links[a].name, m.links[b].name]);
+    let names = |[a, b]: [LinkId; 2]| json!([m.links[a].name, m.links[b].name]);
     let centres: Vec<Value> = ic
         .centres
         .iter()

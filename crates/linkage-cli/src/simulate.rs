@@ -2,7 +2,7 @@
 //! speed and the energy terms; JSON adds the events and the run's cost.
 
 use linkage::dynamics::{Method, Settings, Simulation, simulate};
-use linkage::{Kinematics, Mechanism};
+use linkage::{Kinematics, LinkId, Mechanism};
 use serde_json::{Value, json};
 
 use crate::args::{Format, MethodArg, SceneArgs, SimArgs};
@@ -61,7 +61,7 @@ impl SimArgs {
 /// Every moving link's (name, angle, omega) at each sample, angles unwrapped along
 /// the run like `sweep`.
 fn link_rows(sim: &mut Simulation, mech: &Mechanism) -> Result<Vec<Vec<f64>>> {
-    let links: Vec<usize> = mech.moving_links().collect();
+    let links: Vec<LinkId> = mech.moving_links().collect();
     let mut rows: Vec<Vec<f64>> = Vec::with_capacity(sim.samples.len());
     for s in sim.samples.clone() {
         let pose = sim

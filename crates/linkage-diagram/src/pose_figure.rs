@@ -4,7 +4,7 @@
 //! as the direction it lies in). Units are metres, y up.
 
 use linkage::instant_centres::{Centre, InstantCentres};
-use linkage::{Mechanism, Solution};
+use linkage::{LinkId, Mechanism, PointId, Solution};
 
 use crate::geometry::{Pt, Rect};
 use crate::label::{Label, Run, Script};
@@ -44,7 +44,7 @@ pub struct PoseFigure {
 
 /// The number a link goes by in instant-centre names: the frame is 1, the moving
 /// links follow in the scene's order.
-pub fn link_number(m: &Mechanism, link: usize) -> usize {
+pub fn link_number(m: &Mechanism, link: LinkId) -> usize {
     if link == m.ground {
         1
     } else {
@@ -55,7 +55,7 @@ pub fn link_number(m: &Mechanism, link: usize) -> usize {
 impl PoseFigure {
     /// The figure of `m` at `s`, with `centres` if given.
     pub fn new(m: &Mechanism, s: &Solution, centres: Option<&InstantCentres>) -> Self {
-        let at = |p: usize| {
+        let at = |p: PointId| {
             let q = s.points[p].position;
             [q.x, q.y]
         };
@@ -63,7 +63,7 @@ impl PoseFigure {
         let links = m
             .moving_links()
             .map(|l| {
-                let mut pts: Vec<usize> = m
+                let mut pts: Vec<PointId> = m
                     .revolutes
                     .iter()
                     .filter(|r| r.a == l || r.b == l)

@@ -18,6 +18,7 @@ use nalgebra::Vector3;
 use serde::Serialize;
 
 use crate::Solution;
+use crate::ids::{LinkId, PointId};
 use crate::model::Mechanism;
 use crate::motion::Vec2;
 
@@ -38,12 +39,12 @@ pub enum Centre {
 /// How a centre was found.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub enum FoundBy {
-    /// The pin of a revolute joint (index into `Mechanism::points`).
-    Pin(usize),
+    /// The pin of a revolute joint.
+    Pin(PointId),
     /// A prismatic joint (index into `Mechanism::sliders`).
     Slide(usize),
     /// Kennedy's theorem through the centres of these two other links.
-    Kennedy([usize; 2]),
+    Kennedy([LinkId; 2]),
     /// Where the two links' velocities agree (Kennedy's lines all coincide here).
     Velocities,
 }
@@ -52,7 +53,7 @@ pub enum FoundBy {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct InstantCentre {
     /// The two links, indices into `Mechanism::links`, the lower first.
-    pub links: [usize; 2],
+    pub links: [LinkId; 2],
     /// Where it is.
     pub centre: Centre,
     /// How it was found.
@@ -66,12 +67,12 @@ pub struct InstantCentres {
     pub centres: Vec<InstantCentre>,
     /// Pairs whose centre neither Kennedy's theorem nor the velocities fix: the two
     /// links move as one at this pose (a dead point of the chain, or no motion).
-    pub unresolved: Vec<[usize; 2]>,
+    pub unresolved: Vec<[LinkId; 2]>,
 }
 
 impl InstantCentres {
     /// The centre of links `i` and `j`, if found.
-    pub fn between(&self, i: usize, j: usize) -> Option<&InstantCentre> {
+    pub fn between(&self, i: LinkId, j: LinkId) -> Option<&InstantCentre> {
         let key = [i.min(j), i.max(j)];
         self.centres.iter().find(|c| c.links == key)
     }
@@ -85,12 +86,22 @@ pub fn instant_centres(m: &Mechanism, s: &Solution) -> InstantCentres {
     let mut table = Table::new(n);
     for r in &m.revolutes {
         let p = s.points[r.point].position / scale;
-        table.set(r.a, r.b, Vector3::new(p.x, p.y, 1.0), FoundBy::Pin(r.point));
+        table.set(
+            r.a.index(),
+            r.b.index(),
+            Vector3::new(p.x, p.y, 1.0),
+            FoundBy::Pin(r.point),
+        );
     }
     for (i, slide) in m.sliders.iter().enumerate() {
         let g = slide.direction(&s.links);
         let normal = Vector3::new(-g.y, g.x, 0.0);
-        table.set(slide.slider, slide.guide, normal, FoundBy::Slide(i));
+        table.set(
+            slide.slider.index(),
+            slide.guide.index(),
+            normal,
+            FoundBy::Slide(i),
+        );
     }
     while table.kennedy_pass() {}
     for i in 0..n {
@@ -156,7 +167,7 @@ impl Table {
                 if self.get(i, j).is_none()
                     && let Some((p, via)) = self.kennedy(i, j)
                 {
-                    self.set(i, j, p, FoundBy::Kennedy(via));
+                    self.set(i, j, p, FoundBy::Kennedy(via.map(LinkId)));
                     found = true;
                 }
             }
@@ -193,11 +204,11 @@ impl Table {
             for j in i + 1..self.n {
                 match self.known[i * self.n + j] {
                     Some((p, found_by)) => out.centres.push(InstantCentre {
-                        links: [i, j],
+                        links: [LinkId(i), LinkId(j)],
                         centre: to_centre(p, scale),
                         found_by,
                     }),
-                    None => out.unresolved.push([i, j]),
+                    None => out.unresolved.push([LinkId(i), LinkId(j)]),
                 }
             }
         }

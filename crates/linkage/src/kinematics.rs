@@ -5,6 +5,7 @@ use crate::assembly::AssemblyRanges;
 use crate::closed_form::{ClosedForm, Failure, finish_solution};
 use crate::dyad::DyadLabel;
 use crate::error::{AssemblyFailure, LinkageError, Result};
+use crate::ids::LinkId;
 use crate::lanes::{LANES, LaneSolution, Lanes};
 use crate::model::Mechanism;
 use crate::model::SceneProblem;
@@ -123,15 +124,15 @@ impl Kinematics {
     ///
     /// # Errors
     /// [`LinkageError::NotACoordinate`] when `link` has no revolute joint to ground.
-    pub fn redriven(&self, link: usize, pose: &Solution) -> Result<Self> {
+    pub fn redriven(&self, link: LinkId, pose: &Solution) -> Result<Self> {
         let m = &self.mech;
         let pivot = m
             .ground_pivot_of(link)
             .ok_or_else(|| LinkageError::NotACoordinate {
                 link: m
                     .links
-                    .get(link)
-                    .map_or_else(|| format!("#{link}"), |l| l.name.clone()),
+                    .get(link.index())
+                    .map_or_else(|| format!("#{}", link.index()), |l| l.name.clone()),
                 candidates: m
                     .moving_links()
                     .filter(|&l| m.ground_pivot_of(l).is_some())

@@ -11,6 +11,7 @@ use serde::Serialize;
 
 use crate::dynamics::ForceModel;
 use crate::error::{LinkageError, Result};
+use crate::ids::LinkId;
 use crate::kinematics::Kinematics;
 use crate::model::SceneProblem;
 use crate::motion::{Solution, Vec2, cross, perp};
@@ -99,7 +100,7 @@ impl Kinetostatics {
         let applied = self.forces.applied_loads(sol);
         let inertia = self.forces.inertia_loads(sol);
         // Virtual work: T ω + Σ P_applied = Σ dE/dt over the moving links.
-        let moving: Vec<usize> = m.moving_links().collect();
+        let moving: Vec<LinkId> = m.moving_links().collect();
         let power_needed: f64 = moving
             .iter()
             .map(|&l| inertia[l].power - applied[l].power)
@@ -107,7 +108,7 @@ impl Kinetostatics {
         let torque_virtual_work = power_needed / omega;
 
         // Newton–Euler: unknowns (Fx, Fy) per revolute, (N, C) per prismatic, T.
-        let row_of = |link: usize| moving.iter().position(|&l| l == link).map(|i| 3 * i);
+        let row_of = |link: LinkId| moving.iter().position(|&l| l == link).map(|i| 3 * i);
         let (nr, np) = (m.revolutes.len(), m.sliders.len());
         let n = 2 * nr + 2 * np + 1;
         if 3 * moving.len() != n {
@@ -142,13 +143,13 @@ impl Kinetostatics {
 /// The Newton–Euler system's matrix: three rows per moving link (force x, y, moment
 /// about the origin), a column per unknown: (Fx, Fy) per revolute, (N, C) per
 /// prismatic joint, then the input torque.
-fn reaction_matrix(m: &crate::Mechanism, sol: &Solution, moving: &[usize]) -> DMatrix<f64> {
-    let row_of = |link: usize| moving.iter().position(|&l| l == link).map(|i| 3 * i);
+fn reaction_matrix(m: &crate::Mechanism, sol: &Solution, moving: &[LinkId]) -> DMatrix<f64> {
+    let row_of = |link: LinkId| moving.iter().position(|&l| l == link).map(|i| 3 * i);
     let (nr, np) = (m.revolutes.len(), m.sliders.len());
     let n = 2 * nr + 2 * np + 1;
     let mut a = DMatrix::<f64>::zeros(n, n);
     // A force f at point p on `link` in unknown column `col` (times the unknown).
-    let put = |a: &mut DMatrix<f64>, link: usize, col: usize, f: Vec2, p: Vec2| {
+    let put = |a: &mut DMatrix<f64>, link: LinkId, col: usize, f: Vec2, p: Vec2| {
         if let Some(r) = row_of(link) {
             a[(r, col)] += f.x;
             a[(r + 1, col)] += f.y;
@@ -185,7 +186,7 @@ fn reaction_matrix(m: &crate::Mechanism, sol: &Solution, moving: &[usize]) -> DM
 /// joints.
 fn reactions(m: &crate::Mechanism, sol: &Solution, x: &DVector<f64>) -> Vec<JointReaction> {
     let nr = m.revolutes.len();
-    let name = |link: usize| m.links[link].name.as_str();
+    let name = |link: LinkId| m.links[link].name.as_str();
     let mut joints = Vec::with_capacity(nr + m.sliders.len());
     for (j, rv) in m.revolutes.iter().enumerate() {
         joints.push(JointReaction {

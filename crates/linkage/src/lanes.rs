@@ -14,6 +14,7 @@
 
 use nalgebra::{SimdValue, Vector2};
 
+use crate::ids::LinkId;
 use crate::motion::{LinkMotion, PointMotion, SlideMotion, Solution, Vec2};
 pub use crate::real::{LANES, Lanes, Real, splat, splat_vec};
 
@@ -56,7 +57,7 @@ pub struct LaneSolution {
     pub(crate) points: Vec<PointMotion<Lanes>>,
     pub(crate) slides: Vec<SlideMotion<Lanes>>,
     /// Index of the ground link these buffers were made for.
-    pub(crate) ground: usize,
+    pub(crate) ground: LinkId,
     /// Conditioning of each lane (see [`Solution::conditioning`]).
     pub conditioning: [f64; LANES],
 }

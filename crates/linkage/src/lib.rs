@@ -22,6 +22,7 @@ pub mod drawing;
 pub mod dyad;
 pub mod dynamics;
 pub mod error;
+pub mod ids;
 pub mod instant_centres;
 pub mod kinematics;
 pub mod kinetostatics;
@@ -42,6 +43,7 @@ pub mod synthesis;
 mod unique_map;
 
 pub use error::{DesignRefusal, LinkageError, Result, SceneProblem};
+pub use ids::{LinkId, PointId};
 pub use kinematics::{Closure, Kinematics, PathKind};
 pub use model::Mechanism;
 pub use motion::{LinkMotion, PointMotion, SlideMotion, Solution, Vec2};

@@ -9,6 +9,7 @@ use std::fmt;
 use serde::{Serialize, Serializer};
 
 use crate::closed_form::Group;
+use crate::ids::LinkId;
 use crate::kinematics::Kinematics;
 use crate::model::Mechanism;
 use crate::motion::{PointMotion, Solution, Vec2, perp};
@@ -185,7 +186,7 @@ fn term(
     }
 }
 
-fn point_name(m: &Mechanism, link: usize, local: &Vec2) -> String {
+fn point_name(m: &Mechanism, link: LinkId, local: &Vec2) -> String {
     m.links[link]
         .points
         .iter()
@@ -197,7 +198,7 @@ fn point_name(m: &Mechanism, link: usize, local: &Vec2) -> String {
 }
 
 /// The ground pivot of a link pinned to ground: its name and place on the link.
-fn ground_pivot(m: &Mechanism, link: usize) -> Option<(String, Vec2)> {
+fn ground_pivot(m: &Mechanism, link: LinkId) -> Option<(String, Vec2)> {
     m.revolutes.iter().find_map(|r| {
         let local = if r.a == link && r.b == m.ground {
             r.a_local
@@ -215,7 +216,7 @@ fn ground_pivot(m: &Mechanism, link: usize) -> Option<(String, Vec2)> {
 fn known_point(
     m: &Mechanism,
     s: &Solution,
-    link: usize,
+    link: LinkId,
     name: &str,
     p: &PointMotion,
     accel: bool,
@@ -312,7 +313,7 @@ fn relative(
 fn riding(
     m: &Mechanism,
     s: &Solution,
-    guide: usize,
+    guide: LinkId,
     m_name: &str,
     pm: &PointMotion,
     accel: bool,

@@ -8,7 +8,7 @@ mod common;
 use common::{mechanism, scene_text};
 use linkage::dynamics::{Method, Settings, Simulation, simulate, tradeoff};
 use linkage::scene::FreeLength;
-use linkage::{Kinematics, Mechanism};
+use linkage::{Kinematics, LinkId, Mechanism};
 
 fn flipper() -> Kinematics {
     Kinematics::new(mechanism("gravity_flipper.ron")).expect("flipper")
@@ -55,12 +55,12 @@ fn two_coordinates_a_tight_run_and_the_energy_balance_agree() {
     in_link1.switch_coordinates = false;
     in_link1.output_dt = Some(grid);
     let a = simulate(&k, &in_link1).expect("link 1 coordinate");
-    assert!(a.samples.iter().all(|s| s.coordinate_link == 1));
+    assert!(a.samples.iter().all(|s| s.coordinate_link == LinkId(1)));
     let mut in_link3 = in_link1.clone();
     in_link3.coordinate = link3;
     in_link3.t_end = 0.12;
     let b = simulate(&k, &in_link3).expect("link 3 coordinate");
-    assert!(b.samples.iter().all(|s| s.coordinate_link == 3));
+    assert!(b.samples.iter().all(|s| s.coordinate_link == LinkId(3)));
     let overlap = b
         .samples
         .iter()

@@ -17,7 +17,7 @@ use common::{SCENES, cycle, kinematics};
 use linkage::instant_centres::{Centre, FoundBy, InstantCentres, instant_centres};
 use linkage::motion::perp;
 use linkage::scene::SolverPath;
-use linkage::{Mechanism, Solution, Vec2};
+use linkage::{LinkId, Mechanism, Solution, Vec2};
 
 /// Below this conditioning the pose is a dead point, where the crank no longer
 /// drives the chain and the ratios are 0/0.
@@ -31,7 +31,7 @@ fn point(c: &Centre) -> Option<Vec2> {
 }
 
 /// Velocity of the material point of link `k` at `x`, from the solver.
-fn velocity_of(s: &Solution, k: usize, x: &Vec2) -> Vec2 {
+fn velocity_of(s: &Solution, k: LinkId, x: &Vec2) -> Vec2 {
     s.links[k].material_point_at(x).velocity
 }
 
@@ -90,8 +90,8 @@ fn check_against_velocity_fields(m: &Mechanism, s: &Solution, ic: &InstantCentre
 fn omega_from_centres(m: &Mechanism, s: &Solution, ic: &InstantCentres) -> Vec<f64> {
     let (g, input) = (m.ground, m.driver.link);
     let w_in = s.links[input].omega_rad_s;
-    let centre = |a: usize, b: usize| ic.between(a, b).expect("every centre found").centre;
-    (0..m.links.len())
+    let centre = |a: LinkId, b: LinkId| ic.between(a, b).expect("every centre found").centre;
+    m.link_ids()
         .map(|j| {
             if j == g {
                 return 0.0;
@@ -118,18 +118,19 @@ fn omega_from_centres(m: &Mechanism, s: &Solution, ic: &InstantCentres) -> Vec<f
 fn check_velocities_from_centres(m: &Mechanism, s: &Solution, ic: &InstantCentres, what: &str) {
     let g = m.ground;
     let omega = omega_from_centres(m, s, ic);
-    let centre = |a: usize, b: usize| point(&ic.between(a, b).expect("found").centre);
+    let centre = |a: LinkId, b: LinkId| point(&ic.between(a, b).expect("found").centre);
     let v_scale = s
         .points
         .iter()
         .map(|p| p.velocity.norm())
         .fold(0.0, f64::max);
-    for (j, link) in m.links.iter().enumerate().filter(|(j, _)| *j != g) {
+    for (j, link) in m.link_ids().zip(&m.links).filter(|(j, _)| *j != g) {
         let v_of = |p: &Vec2| -> Vec2 {
             if let Some(pgj) = centre(g, j) {
                 return perp(&(p - pgj)) * omega[j];
             }
-            let (pij, pgi, i) = (0..m.links.len())
+            let (pij, pgi, i) = m
+                .link_ids()
                 .filter(|&i| i != j && i != g)
                 .find_map(|i| Some((centre(i, j)?, centre(g, i)?, i)))
                 .expect("a turning link beside a translating one");

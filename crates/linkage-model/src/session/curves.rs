@@ -9,7 +9,7 @@ use linkage::dynamics::ForceModel;
 use linkage::kinetostatics::Kinetostatics;
 use linkage::scene::Models;
 use linkage::sweep::{Sweep, sweep};
-use linkage::{Kinematics, Solution};
+use linkage::{Kinematics, LinkId, PointId, Solution};
 
 /// Positions per cycle in the curves (one per degree of a full turn).
 pub const CURVE_STEPS: usize = 361;
@@ -32,8 +32,8 @@ pub struct OutputCurve {
 /// A named point's path over the cycle (a coupler curve).
 #[derive(Clone, Debug)]
 pub struct Trace {
-    /// Index of the point in the mechanism.
-    pub point: usize,
+    /// The point in the mechanism.
+    pub point: PointId,
     /// Positions in sweep order, m.
     pub path: Vec<[f64; 2]>,
 }
@@ -220,16 +220,15 @@ fn output_curve(out: &Output, sw: &Sweep, xy: Sampler<'_>) -> OutputCurve {
 /// (points on cranks and rockers only trace circle arcs).
 fn traces(k: &Kinematics, sw: &Sweep) -> Vec<Trace> {
     let m = k.mechanism();
-    let pinned_to_ground = |link: usize| {
+    let pinned_to_ground = |link: LinkId| {
         link == m.ground
             || m.ground_pivot_of(link).is_some()
             || m.sliders
                 .iter()
                 .any(|s| s.slider == link && s.guide == m.ground)
     };
-    m.points
-        .iter()
-        .enumerate()
+    m.point_ids()
+        .zip(&m.points)
         .filter(|(_, p)| !pinned_to_ground(p.link))
         .map(|(i, _)| Trace {
             point: i,

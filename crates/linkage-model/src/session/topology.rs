@@ -1,26 +1,28 @@
 //! Which points are joints and which joints each link carries. It depends only on the
 //! mechanism, so it is derived once per edit instead of in every frame's drawing.
 
-use linkage::Mechanism;
+use linkage::{Mechanism, PointId};
 
 /// The joint structure of one mechanism, by point and link index.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Topology {
     /// Points that are joints (pins and slider points), each once, ascending.
-    pub joint_points: Vec<usize>,
-    /// Per link: the points of its revolute joints, in revolute order.
-    pub link_joints: Vec<Vec<usize>>,
+    pub joint_points: Vec<PointId>,
+    /// Per link (indexed by its `LinkId`): the points of its revolute joints, in
+    /// revolute order.
+    pub link_joints: Vec<Vec<PointId>>,
     /// Per link: its other points (tool points, centroids, spring anchors).
-    pub link_others: Vec<Vec<usize>>,
+    pub link_others: Vec<Vec<PointId>>,
     /// Points on moving links that are not joints: drawn as marks.
-    pub marks: Vec<usize>,
+    pub marks: Vec<PointId>,
 }
 
 impl Topology {
     /// The topology of `m`.
     pub fn of(m: &Mechanism) -> Self {
         let joint_points = m.joint_points();
-        let link_joints: Vec<Vec<usize>> = (0..m.links.len())
+        let link_joints: Vec<Vec<PointId>> = m
+            .link_ids()
             .map(|l| {
                 m.revolutes
                     .iter()
@@ -41,7 +43,8 @@ impl Topology {
                     .collect()
             })
             .collect();
-        let marks = (0..m.points.len())
+        let marks = m
+            .point_ids()
             .filter(|i| joint_points.binary_search(i).is_err() && m.points[*i].link != m.ground)
             .collect();
         Self {

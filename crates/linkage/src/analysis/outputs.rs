@@ -1,5 +1,6 @@
 //! The outputs whose extremes are sought: rockers (links pinned to ground) and sliders.
 
+use crate::ids::LinkId;
 use crate::kinematics::Kinematics;
 use crate::motion::Solution;
 
@@ -9,7 +10,7 @@ pub enum Output {
     /// Angle of a link pinned to ground (other than the input).
     Rocker {
         /// Link index.
-        link: usize,
+        link: LinkId,
         /// Link name.
         name: String,
     },

@@ -6,6 +6,7 @@ use serde::Serialize;
 use super::TAU;
 use crate::assembly::AssemblyRanges;
 use crate::closed_form::Group;
+use crate::ids::{LinkId, PointId};
 use crate::kinematics::Kinematics;
 use crate::motion::{Solution, Vec2, cross, perp};
 use crate::roots_util::{refine, sign_changes};
@@ -140,7 +141,7 @@ pub fn transmission_angle(
 /// link's direction is taken from the point to its next joint point.
 pub fn collinear_joints(k: &Kinematics, s: &Solution, tol_rad: f64) -> Vec<String> {
     let m = k.mechanism();
-    let other_joint = |link: usize, not: usize| -> Option<Vec2> {
+    let other_joint = |link: LinkId, not: PointId| -> Option<Vec2> {
         m.links[link]
             .points
             .iter()
@@ -148,8 +149,8 @@ pub fn collinear_joints(k: &Kinematics, s: &Solution, tol_rad: f64) -> Vec<Strin
             .map(|(_, local)| s.links[link].world(local))
     };
     let mut found = Vec::new();
-    for (pi, point) in m.points.iter().enumerate() {
-        let users: Vec<usize> = m
+    for (pi, point) in m.point_ids().zip(&m.points) {
+        let users: Vec<LinkId> = m
             .moving_links()
             .filter(|&l| m.links[l].local(pi).is_some())
             .collect();

@@ -3,6 +3,7 @@
 
 use crate::dyad::DyadKind;
 use crate::error::{LinkageError, Result};
+use crate::ids::PointId;
 use crate::model::Mechanism;
 use crate::model::SceneProblem;
 use crate::scene::Branch;
@@ -16,7 +17,7 @@ pub(super) struct Branches<'a> {
 
 impl Branches<'_> {
     /// The branch of the `kind` dyad whose inner joint is `point`.
-    pub(super) fn of(&self, point: usize, kind: DyadKind) -> Result<Branch> {
+    pub(super) fn of(&self, point: PointId, kind: DyadKind) -> Result<Branch> {
         match self.m.branch_for(point) {
             Some(b) => Ok(b.clone()),
             None if self.provisional && kind == DyadKind::Rrr => {
@@ -32,9 +33,9 @@ impl Branches<'_> {
 
     /// An RRR dyad's sign: +1 on the left of its ends `pa` to `pc` as the branch
     /// names them.
-    pub(super) fn rrr_sign(&self, mid: usize, pa: usize, pc: usize) -> Result<f64> {
+    pub(super) fn rrr_sign(&self, mid: PointId, pa: PointId, pc: PointId) -> Result<f64> {
         let m = self.m;
-        let names = |p: usize| m.points[p].name.clone();
+        let names = |p: PointId| m.points[p].name.clone();
         match self.of(mid, DyadKind::Rrr)? {
             Branch::Left(f, t) if f.is_empty() && t.is_empty() => Ok(1.0),
             Branch::Left(f, t) | Branch::Right(f, t) => {
@@ -65,7 +66,12 @@ impl Branches<'_> {
 
     /// A sliding dyad's sign: +1 Along, -1 Against; else a refusal that names the
     /// joint as `joint_kind` (how the user knows it).
-    pub(super) fn slide_sign(&self, point: usize, kind: DyadKind, joint_kind: &str) -> Result<f64> {
+    pub(super) fn slide_sign(
+        &self,
+        point: PointId,
+        kind: DyadKind,
+        joint_kind: &str,
+    ) -> Result<f64> {
         match self.of(point, kind)? {
             Branch::Along => Ok(1.0),
             Branch::Against => Ok(-1.0),

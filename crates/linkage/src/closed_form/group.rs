@@ -7,6 +7,7 @@ use super::rpr::Rpr;
 use super::rrp::Rrp;
 use super::rrr::Rrr;
 use crate::dyad::DyadKind;
+use crate::ids::LinkId;
 use crate::model::Mechanism;
 use crate::motion::LinkMotion;
 use crate::real::Real;
@@ -40,7 +41,7 @@ impl Group {
     }
 
     /// The two unknown links.
-    pub(crate) fn links(&self) -> (usize, usize) {
+    pub(crate) fn links(&self) -> (LinkId, LinkId) {
         match self {
             Group::Rrr(g) => (g.i, g.j),
             Group::Rrp(g) => (g.i, g.j),

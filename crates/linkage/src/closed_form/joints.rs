@@ -5,6 +5,7 @@ use nalgebra::UnitComplex;
 
 use super::parts::{Pin, direction};
 use crate::error::{LinkageError, Result};
+use crate::ids::LinkId;
 use crate::model::Mechanism;
 use crate::model::SceneProblem;
 use crate::motion::Vec2;
@@ -16,7 +17,7 @@ pub(super) enum JointRef {
     Pri(usize),
 }
 
-pub(super) fn joint_links(m: &Mechanism, j: JointRef) -> (usize, usize) {
+pub(super) fn joint_links(m: &Mechanism, j: JointRef) -> (LinkId, LinkId) {
     match j {
         JointRef::Rev(r) => (m.revolutes[r].a, m.revolutes[r].b),
         JointRef::Pri(p) => (m.sliders[p].slider, m.sliders[p].guide),
@@ -24,12 +25,12 @@ pub(super) fn joint_links(m: &Mechanism, j: JointRef) -> (usize, usize) {
 }
 
 /// Local coordinates of a revolute's point on `link`.
-pub(super) fn rev_local(m: &Mechanism, r: usize, link: usize) -> Vec2 {
+pub(super) fn rev_local(m: &Mechanism, r: usize, link: LinkId) -> Vec2 {
     let rv = &m.revolutes[r];
     if rv.a == link { rv.a_local } else { rv.b_local }
 }
 
-pub(super) fn rev_pin(m: &Mechanism, r: usize, known: usize, unknown: usize) -> (Pin, Vec2) {
+pub(super) fn rev_pin(m: &Mechanism, r: usize, known: LinkId, unknown: LinkId) -> (Pin, Vec2) {
     (
         Pin {
             link: known,
@@ -44,7 +45,7 @@ pub(super) fn link_len(
     m: &Mechanism,
     from: Vec2,
     to: Vec2,
-    link: usize,
+    link: LinkId,
     what: &str,
 ) -> Result<(f64, UnitComplex<f64>)> {
     let v = to - from;

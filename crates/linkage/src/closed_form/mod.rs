@@ -25,6 +25,7 @@ use nalgebra::UnitComplex;
 
 use crate::assembly::{AssemblyRanges, GRID};
 use crate::error::{LinkageError, Result};
+use crate::ids::{LinkId, PointId};
 use crate::model::Mechanism;
 use crate::motion::{LinkMotion, PointMotion, SlideMotion, Vec2};
 use crate::real::{Real, splat, splat_vec};
@@ -45,12 +46,12 @@ use rrr::rrr_group;
 pub struct ClosedForm {
     pub(crate) groups: Vec<Group>,
     /// Inner joint point of each group (for names and branches).
-    pub(crate) group_points: Vec<usize>,
-    driver_link: usize,
+    pub(crate) group_points: Vec<PointId>,
+    driver_link: LinkId,
     driver_on_link: Vec2,
     driver_pivot_world: Vec2,
     link_count: usize,
-    ground: usize,
+    ground: LinkId,
 }
 
 impl ClosedForm {
@@ -88,7 +89,7 @@ impl ClosedForm {
                 if known[i] || known[j] {
                     continue;
                 }
-                let to_known = |l: usize| -> Vec<(usize, JointRef, usize)> {
+                let to_known = |l: LinkId| -> Vec<(usize, JointRef, LinkId)> {
                     joints
                         .iter()
                         .enumerate()
@@ -123,7 +124,8 @@ impl ClosedForm {
                 }
             }
             let Some(((group, point), used_now, i, j)) = found else {
-                let unknown: Vec<_> = (0..m.links.len())
+                let unknown: Vec<_> = m
+                    .link_ids()
                     .filter(|&l| !known[l])
                     .map(|l| m.links[l].name.as_str())
                     .collect();
@@ -168,13 +170,13 @@ impl ClosedForm {
     /// to a known link; `None` when the combination has no closed form here.
     fn make_group(
         m: &Mechanism,
-        i: usize,
-        j: usize,
+        i: LinkId,
+        j: LinkId,
         jij: JointRef,
-        ji: (usize, JointRef, usize),
-        jj: (usize, JointRef, usize),
+        ji: (usize, JointRef, LinkId),
+        jj: (usize, JointRef, LinkId),
         provisional_branches: bool,
-    ) -> Result<Option<(Group, usize)>> {
+    ) -> Result<Option<(Group, PointId)>> {
         use JointRef::{Pri, Rev};
         let branches = Branches {
             m,

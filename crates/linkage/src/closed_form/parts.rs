@@ -3,13 +3,14 @@
 
 use nalgebra::{SimdBool, UnitComplex, Vector2};
 
+use crate::ids::LinkId;
 use crate::motion::{LinkMotion, PointMotion, Vec2, cross};
 use crate::real::{Real, splat, splat_vec};
 
 /// A pin: a point fixed on a link, given in that link's coordinates.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Pin {
-    pub link: usize,
+    pub link: LinkId,
     pub local: Vec2,
     /// The link is ground: the pin stands still at `local` (no rotation to apply).
     pub on_ground: bool,

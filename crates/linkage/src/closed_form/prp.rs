@@ -3,6 +3,7 @@
 use super::guide::{guide_line, riding_point};
 use super::joints::rev_local;
 use super::parts::{Failure, GroupOk, Pair};
+use crate::ids::{LinkId, PointId};
 use crate::model::{Mechanism, Prismatic};
 use crate::motion::{LinkMotion, Vec2, cross, perp};
 use crate::real::{Real, splat, splat_vec};
@@ -10,8 +11,8 @@ use crate::real::{Real, splat, splat_vec};
 /// Two sliders on known guides, pinned together at `mid`.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Prp {
-    pub i: usize,
-    pub j: usize,
+    pub i: LinkId,
+    pub j: LinkId,
     pub mid_on_i: Vec2,
     pub mid_on_j: Vec2,
     pub slide_i: Prismatic,
@@ -77,10 +78,10 @@ impl Prp {
 /// together at `rm`; `None` unless each slides on a known guide.
 pub(super) fn prp_group(
     m: &Mechanism,
-    (i, pi): (usize, usize),
+    (i, pi): (LinkId, usize),
     rm: usize,
-    (j, pj): (usize, usize),
-) -> Option<(Prp, usize)> {
+    (j, pj): (LinkId, usize),
+) -> Option<(Prp, PointId)> {
     let (si, sj) = (m.sliders[pi].clone(), m.sliders[pj].clone());
     let (si, sj) = if si.slider == i { (si, sj) } else { (sj, si) };
     if si.slider != i || sj.slider != j {

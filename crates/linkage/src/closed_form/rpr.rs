@@ -8,6 +8,7 @@ use super::joints::rev_pin;
 use super::parts::{Failure, GroupOk, Pair, Pin, check_margin, direction, splat_rotation};
 use crate::dyad::DyadKind;
 use crate::error::Result;
+use crate::ids::{LinkId, PointId};
 use crate::model::Mechanism;
 use crate::motion::{LinkMotion, Vec2, cross, perp};
 use crate::real::{Real, splat};
@@ -16,11 +17,11 @@ use crate::real::{Real, splat};
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Rpr {
     /// The sliding link and its pin.
-    pub slider: usize,
+    pub slider: LinkId,
     pub s: Pin,
     pub s_on_slider: Vec2,
     /// The guide link and its pin.
-    pub guide: usize,
+    pub guide: LinkId,
     pub g: Pin,
     pub g_on_guide: Vec2,
     /// Signed distance of the guide pin from the line the slider pin runs on.
@@ -86,11 +87,11 @@ impl Rpr {
 pub(super) fn rpr_group(
     m: &Mechanism,
     branches: &Branches<'_>,
-    i: usize,
-    (ra, ki): (usize, usize),
+    i: LinkId,
+    (ra, ki): (usize, LinkId),
     p: usize,
-    (rc, kc): (usize, usize),
-) -> Result<(Rpr, usize)> {
+    (rc, kc): (usize, LinkId),
+) -> Result<(Rpr, PointId)> {
     let slide = m.sliders[p].clone();
     let (s_rev, s_known, g_rev, g_known) = if slide.slider == i {
         (ra, ki, rc, kc)

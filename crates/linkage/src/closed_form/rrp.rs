@@ -8,6 +8,7 @@ use super::joints::{link_len, rev_local, rev_pin};
 use super::parts::{Failure, GroupOk, Pair, Pin, check_margin, direction, splat_rotation};
 use crate::dyad::DyadKind;
 use crate::error::Result;
+use crate::ids::{LinkId, PointId};
 use crate::model::{Mechanism, Prismatic};
 use crate::motion::{LinkMotion, Vec2, cross, perp};
 use crate::real::{Real, splat, splat_vec};
@@ -15,8 +16,8 @@ use crate::real::{Real, splat, splat_vec};
 /// Link `i` pinned at `a`, joined at `mid` to slider `j` on a guide of a known link.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Rrp {
-    pub i: usize,
-    pub j: usize,
+    pub i: LinkId,
+    pub j: LinkId,
     pub a: Pin,
     pub a_on_i: Vec2,
     pub mid_on_j: Vec2,
@@ -84,10 +85,10 @@ impl Rrp {
 pub(super) fn rrp_group(
     m: &Mechanism,
     branches: &Branches<'_>,
-    (i, ra, ki): (usize, usize, usize),
+    (i, ra, ki): (LinkId, usize, LinkId),
     rm: usize,
-    (j, p): (usize, usize),
-) -> Result<Option<(Rrp, usize)>> {
+    (j, p): (LinkId, usize),
+) -> Result<Option<(Rrp, PointId)>> {
     let slide = m.sliders[p].clone();
     if slide.slider != j {
         return Ok(None);

@@ -6,6 +6,7 @@ use super::branches::Branches;
 use super::joints::{link_len, rev_local, rev_pin};
 use super::parts::{Failure, GroupOk, Pair, Pin, check_margin, direction, splat_rotation};
 use crate::error::Result;
+use crate::ids::{LinkId, PointId};
 use crate::model::Mechanism;
 use crate::motion::{LinkMotion, Vec2, cross, perp};
 use crate::real::{Real, splat};
@@ -13,8 +14,8 @@ use crate::real::{Real, splat};
 /// Two revolute links `i` (pinned at `a`) and `j` (pinned at `c`) joined at `mid`.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Rrr {
-    pub i: usize,
-    pub j: usize,
+    pub i: LinkId,
+    pub j: LinkId,
     pub a: Pin,
     pub a_on_i: Vec2,
     pub mid_on_i: Vec2,
@@ -32,7 +33,7 @@ pub(crate) struct Rrr {
     /// +1: `mid` left of a→c.
     pub sign: f64,
     /// The points of the end pins `a` and `c` (to name the branch).
-    pub end_points: (usize, usize),
+    pub end_points: (PointId, PointId),
 }
 
 impl Rrr {
@@ -91,10 +92,10 @@ impl Rrr {
 pub(super) fn rrr_group(
     m: &Mechanism,
     branches: &Branches<'_>,
-    (i, ra, ki): (usize, usize, usize),
+    (i, ra, ki): (LinkId, usize, LinkId),
     rm: usize,
-    (j, rc, kj): (usize, usize, usize),
-) -> Result<(Rrr, usize)> {
+    (j, rc, kj): (LinkId, usize, LinkId),
+) -> Result<(Rrr, PointId)> {
     let (a, a_on_i) = rev_pin(m, ra, ki, i);
     let (c, c_on_j) = rev_pin(m, rc, kj, j);
     let (mid_on_i, mid_on_j) = (rev_local(m, rm, i), rev_local(m, rm, j));

@@ -5,6 +5,7 @@ use super::{
     Drawing, DrawingDamper, DrawingForce, DrawingLink, DrawingPoint, DrawingSlider, DrawingSpring,
 };
 use crate::Solution;
+use crate::ids::{LinkId, PointId};
 use crate::model::Mechanism;
 use crate::motion::Vec2;
 use crate::scene::{DamperSpec, FreeLength, SceneFile};
@@ -54,8 +55,8 @@ impl Drawing {
         drawing.speed = scene.driver.speed;
         drawing.models = scene.models;
         drawing.gravity = scene.forces.gravity.is_some();
-        let blocks: Vec<usize> = m.sliders.iter().map(|s| s.slider).collect();
-        let moving: Vec<usize> = m.moving_links().filter(|l| !blocks.contains(l)).collect();
+        let blocks: Vec<LinkId> = m.sliders.iter().map(|s| s.slider).collect();
+        let moving: Vec<LinkId> = m.moving_links().filter(|l| !blocks.contains(l)).collect();
         let index = add_points(&mut drawing, m, pose, &moving);
         let mut link_index = vec![None; m.links.len()];
         for &l in &moving {
@@ -193,10 +194,10 @@ fn add_points(
     drawing: &mut Drawing,
     m: &Mechanism,
     pose: &Solution,
-    moving: &[usize],
+    moving: &[LinkId],
 ) -> Vec<Option<usize>> {
     let ground_points = &m.links[m.ground].points;
-    let through_only: Vec<usize> = m
+    let through_only: Vec<PointId> = m
         .sliders
         .iter()
         .filter(|s| s.guide == m.ground)
@@ -208,16 +209,16 @@ fn add_points(
         })
         .filter(|&p| m.revolutes.iter().all(|r| r.point != p))
         .collect();
-    let on_moving = |p: usize| {
+    let on_moving = |p: PointId| {
         moving
             .iter()
             .any(|&l| m.links[l].points.iter().any(|(q, _)| *q == p))
             || m.sliders.iter().any(|s| s.point == p)
     };
     let on_ground =
-        |p: usize| ground_points.iter().any(|(q, _)| *q == p) && !through_only.contains(&p);
+        |p: PointId| ground_points.iter().any(|(q, _)| *q == p) && !through_only.contains(&p);
     let mut index = vec![None; m.points.len()];
-    for p in (0..m.points.len()).filter(|&p| on_moving(p) || on_ground(p)) {
+    for p in m.point_ids().filter(|&p| on_moving(p) || on_ground(p)) {
         index[p] = Some(drawing.points.len());
         drawing.points.push(DrawingPoint {
             name: m.points[p].name.clone(),

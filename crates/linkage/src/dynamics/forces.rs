@@ -1,6 +1,7 @@
 //! Force elements and the reduction to the input coordinate.
 
 use crate::error::{LinkageError, Result};
+use crate::ids::{LinkId, PointId};
 use crate::kinematics::Kinematics;
 use crate::model::Mechanism;
 use crate::model::SceneProblem;
@@ -10,7 +11,7 @@ use crate::scene::{DamperSpec, ForceWhen, FreeLength, Models};
 /// Mass data of one moving link, SI.
 #[derive(Clone, Debug, PartialEq)]
 struct Body {
-    link: usize,
+    link: LinkId,
     mass_kg: f64,
     centroid: Vec2,
     inertia_kg_m2: f64,
@@ -18,21 +19,21 @@ struct Body {
 
 #[derive(Clone, Debug, PartialEq)]
 struct Spring {
-    a: usize,
-    b: usize,
+    a: PointId,
+    b: PointId,
     k: f64,
     free_length_m: f64,
 }
 
 #[derive(Clone, Debug, PartialEq)]
 enum Damper {
-    Linear { a: usize, b: usize, c: f64 },
-    Rotational { a: usize, b: usize, c: f64 },
+    Linear { a: PointId, b: PointId, c: f64 },
+    Rotational { a: LinkId, b: LinkId, c: f64 },
 }
 
 #[derive(Clone, Debug, PartialEq)]
 struct PointForce {
-    point: usize,
+    point: PointId,
     force: Vec2,
     when: ForceWhen,
 }
@@ -116,9 +117,9 @@ pub struct ForceModel {
     springs: Vec<Spring>,
     dampers: Vec<Damper>,
     point_forces: Vec<PointForce>,
-    torques: Vec<(usize, f64)>,
+    torques: Vec<(LinkId, f64)>,
     /// The link each point is fixed on.
-    point_links: Vec<usize>,
+    point_links: Vec<LinkId>,
 }
 
 fn missing(link: &str, field: &'static str) -> LinkageError {
@@ -156,7 +157,7 @@ impl ForceModel {
                 (None, _, _) => {}
             }
         }
-        let point = |name: &str| -> Result<usize> {
+        let point = |name: &str| -> Result<PointId> {
             m.point_index(name).ok_or_else(|| {
                 LinkageError::from(SceneProblem::ForceNamesUnknownPoint {
                     element: "a force element".into(),
@@ -164,7 +165,7 @@ impl ForceModel {
                 })
             })
         };
-        let link = |name: &str| -> Result<usize> {
+        let link = |name: &str| -> Result<LinkId> {
             m.link_index(name).ok_or_else(|| {
                 LinkageError::from(SceneProblem::ForceNamesUnknownLink {
                     element: "a force element".into(),
@@ -324,7 +325,7 @@ impl ForceModel {
     /// entry is computed like any other and ignored by callers.
     pub fn applied_loads(&self, sol: &Solution) -> Vec<Load> {
         let mut loads = vec![Load::default(); sol.links.len()];
-        let push = |loads: &mut [Load], link: usize, at: &crate::motion::PointMotion, f: Vec2| {
+        let push = |loads: &mut [Load], link: LinkId, at: &crate::motion::PointMotion, f: Vec2| {
             let l = &mut loads[link];
             l.force += f;
             l.moment += cross(&at.position, &f);
@@ -336,7 +337,7 @@ impl ForceModel {
                 push(&mut loads, b.link, &at, g * b.mass_kg);
             }
         }
-        let link_of = |point: usize| self.point_links[point];
+        let link_of = |point: PointId| self.point_links[point];
         for s in &self.springs {
             let (pa, pb) = (&sol.points[s.a], &sol.points[s.b]);
             let d = pa.position - pb.position;

@@ -5,6 +5,7 @@ use serde::Serialize;
 
 use super::settings::Method;
 use crate::error::Result;
+use crate::ids::LinkId;
 use crate::kinematics::Kinematics;
 use crate::motion::Solution;
 
@@ -20,7 +21,7 @@ pub struct Sample {
     /// Its second derivative, rad/s².
     pub q_ddot: f64,
     /// Index of the link whose angle was the integration coordinate here.
-    pub coordinate_link: usize,
+    pub coordinate_link: LinkId,
     /// That coordinate, rad.
     pub x: f64,
     /// Its rate, rad/s.

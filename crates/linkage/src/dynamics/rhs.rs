@@ -7,6 +7,7 @@
 
 use super::forces::{ForceModel, Reduced, unit_solution};
 use crate::error::{LinkageError, Result};
+use crate::ids::LinkId;
 use crate::kinematics::Kinematics;
 use crate::motion::Solution;
 
@@ -39,7 +40,7 @@ pub(crate) struct Rhs {
     /// Unit-speed solution of the last kinematic solve.
     pub sol: Solution,
     /// Links that can serve as coordinate (revolute to ground).
-    candidates: Vec<usize>,
+    candidates: Vec<LinkId>,
     /// Whether to switch coordinates near a dead point (else a dead point is an error).
     allow_switch: bool,
     /// Coordinate of the position in `sol` (NaN before the first solve).
@@ -70,7 +71,7 @@ impl Rhs {
     }
 
     /// The link whose angle is the current coordinate.
-    pub fn coordinate_link(&self) -> usize {
+    pub fn coordinate_link(&self) -> LinkId {
         self.k.mechanism().driver.link
     }
 

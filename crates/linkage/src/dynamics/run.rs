@@ -13,6 +13,7 @@ use super::output::{RunStats, Sample, SimEvent, Simulation};
 use super::rhs::{Point, Rhs, State};
 use super::settings::{Method, Settings};
 use crate::error::{LinkageError, Result};
+use crate::ids::LinkId;
 use crate::kinematics::Kinematics;
 use crate::model::SceneProblem;
 use crate::roots_util::refine;
@@ -22,7 +23,7 @@ use crate::sweep::unwrap_near;
 /// An end stop resolved to the link it watches.
 struct Stop {
     name: String,
-    link: usize,
+    link: LinkId,
     angle: f64,
     stops: bool,
 }
@@ -44,7 +45,7 @@ fn gap(rhs: &mut Rhs, x: f64, stop: &Stop) -> f64 {
 
 /// Builds samples in the scene's input coordinate from states in the current one.
 struct Sampler {
-    driver: usize,
+    driver: LinkId,
     last_q: Option<f64>,
 }
 

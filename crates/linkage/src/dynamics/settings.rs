@@ -1,5 +1,6 @@
 //! The integrator choice and the run's settings, validated before anything runs.
 
+use crate::ids::LinkId;
 use serde::Serialize;
 
 use crate::error::{LinkageError, Result};
@@ -98,7 +99,7 @@ pub struct Settings {
     /// Samples on this uniform time grid by dense output; `None`: one per step.
     pub output_dt: Option<f64>,
     /// Link whose angle is the coordinate at the start (`None`: the scene's driver).
-    pub coordinate: Option<usize>,
+    pub coordinate: Option<LinkId>,
     /// Whether to switch to a regular coordinate near a dead point of the current one.
     pub switch_coordinates: bool,
     /// Most steps the run may take ([`MAX_STEPS`] by default): every run ends.

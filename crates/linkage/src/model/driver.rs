@@ -5,7 +5,7 @@ use super::joints::Names;
 use super::units::{Units, finite, invalid, scene_angle};
 use crate::error::Result;
 use crate::model::problem::SceneProblem;
-use crate::model::{Driver, Point, Revolute};
+use crate::model::{Driver, LinkId, Point, PointId, Revolute};
 use crate::motion::Vec2;
 use crate::scene::{Branch, SceneFile, Speed};
 
@@ -13,7 +13,7 @@ use crate::scene::{Branch, SceneFile, Speed};
 pub(super) fn driver(
     scene: &SceneFile,
     names: &Names<'_>,
-    ground: usize,
+    ground: LinkId,
     revolutes: &[Revolute],
     units: Units,
 ) -> Result<Driver> {
@@ -45,12 +45,13 @@ pub(super) fn driver(
 }
 
 /// The assembly branches, each on a point the scene has and naming points it has.
-pub(super) fn branches(scene: &SceneFile, points: &[Point]) -> Result<Vec<(usize, Branch)>> {
+pub(super) fn branches(scene: &SceneFile, points: &[Point]) -> Result<Vec<(PointId, Branch)>> {
     let mut branches = Vec::new();
     for (name, b) in &scene.branches {
         let pi = points
             .iter()
             .position(|p| &p.name == name)
+            .map(PointId)
             .ok_or_else(|| invalid(SceneProblem::UnknownBranchKey { name: name.clone() }))?;
         if let Branch::Left(f, t) | Branch::Right(f, t) = b {
             for n in [f, t] {

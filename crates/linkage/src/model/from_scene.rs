@@ -9,8 +9,8 @@ use super::joints::{Names, check_mobility, revolutes, sliders};
 use super::links::{bodies, check_joint_gaps};
 use super::units::{Units, invalid};
 use crate::error::{LinkageError, Result};
-use crate::model::Mechanism;
 use crate::model::problem::SceneProblem;
+use crate::model::{LinkId, Mechanism};
 use crate::scene::SceneFile;
 
 impl Mechanism {
@@ -33,12 +33,13 @@ impl Mechanism {
             .links
             .iter()
             .position(|l| l.is_ground)
+            .map(LinkId)
             .ok_or(invalid(SceneProblem::GroundCount { found: 0 }))?;
         let driver = driver(scene, &names, ground, &revolutes, units)?;
         let branches = branches(scene, &bodies.points)?;
         let output = match &scene.output {
             Some(name) => names.link("output", name)?,
-            None => bodies.links.len() - 1,
+            None => LinkId(bodies.links.len() - 1),
         };
         let guess = guesses(scene, &names, units)?;
         let forces = convert_forces(

@@ -7,18 +7,18 @@ use super::links::Bodies;
 use super::units::{Units, invalid, scene_angle};
 use crate::error::Result;
 use crate::model::problem::{LonePoint, MadeJoint, SceneProblem};
-use crate::model::{Link, Point, Prismatic, Revolute};
+use crate::model::{Link, LinkId, Point, PointId, Prismatic, Revolute};
 use crate::motion::Vec2;
 use crate::scene::SceneFile;
 
 /// A revolute joint for every further link that carries a point.
-pub(super) fn revolutes(on_links: &[Vec<(usize, Vec2)>]) -> Vec<Revolute> {
+pub(super) fn revolutes(on_links: &[Vec<(LinkId, Vec2)>]) -> Vec<Revolute> {
     let mut revolutes = Vec::new();
     for (pi, users) in on_links.iter().enumerate() {
         let (a, a_local) = users[0];
         for &(b, b_local) in &users[1..] {
             revolutes.push(Revolute {
-                point: pi,
+                point: PointId(pi),
                 a,
                 a_local,
                 b,
@@ -37,10 +37,11 @@ pub(super) struct Names<'a> {
 
 impl Names<'_> {
     /// The link named `name`, which `ctx` names.
-    pub(super) fn link(&self, ctx: &str, name: &str) -> Result<usize> {
+    pub(super) fn link(&self, ctx: &str, name: &str) -> Result<LinkId> {
         self.links
             .iter()
             .position(|l| l.name == name)
+            .map(LinkId)
             .ok_or_else(|| {
                 invalid(SceneProblem::UnknownLink {
                     context: ctx.to_string(),
@@ -51,8 +52,8 @@ impl Names<'_> {
     }
 
     /// The point named `name` on `link`, and where on it.
-    pub(super) fn point_on(&self, ctx: &str, link: usize, name: &str) -> Result<(usize, Vec2)> {
-        let pi = self.points.iter().position(|p| p.name == name);
+    pub(super) fn point_on(&self, ctx: &str, link: LinkId, name: &str) -> Result<(PointId, Vec2)> {
+        let pi = self.points.iter().position(|p| p.name == name).map(PointId);
         pi.and_then(|pi| self.links[link].local(pi).map(|v| (pi, v)))
             .ok_or_else(|| {
                 invalid(SceneProblem::PointNotOnLink {

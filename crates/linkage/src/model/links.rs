@@ -4,7 +4,7 @@
 use super::units::{Units, invalid, positive};
 use crate::error::Result;
 use crate::model::problem::SceneProblem;
-use crate::model::{Link, Point};
+use crate::model::{Link, LinkId, Point, PointId};
 use crate::motion::Vec2;
 use crate::scene::SceneFile;
 
@@ -13,7 +13,7 @@ pub(super) struct Bodies {
     pub(super) links: Vec<Link>,
     pub(super) points: Vec<Point>,
     /// For every point, the links that carry it and where on each.
-    pub(super) on_links: Vec<Vec<(usize, Vec2)>>,
+    pub(super) on_links: Vec<Vec<(LinkId, Vec2)>>,
     /// The largest distance of a point from its link's origin, m.
     pub(super) size_m: f64,
     /// The link and point that set `size_m`.
@@ -57,8 +57,9 @@ pub(super) fn bodies(scene: &SceneFile, units: Units) -> Result<Bodies> {
                 b.size_m = reach;
                 b.farthest = (spec.name.clone(), pname.clone());
             }
+            let li = LinkId(li);
             let pi = match b.points.iter().position(|p| &p.name == pname) {
-                Some(pi) => pi,
+                Some(pi) => PointId(pi),
                 None => {
                     b.points.push(Point {
                         name: pname.clone(),
@@ -66,7 +67,7 @@ pub(super) fn bodies(scene: &SceneFile, units: Units) -> Result<Bodies> {
                         local,
                     });
                     b.on_links.push(Vec::new());
-                    b.points.len() - 1
+                    PointId(b.points.len() - 1)
                 }
             };
             b.on_links[pi].push((li, local));
@@ -97,7 +98,7 @@ pub(super) fn bodies(scene: &SceneFile, units: Units) -> Result<Bodies> {
 /// angle (a zero-length crank, say).
 pub(super) fn check_joint_gaps(b: &Bodies) -> Result<()> {
     for link in &b.links {
-        let joints: Vec<&(usize, Vec2)> = link
+        let joints: Vec<&(PointId, Vec2)> = link
             .points
             .iter()
             .filter(|(p, _)| b.on_links[*p].len() > 1)

@@ -3,6 +3,7 @@
 use nalgebra::{UnitComplex, Vector2};
 
 use crate::error::{LinkageError, Result};
+pub use crate::ids::{LinkId, PointId};
 use crate::motion::{LinkMotion, SlideMotion, Vec2, perp};
 use crate::real::{Real, splat, splat_vec};
 use crate::scene::{Branch, ForcesSpec, Models, SceneFile, SolverSpec};
@@ -25,7 +26,7 @@ pub struct Link {
     /// True for the frame.
     pub is_ground: bool,
     /// The link's points: (index into `Mechanism::points`, link coordinates in m).
-    pub points: Vec<(usize, Vec2)>,
+    pub points: Vec<(PointId, Vec2)>,
     /// Mass, kg, when the scene gives it.
     pub mass_kg: Option<f64>,
     /// Centroid in link coordinates, m.
@@ -36,7 +37,7 @@ pub struct Link {
 
 impl Link {
     /// Local coordinates of a point on this link, if the link carries it.
-    pub fn local(&self, point: usize) -> Option<Vec2> {
+    pub fn local(&self, point: PointId) -> Option<Vec2> {
         self.points
             .iter()
             .find(|(p, _)| *p == point)
@@ -50,7 +51,7 @@ pub struct Point {
     /// Name from the scene.
     pub name: String,
     /// Link it is computed from.
-    pub link: usize,
+    pub link: LinkId,
     /// Coordinates on that link, m.
     pub local: Vec2,
 }
@@ -59,13 +60,13 @@ pub struct Point {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Revolute {
     /// The shared point.
-    pub point: usize,
+    pub point: PointId,
     /// First link.
-    pub a: usize,
+    pub a: LinkId,
     /// Joint point in `a`'s coordinates, m.
     pub a_local: Vec2,
     /// Second link.
-    pub b: usize,
+    pub b: LinkId,
     /// Joint point in `b`'s coordinates, m.
     pub b_local: Vec2,
 }
@@ -76,13 +77,13 @@ pub struct Prismatic {
     /// Display name, `slider/guide`.
     pub name: String,
     /// Sliding link.
-    pub slider: usize,
+    pub slider: LinkId,
     /// The slider's point on the line.
-    pub point: usize,
+    pub point: PointId,
     /// That point in slider coordinates, m.
     pub slider_local: Vec2,
     /// Guide link.
-    pub guide: usize,
+    pub guide: LinkId,
     /// A point of the line in guide coordinates, m.
     pub through_local: Vec2,
     /// Unit direction of the line in guide coordinates.
@@ -120,7 +121,7 @@ impl Prismatic {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Driver {
     /// Input link.
-    pub link: usize,
+    pub link: LinkId,
     /// Index into `Mechanism::revolutes` of its joint with ground.
     pub pivot: usize,
     /// Input speed, rad/s.
@@ -143,7 +144,7 @@ pub struct Mechanism {
     /// Links (ground included).
     pub links: Vec<Link>,
     /// Index of the ground link.
-    pub ground: usize,
+    pub ground: LinkId,
     /// Named points, in order of first appearance.
     pub points: Vec<Point>,
     /// Revolute joints (from shared point names).
@@ -153,9 +154,9 @@ pub struct Mechanism {
     /// The input.
     pub driver: Driver,
     /// Branch per dyad inner point: (point index, branch).
-    pub branches: Vec<(usize, Branch)>,
+    pub branches: Vec<(PointId, Branch)>,
     /// Main output link (time ratio).
-    pub output: usize,
+    pub output: LinkId,
     /// Newton starting guesses per link: (origin m, angle rad).
     pub guess: Vec<Option<(Vec2, f64)>>,
     /// Force elements, lengths in m and angles in rad.
@@ -179,18 +180,18 @@ impl Mechanism {
     }
 
     /// Index of a link by name.
-    pub fn link_index(&self, name: &str) -> Option<usize> {
-        self.links.iter().position(|l| l.name == name)
+    pub fn link_index(&self, name: &str) -> Option<LinkId> {
+        self.links.iter().position(|l| l.name == name).map(LinkId)
     }
 
     /// Index of a point by name.
-    pub fn point_index(&self, name: &str) -> Option<usize> {
-        self.points.iter().position(|p| p.name == name)
+    pub fn point_index(&self, name: &str) -> Option<PointId> {
+        self.points.iter().position(|p| p.name == name).map(PointId)
     }
 
     /// The points that are joints (pins and slider points), each once, ascending.
-    pub fn joint_points(&self) -> Vec<usize> {
-        let mut joints: Vec<usize> = self
+    pub fn joint_points(&self) -> Vec<PointId> {
+        let mut joints: Vec<PointId> = self
             .revolutes
             .iter()
             .map(|r| r.point)
@@ -202,13 +203,23 @@ impl Mechanism {
     }
 
     /// Moving links (all but ground), in scene order.
-    pub fn moving_links(&self) -> impl Iterator<Item = usize> + '_ {
-        (0..self.links.len()).filter(move |&i| i != self.ground)
+    pub fn moving_links(&self) -> impl Iterator<Item = LinkId> + '_ {
+        self.link_ids().filter(move |&i| i != self.ground)
+    }
+
+    /// Every link's id, ground included, in scene order.
+    pub fn link_ids(&self) -> impl Iterator<Item = LinkId> + use<> {
+        (0..self.links.len()).map(LinkId)
+    }
+
+    /// Every named point's id, in order of first appearance.
+    pub fn point_ids(&self) -> impl Iterator<Item = PointId> + use<> {
+        (0..self.points.len()).map(PointId)
     }
 
     /// The revolute joint (its index in `revolutes`) that pins moving link `link` to
     /// ground, if one does.
-    pub fn ground_pivot_of(&self, link: usize) -> Option<usize> {
+    pub fn ground_pivot_of(&self, link: LinkId) -> Option<usize> {
         let g = self.ground;
         (link != g)
             .then(|| {
@@ -220,7 +231,7 @@ impl Mechanism {
     }
 
     /// The scene's branch for the dyad whose inner joint is `point`.
-    pub fn branch_for(&self, point: usize) -> Option<&Branch> {
+    pub fn branch_for(&self, point: PointId) -> Option<&Branch> {
         self.branches
             .iter()
             .find(|(p, _)| *p == point)

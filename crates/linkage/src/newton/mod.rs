@@ -13,6 +13,7 @@
 use nalgebra::{DMatrix, DVector, UnitComplex};
 
 use crate::error::{LinkageError, Result};
+use crate::ids::LinkId;
 use crate::model::SceneProblem;
 use crate::model::{Mechanism, Prismatic};
 use crate::motion::{LinkMotion, PointMotion, Vec2, cross, perp};
@@ -36,8 +37,8 @@ enum TreeKind {
 
 #[derive(Clone, Debug, PartialEq)]
 struct TreeJoint {
-    parent: usize,
-    child: usize,
+    parent: LinkId,
+    child: LinkId,
     kind: TreeKind,
     /// World joint point (revolute) or slide contact point, from the last position pass.
     contact: Vec2,
@@ -48,9 +49,9 @@ struct TreeJoint {
 #[derive(Clone, Debug, PartialEq)]
 enum Cut {
     Revolute {
-        a: usize,
+        a: LinkId,
         a_local: Vec2,
-        b: usize,
+        b: LinkId,
         b_local: Vec2,
     },
     Prismatic(Prismatic),
@@ -123,7 +124,7 @@ pub struct Newton {
     /// to `link`, so a rate of `k` moves `link`.
     moved_by: Vec<bool>,
     cuts: Vec<Cut>,
-    ground: usize,
+    ground: LinkId,
     /// Largest residual accepted, as a share of the size (and rad).
     tolerance: f64,
     /// Largest residual accepted when Newton stalls at round-off (as a share of the
@@ -168,7 +169,7 @@ pub struct Newton {
 
 /// The link at the other end of a joint between links `a` and `b`, seen from `from`;
 /// `None` when the joint does not touch `from`.
-fn across(a: usize, b: usize, from: usize) -> Option<usize> {
+fn across(a: LinkId, b: LinkId, from: LinkId) -> Option<LinkId> {
     if a == from {
         Some(b)
     } else if b == from {
@@ -452,8 +453,8 @@ impl Newton {
     /// velocity, for a unit rate of tree joint `k` with every other coordinate still:
     /// a turn about the joint or a slide along its guide, if `k` carries the link.
     #[inline]
-    fn unit_rate(&self, k: usize, link: usize, p: &Vec2) -> (Vec2, f64) {
-        if !self.moved_by[link * self.tree.len() + k] {
+    fn unit_rate(&self, k: usize, link: LinkId, p: &Vec2) -> (Vec2, f64) {
+        if !self.moved_by[link.index() * self.tree.len() + k] {
             return (Vec2::zeros(), 0.0);
         }
         let t = &self.tree[k];
@@ -777,7 +778,7 @@ fn spanning_tree(m: &Mechanism) -> Result<(Vec<TreeJoint>, Vec<Cut>)> {
 }
 
 /// Revolute `r` as a joint of the tree, from `parent` to the link across it.
-fn revolute_joint(m: &Mechanism, r: usize, parent: usize) -> TreeJoint {
+fn revolute_joint(m: &Mechanism, r: usize, parent: LinkId) -> TreeJoint {
     let rv = &m.revolutes[r];
     let (child, on_parent, on_child) = if rv.a == parent {
         (rv.b, rv.a_local, rv.b_local)
@@ -803,9 +804,10 @@ fn moved_by(tree: &[TreeJoint], links: usize) -> Vec<bool> {
     let mut moved_by = vec![false; links * tree.len()];
     for (k, t) in tree.iter().enumerate() {
         for j in 0..tree.len() {
-            moved_by[t.child * tree.len() + j] = moved_by[t.parent * tree.len() + j];
+            moved_by[t.child.index() * tree.len() + j] =
+                moved_by[t.parent.index() * tree.len() + j];
         }
-        moved_by[t.child * tree.len() + k] = true;
+        moved_by[t.child.index() * tree.len() + k] = true;
     }
     moved_by
 }
