@@ -22,6 +22,17 @@ pub(crate) enum Format {
     Json,
 }
 
+/// Output format of a command that has a summary.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub(crate) enum SummaryFormat {
+    /// The key figures, one a line.
+    Text,
+    /// The cycle, a row per angle.
+    Csv,
+    /// The key figures and the cycle.
+    Json,
+}
+
 /// Solver path.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
 pub(crate) enum PathArg {
@@ -100,6 +111,19 @@ pub(crate) enum Command {
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Csv)]
         format: Format,
+    },
+    /// Flywheel sizing by the energy method: the crank torque over one cycle at the
+    /// scene's speed, its mean (torque and power), the work surplus range and the
+    /// flywheel inertia J_F = ΔW_max / (ω² δ).
+    Flywheel {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// Coefficient of speed fluctuation δ = (ω_max − ω_min)/ω_mean, in (0, 1).
+        #[arg(long, default_value_t = 0.05, allow_hyphen_values = true)]
+        delta: f64,
+        /// Output: the key figures (text), the cycle (CSV), or both (JSON).
+        #[arg(long, value_enum, default_value_t = SummaryFormat::Text)]
+        format: SummaryFormat,
     },
     /// The work-precision table: per method and tolerance or step, CPU time, RHS
     /// evaluations and error against a DOP853 rtol-1e-13 reference (CSV; --png plots it).

@@ -10,6 +10,7 @@ mod commands;
 mod counts;
 mod diagram;
 mod error;
+mod flywheel;
 mod io;
 mod kinetostatics;
 mod plot;
@@ -61,6 +62,11 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
         Command::Share { scene, decode } => commands::share(scene.as_deref(), decode.as_deref()),
         Command::Simulate { scene, sim, format } => simulate::run(&scene, &sim, format),
         Command::Tradeoff { scene, args } => tradeoff::run(&scene, &args),
+        Command::Flywheel {
+            scene,
+            delta,
+            format,
+        } => flywheel::run(&scene, delta, format),
         Command::Kinetostatics {
             scene,
             steps,

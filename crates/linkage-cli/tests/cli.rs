@@ -916,3 +916,44 @@ fn synth_motion_through_four_and_five_positions() {
     assert!(v["check_miss_m"].as_f64().expect("miss") < 1e-9, "{out}");
     let _ = std::fs::remove_dir_all(dir);
 }
+
+#[test]
+fn flywheel_gives_its_figures_as_text_csv_and_json_and_refuses_a_bad_delta() {
+    let die = scene("die_cutter.ron");
+    let (ok, text, err) = linkage(&["flywheel", &die, "--delta", "0.05"]);
+    assert!(ok, "{err}");
+    for line in [
+        "mean torque",
+        "mean power",
+        "work surplus range",
+        "flywheel on crank",
+    ] {
+        assert!(text.contains(line), "{line}: {text}");
+    }
+    let (ok, csv, err) = linkage(&["flywheel", &die, "--format", "csv"]);
+    assert!(ok, "{err}");
+    let mut lines = csv.lines();
+    assert_eq!(
+        lines.next(),
+        Some("angle_rad,torque_n_m,surplus_j,reduced_inertia_kg_m2")
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().expect("number")).collect())
+        .collect();
+    assert!(rows.len() > 360 && rows.iter().flatten().all(|v| v.is_finite()));
+    let (ok, json, err) = linkage(&["flywheel", &die, "--format", "json", "--delta", "0.02"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&json).expect("json");
+    let f = &v["flywheel"];
+    let (range, w) = (
+        f["work_range_j"].as_f64().expect("range"),
+        f["speed_rad_s"].as_f64().expect("w"),
+    );
+    let jf = f["flywheel_kg_m2"].as_f64().expect("J_F");
+    assert!((jf - range / (w * w * 0.02)).abs() <= 1e-12 * jf, "{jf}");
+    let (ok, _, err) = linkage(&["flywheel", &die, "--delta", "1.5"]);
+    assert!(
+        !ok && err.contains("delta = 1.5 is invalid") && err.contains("(0, 1)"),
+        "{err}"
+    );
+}

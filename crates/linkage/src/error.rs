@@ -132,6 +132,15 @@ pub enum LinkageError {
         /// The moving links with a revolute joint to ground.
         candidates: Vec<String>,
     },
+    /// A machine analysis (flywheel, steady state) of a chain whose input does not
+    /// turn a full cycle.
+    #[error("the input does not turn a full cycle ({reachable}): {needs} needs a crank")]
+    NotACrank {
+        /// What was asked for, in words.
+        needs: &'static str,
+        /// Where the chain does assemble.
+        reachable: AssemblyRanges,
+    },
 }
 
 /// Shorthand for results carrying a [`LinkageError`].

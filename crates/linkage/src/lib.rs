@@ -27,6 +27,7 @@ pub mod instant_centres;
 pub mod kinematics;
 pub mod kinetostatics;
 pub mod lanes;
+pub mod machine;
 pub mod model;
 pub mod motion;
 pub mod newton;

@@ -406,6 +406,17 @@ impl ForceModel {
     pub fn is_massless(&self) -> bool {
         self.bodies.is_empty()
     }
+
+    /// The power ratios (F·v per unit input rate, N·m) of the forces that act on the
+    /// working stroke only: where one changes sign such a force switches on or off,
+    /// and the load moment has a kink or a step there.
+    pub fn switching_ratios(&self, unit: &Solution) -> Vec<f64> {
+        self.point_forces
+            .iter()
+            .filter(|p| p.when == ForceWhen::WorkingStroke)
+            .map(|p| p.force.dot(&unit.points[p.point].velocity))
+            .collect()
+    }
 }
 
 /// Solves the kinematics at `q` with unit input speed (velocity ratios).
