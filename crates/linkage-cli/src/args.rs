@@ -321,6 +321,11 @@ pub(crate) struct DiagramArgs {
 /// Options of a dynamics run.
 #[derive(clap::Args, Debug, Clone)]
 pub(crate) struct SimArgs {
+    /// Instead of a run from rest: the periodic steady state with the scene's drive
+    /// (shooting on the crank speed, DOP853 at rtol 1e-12), one turn sampled
+    /// (`t_s,angle_rad,speed_rad_s`; JSON adds speed max, min, mean, delta, period).
+    #[arg(long)]
+    pub(crate) steady: bool,
     /// Integration method.
     #[arg(long, value_enum, default_value_t = MethodArg::Dop853)]
     pub(crate) method: MethodArg,

@@ -60,6 +60,7 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
         Command::Synth { what } => commands::synth(what),
         Command::Diagram { scene, args } => diagram::run(&scene, &args),
         Command::Share { scene, decode } => commands::share(scene.as_deref(), decode.as_deref()),
+        Command::Simulate { scene, sim, format } if sim.steady => simulate::steady(&scene, format),
         Command::Simulate { scene, sim, format } => simulate::run(&scene, &sim, format),
         Command::Tradeoff { scene, args } => tradeoff::run(&scene, &args),
         Command::Flywheel {

@@ -2,12 +2,13 @@
 //! speed and the energy terms; JSON adds the events and the run's cost.
 
 use linkage::dynamics::{Method, Settings, Simulation, simulate};
+use linkage::machine::steady_state;
 use linkage::{Kinematics, LinkId, Mechanism};
 use serde_json::{Value, json};
 
 use crate::args::{Format, MethodArg, SceneArgs, SimArgs};
 use crate::error::{CliError, Result};
-use crate::io::{check_finite, json_text, load, to_csv};
+use crate::io::{check_finite, describe, json_text, load, records_to_csv, to_csv};
 
 impl MethodArg {
     /// The solver's method.
@@ -158,5 +159,28 @@ pub fn run(args: &SceneArgs, sim_args: &SimArgs, format: Format) -> Result<Strin
                 },
             }))
         }
+    }
+}
+
+/// `simulate --steady`: the periodic steady state, one turn of the crank's speed;
+/// JSON adds the figures.
+pub fn steady(args: &SceneArgs, format: Format) -> Result<String> {
+    let k = load(args)?;
+    let s = steady_state(&k).map_err(|e| describe(args, e))?;
+    match format {
+        Format::Csv => {
+            let header = ["t_s", "angle_rad", "speed_rad_s"].map(String::from);
+            let rows: Vec<Vec<String>> = s
+                .cycle
+                .iter()
+                .map(|p| {
+                    [p.t_s, p.angle_rad, p.speed_rad_s]
+                        .map(|v| format!("{v:e}"))
+                        .to_vec()
+                })
+                .collect();
+            records_to_csv(&header, &rows)
+        }
+        Format::Json => json_text(&json!({"scene": k.mechanism().name, "steady_state": s})),
     }
 }

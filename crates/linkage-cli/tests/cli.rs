@@ -957,3 +957,30 @@ fn flywheel_gives_its_figures_as_text_csv_and_json_and_refuses_a_bad_delta() {
         "{err}"
     );
 }
+
+#[test]
+fn simulate_steady_gives_one_periodic_turn_and_refuses_a_scene_without_a_drive() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/examples/");
+    let scene = format!("{root}die_cutter_linear_motor.ron");
+    let (ok, csv, err) = linkage(&["simulate", &scene, "--steady"]);
+    assert!(ok, "{err}");
+    let mut lines = csv.lines();
+    assert_eq!(lines.next(), Some("t_s,angle_rad,speed_rad_s"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().expect("number")).collect())
+        .collect();
+    let (first, last) = (&rows[0], rows.last().expect("rows"));
+    assert!(
+        (last[1] - first[1] - std::f64::consts::TAU).abs() < 1e-9,
+        "one turn"
+    );
+    assert!((last[2] - first[2]).abs() <= 1e-9 * first[2], "periodic");
+    let (ok, json, err) = linkage(&["simulate", &scene, "--steady", "--format", "json"]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&json).expect("json");
+    for key in ["max_rad_s", "min_rad_s", "mean_rad_s", "delta", "period_s"] {
+        assert!(v["steady_state"][key].is_f64(), "{key}: {json:.200}");
+    }
+    let (ok, _, err) = linkage(&["simulate", &common::scene("die_cutter.ron"), "--steady"]);
+    assert!(!ok && err.contains("drive"), "{err}");
+}

@@ -36,6 +36,7 @@ pub mod polygon;
 pub mod real;
 mod roots_util;
 pub mod scene;
+mod scene_drive;
 pub mod scene_scale;
 pub mod share;
 mod small_lu;

@@ -9,6 +9,8 @@
 use indexmap::IndexMap;
 use serde::{Deserialize, Serialize};
 
+pub use crate::scene_drive::{DriveSpec, MotorSpec, Shaft};
+
 use crate::error::{LinkageError, Result};
 use crate::model::SceneProblem;
 
@@ -371,6 +373,10 @@ pub struct SceneFile {
     /// Solver settings.
     #[serde(default)]
     pub solver: SolverSpec,
+    /// The motor, gear and flywheel that drive the driver (dynamics and the steady
+    /// state); absent: the driver turns at its speed, or is released.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub drive: Option<DriveSpec>,
 }
 
 impl SceneFile {

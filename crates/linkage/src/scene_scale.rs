@@ -10,7 +10,7 @@
 //! velocities ×√s, accelerations ×1, angular speeds ÷√s, forces ×s³, torques and
 //! energies ×s⁴, times ×√s. The scale property tests rely on exactly that.
 
-use crate::scene::{DamperSpec, FreeLength, SceneFile, Speed};
+use crate::scene::{DamperSpec, DriveSpec, FreeLength, MotorSpec, SceneFile, Speed};
 
 /// How each quantity of a scene scales when its lengths are multiplied by `s`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -94,6 +94,9 @@ impl SceneFile {
             Speed::RadPerSecond(w) => Speed::RadPerSecond(w * k.angular_speed()),
         };
         scale_forces(&mut out, &k);
+        if let Some(drive) = &mut out.drive {
+            scale_drive(drive, &k);
+        }
         out
     }
 }
@@ -121,6 +124,31 @@ fn scale_forces(out: &mut SceneFile, k: &Similarity) {
     for torque in &mut f.torques {
         torque.torque_n_m *= k.torque();
     }
+}
+
+/// The drive: its torques as every torque, its speeds as the crank's, its inertias as
+/// the links'. The gear ratio is a pure number.
+fn scale_drive(drive: &mut DriveSpec, k: &Similarity) {
+    let (torque, speed) = (k.torque(), k.angular_speed());
+    match &mut drive.motor {
+        MotorSpec::Constant { torque_n_m } => *torque_n_m *= torque,
+        MotorSpec::Linear {
+            no_load_rpm,
+            rated_torque_n_m,
+            rated_rpm,
+        } => {
+            *no_load_rpm *= speed;
+            *rated_torque_n_m *= torque;
+            *rated_rpm *= speed;
+        }
+        MotorSpec::Table { points } => {
+            for (rpm, t) in points {
+                (*rpm, *t) = (*rpm * speed, *t * torque);
+            }
+        }
+    }
+    drive.motor_inertia_kg_m2 *= k.inertia();
+    drive.flywheel_kg_m2 *= k.inertia();
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@ use linkage::Vec2;
 use linkage::drawing::{
     Drawing, DrawingDamper, DrawingForce, DrawingLink, DrawingPoint, DrawingSlider, DrawingSpring,
 };
-use linkage::scene::{ForceWhen, LengthUnit, Models, Speed};
+use linkage::scene::{DriveSpec, ForceWhen, LengthUnit, Models, Speed};
 use serde::{Deserialize, Serialize};
 
 /// The stored form: points as `(name, x m, y m, ground)`, links as `(name, points,
@@ -38,6 +38,8 @@ struct StoredDrawing {
     dampers: Vec<(usize, usize, f64)>,
     #[serde(default)]
     forces: Vec<(usize, f64, f64, ForceWhen)>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    drive: Option<DriveSpec>,
 }
 
 /// The drawing as RON text.
@@ -85,6 +87,7 @@ pub fn to_text(drawing: &Drawing) -> String {
             .iter()
             .map(|f| (f.point, f.force_n.x, f.force_n.y, f.when))
             .collect(),
+        drive: drawing.drive.clone(),
     };
     // Plain strings, numbers and options: writing cannot fail.
     ron::to_string(&stored).unwrap_or_default()
@@ -168,6 +171,7 @@ pub fn from_text(text: &str) -> Result<Drawing, String> {
                 when,
             })
             .collect(),
+        drive: s.drive,
     })
 }
 

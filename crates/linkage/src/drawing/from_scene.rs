@@ -55,6 +55,7 @@ impl Drawing {
         drawing.speed = scene.driver.speed;
         drawing.models = scene.models;
         drawing.gravity = scene.forces.gravity.is_some();
+        drawing.drive = scene.drive.clone();
         let blocks: Vec<LinkId> = m.sliders.iter().map(|s| s.slider).collect();
         let moving: Vec<LinkId> = m.moving_links().filter(|l| !blocks.contains(l)).collect();
         let index = add_points(&mut drawing, m, pose, &moving);

@@ -142,6 +142,9 @@ pub struct Drawing {
     pub dampers: Vec<DrawingDamper>,
     /// Point forces.
     pub forces: Vec<DrawingForce>,
+    /// The motor, gear and flywheel of the scene it came from, kept as they were
+    /// (the drawing does not edit them, and an edit must not lose them).
+    pub drive: Option<crate::scene::DriveSpec>,
 }
 
 /// The Grübler–Kutzbach count of a drawing.
@@ -224,6 +227,7 @@ impl Drawing {
             output: None,
             models: Models::Kinematics,
             gravity: false,
+            drive: None,
             springs: Vec::new(),
             dampers: Vec::new(),
             forces: Vec::new(),
@@ -345,6 +349,7 @@ impl Drawing {
             guess: IndexMap::new(),
             forces: self.forces_spec(),
             solver: Default::default(),
+            drive: self.drive.clone(),
         }
     }
 

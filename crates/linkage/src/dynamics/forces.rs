@@ -3,8 +3,8 @@
 use crate::error::{LinkageError, Result};
 use crate::ids::{LinkId, PointId};
 use crate::kinematics::Kinematics;
-use crate::model::Mechanism;
 use crate::model::SceneProblem;
+use crate::model::{Drive, Mechanism};
 use crate::motion::{Solution, Vec2, cross};
 use crate::scene::{DamperSpec, ForceWhen, FreeLength, Models};
 
@@ -120,6 +120,8 @@ pub struct ForceModel {
     torques: Vec<(LinkId, f64)>,
     /// The link each point is fixed on.
     point_links: Vec<LinkId>,
+    /// The motor, gear and flywheel on the driver link, if any.
+    drive: Option<(LinkId, Drive)>,
 }
 
 fn missing(link: &str, field: &'static str) -> LinkageError {
@@ -229,6 +231,7 @@ impl ForceModel {
             point_forces,
             torques,
             point_links: m.points.iter().map(|p| p.link).collect(),
+            drive: m.drive.clone().map(|d| (m.driver.link, d)),
         })
     }
 
@@ -293,6 +296,16 @@ impl ForceModel {
         }
         for &(l, t) in &self.torques {
             r.m_other += t * unit.links[l].omega_rad_s;
+        }
+        if let Some((crank, drive)) = &self.drive {
+            // The rotor and flywheel turn with the crank: J grows by their inertia at
+            // the crank times the crank's rate squared; the motor's torque there
+            // depends on the crank's real speed.
+            let c = &unit.links[*crank];
+            let j = drive.inertia_at_crank_kg_m2;
+            r.j += j * c.omega_rad_s * c.omega_rad_s;
+            r.dj_dq += 2.0 * j * c.omega_rad_s * c.alpha_rad_s2;
+            r.m_other += drive.torque_at_crank(c.omega_rad_s * q_dot) * c.omega_rad_s;
         }
         r
     }
@@ -402,9 +415,13 @@ impl ForceModel {
         loads
     }
 
-    /// True when the scene has no mass at all (nothing to integrate).
+    /// True when the scene has no mass and no drive inertia (nothing to integrate).
     pub fn is_massless(&self) -> bool {
         self.bodies.is_empty()
+            && self
+                .drive
+                .as_ref()
+                .is_none_or(|(_, d)| d.inertia_at_crank_kg_m2 == 0.0)
     }
 
     /// The power ratios (F·v per unit input rate, N·m) of the forces that act on the

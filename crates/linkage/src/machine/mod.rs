@@ -1,9 +1,12 @@
 //! From linkage to machine: what driving a mechanism at speed asks of its motor and
 //! flywheel. The torque a crank turning at a constant speed needs over one cycle
-//! (inertia forces and loads), and the flywheel the energy method sizes from it.
+//! (inertia forces and loads), the flywheel the energy method sizes from it, and the
+//! real speed through the cycle with the scene's motor and flywheel.
 
 mod flywheel;
 mod gauss;
+mod steady;
 mod torque;
 
 pub use flywheel::{CyclePoint, FlywheelSizing, InertiaRange, size_flywheel};
+pub use steady::{SpeedPoint, SteadyState, steady_state};

@@ -31,7 +31,11 @@ impl<'a> CrankTorque<'a> {
         let start = k.mechanism().driver.start_rad;
         let speed_rad_s = k.mechanism().driver.speed_rad_s;
         let at_start = k.solve(start)?;
-        let forces = ForceModel::new(k.mechanism(), &at_start)?;
+        // The torque the load asks for: the drive (its motor and flywheel) is what
+        // is being sized, so it is left out.
+        let mut load_only = k.mechanism().clone();
+        load_only.drive = None;
+        let forces = ForceModel::new(&load_only, &at_start)?;
         let unit = k.empty_solution();
         Ok(Self {
             k,

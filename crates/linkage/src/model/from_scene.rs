@@ -10,7 +10,7 @@ use super::links::{bodies, check_joint_gaps};
 use super::units::{Units, invalid};
 use crate::error::{LinkageError, Result};
 use crate::model::problem::SceneProblem;
-use crate::model::{LinkId, Mechanism};
+use crate::model::{Drive, LinkId, Mechanism};
 use crate::scene::SceneFile;
 
 impl Mechanism {
@@ -76,6 +76,7 @@ impl Mechanism {
             forces,
             solver: scene.solver,
             size_m: bodies.size_m,
+            drive: scene.drive.as_ref().map(Drive::from_spec).transpose()?,
         })
     }
 }

@@ -8,6 +8,7 @@ use crate::motion::{LinkMotion, SlideMotion, Vec2, perp};
 use crate::real::{Real, splat, splat_vec};
 use crate::scene::{Branch, ForcesSpec, Models, SceneFile, SolverSpec};
 
+mod drive;
 mod driver;
 mod forces;
 mod from_scene;
@@ -16,6 +17,7 @@ mod links;
 mod problem;
 mod units;
 
+pub use drive::{Drive, Motor};
 pub use problem::{LonePoint, MadeJoint, SceneProblem};
 
 /// A rigid link.
@@ -165,6 +167,8 @@ pub struct Mechanism {
     pub solver: SolverSpec,
     /// Largest point distance from the origin, m: the scale for tolerances.
     pub size_m: f64,
+    /// The motor, gear and flywheel on the driver, if the scene gives them.
+    pub drive: Option<Drive>,
 }
 
 /// Largest angle a scene may give, rad (about 3200 turns). A double holds angles up to

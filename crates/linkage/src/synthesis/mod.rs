@@ -438,6 +438,7 @@ fn die_cutter_scene(
             ..Default::default()
         },
         solver: SolverSpec::default(),
+        drive: None,
     }
 }
 
@@ -529,5 +530,6 @@ pub(crate) fn four_bar(f: &FourBar) -> SceneFile {
         guess: IndexMap::new(),
         forces: ForcesSpec::default(),
         solver: SolverSpec::default(),
+        drive: None,
     }
 }

@@ -1,0 +1,258 @@
+//! The drive, validated and in SI: the motor's torque against its speed, reflected to
+//! the crank through the gear, and the inertia the gear, rotor and flywheel add there.
+
+use crate::error::{LinkageError, Result};
+use crate::scene::{DriveSpec, MotorSpec, Shaft};
+
+const RPM: f64 = std::f64::consts::TAU / 60.0;
+
+/// The motor's characteristic on its own shaft, SI.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Motor {
+    /// The same torque at every speed, N·m.
+    Constant(f64),
+    /// `T = rated · (no_load − ω) / (no_load − rated_speed)`, rad/s and N·m.
+    Linear {
+        /// No-load speed, rad/s.
+        no_load_rad_s: f64,
+        /// Torque at the rated speed, N·m.
+        rated_torque_n_m: f64,
+        /// Rated speed, rad/s.
+        rated_rad_s: f64,
+    },
+    /// `(rad/s, N·m)` in rising speed, joined by straight lines, ends held.
+    Table(Vec<(f64, f64)>),
+}
+
+impl Motor {
+    /// Torque at motor speed `w`, N·m.
+    pub fn torque(&self, w: f64) -> f64 {
+        match self {
+            Self::Constant(t) => *t,
+            Self::Linear {
+                no_load_rad_s,
+                rated_torque_n_m,
+                rated_rad_s,
+            } => rated_torque_n_m * (no_load_rad_s - w) / (no_load_rad_s - rated_rad_s),
+            Self::Table(points) => table(points, w),
+        }
+    }
+}
+
+/// Straight lines between the points, the end values beyond them.
+fn table(points: &[(f64, f64)], w: f64) -> f64 {
+    let i = points.partition_point(|&(x, _)| x <= w);
+    match (i, points.len()) {
+        (0, _) => points[0].1,
+        (i, n) if i == n => points[n - 1].1,
+        (i, _) => {
+            let ((x0, y0), (x1, y1)) = (points[i - 1], points[i]);
+            y0 + (y1 - y0) * (w - x0) / (x1 - x0)
+        }
+    }
+}
+
+/// A motor driving the crank through a gear, with the inertia it adds at the crank.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Drive {
+    /// The motor.
+    pub motor: Motor,
+    /// Motor turns per crank turn.
+    pub gear_ratio: f64,
+    /// Rotor, flywheel and gear inertia reduced to the crank, kg·m².
+    pub inertia_at_crank_kg_m2: f64,
+}
+
+impl Drive {
+    /// The torque the motor gives the crank turning at `crank_rad_s` (an ideal gear:
+    /// the motor turns `gear_ratio` times faster with `gear_ratio` times less torque).
+    pub fn torque_at_crank(&self, crank_rad_s: f64) -> f64 {
+        self.gear_ratio * self.motor.torque(self.gear_ratio * crank_rad_s)
+    }
+
+    /// Validates a scene's drive and puts it in SI.
+    ///
+    /// # Errors
+    /// A gear ratio that is not finite and > 0, an inertia < 0, a linear motor whose
+    /// rated speed is not below its no-load speed, a table not in rising speed.
+    pub fn from_spec(spec: &DriveSpec) -> Result<Self> {
+        let invalid = |name: &str, value: f64, valid: &str| LinkageError::InvalidParameter {
+            name: format!("drive.{name}"),
+            value,
+            valid: valid.into(),
+        };
+        let n = spec.gear_ratio;
+        if !(n.is_finite() && n > 0.0) {
+            return Err(invalid(
+                "gear_ratio",
+                n,
+                "must be finite and > 0 (motor turns per crank turn)",
+            ));
+        }
+        for (name, j) in [
+            ("motor_inertia_kg_m2", spec.motor_inertia_kg_m2),
+            ("flywheel_kg_m2", spec.flywheel_kg_m2),
+        ] {
+            if !(j.is_finite() && j >= 0.0) {
+                return Err(invalid(name, j, "must be finite and >= 0"));
+            }
+        }
+        let flywheel = match spec.flywheel_on {
+            Shaft::Crank => spec.flywheel_kg_m2,
+            Shaft::Motor => spec.flywheel_kg_m2 * n * n,
+        };
+        Ok(Self {
+            motor: motor(&spec.motor, &invalid)?,
+            gear_ratio: n,
+            inertia_at_crank_kg_m2: flywheel + spec.motor_inertia_kg_m2 * n * n,
+        })
+    }
+}
+
+/// The motor in SI, each number checked.
+fn motor(spec: &MotorSpec, invalid: &dyn Fn(&str, f64, &str) -> LinkageError) -> Result<Motor> {
+    let finite = |name: &str, v: f64| {
+        if v.is_finite() {
+            Ok(v)
+        } else {
+            Err(invalid(name, v, "must be a finite number"))
+        }
+    };
+    match spec {
+        MotorSpec::Constant { torque_n_m } => {
+            Ok(Motor::Constant(finite("torque_n_m", *torque_n_m)?))
+        }
+        MotorSpec::Linear {
+            no_load_rpm,
+            rated_torque_n_m,
+            rated_rpm,
+        } => {
+            let (w0, t, w) = (
+                finite("no_load_rpm", *no_load_rpm)?,
+                finite("rated_torque_n_m", *rated_torque_n_m)?,
+                finite("rated_rpm", *rated_rpm)?,
+            );
+            if w >= w0 {
+                return Err(invalid(
+                    "rated_rpm",
+                    w,
+                    &format!(
+                        "must be below the no-load speed {w0} rpm (the torque falls to zero there)"
+                    ),
+                ));
+            }
+            Ok(Motor::Linear {
+                no_load_rad_s: w0 * RPM,
+                rated_torque_n_m: t,
+                rated_rad_s: w * RPM,
+            })
+        }
+        MotorSpec::Table { points } => {
+            if points.len() < 2 {
+                return Err(invalid(
+                    "points",
+                    points.len() as f64,
+                    "a table needs at least 2 points",
+                ));
+            }
+            for (i, pair) in points.windows(2).enumerate() {
+                if pair[1].0.partial_cmp(&pair[0].0) != Some(std::cmp::Ordering::Greater) {
+                    return Err(invalid(
+                        &format!("points[{}] speed", i + 1),
+                        pair[1].0,
+                        "speeds must rise from point to point",
+                    ));
+                }
+            }
+            points
+                .iter()
+                .map(|&(rpm, t)| {
+                    Ok((
+                        finite("points speed", rpm)? * RPM,
+                        finite("points torque", t)?,
+                    ))
+                })
+                .collect::<Result<Vec<_>>>()
+                .map(Motor::Table)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn drive(motor: MotorSpec, ratio: f64, flywheel_on: Shaft) -> Result<Drive> {
+        Drive::from_spec(&DriveSpec {
+            motor,
+            gear_ratio: ratio,
+            motor_inertia_kg_m2: 0.5,
+            flywheel_kg_m2: 2.0,
+            flywheel_on,
+        })
+    }
+
+    #[test]
+    fn a_linear_motor_gives_its_rated_torque_at_its_rated_speed_and_none_at_no_load() {
+        let linear = MotorSpec::Linear {
+            no_load_rpm: 1500.0,
+            rated_torque_n_m: 100.0,
+            rated_rpm: 1450.0,
+        };
+        let d = drive(linear, 10.0, Shaft::Motor).expect("valid");
+        // Crank at 145 rpm: the motor at its rated 1450 rpm, ten times the torque.
+        assert!((d.torque_at_crank(145.0 * RPM) - 1000.0).abs() < 1e-9);
+        assert!(d.torque_at_crank(150.0 * RPM).abs() < 1e-9);
+        // Rotor 0.5 and flywheel 2 on the motor shaft: both times 10².
+        assert!((d.inertia_at_crank_kg_m2 - 250.0).abs() < 1e-12);
+        let on_crank =
+            drive(MotorSpec::Constant { torque_n_m: 3.0 }, 10.0, Shaft::Crank).expect("valid");
+        assert!((on_crank.inertia_at_crank_kg_m2 - 52.0).abs() < 1e-12);
+        assert_eq!(on_crank.torque_at_crank(123.0), 30.0);
+    }
+
+    #[test]
+    fn a_table_is_joined_by_lines_and_held_beyond_its_ends() {
+        let table = MotorSpec::Table {
+            points: vec![(0.0, 300.0), (1000.0, 200.0), (1500.0, 0.0)],
+        };
+        let m = drive(table, 1.0, Shaft::Crank).expect("valid").motor;
+        assert!((m.torque(500.0 * RPM) - 250.0).abs() < 1e-9);
+        assert!((m.torque(1250.0 * RPM) - 100.0).abs() < 1e-9);
+        assert_eq!(m.torque(-5.0), 300.0);
+        assert_eq!(m.torque(2000.0 * RPM), 0.0);
+    }
+
+    #[test]
+    fn a_bad_drive_is_refused_naming_the_field_and_its_range() {
+        let constant = || MotorSpec::Constant { torque_n_m: 1.0 };
+        let name_of = |r: Result<Drive>| match r {
+            Err(LinkageError::InvalidParameter { name, .. }) => name,
+            other => panic!("expected a refusal, got {other:?}"),
+        };
+        assert_eq!(
+            name_of(drive(constant(), 0.0, Shaft::Crank)),
+            "drive.gear_ratio"
+        );
+        assert_eq!(
+            name_of(drive(constant(), f64::NAN, Shaft::Crank)),
+            "drive.gear_ratio"
+        );
+        let backwards = MotorSpec::Linear {
+            no_load_rpm: 1000.0,
+            rated_torque_n_m: 1.0,
+            rated_rpm: 1200.0,
+        };
+        assert_eq!(
+            name_of(drive(backwards, 1.0, Shaft::Crank)),
+            "drive.rated_rpm"
+        );
+        let unsorted = MotorSpec::Table {
+            points: vec![(0.0, 1.0), (0.0, 2.0)],
+        };
+        assert_eq!(
+            name_of(drive(unsorted, 1.0, Shaft::Crank)),
+            "drive.points[1] speed"
+        );
+    }
+}
