@@ -125,6 +125,20 @@ pub(crate) enum Command {
         #[arg(long, value_enum, default_value_t = SummaryFormat::Text)]
         format: SummaryFormat,
     },
+    /// Shaking force and moment on the frame over one cycle at the scene's crank
+    /// speed, before and after the crank counterweight that minimises the force's mean
+    /// square, with the driving torque and flywheel (δ 0.05) each needs.
+    Shaking {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// The point moments are taken about, m (x y).
+        #[arg(long, num_args = 2, value_names = ["X", "Y"], default_values_t = [0.0, 0.0], allow_hyphen_values = true)]
+        about: Vec<f64>,
+        /// Output: the key figures (text), the cycle before and after (CSV), or both
+        /// (JSON).
+        #[arg(long, value_enum, default_value_t = SummaryFormat::Text)]
+        format: SummaryFormat,
+    },
     /// The work-precision table: per method and tolerance or step, CPU time, RHS
     /// evaluations and error against a DOP853 rtol-1e-13 reference (CSV; --png plots it).
     Tradeoff {

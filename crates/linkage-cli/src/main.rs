@@ -14,6 +14,7 @@ mod flywheel;
 mod io;
 mod kinetostatics;
 mod plot;
+mod shaking;
 mod simulate;
 mod synth_function;
 mod synth_motion;
@@ -68,6 +69,11 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
             delta,
             format,
         } => flywheel::run(&scene, delta, format),
+        Command::Shaking {
+            scene,
+            about,
+            format,
+        } => shaking::run(&scene, [about[0], about[1]], format),
         Command::Kinetostatics {
             scene,
             steps,

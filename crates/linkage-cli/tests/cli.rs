@@ -984,3 +984,33 @@ fn simulate_steady_gives_one_periodic_turn_and_refuses_a_scene_without_a_drive()
     let (ok, _, err) = linkage(&["simulate", &common::scene("die_cutter.ron"), "--steady"]);
     assert!(!ok && err.contains("drive"), "{err}");
 }
+
+#[test]
+fn shaking_gives_the_counterweight_and_both_cycles() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/examples/");
+    let scene = format!("{root}slider_crank_engine.ron");
+    let (ok, text, err) = linkage(&["shaking", &scene]);
+    assert!(ok, "{err}");
+    assert!(
+        text.contains("crank counterweight") && text.contains("rms shaking force"),
+        "{text}"
+    );
+    let (ok, json, err) = linkage(&[
+        "shaking", &scene, "--format", "json", "--about", "0.1", "-0.2",
+    ]);
+    assert!(ok, "{err}");
+    let v: serde_json::Value = serde_json::from_str(&json).expect("json");
+    assert_eq!(
+        v["before"]["shaking"]["about_m"],
+        serde_json::json!([0.1, -0.2])
+    );
+    let (before, after) = (
+        v["before"]["shaking"]["rms_force_n"].as_f64().expect("rms"),
+        v["after"]["shaking"]["rms_force_n"].as_f64().expect("rms"),
+    );
+    assert!(after < before, "{after} vs {before}");
+    let (ok, csv, err) = linkage(&["shaking", &scene, "--format", "csv"]);
+    assert!(ok, "{err}");
+    assert!(csv.starts_with("angle_rad,force_x_n,force_y_n,moment_n_m,balanced_force_x_n"));
+    assert_eq!(csv.lines().count(), 361);
+}

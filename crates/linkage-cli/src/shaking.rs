@@ -1,0 +1,142 @@
+//! `linkage shaking`: the shaking force and moment on the frame over a cycle, before
+//! and after the least-squares crank counterweight, and what the counterweight does
+//! to the driving torque and the flywheel.
+
+use linkage::Kinematics;
+use linkage::machine::{
+    CrankCounterweight, FlywheelSizing, Shaking, crank_counterweight, shaking, size_flywheel,
+    with_counterweight,
+};
+use serde_json::json;
+
+use crate::args::{SceneArgs, SummaryFormat};
+use crate::error::Result;
+use crate::io::{describe, json_text, load, records_to_csv};
+
+/// The δ the flywheel figures are given for.
+const DELTA: f64 = 0.05;
+
+/// One side of the comparison: the shaking cycle and the flywheel sizing.
+struct Side {
+    shaking: Shaking,
+    flywheel: FlywheelSizing,
+}
+
+fn side(k: &mut Kinematics, about: [f64; 2]) -> linkage::Result<Side> {
+    Ok(Side {
+        shaking: shaking(k, about)?,
+        flywheel: size_flywheel(k, DELTA)?,
+    })
+}
+
+/// Runs both sides and formats them.
+pub fn run(args: &SceneArgs, about: [f64; 2], format: SummaryFormat) -> Result<String> {
+    let mut k = load(args)?;
+    let before = side(&mut k, about).map_err(|e| describe(args, e))?;
+    let weight = crank_counterweight(&k, &before.shaking);
+    let mut balanced = Kinematics::new(with_counterweight(k.mechanism(), &weight))?;
+    let after = side(&mut balanced, about).map_err(|e| describe(args, e))?;
+    let name = &k.mechanism().name;
+    match format {
+        SummaryFormat::Text => Ok(summary(name, &weight, &before, &after)),
+        SummaryFormat::Csv => cycles_csv(&before.shaking, &after.shaking),
+        SummaryFormat::Json => json_text(&json!({
+            "scene": name,
+            "counterweight": weight,
+            "before": {"shaking": before.shaking, "flywheel": summary_of(&before.flywheel)},
+            "after": {"shaking": after.shaking, "flywheel": summary_of(&after.flywheel)},
+        })),
+    }
+}
+
+/// The flywheel's key figures (its cycle is `linkage flywheel`'s).
+fn summary_of(f: &FlywheelSizing) -> serde_json::Value {
+    json!({
+        "delta": f.delta,
+        "mean_torque_n_m": f.mean_torque_n_m,
+        "peak_torque_n_m": f.peak_torque_n_m,
+        "work_range_j": f.work_range_j,
+        "flywheel_kg_m2": f.flywheel_kg_m2,
+    })
+}
+
+fn summary(name: &str, c: &CrankCounterweight, before: &Side, after: &Side) -> String {
+    let row =
+        |what: &str, a: f64, b: f64, unit: &str| format!("{what:<28}{a:>14.6e}{b:>14.6e} {unit}\n");
+    let (s0, s1, f0, f1) = (
+        &before.shaking,
+        &after.shaking,
+        &before.flywheel,
+        &after.flywheel,
+    );
+    let mut out = format!(
+        "{name}: shaking on the frame (moments about ({}, {}) m)\n\
+         crank counterweight (least squares): {:.6e} kg·m at {:.4} deg from the crank, \
+         {:.6e} kg at ({:.6}, {:.6}) m on it\n{:<28}{:>14}{:>14}\n",
+        s0.about_m[0],
+        s0.about_m[1],
+        c.mass_radius_kg_m,
+        c.angle_rad.to_degrees(),
+        c.mass_kg,
+        c.at_m[0],
+        c.at_m[1],
+        "",
+        "without",
+        "with"
+    );
+    out += &row("peak shaking force", s0.peak_force_n, s1.peak_force_n, "N");
+    out += &row("rms shaking force", s0.rms_force_n, s1.rms_force_n, "N");
+    out += &row(
+        "peak shaking moment",
+        s0.peak_moment_n_m,
+        s1.peak_moment_n_m,
+        "N·m",
+    );
+    out += &row(
+        "peak driving torque",
+        f0.peak_torque_n_m,
+        f1.peak_torque_n_m,
+        "N·m",
+    );
+    out += &row("work surplus range", f0.work_range_j, f1.work_range_j, "J");
+    out += &row(
+        &format!("flywheel for delta {DELTA}"),
+        f0.flywheel_kg_m2,
+        f1.flywheel_kg_m2,
+        "kg·m²",
+    );
+    out
+}
+
+/// Both cycles side by side, a row per crank angle.
+fn cycles_csv(before: &Shaking, after: &Shaking) -> Result<String> {
+    let header = [
+        "angle_rad",
+        "force_x_n",
+        "force_y_n",
+        "moment_n_m",
+        "balanced_force_x_n",
+        "balanced_force_y_n",
+        "balanced_moment_n_m",
+    ]
+    .map(String::from);
+    let rows: Vec<Vec<String>> = before
+        .cycle
+        .iter()
+        .zip(&after.cycle)
+        .map(|(a, b)| {
+            [
+                a.angle_rad,
+                a.force_n[0],
+                a.force_n[1],
+                a.moment_n_m,
+                b.force_n[0],
+                b.force_n[1],
+                b.moment_n_m,
+            ]
+            .map(|v| format!("{v:e}"))
+            .to_vec()
+        })
+        .collect();
+    records_to_csv(&header, &rows)
+}

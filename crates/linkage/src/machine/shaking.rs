@@ -1,0 +1,234 @@
+//! Shaking force and moment: what the moving mechanism does to its frame over a
+//! cycle at the nominal crank speed. The force is the sum of the ground joints'
+//! reactions on the frame and of the loads the frame takes back (the work piece's
+//! reaction to a pressing force, the weights); the moment, about a point the user
+//! picks, adds the joints' couples and the reaction of the driving torque on the
+//! motor's stator. Together they are −Σ m a and −Σ ((r − P) × m a + I α): only the
+//! motion shakes the foundation, not a press's own working force, which the frame
+//! closes on itself.
+//!
+//! A counterweight on the crank, its mass-radius `c` in crank coordinates, adds
+//! `ω² R(φ) c` to the shaking force (its centrifugal force, through the pivot). The
+//! `c` that minimises the force's mean square over the cycle is the least-squares
+//! one, `c = −mean(R(φ)ᵀ F(φ)) / ω²`: it cancels the force's component that turns
+//! with the crank (the first harmonic, forwards).
+
+use nalgebra::{Rotation2, Vector2};
+use serde::Serialize;
+
+use crate::dynamics::{ForceModel, Load};
+use crate::error::{LinkageError, Result};
+use crate::ids::LinkId;
+use crate::kinematics::Kinematics;
+use crate::kinetostatics::{KinetostaticState, Kinetostatics};
+use crate::model::Mechanism;
+use crate::motion::{Solution, Vec2, cross};
+
+const TAU: f64 = std::f64::consts::TAU;
+
+/// Positions over the cycle.
+pub const SHAKING_SAMPLES: usize = 360;
+
+/// The load on the frame at one crank angle.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct ShakingPoint {
+    /// Crank angle, rad.
+    pub angle_rad: f64,
+    /// The force on the frame, N (x, y).
+    pub force_n: [f64; 2],
+    /// The moment on the frame about the chosen point, N·m.
+    pub moment_n_m: f64,
+}
+
+/// Shaking force and moment over one cycle.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Shaking {
+    /// The point moments are taken about, m.
+    pub about_m: [f64; 2],
+    /// Largest force magnitude, N.
+    pub peak_force_n: f64,
+    /// Root mean square of the force magnitude over the crank angle, N.
+    pub rms_force_n: f64,
+    /// Largest moment magnitude, N·m.
+    pub peak_moment_n_m: f64,
+    /// The cycle.
+    pub cycle: Vec<ShakingPoint>,
+}
+
+/// The load on the frame at one solved state: the ground joints' reactions reversed,
+/// their couples, and the driving torque's reaction on the stator.
+fn on_frame(
+    m: &Mechanism,
+    sol: &Solution,
+    state: &KinetostaticState,
+    applied: &[Load],
+    about: Vec2,
+) -> (Vec2, f64) {
+    let ground = m.ground;
+    let (mut force, mut moment) = (Vec2::zeros(), -state.torque_newton_euler);
+    for l in m.moving_links() {
+        // The frame takes their reactions back (a load's moment is about the world
+        // origin).
+        force -= applied[l].force;
+        moment -= applied[l].moment - cross(&about, &applied[l].force);
+    }
+    let mut add = |f: Vec2, at: Vec2, couple: f64| {
+        force += f;
+        moment += cross(&(at - about), &f) + couple;
+    };
+    let nr = m.revolutes.len();
+    for (j, rv) in m.revolutes.iter().enumerate() {
+        // The reaction is on link b from link a.
+        let f = Vec2::new(state.joints[j].force.0, state.joints[j].force.1);
+        let at = sol.points[rv.point].position;
+        if rv.b == ground {
+            add(f, at, 0.0);
+        } else if rv.a == ground {
+            add(-f, at, 0.0);
+        }
+    }
+    for (j, sl) in m.sliders.iter().enumerate() {
+        // On the slider from the guide: a force at the slider's point and a couple.
+        let r = &state.joints[nr + j];
+        let (f, couple) = (Vec2::new(r.force.0, r.force.1), r.couple);
+        let at = sol.points[sl.point].position;
+        if sl.guide == ground {
+            add(-f, at, -couple);
+        } else if sl.slider == ground {
+            add(f, at, couple);
+        }
+    }
+    (force, moment)
+}
+
+/// Shaking force and moment (about `about`, m) of `k`'s mechanism over a turn of the
+/// crank at its scene speed.
+///
+/// # Errors
+/// A scene without kinetostatics (masses and a crank speed), an input that does not
+/// turn fully, or a position that does not solve.
+pub fn shaking(k: &mut Kinematics, about: [f64; 2]) -> Result<Shaking> {
+    let reachable = k.assembly_ranges();
+    if !reachable.full_rotation {
+        return Err(LinkageError::NotACrank {
+            needs: "the shaking force over a cycle",
+            reachable,
+        });
+    }
+    let mut ks = Kinetostatics::new(k)?;
+    let at_start = k.solve(k.mechanism().driver.start_rad)?;
+    let loads = ForceModel::new(k.mechanism(), &at_start)?;
+    let (start, w) = (
+        k.mechanism().driver.start_rad,
+        k.mechanism().driver.speed_rad_s,
+    );
+    let point = Vec2::new(about[0], about[1]);
+    let mut cycle = Vec::with_capacity(SHAKING_SAMPLES);
+    for i in 0..SHAKING_SAMPLES {
+        let angle = start + TAU.copysign(w) * i as f64 / SHAKING_SAMPLES as f64;
+        let state = ks.at(k, angle)?;
+        let sol = k.solve(angle)?;
+        let applied = loads.applied_loads(&sol);
+        let (f, m) = on_frame(k.mechanism(), &sol, &state, &applied, point);
+        cycle.push(ShakingPoint {
+            angle_rad: angle,
+            force_n: [f.x, f.y],
+            moment_n_m: m,
+        });
+    }
+    let magnitude = |p: &ShakingPoint| p.force_n[0].hypot(p.force_n[1]);
+    Ok(Shaking {
+        about_m: about,
+        peak_force_n: cycle.iter().map(magnitude).fold(0.0, f64::max),
+        rms_force_n: (cycle.iter().map(|p| magnitude(p).powi(2)).sum::<f64>() / cycle.len() as f64)
+            .sqrt(),
+        peak_moment_n_m: cycle.iter().map(|p| p.moment_n_m.abs()).fold(0.0, f64::max),
+        cycle,
+    })
+}
+
+/// The crank counterweight that minimises the shaking force's mean square.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct CrankCounterweight {
+    /// Mass times radius, kg·m.
+    pub mass_radius_kg_m: f64,
+    /// Its direction in crank coordinates (from the pivot; 0 along the crank), rad.
+    pub angle_rad: f64,
+    /// Its place on the crank, m (crank coordinates, from the pivot).
+    pub at_m: [f64; 2],
+    /// Its mass at the crank's length from the pivot, kg.
+    pub mass_kg: f64,
+}
+
+/// The least-squares crank counterweight of a shaking cycle `s` of `k`'s mechanism
+/// (see the module's documentation), placed at the crank's length from its pivot.
+pub fn crank_counterweight(k: &Kinematics, s: &Shaking) -> CrankCounterweight {
+    let m = k.mechanism();
+    let w = m.driver.speed_rad_s;
+    let mut mean = Vector2::zeros();
+    for p in &s.cycle {
+        let back = Rotation2::new(-p.angle_rad);
+        mean += back * Vector2::new(p.force_n[0], p.force_n[1]);
+    }
+    let c = -mean / (s.cycle.len() as f64 * w * w);
+    let pivot = pivot_on_crank(m);
+    let radius = crank_length(m, pivot);
+    let angle = c.y.atan2(c.x);
+    let place = pivot + Vec2::new(angle.cos(), angle.sin()) * radius;
+    CrankCounterweight {
+        mass_radius_kg_m: c.norm(),
+        angle_rad: angle,
+        at_m: [place.x, place.y],
+        mass_kg: if radius > 0.0 { c.norm() / radius } else { 0.0 },
+    }
+}
+
+/// The crank's ground pivot in crank coordinates.
+fn pivot_on_crank(m: &Mechanism) -> Vec2 {
+    let rv = &m.revolutes[m.driver.pivot];
+    if rv.a == m.driver.link {
+        rv.a_local
+    } else {
+        rv.b_local
+    }
+}
+
+/// The distance of the crank's farthest point from its pivot, m.
+fn crank_length(m: &Mechanism, pivot: Vec2) -> f64 {
+    m.links[m.driver.link]
+        .points
+        .iter()
+        .map(|(_, p)| (p - pivot).norm())
+        .fold(0.0, f64::max)
+}
+
+/// `m` with the counterweight added to its crank as a point mass (the crank's mass,
+/// centroid and inertia combined with it).
+pub fn with_counterweight(m: &Mechanism, c: &CrankCounterweight) -> Mechanism {
+    let mut out = m.clone();
+    add_point_mass(
+        &mut out,
+        m.driver.link,
+        c.mass_kg,
+        Vec2::new(c.at_m[0], c.at_m[1]),
+    );
+    out
+}
+
+/// Adds a point mass `mass` at `at` (link coordinates) to `link`.
+fn add_point_mass(m: &mut Mechanism, link: LinkId, mass: f64, at: Vec2) {
+    let l = &mut m.links[link];
+    let (m0, g0, i0) = (
+        l.mass_kg.unwrap_or(0.0),
+        l.centroid_m.unwrap_or_default(),
+        l.inertia_kg_m2.unwrap_or(0.0),
+    );
+    let total = m0 + mass;
+    if total <= 0.0 {
+        return;
+    }
+    let g = (g0 * m0 + at * mass) / total;
+    l.mass_kg = Some(total);
+    l.centroid_m = Some(g);
+    l.inertia_kg_m2 = Some(i0 + m0 * (g0 - g).norm_squared() + mass * (at - g).norm_squared());
+}

@@ -1,0 +1,128 @@
+//! Shaking force and moment against the closed form of an in-line slider-crank with
+//! point masses (m_A at the crank pin, m_s on the slider), no gravity and no load:
+//! the frame carries F = −Σ m a = m_A r ω² (cos φ, sin φ) − m_s s''(φ) ω² e_x, and
+//! about a point P the moment −Σ (r − P) × m a = −P × F (both masses' r × a vanish
+//! about the pivot, on the guide line through it). The
+//! least-squares crank counterweight is the textbook one: m_A r + ½ m_s r opposite
+//! the crank (the rotating mass and half the reciprocating one), since s'' has −r cos φ
+//! as its only odd harmonic.
+
+use linkage::machine::{crank_counterweight, shaking, with_counterweight};
+use linkage::{Kinematics, LinkageError, Mechanism};
+
+const R: f64 = 0.05;
+const L: f64 = 0.2;
+const M_PIN: f64 = 2.0;
+const M_SLIDER: f64 = 10.0;
+const OMEGA: f64 = 30.0;
+
+fn engine() -> Kinematics {
+    let text = format!(
+        r#"Scene(
+        name: "engine",
+        models: Kinetostatics,
+        links: [
+            (name: "ground", ground: true, points: {{"O": (0.0, 0.0)}}),
+            (name: "crank", points: {{"O": (0.0, 0.0), "A": ({R}, 0.0)}}, mass: Some({M_PIN}), centroid: Some(({R}, 0.0))),
+            (name: "rod", points: {{"A": (0.0, 0.0), "C": ({L}, 0.0)}}),
+            (name: "slider", points: {{"C": (0.0, 0.0)}}, mass: Some({M_SLIDER}), centroid: Some((0.0, 0.0))),
+        ],
+        sliders: [(slider: "slider", point: "C", guide: "ground", through: "O", angle: 0.0)],
+        driver: (link: "crank", speed: RadPerSecond({OMEGA}), start: 0.0),
+        branches: {{"C": Along}},
+    )"#
+    );
+    Kinematics::new(Mechanism::from_ron(&text).expect("scene")).expect("kinematics")
+}
+
+/// s''(φ) of the in-line slider-crank.
+fn s2(phi: f64) -> f64 {
+    let (sn, cs) = phi.sin_cos();
+    let d = (L * L - R * R * sn * sn).sqrt();
+    -R * cs - R * R * (2.0 * phi).cos() / d - R.powi(4) * sn * sn * cs * cs / d.powi(3)
+}
+
+/// The shaking force, with a counterweight of mass-radius `c` on the crank at angle
+/// `at` from it.
+fn force(phi: f64, c: f64, at: f64) -> [f64; 2] {
+    let w2 = OMEGA * OMEGA;
+    let (sn, cs) = phi.sin_cos();
+    let (csn, ccs) = (phi + at).sin_cos();
+    [
+        M_PIN * R * w2 * cs - M_SLIDER * s2(phi) * w2 + c * w2 * ccs,
+        M_PIN * R * w2 * sn + c * w2 * csn,
+    ]
+}
+
+#[test]
+fn the_shaking_force_and_moment_of_an_engine_match_their_closed_forms() {
+    let about = [0.3, -0.1];
+    let s = shaking(&mut engine(), about).expect("shaking");
+    let scale = M_SLIDER * R * OMEGA * OMEGA * 2.0;
+    for p in &s.cycle {
+        let f = force(p.angle_rad, 0.0, 0.0);
+        for axis in 0..2 {
+            assert!(
+                (p.force_n[axis] - f[axis]).abs() <= 1e-9 * scale,
+                "at {}: {:?} vs {f:?}",
+                p.angle_rad,
+                p.force_n
+            );
+        }
+        // (−P) × F.
+        let moment = -about[0] * f[1] + about[1] * f[0];
+        assert!(
+            (p.moment_n_m - moment).abs() <= 1e-9 * scale * 0.3,
+            "at {}: {} vs {moment}",
+            p.angle_rad,
+            p.moment_n_m
+        );
+    }
+}
+
+#[test]
+fn the_least_squares_counterweight_balances_the_rotating_and_half_the_reciprocating_mass() {
+    let mut k = engine();
+    let before = shaking(&mut k, [0.0, 0.0]).expect("shaking");
+    let c = crank_counterweight(&k, &before);
+    let want = M_PIN * R + 0.5 * M_SLIDER * R;
+    assert!(
+        (c.mass_radius_kg_m - want).abs() <= 1e-9 * want,
+        "{} vs {want}",
+        c.mass_radius_kg_m
+    );
+    let off = (c.angle_rad.abs() - std::f64::consts::PI).abs();
+    assert!(off <= 1e-9, "opposite the crank: {}", c.angle_rad);
+    assert!(
+        (c.mass_kg * R - want).abs() <= 1e-9 * want,
+        "at the crank's length"
+    );
+    let mut balanced = Kinematics::new(with_counterweight(k.mechanism(), &c)).expect("k");
+    let after = shaking(&mut balanced, [0.0, 0.0]).expect("shaking");
+    let scale = M_SLIDER * R * OMEGA * OMEGA;
+    for p in &after.cycle {
+        let f = force(p.angle_rad, want, std::f64::consts::PI);
+        assert!(
+            (p.force_n[0] - f[0]).abs() <= 1e-9 * scale
+                && (p.force_n[1] - f[1]).abs() <= 1e-9 * scale
+        );
+    }
+    assert!(
+        after.rms_force_n < before.rms_force_n,
+        "{} vs {}",
+        after.rms_force_n,
+        before.rms_force_n
+    );
+}
+
+#[test]
+fn shaking_needs_masses_and_a_turning_crank() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../assets/scenes/slider_crank.ron"
+    ))
+    .expect("scene");
+    let mut k = Kinematics::new(Mechanism::from_ron(&text).expect("scene")).expect("k");
+    let err = shaking(&mut k, [0.0, 0.0]).expect_err("kinematics only");
+    assert!(matches!(err, LinkageError::SceneInvalid(_)), "{err}");
+}
