@@ -11,6 +11,7 @@ pub mod drawing_canvas;
 pub mod drawing_forces;
 pub mod drawing_panel;
 pub mod files;
+pub mod flywheel_plots;
 pub mod layout;
 pub mod panels;
 pub mod plots;

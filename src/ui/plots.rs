@@ -21,6 +21,8 @@ pub enum PlotTab {
     Transmission,
     /// Input torque and force amplification (kinetostatic scenes).
     Torque,
+    /// The flywheel by the energy method (kinetostatic scenes).
+    Flywheel,
     /// omega-phi, omega-t and phi-t of the dynamic run.
     Motion,
     /// J(q) and M(q) (dynamic scenes).
@@ -35,7 +37,7 @@ pub fn tab_available(tab: PlotTab, s: &Session) -> bool {
         PlotTab::Output => !c.outputs.is_empty(),
         PlotTab::Transmission => !c.transmission_deg.is_empty(),
         // What the scene models: its curves are computed only when the tab is shown.
-        PlotTab::Torque => s.models() == Models::Kinetostatics,
+        PlotTab::Torque | PlotTab::Flywheel => s.models() == Models::Kinetostatics,
         PlotTab::Motion => matches!(s.dynamics(), Some(Ok(_))),
         PlotTab::ReducedModel => s.models() == Models::Dynamics,
     }
@@ -78,6 +80,7 @@ impl PlotsPanel {
                 (PlotTab::Output, "Output s, v, a"),
                 (PlotTab::Transmission, "Transmission angle"),
                 (PlotTab::Torque, "Input torque, amplification"),
+                (PlotTab::Flywheel, "Flywheel"),
                 (PlotTab::Motion, "ω–φ, ω–t, φ–t"),
                 (PlotTab::ReducedModel, "J(q), M(q)"),
             ] {
@@ -104,6 +107,7 @@ impl PlotsPanel {
                 );
             }
             PlotTab::Torque => torque_plots(ui, s),
+            PlotTab::Flywheel => flywheel_tab(ui, s),
             PlotTab::Motion => motion_plots(ui, s),
             PlotTab::ReducedModel => reduced_model_plots(ui, s),
         }
@@ -182,6 +186,22 @@ fn torque_plots(ui: &mut egui::Ui, s: &Session) {
             ),
         ],
     );
+}
+
+/// The flywheel tab: its plots, or why the scene has no flywheel to size.
+fn flywheel_tab(ui: &mut egui::Ui, s: &Session) {
+    let Some(c) = model_curves(ui, s) else {
+        return;
+    };
+    match &c.flywheel {
+        Some(Ok(sized)) => {
+            crate::ui::flywheel_plots::flywheel_plots(ui, plot_key(s), sized, cursor_deg(s))
+        }
+        Some(Err(why)) => {
+            ui.label(format!("no flywheel to size: {why}"));
+        }
+        None => {}
+    }
 }
 
 /// The dynamic run: ω against φ and t, φ against t.

@@ -8,6 +8,7 @@ mod drawing;
 mod every_control;
 mod file_actions;
 mod gl_shaders;
+mod machine;
 mod newton_only_scene;
 mod path_synthesis_ui;
 mod point_edit;

@@ -25,7 +25,7 @@ fn harness() -> Harness<'static, LinkageApp> {
 }
 
 /// Opens `key` by clicking the scene picker and the scene's name.
-fn open_scene(h: &mut Harness<'static, LinkageApp>, key: &str) {
+pub(crate) fn open_scene(h: &mut Harness<'static, LinkageApp>, key: &str) {
     let text = BUILTIN_SCENES
         .iter()
         .find(|b| b.key == key)

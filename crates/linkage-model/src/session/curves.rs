@@ -7,9 +7,14 @@
 use linkage::analysis::{Output, outputs, transmission_angle_at};
 use linkage::dynamics::ForceModel;
 use linkage::kinetostatics::Kinetostatics;
+use linkage::machine::{FlywheelSizing, size_flywheel};
 use linkage::scene::Models;
 use linkage::sweep::{Sweep, sweep};
-use linkage::{Kinematics, LinkId, PointId, Solution};
+use linkage::{Kinematics, LinkId, LinkageError, PointId, Solution};
+
+/// The coefficient of speed fluctuation the app sizes flywheels for (a common design
+/// value for presses and punches; `linkage flywheel --delta` takes any).
+pub const FLYWHEEL_DELTA: f64 = 0.05;
 
 /// Positions per cycle in the curves (one per degree of a full turn).
 pub const CURVE_STEPS: usize = 361;
@@ -111,6 +116,10 @@ pub struct ModelCurves {
     pub torque_n_m: Vec<[f64; 2]>,
     /// Kinetostatic scenes: force amplification (output force per N·m), absent at toggles.
     pub amplification: Vec<[f64; 2]>,
+    /// Kinetostatic scenes: the flywheel by the energy method at the scene's speed,
+    /// for a speed fluctuation of [`FLYWHEEL_DELTA`], or why there is none (a rocking
+    /// input).
+    pub flywheel: Option<Result<FlywheelSizing, LinkageError>>,
     /// Dynamic scenes: equivalent inertia J(q), kg·m².
     pub inertia_kg_m2: Vec<[f64; 2]>,
     /// Dynamic scenes: equivalent moment M(q) at rest, N·m.
@@ -134,6 +143,7 @@ impl ModelCurves {
     }
 
     fn add_kinetostatics(&mut self, k: &mut Kinematics, inputs: &[f64]) {
+        self.flywheel = Some(size_flywheel(k, FLYWHEEL_DELTA));
         let mut ks = match Kinetostatics::new(k) {
             Ok(ks) => ks,
             Err(e) => {

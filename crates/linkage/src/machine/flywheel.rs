@@ -43,6 +43,10 @@ pub struct FlywheelSizing {
     pub work_range_j: f64,
     /// Crank angle of the largest surplus (the fastest point), rad.
     pub angle_of_max_rad: f64,
+    /// The largest surplus since the start angle, J.
+    pub surplus_max_j: f64,
+    /// The smallest surplus since the start angle, J.
+    pub surplus_min_j: f64,
     /// Crank angle of the smallest surplus (the slowest point), rad.
     pub angle_of_min_rad: f64,
     /// The flywheel inertia on the crank, J_F = ΔW_max / (ω² δ), kg·m².
@@ -134,6 +138,8 @@ pub fn size_flywheel(k: &mut Kinematics, delta: f64) -> Result<FlywheelSizing> {
             .unwrap_or(0.0),
         work_range_j,
         angle_of_max_rad: max.0,
+        surplus_max_j: max.1,
+        surplus_min_j: min.1,
         angle_of_min_rad: min.0,
         flywheel_kg_m2: work_range_j / (w * w * delta),
         reduced_inertia_kg_m2: inertia,
