@@ -9,7 +9,7 @@
 //! so it solves one per call.
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
-use linkage::lanes::LANES;
+use linkage::LANES;
 use linkage::scene::SolverPath;
 use linkage::{Kinematics, Mechanism};
 

@@ -1,6 +1,6 @@
 //! Runs 20 cycles of 3600 positions of the paper-cup four-bar for profilers:
 //! `valgrind --tool=callgrind target/release/examples/profile_cycle [newton|lanes]`.
-use linkage::lanes::LANES;
+use linkage::LANES;
 use linkage::{Kinematics, Mechanism};
 fn main() {
     let text = include_str!("../benches/four_bar.ron");

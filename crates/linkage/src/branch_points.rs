@@ -8,7 +8,7 @@
 use serde::Serialize;
 
 use crate::assembly::AssemblyRanges;
-use crate::kinematics::Kinematics;
+use crate::solve::Kinematics;
 
 /// Conditioning below which a grid minimum is refined.
 const CANDIDATE: f64 = 0.05;

@@ -12,9 +12,9 @@ use serde::Serialize;
 use crate::dynamics::ForceModel;
 use crate::error::{LinkageError, Result};
 use crate::ids::LinkId;
-use crate::kinematics::Kinematics;
 use crate::model::SceneProblem;
 use crate::motion::{Solution, Vec2, cross, perp};
+use crate::solve::Kinematics;
 
 /// Which kind of joint a reaction acts in: a revolute carries a force, a prismatic
 /// joint a force across its guide and a couple.

@@ -1,8 +1,8 @@
 //! Position, velocity and acceleration of points and links: what every solver returns.
 //!
 //! The types are generic over the number type: `f64` for one position, or
-//! [`crate::lanes::Lanes`] for several positions solved together in SIMD lanes
-//! (the same code, see [`crate::lanes`]). The default is `f64`.
+//! [`crate::real::Lanes`] for several positions solved together in SIMD lanes
+//! (the same code, see [`crate::LaneSolution`]). The default is `f64`.
 
 use nalgebra::{UnitComplex, Vector2};
 

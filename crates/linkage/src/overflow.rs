@@ -4,8 +4,8 @@
 //! column 17", the cause is named with the largest speed that stays finite.
 
 use crate::error::{LinkageError, Result};
-use crate::kinematics::Kinematics;
 use crate::motion::Solution;
+use crate::solve::Kinematics;
 
 /// The largest |rate| of any velocity (and of any acceleration) in `s`: point
 /// components, link speeds, slider rates.

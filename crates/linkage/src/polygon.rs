@@ -8,11 +8,11 @@ use std::fmt;
 
 use serde::{Serialize, Serializer};
 
-use crate::closed_form::Group;
 use crate::ids::LinkId;
-use crate::kinematics::Kinematics;
 use crate::model::Mechanism;
 use crate::motion::{PointMotion, Solution, Vec2, perp};
+use crate::solve::Group;
+use crate::solve::Kinematics;
 
 /// Velocity or acceleration.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]

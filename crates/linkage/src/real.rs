@@ -1,5 +1,5 @@
 //! The solver's number type: `f64` for one position, [`Lanes`] of `f64` for several
-//! at once (see [`crate::lanes`]), with the operations the solver needs of both. A
+//! at once (see [`crate::LaneSolution`]), with the operations the solver needs of both. A
 //! leaf module: the motion types and the solvers are generic over [`Real`].
 
 use nalgebra::{SimdRealField, SimdValue, Vector2};

@@ -4,10 +4,10 @@
 
 pub use crate::analysis::sweep_range;
 use crate::error::{LinkageError, Result};
-use crate::kinematics::Kinematics;
-use crate::lanes::LANES;
 use crate::model::Mechanism;
 use crate::motion::Solution;
+use crate::real::LANES;
+use crate::solve::Kinematics;
 
 /// Conditioning below which a sweep position is reported as near a tangency.
 pub const NEAR_SINGULAR: f64 = 1e-3;
@@ -130,7 +130,7 @@ fn solve_stepping_past_branch_points(
     inputs: [f64; LANES],
     speed: f64,
     hair: f64,
-    lanes: &mut crate::lanes::LaneSolution,
+    lanes: &mut crate::solve::LaneSolution,
 ) -> Result<()> {
     match k.solve_lanes(inputs, speed, lanes) {
         Err(LinkageError::Singular { .. }) => {}

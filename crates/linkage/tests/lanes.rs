@@ -4,9 +4,9 @@
 mod common;
 
 use common::{SCENES, cycle, kinematics, motion_scales};
-use linkage::lanes::{LANES, LaneSolution};
 use linkage::scene::SolverPath;
 use linkage::{Kinematics, Mechanism, Solution};
+use linkage::{LANES, LaneSolution};
 
 /// Two blocks pinned together at P: one slides on a turning arm, one on a ground
 /// guide, so P is where the arm's line meets the guide (a PRP dyad; no shipped scene

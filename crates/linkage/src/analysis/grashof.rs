@@ -3,8 +3,8 @@
 
 use serde::Serialize;
 
-use crate::closed_form::Group;
-use crate::kinematics::Kinematics;
+use crate::solve::Group;
+use crate::solve::Kinematics;
 
 /// The Grashof class of a four-bar loop, by which link is shortest (JSON: the words
 /// [`std::fmt::Display`] shows).

@@ -6,9 +6,9 @@ use serde::Serialize;
 use super::outputs::Output;
 use super::{RESTING_RATE, TAU};
 use crate::assembly::AssemblyRanges;
-use crate::kinematics::Kinematics;
 use crate::motion::Solution;
 use crate::roots_util::{refine, sign_changes};
+use crate::solve::Kinematics;
 
 /// Which extreme of an output a limit position is (`"max"` or `"min"` in JSON).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

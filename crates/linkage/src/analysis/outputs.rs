@@ -1,8 +1,8 @@
 //! The outputs whose extremes are sought: rockers (links pinned to ground) and sliders.
 
 use crate::ids::LinkId;
-use crate::kinematics::Kinematics;
 use crate::motion::Solution;
+use crate::solve::Kinematics;
 
 /// An output whose extremes are sought: a link pinned to ground, or a slider.
 #[derive(Clone, Debug, PartialEq)]

@@ -2,7 +2,7 @@
 
 use crate::assembly::AssemblyRanges;
 use crate::error::{AssemblyFailure, LinkageError, Result};
-use crate::kinematics::Kinematics;
+use crate::solve::Kinematics;
 
 /// Assembly ranges: of a closed-form chain by root-finding on the groups' margins; of
 /// a chain solved by Newton alone, the range its branch was traced over (between

@@ -3,7 +3,7 @@
 use serde::Serialize;
 
 use crate::error::{AssemblyFailure, LinkageError, Result};
-use crate::kinematics::{Kinematics, PathKind};
+use crate::solve::{Kinematics, PathKind};
 
 use super::grashof::{Grashof, grashof};
 use super::limits::LimitPosition;

@@ -7,7 +7,7 @@ use super::TAU;
 use super::limits::LimitPosition;
 use super::transmission::collinear_joints;
 use crate::assembly::AssemblyRanges;
-use crate::kinematics::Kinematics;
+use crate::solve::Kinematics;
 
 /// A position where an output/input velocity ratio is zero or infinite.
 #[derive(Clone, Debug, PartialEq, Serialize)]

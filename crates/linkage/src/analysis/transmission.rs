@@ -5,11 +5,11 @@ use serde::Serialize;
 
 use super::TAU;
 use crate::assembly::AssemblyRanges;
-use crate::closed_form::Group;
 use crate::ids::{LinkId, PointId};
-use crate::kinematics::Kinematics;
 use crate::motion::{Solution, Vec2, cross, perp};
 use crate::roots_util::{refine, sign_changes};
+use crate::solve::Group;
+use crate::solve::Kinematics;
 
 /// Acute transmission angle summary, rad.
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -10,7 +10,6 @@ mod from_scene;
 use indexmap::IndexMap;
 
 use crate::Kinematics;
-use crate::closed_form::ClosedForm;
 use crate::error::LinkageError;
 use crate::model::Mechanism;
 use crate::model::SceneProblem;
@@ -19,6 +18,7 @@ use crate::scene::{
     AngleUnit, DamperSpec, DriverSpec, ForceWhen, ForcesSpec, FreeLength, LengthUnit, LinkSpec,
     Models, PointForceSpec, SceneFile, SliderSpec, Speed, SpringSpec,
 };
+use crate::solve::ClosedForm;
 pub use from_scene::NotDrawable;
 
 /// A point of the drawing.

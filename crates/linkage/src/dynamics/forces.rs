@@ -2,11 +2,11 @@
 
 use crate::error::{LinkageError, Result};
 use crate::ids::{LinkId, PointId};
-use crate::kinematics::Kinematics;
 use crate::model::SceneProblem;
 use crate::model::{Drive, Mechanism};
 use crate::motion::{Solution, Vec2, cross};
 use crate::scene::{DamperSpec, ForceWhen, FreeLength, Models};
+use crate::solve::Kinematics;
 
 /// Mass data of one moving link, SI.
 #[derive(Clone, Debug, PartialEq)]

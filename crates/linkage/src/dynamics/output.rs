@@ -6,8 +6,8 @@ use serde::Serialize;
 use super::settings::Method;
 use crate::error::Result;
 use crate::ids::LinkId;
-use crate::kinematics::Kinematics;
 use crate::motion::Solution;
+use crate::solve::Kinematics;
 
 /// One state of the run.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]

@@ -8,8 +8,8 @@
 use super::forces::{ForceModel, Reduced, unit_solution};
 use crate::error::{LinkageError, Result};
 use crate::ids::LinkId;
-use crate::kinematics::Kinematics;
 use crate::motion::Solution;
+use crate::solve::Kinematics;
 
 /// State (x, v, w) in the current coordinate.
 pub(crate) type State = [f64; 3];

@@ -14,10 +14,10 @@ use super::rhs::{Point, Rhs, State};
 use super::settings::{Method, Settings};
 use crate::error::{LinkageError, Result};
 use crate::ids::LinkId;
-use crate::kinematics::Kinematics;
 use crate::model::SceneProblem;
 use crate::roots_util::refine;
 use crate::scene::StopAction;
+use crate::solve::Kinematics;
 use crate::sweep::unwrap_near;
 
 /// An end stop resolved to the link it watches.

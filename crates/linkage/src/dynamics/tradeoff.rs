@@ -10,7 +10,7 @@ use super::output::Simulation;
 use super::run::simulate;
 use super::settings::{Method, Settings};
 use crate::error::Result;
-use crate::kinematics::Kinematics;
+use crate::solve::Kinematics;
 
 /// One point of the work–precision diagram.
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -16,8 +16,8 @@ use serde::Serialize;
 use super::gauss;
 use super::torque::{CrankLoad, CrankTorque};
 use crate::error::{LinkageError, Result};
-use crate::kinematics::Kinematics;
 use crate::roots_util::refine;
+use crate::solve::Kinematics;
 
 const TAU: f64 = std::f64::consts::TAU;
 /// Panels over the cycle before splitting at switching angles (one degree each).

@@ -19,10 +19,10 @@ use serde::Serialize;
 use crate::dynamics::{ForceModel, Load};
 use crate::error::{LinkageError, Result};
 use crate::ids::LinkId;
-use crate::kinematics::Kinematics;
 use crate::kinetostatics::{KinetostaticState, Kinetostatics};
 use crate::model::Mechanism;
 use crate::motion::{Solution, Vec2, cross};
+use crate::solve::Kinematics;
 
 const TAU: f64 = std::f64::consts::TAU;
 

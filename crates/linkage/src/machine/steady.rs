@@ -14,9 +14,9 @@ use serde::Serialize;
 use super::flywheel::size_flywheel;
 use crate::dynamics::{Method, Settings, Simulation, simulate};
 use crate::error::{LinkageError, Result};
-use crate::kinematics::Kinematics;
 use crate::model::{Mechanism, Motor};
 use crate::scene::{StopAction, StopSpec};
+use crate::solve::Kinematics;
 
 const TAU: f64 = std::f64::consts::TAU;
 /// Relative tolerance of one turn's integration.

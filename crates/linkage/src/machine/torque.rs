@@ -5,8 +5,8 @@
 
 use crate::dynamics::ForceModel;
 use crate::error::Result;
-use crate::kinematics::Kinematics;
 use crate::motion::Solution;
+use crate::solve::Kinematics;
 
 /// One position of the crank at the nominal speed.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,8 +1,8 @@
 //! Path generation: a four-bar whose coupler point passes through 3 to 20 target
 //! points, with or without prescribed crank angles (timing). A global search
-//! (differential evolution, [`evolution`]) over the coupler curve's shape, placed on
+//! (differential evolution, `evolution`) over the coupler curve's shape, placed on
 //! the targets by the similarity that fits best (`shape.rs`, `coarse.rs`), finds
-//! basins; Levenberg–Marquardt ([`least_squares`]) then meets the targets exactly
+//! basins; Levenberg–Marquardt (`least_squares`) then meets the targets exactly
 //! where the four-bar can. The user's constraints (a crank that turns, a least
 //! transmission angle, a region for the ground pivots, targets on one branch, in
 //! their order) are penalties in the search and are checked exactly on every design

@@ -7,7 +7,7 @@
 //! moving guide appears as an explicit right-hand-side term.
 //!
 //! The group solvers are generic over the number type ([`Real`]): `f64` solves one
-//! position, [`crate::lanes::Lanes`] several at once in SIMD lanes. Their tests are
+//! position, [`crate::real::Lanes`] several at once in SIMD lanes. Their tests are
 //! lane masks: a group fails if it fails in any lane.
 mod branches;
 mod group;
@@ -56,7 +56,7 @@ pub struct ClosedForm {
 
 impl ClosedForm {
     /// Decomposes the chain into dyads. Fails with [`LinkageError::NotDecomposable`]
-    /// when it has none (then use [`crate::newton::Newton`]), or with
+    /// when it has none (then use [`crate::solve::Newton`]), or with
     /// [`LinkageError::SceneInvalid`] when a dyad's branch is missing or malformed.
     pub fn new(m: &Mechanism) -> Result<Self> {
         Self::decompose(m, false)

@@ -2,16 +2,17 @@
 //! named errors (the reachable input range included when a chain cannot assemble).
 
 use crate::assembly::AssemblyRanges;
-use crate::closed_form::{ClosedForm, Failure, finish_solution};
 use crate::dyad::DyadLabel;
 use crate::error::{AssemblyFailure, LinkageError, Result};
 use crate::ids::LinkId;
-use crate::lanes::{LANES, LaneSolution, Lanes};
 use crate::model::Mechanism;
 use crate::model::SceneProblem;
 use crate::motion::{LinkMotion, Solution};
-use crate::newton::Newton;
+use crate::real::{LANES, Lanes};
 use crate::scene::SolverPath;
+use crate::solve::LaneSolution;
+use crate::solve::Newton;
+use crate::solve::{ClosedForm, Failure, finish_solution};
 
 /// The solver path in use; serialized as its label.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -340,7 +341,7 @@ impl Kinematics {
             group,
             // Within the tangency slack a group closes, collinear (a solve there is
             // refused as singular, but the chain is not coming apart).
-            assembles: margin >= -crate::closed_form::TANGENT_SLACK,
+            assembles: margin >= -crate::solve::TANGENT_SLACK,
         })
     }
 

@@ -16,7 +16,7 @@ use nalgebra::{SimdValue, Vector2};
 
 use crate::ids::LinkId;
 use crate::motion::{LinkMotion, PointMotion, SlideMotion, Solution, Vec2};
-pub use crate::real::{LANES, Lanes, Real, splat, splat_vec};
+use crate::real::{LANES, Lanes};
 
 /// Lane `k` of a vector.
 #[inline]
@@ -134,6 +134,7 @@ impl LaneSolution {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::real::Real;
 
     /// Within 2 ulp of the standard library's sine and cosine (absolute 2.3e-16 for
     /// these magnitudes), over many turns both ways, at quadrant boundaries and beyond
