@@ -6,7 +6,7 @@ use serde_json::json;
 
 use crate::args::{SceneArgs, SummaryFormat};
 use crate::error::Result;
-use crate::io::{describe, json_text, load, records_to_csv};
+use crate::io::{describe, json_text, load, to_csv};
 
 /// Sizes the flywheel and formats it.
 pub fn run(args: &SceneArgs, delta: f64, format: SummaryFormat) -> Result<String> {
@@ -56,19 +56,17 @@ fn cycle_csv(s: &FlywheelSizing) -> Result<String> {
         "reduced_inertia_kg_m2",
     ]
     .map(String::from);
-    let rows: Vec<Vec<String>> = s
+    let rows: Vec<Vec<f64>> = s
         .cycle
         .iter()
         .map(|c| {
-            [
+            vec![
                 c.angle_rad,
                 c.torque_n_m,
                 c.surplus_j,
                 c.reduced_inertia_kg_m2,
             ]
-            .map(|v| format!("{v:e}"))
-            .to_vec()
         })
         .collect();
-    records_to_csv(&header, &rows)
+    to_csv(&header, &rows)
 }

@@ -11,7 +11,7 @@ use serde_json::json;
 
 use crate::args::{SceneArgs, SummaryFormat};
 use crate::error::Result;
-use crate::io::{describe, json_text, load, records_to_csv};
+use crate::io::{describe, json_text, load, to_csv};
 
 /// The δ the flywheel figures are given for.
 const DELTA: f64 = 0.05;
@@ -120,12 +120,12 @@ fn cycles_csv(before: &Shaking, after: &Shaking) -> Result<String> {
         "balanced_moment_n_m",
     ]
     .map(String::from);
-    let rows: Vec<Vec<String>> = before
+    let rows: Vec<Vec<f64>> = before
         .cycle
         .iter()
         .zip(&after.cycle)
         .map(|(a, b)| {
-            [
+            vec![
                 a.angle_rad,
                 a.force_n[0],
                 a.force_n[1],
@@ -134,9 +134,7 @@ fn cycles_csv(before: &Shaking, after: &Shaking) -> Result<String> {
                 b.force_n[1],
                 b.moment_n_m,
             ]
-            .map(|v| format!("{v:e}"))
-            .to_vec()
         })
         .collect();
-    records_to_csv(&header, &rows)
+    to_csv(&header, &rows)
 }

@@ -8,7 +8,7 @@ use serde_json::{Value, json};
 
 use crate::args::{Format, MethodArg, SceneArgs, SimArgs};
 use crate::error::{CliError, Result};
-use crate::io::{check_finite, describe, json_text, load, records_to_csv, to_csv};
+use crate::io::{check_finite, describe, json_text, load, to_csv};
 
 impl MethodArg {
     /// The solver's method.
@@ -170,16 +170,12 @@ pub fn steady(args: &SceneArgs, format: Format) -> Result<String> {
     match format {
         Format::Csv => {
             let header = ["t_s", "angle_rad", "speed_rad_s"].map(String::from);
-            let rows: Vec<Vec<String>> = s
+            let rows: Vec<Vec<f64>> = s
                 .cycle
                 .iter()
-                .map(|p| {
-                    [p.t_s, p.angle_rad, p.speed_rad_s]
-                        .map(|v| format!("{v:e}"))
-                        .to_vec()
-                })
+                .map(|p| vec![p.t_s, p.angle_rad, p.speed_rad_s])
                 .collect();
-            records_to_csv(&header, &rows)
+            to_csv(&header, &rows)
         }
         Format::Json => json_text(&json!({"scene": k.mechanism().name, "steady_state": s})),
     }
