@@ -14,7 +14,7 @@
 use serde::Serialize;
 
 use super::gauss;
-use super::torque::{CrankLoad, CrankTorque};
+use super::torque::{CrankLoad, CrankTorque, full_turn};
 use crate::error::{LinkageError, Result};
 use crate::roots_util::refine;
 use crate::solve::Kinematics;
@@ -164,14 +164,7 @@ fn check_inputs(k: &Kinematics, delta: f64) -> Result<()> {
             valid: "flywheel sizing needs the crank's nominal speed: give the driver a finite speed other than 0".into(),
         });
     }
-    let reachable = k.assembly_ranges();
-    if !reachable.full_rotation {
-        return Err(LinkageError::NotACrank {
-            needs: "flywheel sizing",
-            reachable,
-        });
-    }
-    Ok(())
+    full_turn(k, "flywheel sizing")
 }
 
 /// One-degree panel ends over the `turn` (±2π) from `start`, with the angles where a
@@ -266,9 +259,15 @@ fn extremes(
         .zip(surplus_at_ends)
         .map(|(p, &s)| (p.a, s))
         .collect();
-    for (p, &s0) in panels.iter().zip(surplus_at_ends) {
+    for (i, (p, &s0)) in panels.iter().zip(surplus_at_ends).enumerate() {
+        // A panel ends where the next one starts, solved already; the last ends a
+        // turn after the first begins.
+        let at_b = match panels.get(i + 1) {
+            Some(next) => next.start,
+            None => crank.at(p.b)?,
+        };
         let excess_a = p.start.torque_n_m - mean_torque;
-        let excess_b = crank.at(p.b)?.torque_n_m - mean_torque;
+        let excess_b = at_b.torque_n_m - mean_torque;
         if excess_a * excess_b >= 0.0 {
             continue;
         }

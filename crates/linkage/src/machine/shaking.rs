@@ -16,8 +16,9 @@
 use nalgebra::{Rotation2, Vector2};
 use serde::Serialize;
 
+use super::torque::full_turn;
 use crate::dynamics::{ForceModel, Load};
-use crate::error::{LinkageError, Result};
+use crate::error::Result;
 use crate::ids::LinkId;
 use crate::kinetostatics::{KinetostaticState, Kinetostatics};
 use crate::model::Mechanism;
@@ -108,13 +109,7 @@ fn on_frame(
 /// A scene without kinetostatics (masses and a crank speed), an input that does not
 /// turn fully, or a position that does not solve.
 pub fn shaking(k: &mut Kinematics, about: [f64; 2]) -> Result<Shaking> {
-    let reachable = k.assembly_ranges();
-    if !reachable.full_rotation {
-        return Err(LinkageError::NotACrank {
-            needs: "the shaking force over a cycle",
-            reachable,
-        });
-    }
+    full_turn(k, "the shaking force over a cycle")?;
     let mut ks = Kinetostatics::new(k)?;
     let at_start = k.solve(k.mechanism().driver.start_rad)?;
     let loads = ForceModel::new(k.mechanism(), &at_start)?;

@@ -12,7 +12,8 @@
 use serde::Serialize;
 
 use super::flywheel::size_flywheel;
-use crate::dynamics::{Method, Settings, Simulation, simulate};
+use super::torque::full_turn;
+use crate::dynamics::{Method, Sample, Settings, Simulation, simulate};
 use crate::error::{LinkageError, Result};
 use crate::model::{Mechanism, Motor};
 use crate::scene::{StopAction, StopSpec};
@@ -87,14 +88,14 @@ pub fn steady_state(k: &Kinematics) -> Result<SteadyState> {
     let nominal = k.mechanism().driver.speed_rad_s;
     let mut w0 = nominal;
     let mut iterations = 0;
-    loop {
+    let end = loop {
         iterations += 1;
-        let (miss, _) = shot(&kin, w0, aim)?;
+        let (miss, end) = shot(&kin, w0, aim)?;
         if miss.abs() <= CLOSURE * nominal.abs() || iterations >= MOST_ITERATIONS {
             if miss.abs() > 1e-6 * nominal.abs() {
                 return Err(no_closure(miss, nominal));
             }
-            break;
+            break end;
         }
         let h = 1e-6 * w0;
         let (miss_h, _) = shot(&kin, w0 + h, aim)?;
@@ -103,8 +104,8 @@ pub fn steady_state(k: &Kinematics) -> Result<SteadyState> {
             return Err(no_closure(miss, nominal));
         }
         w0 -= miss / slope;
-    }
-    finish(&kin, w0, constant, iterations)
+    };
+    finish(&kin, w0, &end, constant, iterations)
 }
 
 /// The mechanism with one stop at the start angle (the end of a turn) and none of
@@ -118,13 +119,7 @@ fn prepared(k: &Kinematics) -> Result<(Mechanism, Aim, Option<f64>)> {
             valid: "the steady state needs a motor: give the scene a `drive` (see assets/scenes/README.md)".into(),
         });
     };
-    let reachable = k.assembly_ranges();
-    if !reachable.full_rotation {
-        return Err(LinkageError::NotACrank {
-            needs: "the steady state",
-            reachable,
-        });
-    }
+    full_turn(k, "the steady state")?;
     let (aim, constant) = match drive.motor {
         Motor::Constant(_) => {
             let mean = size_flywheel(&mut k.clone(), 0.5)?.mean_torque_n_m;
@@ -142,15 +137,14 @@ fn prepared(k: &Kinematics) -> Result<(Mechanism, Aim, Option<f64>)> {
     Ok((m, aim, constant))
 }
 
-/// One turn from speed `w0`: how far it misses the aim, and the run.
-fn shot(k: &Kinematics, w0: f64, aim: Aim) -> Result<(f64, Simulation)> {
-    let run = one_turn(k, w0, None)?;
-    let end = turn_end(&run, w0)?;
+/// One turn from speed `w0`: how far it misses the aim, and where the turn ended.
+fn shot(k: &Kinematics, w0: f64, aim: Aim) -> Result<(f64, Sample)> {
+    let end = turn_end(&one_turn(k, w0, None)?, w0)?;
     let miss = match aim {
         Aim::Periodic => end.q_dot - w0,
         Aim::MeanSpeed(w) => TAU.copysign(w) / end.t - w,
     };
-    Ok((miss, run))
+    Ok((miss, end))
 }
 
 /// The dynamics over one turn from the start angle at speed `w0`.
@@ -168,7 +162,7 @@ fn one_turn(k: &Kinematics, w0: f64, output_dt: Option<f64>) -> Result<Simulatio
 }
 
 /// The state where the turn ended, or why it did not.
-fn turn_end(run: &Simulation, w0: f64) -> Result<crate::dynamics::Sample> {
+fn turn_end(run: &Simulation, w0: f64) -> Result<Sample> {
     match run.events.iter().find(|e| e.stopped) {
         Some(e) => Ok(e.state),
         None => Err(LinkageError::InvalidParameter {
@@ -187,15 +181,15 @@ fn no_closure(miss: f64, nominal: f64) -> LinkageError {
     }
 }
 
-/// The converged state: one more turn sampled on a fine grid.
+/// The converged state from `w0`, whose turn ended at `end`: that turn once more,
+/// sampled on a fine grid.
 fn finish(
     k: &Kinematics,
     w0: f64,
+    end: &Sample,
     constant: Option<f64>,
     iterations: usize,
 ) -> Result<SteadyState> {
-    let first = one_turn(k, w0, None)?;
-    let end = turn_end(&first, w0)?;
     let run = one_turn(k, w0, Some(end.t / CYCLE_SAMPLES as f64))?;
     let mut cycle: Vec<SpeedPoint> = run
         .samples
@@ -216,7 +210,7 @@ fn finish(
     let max = speeds.clone().fold(f64::NEG_INFINITY, f64::max);
     let min = speeds.fold(f64::INFINITY, f64::min);
     let mean = TAU.copysign(w0) / end.t;
-    let drive_work_j = drive_work(k, &run, &end)?;
+    let drive_work_j = drive_work(k, &run, end)?;
     Ok(SteadyState {
         start_speed_rad_s: w0,
         max_rad_s: max,
@@ -234,7 +228,7 @@ fn finish(
 
 /// The drive's work over the turn, ∫ M_drive(ω) dφ, by the trapezoid rule on the
 /// sampled cycle (a figure for the reader; the balance above is exact).
-fn drive_work(k: &Kinematics, run: &Simulation, end: &crate::dynamics::Sample) -> Result<f64> {
+fn drive_work(k: &Kinematics, run: &Simulation, end: &Sample) -> Result<f64> {
     let Some(drive) = &k.mechanism().drive else {
         return Ok(0.0);
     };
