@@ -86,6 +86,16 @@ impl Kinetostatics {
         })
     }
 
+    /// The motion that the last [`Self::at`] solved (at the scene's crank speed).
+    pub fn solution(&self) -> &Solution {
+        &self.sol
+    }
+
+    /// The force elements the reactions are solved against.
+    pub fn forces(&self) -> &ForceModel {
+        &self.forces
+    }
+
     /// The state at input angle `input_rad` at the scene's crank speed.
     ///
     /// # Errors

@@ -17,7 +17,7 @@ use nalgebra::{Rotation2, Vector2};
 use serde::Serialize;
 
 use super::torque::full_turn;
-use crate::dynamics::{ForceModel, Load};
+use crate::dynamics::Load;
 use crate::error::Result;
 use crate::ids::LinkId;
 use crate::kinetostatics::{KinetostaticState, Kinetostatics};
@@ -111,8 +111,6 @@ fn on_frame(
 pub fn shaking(k: &mut Kinematics, about: [f64; 2]) -> Result<Shaking> {
     full_turn(k, "the shaking force over a cycle")?;
     let mut ks = Kinetostatics::new(k)?;
-    let at_start = k.solve(k.mechanism().driver.start_rad)?;
-    let loads = ForceModel::new(k.mechanism(), &at_start)?;
     let (start, w) = (
         k.mechanism().driver.start_rad,
         k.mechanism().driver.speed_rad_s,
@@ -122,9 +120,9 @@ pub fn shaking(k: &mut Kinematics, about: [f64; 2]) -> Result<Shaking> {
     for i in 0..SHAKING_SAMPLES {
         let angle = start + TAU.copysign(w) * i as f64 / SHAKING_SAMPLES as f64;
         let state = ks.at(k, angle)?;
-        let sol = k.solve(angle)?;
-        let applied = loads.applied_loads(&sol);
-        let (f, m) = on_frame(k.mechanism(), &sol, &state, &applied, point);
+        let sol = ks.solution();
+        let applied = ks.forces().applied_loads(sol);
+        let (f, m) = on_frame(k.mechanism(), sol, &state, &applied, point);
         cycle.push(ShakingPoint {
             angle_rad: angle,
             force_n: [f.x, f.y],
