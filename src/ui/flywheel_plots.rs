@@ -31,13 +31,7 @@ pub fn flywheel_plots(
         [sized.angle_of_max_rad.to_degrees(), sized.surplus_max_j],
         [sized.angle_of_min_rad.to_degrees(), sized.surplus_min_j],
     ];
-    let wide = ui.available_width() >= 2.0 * 200.0;
-    let height = if wide {
-        ui.available_height().max(80.0)
-    } else {
-        160.0
-    };
-    let show = |ui: &mut egui::Ui, which: usize| {
+    crate::ui::plot_layout::side_by_side(ui, 2, |ui, which, height| {
         let plot = Plot::new((key, "flywheel", which))
             .height(height)
             .x_axis_label("crank angle (deg)")
@@ -61,16 +55,7 @@ pub fn flywheel_plots(
                 p.vline(VLine::new("now", cursor_deg));
             });
         }
-    };
-    if wide {
-        ui.columns(2, |cols| {
-            show(&mut cols[0], 0);
-            show(&mut cols[1], 1);
-        });
-    } else {
-        show(ui, 0);
-        show(ui, 1);
-    }
+    });
 }
 
 /// The energy method's figures, in two short lines.

@@ -14,6 +14,7 @@ pub mod files;
 pub mod flywheel_plots;
 pub mod layout;
 pub mod panels;
+pub mod plot_layout;
 pub mod plots;
 pub mod point_drag;
 pub mod polygon_paint;

@@ -259,26 +259,11 @@ fn model_curves<'s>(ui: &mut egui::Ui, s: &'s Session) -> Option<&'s ModelCurves
 /// One plot of a row: (y label, x label, data, cursor position on x).
 type PlotSpec<'a> = (&'a str, &'a str, &'a [[f64; 2]], Option<f64>);
 
-/// Narrowest a plot is drawn beside another, points: below, plots stand one under
-/// another (a phone's sheet), each [`STACKED_HEIGHT`] high.
-const LEAST_WIDTH: f32 = 200.0;
-/// Height of a plot in a stack, points.
-const STACKED_HEIGHT: f32 = 200.0;
-
 /// Plots side by side where the pane is wide enough, else one under another.
 fn row(ui: &mut egui::Ui, id: &str, generation: (&str, u64), plots: &[PlotSpec<'_>]) {
-    if ui.available_width() >= LEAST_WIDTH * plots.len() as f32 {
-        let height = ui.available_height().max(80.0);
-        ui.columns(plots.len(), |cols| {
-            for (i, (col, spec)) in cols.iter_mut().zip(plots).enumerate() {
-                plot(col, (id, i, generation), spec, height);
-            }
-        });
-    } else {
-        for (i, spec) in plots.iter().enumerate() {
-            plot(ui, (id, i, generation), spec, STACKED_HEIGHT);
-        }
-    }
+    crate::ui::plot_layout::side_by_side(ui, plots.len(), |ui, i, height| {
+        plot(ui, (id, i, generation), &plots[i], height);
+    });
 }
 
 /// One plot, `height` high, keyed by `key` (the mechanism's, so that an edit re-fits
