@@ -47,14 +47,9 @@ fn press_turning(omega: f64) -> Kinematics {
     Kinematics::new(Mechanism::from_ron(&text).expect("scene")).expect("kinematics")
 }
 
-/// Slider position s(φ) = r cos φ + √(l² − r² sin² φ) and its first two derivatives.
+/// The press's slider: s(φ), s'(φ), s''(φ).
 fn slide(phi: f64) -> (f64, f64, f64) {
-    let (sn, cs) = phi.sin_cos();
-    let d = (L * L - R * R * sn * sn).sqrt();
-    let s = R * cs + d;
-    let s1 = -R * sn - R * R * sn * cs / d;
-    let s2 = -R * cs - R * R * (2.0 * phi).cos() / d - R.powi(4) * sn * sn * cs * cs / d.powi(3);
-    (s, s1, s2)
+    common::slider_crank::slide(R, L, phi)
 }
 
 /// The torque at constant ω: the slider's inertia force m s'' ω² times s', and the

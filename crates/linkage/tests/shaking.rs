@@ -7,6 +7,8 @@
 //! the crank (the rotating mass and half the reciprocating one), since s'' has −r cos φ
 //! as its only odd harmonic.
 
+mod common;
+
 use linkage::machine::{crank_counterweight, shaking, with_counterweight};
 use linkage::{Kinematics, LinkageError, Mechanism};
 
@@ -35,11 +37,9 @@ fn engine() -> Kinematics {
     Kinematics::new(Mechanism::from_ron(&text).expect("scene")).expect("kinematics")
 }
 
-/// s''(φ) of the in-line slider-crank.
+/// s''(φ) of the engine's slider.
 fn s2(phi: f64) -> f64 {
-    let (sn, cs) = phi.sin_cos();
-    let d = (L * L - R * R * sn * sn).sqrt();
-    -R * cs - R * R * (2.0 * phi).cos() / d - R.powi(4) * sn * sn * cs * cs / d.powi(3)
+    common::slider_crank::slide(R, L, phi).2
 }
 
 /// The shaking force, with a counterweight of mass-radius `c` on the crank at angle

@@ -45,11 +45,10 @@ fn press_text(motor: &str, gear: f64) -> String {
     )
 }
 
-/// s(φ) and s'(φ) of the in-line slider-crank.
+/// s(φ) and s'(φ) of the press's slider.
 fn slide(phi: f64) -> (f64, f64) {
-    let (sn, cs) = phi.sin_cos();
-    let d = (L * L - R * R * sn * sn).sqrt();
-    (R * cs + d, -R * sn - R * R * sn * cs / d)
+    let (s, s1, _) = common::slider_crank::slide(R, L, phi);
+    (s, s1)
 }
 
 /// The inertia at the crank: the flywheel, the slider's m s'², and the tiny masses

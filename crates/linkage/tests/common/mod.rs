@@ -1,6 +1,7 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod slider_crank;
 pub mod triad;
 
 use linkage::scene::SolverPath;
