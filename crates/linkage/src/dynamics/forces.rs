@@ -1,5 +1,6 @@
 //! Force elements and the reduction to the input coordinate.
 
+use super::load_terms::Action;
 use crate::error::{LinkageError, Result};
 use crate::ids::{LinkId, PointId};
 use crate::model::SceneProblem;
@@ -10,32 +11,32 @@ use crate::solve::Kinematics;
 
 /// Mass data of one moving link, SI.
 #[derive(Clone, Debug, PartialEq)]
-struct Body {
-    link: LinkId,
-    mass_kg: f64,
-    centroid: Vec2,
-    inertia_kg_m2: f64,
+pub(super) struct Body {
+    pub(super) link: LinkId,
+    pub(super) mass_kg: f64,
+    pub(super) centroid: Vec2,
+    pub(super) inertia_kg_m2: f64,
 }
 
 #[derive(Clone, Debug, PartialEq)]
-struct Spring {
-    a: PointId,
-    b: PointId,
-    k: f64,
-    free_length_m: f64,
+pub(super) struct Spring {
+    pub(super) a: PointId,
+    pub(super) b: PointId,
+    pub(super) k: f64,
+    pub(super) free_length_m: f64,
 }
 
 #[derive(Clone, Debug, PartialEq)]
-enum Damper {
+pub(super) enum Damper {
     Linear { a: PointId, b: PointId, c: f64 },
     Rotational { a: LinkId, b: LinkId, c: f64 },
 }
 
 #[derive(Clone, Debug, PartialEq)]
-struct PointForce {
-    point: PointId,
-    force: Vec2,
-    when: ForceWhen,
+pub(super) struct PointForce {
+    pub(super) point: PointId,
+    pub(super) force: Vec2,
+    pub(super) when: ForceWhen,
 }
 
 /// The reduced model at one position: J, dJ/dq and the generalized forces, split so
@@ -112,14 +113,14 @@ fn couple(load: &mut Load, t: f64, omega: f64) {
 /// The force elements a scene declares, resolved to indices and SI units.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ForceModel {
-    bodies: Vec<Body>,
-    gravity: Option<Vec2>,
-    springs: Vec<Spring>,
-    dampers: Vec<Damper>,
-    point_forces: Vec<PointForce>,
-    torques: Vec<(LinkId, f64)>,
+    pub(super) bodies: Vec<Body>,
+    pub(super) gravity: Option<Vec2>,
+    pub(super) springs: Vec<Spring>,
+    pub(super) dampers: Vec<Damper>,
+    pub(super) point_forces: Vec<PointForce>,
+    pub(super) torques: Vec<(LinkId, f64)>,
     /// The link each point is fixed on.
-    point_links: Vec<LinkId>,
+    pub(super) point_links: Vec<LinkId>,
     /// The motor, gear and flywheel on the driver link, if any.
     drive: Option<(LinkId, Drive)>,
 }
@@ -338,62 +339,20 @@ impl ForceModel {
     /// entry is computed like any other and ignored by callers.
     pub fn applied_loads(&self, sol: &Solution) -> Vec<Load> {
         let mut loads = vec![Load::default(); sol.links.len()];
-        let push = |loads: &mut [Load], link: LinkId, at: &crate::motion::PointMotion, f: Vec2| {
-            let l = &mut loads[link];
-            l.force += f;
-            l.moment += cross(&at.position, &f);
-            l.power += f.dot(&at.velocity);
-        };
-        if let Some(g) = self.gravity {
-            for b in &self.bodies {
-                let at = sol.links[b.link].point(&b.centroid);
-                push(&mut loads, b.link, &at, g * b.mass_kg);
-            }
-        }
-        let link_of = |point: PointId| self.point_links[point];
-        for s in &self.springs {
-            let (pa, pb) = (&sol.points[s.a], &sol.points[s.b]);
-            let d = pa.position - pb.position;
-            let len = d.norm();
-            if len > 0.0 {
-                let pull = d * (s.k * (len - s.free_length_m) / len);
-                push(&mut loads, link_of(s.a), pa, -pull);
-                push(&mut loads, link_of(s.b), pb, pull);
-            }
-        }
-        for d in &self.dampers {
-            match *d {
-                Damper::Linear { a, b, c } => {
-                    let (pa, pb) = (&sol.points[a], &sol.points[b]);
-                    let dd = pa.position - pb.position;
-                    let len = dd.norm();
-                    if len > 0.0 {
-                        let u = dd / len;
-                        let f = u * (c * u.dot(&(pa.velocity - pb.velocity)));
-                        push(&mut loads, link_of(a), pa, -f);
-                        push(&mut loads, link_of(b), pb, f);
-                    }
+        for term in self.load_terms(sol) {
+            let l = &mut loads[term.link];
+            match term.action {
+                Action::Force {
+                    at,
+                    velocity,
+                    force,
+                } => {
+                    l.force += force;
+                    l.moment += cross(&at, &force);
+                    l.power += force.dot(&velocity);
                 }
-                Damper::Rotational { a, b, c } => {
-                    let t = c * (sol.links[a].omega_rad_s - sol.links[b].omega_rad_s);
-                    couple(&mut loads[a], -t, sol.links[a].omega_rad_s);
-                    couple(&mut loads[b], t, sol.links[b].omega_rad_s);
-                }
+                Action::Couple { moment } => couple(l, moment, sol.links[term.link].omega_rad_s),
             }
-        }
-        for p in &self.point_forces {
-            let at = &sol.points[p.point];
-            let acts = match p.when {
-                ForceWhen::Always => true,
-                // Acts while the point moves against the force, as in `reduce`.
-                ForceWhen::WorkingStroke => p.force.dot(&at.velocity) < 0.0,
-            };
-            if acts {
-                push(&mut loads, link_of(p.point), at, p.force);
-            }
-        }
-        for &(l, t) in &self.torques {
-            couple(&mut loads[l], t, sol.links[l].omega_rad_s);
         }
         loads
     }

@@ -20,6 +20,7 @@ mod dense;
 mod fixed;
 mod forces;
 mod implicit;
+mod load_terms;
 mod output;
 mod rhs;
 mod run;
@@ -28,6 +29,7 @@ mod tableaus;
 pub mod tradeoff;
 
 pub use forces::{EnergyTerms, ForceModel, Load, Reduced};
+pub use load_terms::{Action, InertiaTerm, LoadSource, LoadTerm};
 pub use output::{RunStats, Sample, SimEvent, Simulation};
 pub use run::{Run, simulate};
 pub use settings::{MAX_OUTPUT_SAMPLES, MAX_STEPS, Method, Settings};
