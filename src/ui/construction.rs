@@ -109,7 +109,7 @@ fn draw_step(ui: &mut egui::Ui, step: &linkage_diagram::construction::Step, fit:
     for line in &step.lines {
         direction_line(painter, &laid, line, rect);
     }
-    crate::ui::polygon_paint::draw(painter, &step.figure, &laid, None, INK);
+    crate::ui::polygon_paint::draw(painter, step.figure.unit(), &laid, None, INK);
 }
 
 /// A direction line across the pane, dashed, named near where it enters the figure.

@@ -12,6 +12,7 @@ pub mod drawing_forces;
 pub mod drawing_panel;
 pub mod files;
 pub mod flywheel_plots;
+pub mod force_polygons;
 pub mod layout;
 pub mod panels;
 pub mod plot_layout;

@@ -3,9 +3,9 @@
 //! polygon pane and by the step-by-step construction.
 
 use eframe::egui::{self, Color32, Pos2, Sense, Stroke, Vec2};
+use linkage_diagram::Rect;
 use linkage_diagram::label::Label;
-use linkage_diagram::layout::{LaidPolygon, Sizes, layout_polygon_fitting};
-use linkage_diagram::{PolygonFigure, Rect};
+use linkage_diagram::layout::{Figure, LaidPolygon, Sizes, layout_polygon_fitting};
 
 use crate::ui::typeset::galley;
 
@@ -52,7 +52,7 @@ impl Paper {
 
     /// `fig` laid out on it, labels measured as egui sets them; scaled by `fit`
     /// (figure units) if given, else by the figure's own extent.
-    pub fn lay_out(&self, fig: &PolygonFigure, fit: Option<Rect>) -> LaidPolygon {
+    pub fn lay_out(&self, fig: &dyn Figure, fit: Option<Rect>) -> LaidPolygon {
         let measure = |l: &Label| {
             let g = galley(&self.painter, l, FONT, INK);
             [f64::from(g.size().x), f64::from(g.size().y)]
@@ -69,12 +69,11 @@ impl Paper {
     }
 }
 
-/// Draws one polygon filling the pane's width; returns the symbol of the arrow under
-/// the pointer. `marked` is the term hovered last frame (here or in the table).
-/// Draws a laid-out figure: arrows, points, labels, scale bar; `lit` drawn thicker.
+/// Draws a laid-out figure: arrows, points, labels, and the scale bar in `unit`;
+/// `lit` drawn thicker.
 pub fn draw(
     painter: &egui::Painter,
-    fig: &PolygonFigure,
+    unit: &str,
     laid: &LaidPolygon,
     lit: Option<usize>,
     ink: Color32,
@@ -110,7 +109,11 @@ pub fn draw(
     }
     for l in &laid.labels {
         let colour = match l.owner {
-            linkage_diagram::layout::LabelOwner::Arrow(i) => rgb(fig.arrows[i].style.rgb()),
+            linkage_diagram::layout::LabelOwner::Arrow(i) => laid
+                .arrows
+                .iter()
+                .find(|a| a.index == i)
+                .map_or(ink, |a| rgb(a.style.rgb())),
             linkage_diagram::layout::LabelOwner::Vertices(_) => ink,
         };
         if let Some([a, b]) = l.leader {
@@ -134,11 +137,7 @@ pub fn draw(
         painter.text(
             b + Vec2::new(6.0, 0.0),
             egui::Align2::LEFT_CENTER,
-            format!(
-                "{} {}",
-                linkage_diagram::svg::round_text(bar.value),
-                fig.unit()
-            ),
+            format!("{} {unit}", linkage_diagram::svg::round_text(bar.value)),
             egui::FontId::proportional(12.0),
             ink,
         );

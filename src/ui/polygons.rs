@@ -63,6 +63,7 @@ impl PolygonPane {
         egui::CollapsingHeader::new("Construct an equation step by step")
             .default_open(false)
             .show(ui, |ui| self.construction.ui(ui, st));
+        crate::ui::force_polygons::section(ui, &st.session);
     }
 }
 
@@ -94,7 +95,7 @@ fn figure(ui: &mut egui::Ui, fig: &PolygonFigure, marked: Option<&Symbol>) -> Op
     }
     let near = response.hover_pos().and_then(|p| nearest_arrow(&laid, p));
     let lit = near.or_else(|| marked.and_then(|m| fig.arrows.iter().position(|a| &a.symbol == m)));
-    draw(&painter, fig, &laid, lit, ink);
+    draw(&painter, fig.unit(), &laid, lit, ink);
     let arrow = &fig.arrows[near?];
     let symbol = arrow.symbol.clone();
     let v = [arrow.to[0] - arrow.from[0], arrow.to[1] - arrow.from[1]];

@@ -208,14 +208,19 @@ fn sheet_as_the_cli_draws_it(key: &str, input_rad: f64, centres: bool) -> String
     let s = k.solve(input_rad).expect("solves");
     let eqs = linkage::polygon::polygons(&k, &s);
     let found = linkage::instant_centres::instant_centres(k.mechanism(), &s);
+    let forces = linkage::kinetostatics::Kinetostatics::new(&mut k)
+        .and_then(|mut ks| linkage::force_polygon::force_polygons(&mut k, &mut ks, input_rad))
+        .ok();
     let position = linkage_diagram::svg::Position {
         mechanism: k.mechanism(),
         solution: &s,
         equations: &eqs,
         centres: Some(&found),
+        forces: forces.as_ref(),
     };
     let parts = linkage_diagram::svg::Parts {
         centres,
+        forces: true,
         ..Default::default()
     };
     linkage_diagram::svg::sheet(&position, parts)

@@ -8,7 +8,7 @@
 use eframe::egui;
 use egui_kittest::{Harness, SnapshotOptions};
 use linkage_lab::AppState;
-use linkage_lab::session::{SceneEdit, Session};
+use linkage_lab::session::{SceneEdit, SceneSource, Session};
 use linkage_lab::ui::polygons::PolygonPane;
 
 /// Scene, crank angles (deg): the paper-cup feed, both die cutters, the flipper.
@@ -68,6 +68,70 @@ fn polygon_panes_of_the_seed_scenes_match_the_committed_images() {
             let mut h = pane(scene, deg);
             h.run();
             if let Err(e) = h.try_snapshot_options(format!("{scene}_{deg:.0}deg"), &options) {
+                failures.push(e.to_string());
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The force polygons of a scene file at `deg`, as the polygon pane draws them.
+fn force_pane(file: &str, deg: f64) -> Harness<'static, (Session, bool)> {
+    let path = format!("{}/{file}", env!("CARGO_MANIFEST_DIR"));
+    let text = std::fs::read_to_string(&path).expect("a scene file");
+    let name = SceneSource::File(file.to_string());
+    let mut session = Session::open_text(name, &text).expect("opens");
+    session.apply(SceneEdit::Input { deg });
+    assert!(
+        session.message().is_none(),
+        "{file}: {:?}",
+        session.message()
+    );
+    Harness::builder()
+        .with_size(egui::vec2(620.0, 1500.0))
+        .wgpu()
+        .build_ui_state(
+            |ui, (session, fonts_set): &mut (Session, bool)| {
+                if !*fonts_set {
+                    ui.ctx().set_fonts(linkage_lab::fonts::definitions());
+                    *fonts_set = true;
+                    return;
+                }
+                linkage_lab::ui::force_polygons::section(ui, session);
+            },
+            (session, false),
+        )
+}
+
+/// The force polygons of the die cutter and of the quick-return shaper cutting, at
+/// two positions each (one on the working stroke, one off it).
+#[test]
+fn force_polygons_of_the_die_cutter_and_the_quick_return_match_the_committed_images() {
+    let options =
+        SnapshotOptions::new().output_path(format!("{}/docs/polygons", env!("CARGO_MANIFEST_DIR")));
+    let shots = [
+        ("assets/scenes/die_cutter.ron", "die_cutter", [60.0, 200.0]),
+        (
+            "docs/examples/quick_return_cutting.ron",
+            "quick_return_cutting",
+            [60.0, 270.0],
+        ),
+    ];
+    let mut failures = Vec::new();
+    for (file, key, angles) in shots {
+        for deg in angles {
+            let mut h = force_pane(file, deg);
+            h.run();
+            let stages = h
+                .state()
+                .0
+                .force_polygons()
+                .map(|r| r.as_ref().map(|fp| fp.stages.len()));
+            assert!(
+                matches!(stages, Some(Ok(n)) if n >= 3),
+                "{key} at {deg}: {stages:?}"
+            );
+            if let Err(e) = h.try_snapshot_options(format!("{key}_forces_{deg:.0}deg"), &options) {
                 failures.push(e.to_string());
             }
         }

@@ -327,10 +327,20 @@ pub(crate) struct DiagramArgs {
     /// PNG resolution, dots per inch (the sheet is A4).
     #[arg(long, default_value_t = 150.0)]
     pub(crate) dpi: f32,
-    /// What the sheet holds, comma-separated.
-    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Part::Pose, Part::Velocity, Part::Acceleration, Part::Table])]
+    /// What the sheet holds, comma-separated. By default the force polygons are
+    /// drawn where the scene has masses or forces and the position has them.
+    #[arg(long, value_enum, value_delimiter = ',', default_values_t = DEFAULT_PARTS)]
     pub(crate) what: Vec<Part>,
 }
+
+/// What `linkage diagram` draws unless told.
+pub(crate) const DEFAULT_PARTS: [Part; 5] = [
+    Part::Pose,
+    Part::Velocity,
+    Part::Acceleration,
+    Part::Table,
+    Part::Forces,
+];
 
 /// Options of a dynamics run.
 #[derive(clap::Args, Debug, Clone)]
@@ -404,6 +414,9 @@ pub enum Part {
     Centres,
     /// The vector-equation tables.
     Table,
+    /// The force polygons, group by group from the output back to the crank, with
+    /// their tables (a scene with kinetostatics or dynamics data).
+    Forces,
 }
 
 /// Integration method.

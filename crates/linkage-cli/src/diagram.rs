@@ -3,11 +3,14 @@
 //! as PNG rendered from that SVG by resvg (`linkage_diagram::png`) with the app's own
 //! font.
 
+use linkage::Kinematics;
+use linkage::force_polygon::{ForcePolygons, force_polygons};
 use linkage::instant_centres::instant_centres;
+use linkage::kinetostatics::Kinetostatics;
 use linkage::polygon::polygons;
 use linkage_diagram::svg::{Parts, Position, sheet};
 
-use crate::args::{DiagramArgs, Part, SceneArgs};
+use crate::args::{DEFAULT_PARTS, DiagramArgs, Part, SceneArgs};
 use crate::error::{CliError, Result};
 use crate::io::load;
 
@@ -27,23 +30,37 @@ pub fn run(scene: &SceneArgs, args: &DiagramArgs) -> Result<String> {
         )));
     }
     let mut k = load(scene)?;
-    let s = k.solve(args.input_deg.to_radians())?;
+    let has = |p: Part| args.what.contains(&p);
+    let input_rad = args.input_deg.to_radians();
+    let forces = if has(Part::Forces) {
+        match forces_at(&mut k, input_rad) {
+            Ok(fp) => Some(fp),
+            // The default sheet has force polygons where the scene has force data
+            // and the position has them; one asked for by name must.
+            Err(_) if args.what == DEFAULT_PARTS => None,
+            Err(e) => return Err(e.into()),
+        }
+    } else {
+        None
+    };
+    let s = k.solve(input_rad)?;
     let eqs = polygons(&k, &s);
     let m = k.mechanism();
     let centres = instant_centres(m, &s);
-    let has = |p: Part| args.what.contains(&p);
     let parts = Parts {
         pose: has(Part::Pose) || has(Part::Centres),
         velocity: has(Part::Velocity),
         acceleration: has(Part::Acceleration),
         centres: has(Part::Centres),
         table: has(Part::Table),
+        forces: has(Part::Forces),
     };
     let position = Position {
         mechanism: m,
         solution: &s,
         equations: &eqs,
         centres: Some(&centres),
+        forces: forces.as_ref(),
     };
     let svg = sheet(&position, parts);
     if let Some(path) = &args.svg {
@@ -64,6 +81,12 @@ pub fn run(scene: &SceneArgs, args: &DiagramArgs) -> Result<String> {
     } else {
         String::new()
     })
+}
+
+/// The force polygons at `input_rad`.
+fn forces_at(k: &mut Kinematics, input_rad: f64) -> linkage::Result<ForcePolygons> {
+    let mut ks = Kinetostatics::new(k)?;
+    force_polygons(k, &mut ks, input_rad)
 }
 
 /// The SVG rendered at `dpi`, as PNG bytes, with the app's own font.

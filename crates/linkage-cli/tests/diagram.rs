@@ -158,3 +158,26 @@ fn bad_arguments_are_refused_by_name() {
     assert_ne!(code, Some(0));
     assert!(err.contains("reachable input range"), "{err}");
 }
+
+#[test]
+fn the_default_sheet_draws_force_polygons_where_the_scene_has_forces() {
+    let (code, svg, err) = run_linkage(&["diagram", &scene("die_cutter.ron"), "--input-deg", "60"]);
+    assert_eq!(code, Some(0), "{err}");
+    let drawn = texts(&parse(&svg));
+    assert!(drawn.iter().any(|t| t == "Force polygons"), "{drawn:?}");
+    assert!(
+        drawn
+            .iter()
+            .any(|t| t.starts_with("Balancing torque on the crank")),
+        "{drawn:?}"
+    );
+    // A kinematics-only scene: the default sheet leaves them out; asked for by name,
+    // they are refused with the cause.
+    let file = scene("slider_crank.ron");
+    let (code, svg, err) = run_linkage(&["diagram", &file, "--input-deg", "30"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(!texts(&parse(&svg)).iter().any(|t| t == "Force polygons"));
+    let (code, _, err) = run_linkage(&["diagram", &file, "--input-deg", "30", "--what", "forces"]);
+    assert_ne!(code, Some(0));
+    assert!(err.contains("kinematics only"), "{err}");
+}

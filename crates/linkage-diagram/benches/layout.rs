@@ -48,6 +48,7 @@ fn bench(c: &mut Criterion) {
             solution: &s,
             equations: &eqs,
             centres: Some(&centres),
+            forces: None,
         };
         c.bench_function(&format!("{file}/sheet svg"), |b| {
             b.iter(|| std::hint::black_box(sheet(&position, Parts::default())));

@@ -6,7 +6,21 @@
 use crate::geometry::{Pt, Rect, distance};
 use crate::label::Label;
 use crate::placement::{Obstacles, place_arrow_label, place_vertex_label};
-use crate::polygon_figure::{ArrowStyle, PolygonFigure};
+use crate::polygon_figure::{ArrowStyle, Vertex};
+
+/// What a polygon pane lays out: arrows with styles and labels, and named vertices.
+/// The velocity and acceleration polygons ([`crate::PolygonFigure`]) and the force
+/// polygons ([`crate::force_figure::ForceFigure`]) are laid out by the same code.
+pub trait Figure {
+    /// Each arrow's tail, head and style, in the figure's units.
+    fn arrow_ends(&self) -> Vec<(Pt, Pt, ArrowStyle)>;
+    /// The label of arrow `index`, if it carries one.
+    fn arrow_label(&self, index: usize) -> Option<Label>;
+    /// The named vertices, the pole (if any) first.
+    fn vertices(&self) -> &[Vertex];
+    /// The box of its arrows and vertices, in its units.
+    fn extent(&self) -> Rect;
+}
 
 /// Sizes of the drawing, in pixels.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -179,7 +193,7 @@ pub fn round_scale(extent: f64) -> f64 {
 
 /// Lays `fig` out in `pane`, labels measured by `measure` (width, height in pixels).
 pub fn layout_polygon(
-    fig: &PolygonFigure,
+    fig: &dyn Figure,
     pane: Rect,
     sizes: Sizes,
     measure: &dyn Fn(&Label) -> [f64; 2],
@@ -190,7 +204,7 @@ pub fn layout_polygon(
 /// As [`layout_polygon`], with the scale set by `fit` (figure units) instead of the
 /// figure's own extent: the steps of a construction share the last step's scale.
 pub fn layout_polygon_fitting(
-    fig: &PolygonFigure,
+    fig: &dyn Figure,
     fit: Option<Rect>,
     pane: Rect,
     sizes: Sizes,
@@ -200,21 +214,21 @@ pub fn layout_polygon_fitting(
     let fitted = Fit::new(units, pane, sizes);
     let (s, px) = (fitted.scale, |p: Pt| fitted.px(p));
     let arrows: Vec<LaidArrow> = fig
-        .arrows
-        .iter()
+        .arrow_ends()
+        .into_iter()
         .enumerate()
-        .map(|(index, a)| {
-            let (from, to) = (px(a.from), px(a.to));
+        .map(|(index, (from, to, style))| {
+            let (from, to) = (px(from), px(to));
             LaidArrow {
                 from,
                 to,
                 head: head(from, to, sizes.head_px),
-                style: a.style,
+                style,
                 index,
             }
         })
         .collect();
-    let vertices: Vec<Pt> = fig.vertices.iter().map(|v| px(v.at)).collect();
+    let vertices: Vec<Pt> = fig.vertices().iter().map(|v| px(v.at)).collect();
     let shafts: Vec<[Pt; 2]> = arrows.iter().map(|a| [a.from, a.to]).collect();
     let heads: Vec<[Pt; 3]> = arrows.iter().filter_map(|a| a.head).collect();
     let mut obstacles = Obstacles::new(pane.expand(-2.0), &shafts, &heads, &vertices);
@@ -256,7 +270,7 @@ const SAME_SPOT_PX: f64 = 4.0;
 
 /// One label per spot: vertices closer than [`SAME_SPOT_PX`] share it, pole first.
 fn vertex_labels(
-    fig: &PolygonFigure,
+    fig: &dyn Figure,
     at: &[Pt],
     obstacles: &mut Obstacles,
     measure: &dyn Fn(&Label) -> [f64; 2],
@@ -280,7 +294,7 @@ fn vertex_labels(
         .map(|members| {
             let names: Vec<&str> = members
                 .iter()
-                .map(|&j| fig.vertices[j].name.as_str())
+                .map(|&j| fig.vertices()[j].name.as_str())
                 .collect();
             let label = Label::plain(names.join(", "));
             let anchor = at[members[0]];
@@ -315,7 +329,7 @@ fn label_order(arrows: &[LaidArrow]) -> Vec<&LaidArrow> {
 
 /// A label per relative or component arrow, the shortest (least room) first.
 fn arrow_labels(
-    fig: &PolygonFigure,
+    fig: &dyn Figure,
     arrows: &[LaidArrow],
     obstacles: &mut Obstacles,
     measure: &dyn Fn(&Label) -> [f64; 2],
@@ -323,7 +337,7 @@ fn arrow_labels(
     label_order(arrows)
         .into_iter()
         .filter_map(|a| {
-            let label = PolygonFigure::arrow_label(&fig.arrows[a.index])?;
+            let label = fig.arrow_label(a.index)?;
             let placed = place_arrow_label(a.from, a.to, measure(&label), obstacles);
             Some(LaidLabel {
                 label,

@@ -13,6 +13,8 @@
 //! - [`pose_figure`]: the mechanism's links, joints and instant centres.
 //! - [`construction`]: one vector equation constructed step by step (known terms,
 //!   the unknowns' direction lines, their crossing).
+//! - [`force_figure`]: one stage's force polygon (an Assur group or the crank) as
+//!   arrows in newtons, with its table of forces and couples.
 //! - [`svg`]: an A4 sheet of the chosen figures and the vector-equation tables;
 //!   `png` (feature `png`) renders it.
 
@@ -20,6 +22,7 @@
 #![forbid(unsafe_code)]
 
 pub mod construction;
+pub mod force_figure;
 pub mod geometry;
 pub mod label;
 pub mod layout;
@@ -30,8 +33,10 @@ pub mod polygon_figure;
 pub mod pose_figure;
 pub mod pose_layout;
 pub mod svg;
+mod svg_forces;
 
+pub use force_figure::ForceFigure;
 pub use geometry::{Pt, Rect};
 pub use label::{Label, Run, Script};
-pub use layout::{LaidArrow, LaidLabel, LaidPolygon, layout_polygon};
+pub use layout::{Figure, LaidArrow, LaidLabel, LaidPolygon, layout_polygon};
 pub use polygon_figure::{Arrow, ArrowStyle, PolygonFigure, Vertex};

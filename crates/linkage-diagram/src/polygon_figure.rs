@@ -6,8 +6,9 @@
 use linkage::polygon::{Component, Quantity, Symbol, Term, VectorEquation};
 use linkage::{Mechanism, Solution};
 
-use crate::geometry::Pt;
+use crate::geometry::{Pt, Rect};
 use crate::label::Label;
+use crate::layout::Figure;
 
 /// How an arrow is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -24,6 +25,13 @@ pub enum ArrowStyle {
     Coriolis,
     /// A sliding component.
     Sliding,
+    /// A force known before its stage is solved (a load, an inertia force, the
+    /// reaction of a stage solved before).
+    Load,
+    /// A reaction the stage solves for.
+    Reaction,
+    /// A group's inner reaction: the polygon's diagonal.
+    Inner,
 }
 
 impl ArrowStyle {
@@ -46,12 +54,19 @@ impl ArrowStyle {
             Self::Tangential => [220, 130, 20],
             Self::Coriolis => [210, 40, 40],
             Self::Sliding => [40, 150, 70],
+            Self::Load => [30, 90, 170],
+            Self::Reaction => [200, 50, 40],
+            Self::Inner => [40, 150, 70],
         }
     }
 
-    /// Whether it is drawn dashed (a component, not a whole vector).
+    /// Whether it is drawn dashed (a component, not a whole vector; a force
+    /// polygon's diagonal).
     pub fn dashed(self) -> bool {
-        !matches!(self, Self::Absolute | Self::Relative)
+        !matches!(
+            self,
+            Self::Absolute | Self::Relative | Self::Load | Self::Reaction
+        )
     }
 }
 
@@ -162,17 +177,11 @@ impl PolygonFigure {
     }
 
     /// The box of its arrows and vertices, in its units.
-    pub fn extent(&self) -> crate::geometry::Rect {
-        crate::geometry::Rect::around(
-            self.arrows
-                .iter()
-                .flat_map(|a| [a.from, a.to])
-                .chain(self.vertices.iter().map(|v| v.at)),
+    pub fn extent(&self) -> Rect {
+        extent_of(
+            self.arrows.iter().flat_map(|a| [a.from, a.to]),
+            &self.vertices,
         )
-        .unwrap_or(crate::geometry::Rect {
-            min: [0.0; 2],
-            max: [0.0; 2],
-        })
     }
 
     /// The label of an arrow: its symbol typeset, or for an absolute vector none
@@ -180,6 +189,35 @@ impl PolygonFigure {
     pub fn arrow_label(arrow: &Arrow) -> Option<Label> {
         (arrow.style != ArrowStyle::Absolute).then(|| Label::of_symbol(&arrow.symbol))
     }
+}
+
+impl Figure for PolygonFigure {
+    fn arrow_ends(&self) -> Vec<(Pt, Pt, ArrowStyle)> {
+        self.arrows
+            .iter()
+            .map(|a| (a.from, a.to, a.style))
+            .collect()
+    }
+
+    fn arrow_label(&self, index: usize) -> Option<Label> {
+        Self::arrow_label(&self.arrows[index])
+    }
+
+    fn vertices(&self) -> &[Vertex] {
+        &self.vertices
+    }
+
+    fn extent(&self) -> Rect {
+        Self::extent(self)
+    }
+}
+
+/// The box of `ends` and `vertices`; a point at the origin when there are none.
+pub(crate) fn extent_of(ends: impl Iterator<Item = Pt>, vertices: &[Vertex]) -> Rect {
+    Rect::around(ends.chain(vertices.iter().map(|v| v.at))).unwrap_or(Rect {
+        min: [0.0; 2],
+        max: [0.0; 2],
+    })
 }
 
 /// The unit of a quantity.

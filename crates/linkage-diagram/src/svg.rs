@@ -6,6 +6,7 @@
 
 use std::fmt::Write as _;
 
+use linkage::force_polygon::ForcePolygons;
 use linkage::instant_centres::{Centre, InstantCentres};
 use linkage::polygon::{Quantity, VectorEquation};
 use linkage::{Mechanism, Solution};
@@ -30,6 +31,8 @@ pub struct Parts {
     pub centres: bool,
     /// The vector-equation tables.
     pub table: bool,
+    /// The force polygons and their tables (when the position has them).
+    pub forces: bool,
 }
 
 impl Default for Parts {
@@ -40,6 +43,7 @@ impl Default for Parts {
             acceleration: true,
             centres: false,
             table: true,
+            forces: false,
         }
     }
 }
@@ -55,17 +59,19 @@ pub struct Position<'a> {
     pub equations: &'a [VectorEquation],
     /// Its instant centres, if they are to be drawn.
     pub centres: Option<&'a InstantCentres>,
+    /// Its force polygons, if they are to be drawn.
+    pub forces: Option<&'a ForcePolygons>,
 }
 
 /// A4 width in CSS pixels (210 mm at 96 per inch).
-const PAGE_W: f64 = 793.7;
+pub(crate) const PAGE_W: f64 = 793.7;
 /// A4 height in CSS pixels (297 mm).
 const PAGE_H: f64 = 1122.5;
-const MARGIN: f64 = 40.0;
-const FONT: f64 = 12.0;
+pub(crate) const MARGIN: f64 = 40.0;
+pub(crate) const FONT: f64 = 12.0;
 
 /// Label sizes on the sheet: the approximate measure, as no font engine is at hand.
-fn measure(label: &Label) -> [f64; 2] {
+pub(crate) fn measure(label: &Label) -> [f64; 2] {
     label.approximate_size(FONT)
 }
 
@@ -121,7 +127,7 @@ pub fn sheet(pos: &Position<'_>, parts: Parts) -> String {
             );
             polygon(
                 &mut body,
-                &fig,
+                fig.unit(),
                 &layout_polygon(&fig, below_title, sizes, &measure),
             );
         }
@@ -131,6 +137,11 @@ pub fn sheet(pos: &Position<'_>, parts: Parts) -> String {
         for q in [Quantity::Velocity, Quantity::Acceleration] {
             y = table(&mut body, pos.equations, q, y);
         }
+    }
+    if parts.forces
+        && let Some(fp) = pos.forces
+    {
+        y = crate::svg_forces::forces(&mut body, m, fp, y + 10.0, sizes);
     }
     let height = PAGE_H.max(y + MARGIN);
     format!(
@@ -147,7 +158,7 @@ pub fn sheet(pos: &Position<'_>, parts: Parts) -> String {
 }
 
 /// `#rrggbb`.
-fn hex([r, g, b]: [u8; 3]) -> String {
+pub(crate) fn hex([r, g, b]: [u8; 3]) -> String {
     format!("#{r:02x}{g:02x}{b:02x}")
 }
 
@@ -157,7 +168,7 @@ fn escape(t: &str) -> String {
         .replace('>', "&gt;")
 }
 
-fn text_at(out: &mut String, at: Pt, t: &str, size: f64, weight: &str) {
+pub(crate) fn text_at(out: &mut String, at: Pt, t: &str, size: f64, weight: &str) {
     let _ = writeln!(
         out,
         "<text x=\"{:.1}\" y=\"{:.1}\" font-size=\"{size}\" font-weight=\"{weight}\">{}</text>",
@@ -168,7 +179,7 @@ fn text_at(out: &mut String, at: Pt, t: &str, size: f64, weight: &str) {
 }
 
 /// A typeset label with its box's left top at `min`.
-fn label_at(out: &mut String, label: &Label, min: Pt, colour: &str) {
+pub(crate) fn label_at(out: &mut String, label: &Label, min: Pt, colour: &str) {
     let scripted = label.runs.iter().any(|r| r.script != Script::Base);
     let baseline = min[1] + FONT * if scripted { 1.05 } else { 0.92 };
     let _ = write!(
@@ -200,7 +211,7 @@ fn label_at(out: &mut String, label: &Label, min: Pt, colour: &str) {
     out.push_str("</text>\n");
 }
 
-fn line(out: &mut String, a: Pt, b: Pt, colour: &str, width: f64, dashed: bool) {
+pub(crate) fn line(out: &mut String, a: Pt, b: Pt, colour: &str, width: f64, dashed: bool) {
     let dash = if dashed {
         " stroke-dasharray=\"5 3\""
     } else {
@@ -233,7 +244,7 @@ fn polygon_shape(out: &mut String, pts: &[Pt], fill: &str, stroke: &str) {
     );
 }
 
-fn frame(out: &mut String, pane: &Rect) {
+pub(crate) fn frame(out: &mut String, pane: &Rect) {
     let _ = writeln!(
         out,
         "<rect x=\"{:.1}\" y=\"{:.1}\" width=\"{:.1}\" height=\"{:.1}\" fill=\"none\" stroke=\"#bbbbbb\"/>",
@@ -290,7 +301,7 @@ fn leaders_and_label(
 }
 
 /// Height of a pane's title line.
-const TITLE_H: f64 = 20.0;
+pub(crate) const TITLE_H: f64 = 20.0;
 
 fn polygon_title(q: Quantity) -> &'static str {
     match q {
@@ -299,7 +310,9 @@ fn polygon_title(q: Quantity) -> &'static str {
     }
 }
 
-fn polygon(out: &mut String, fig: &PolygonFigure, laid: &LaidPolygon) {
+/// A laid-out polygon (velocity, acceleration or force) with its scale bar in
+/// `unit`.
+pub(crate) fn polygon(out: &mut String, unit: &str, laid: &LaidPolygon) {
     if laid.px_per_unit <= 0.0 {
         text_at(
             out,
@@ -323,13 +336,17 @@ fn polygon(out: &mut String, fig: &PolygonFigure, laid: &LaidPolygon) {
     }
     for l in &laid.labels {
         let colour = match l.owner {
-            crate::layout::LabelOwner::Arrow(i) => hex(fig.arrows[i].style.rgb()),
+            crate::layout::LabelOwner::Arrow(i) => laid
+                .arrows
+                .iter()
+                .find(|a| a.index == i)
+                .map_or_else(|| "#000000".into(), |a| hex(a.style.rgb())),
             crate::layout::LabelOwner::Vertices(_) => "#000000".into(),
         };
         leaders_and_label(out, &l.label, &l.rect, l.leader, &colour);
     }
     if let Some(bar) = &laid.scale_bar {
-        scale_bar(out, bar, fig.unit());
+        scale_bar(out, bar, unit);
     }
 }
 

@@ -27,7 +27,8 @@ impl Session {
     }
 
     /// The sheet of the current position (pose, polygons, tables; instant centres if
-    /// `centres`) as SVG: what `linkage diagram` writes for the same scene and input.
+    /// `centres`; the force polygons where the scene has them) as SVG: what `linkage
+    /// diagram` writes for the same scene and input.
     pub fn sheet_svg(&self, centres: bool) -> String {
         let m = self.mechanism();
         let pose = self.pose();
@@ -37,9 +38,11 @@ impl Session {
             solution: pose,
             equations: self.polygons(),
             centres: Some(&found),
+            forces: self.force_polygons().and_then(|r| r.as_ref().ok()),
         };
         let parts = linkage_diagram::svg::Parts {
             centres,
+            forces: true,
             ..Default::default()
         };
         linkage_diagram::svg::sheet(&position, parts)

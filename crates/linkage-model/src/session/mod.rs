@@ -28,6 +28,7 @@ pub mod url_state;
 mod tests;
 
 use linkage::analysis::Report;
+use linkage::force_polygon::ForcePolygons;
 use linkage::polygon::VectorEquation;
 use linkage::scene::Models;
 use linkage::{Kinematics, LinkageError, Mechanism, SceneFile, Solution};
@@ -174,6 +175,12 @@ impl Session {
     /// The velocity and acceleration polygon equations at the current pose.
     pub fn polygons(&self) -> &[VectorEquation] {
         self.pose.polygons()
+    }
+
+    /// The force polygons at the current pose, or why there are none there; `None`
+    /// for a kinematics-only scene.
+    pub fn force_polygons(&self) -> Option<&Result<ForcePolygons, LinkageError>> {
+        self.pose.forces()
     }
 
     /// The report (Grashof, K, strokes, limits, transmission angle) or why it failed;

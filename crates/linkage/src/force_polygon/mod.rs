@@ -55,6 +55,10 @@ pub struct CoupleTerm {
     pub link: LinkId,
     /// Its moment, N·m, counter-clockwise positive.
     pub moment: f64,
+    /// Known before its stage was solved (a load, an inertia couple, a couple from a
+    /// stage solved before); false for the stage's own guide couples and the
+    /// balancing torque.
+    pub known: bool,
 }
 
 /// Which part of the chain a stage solves.

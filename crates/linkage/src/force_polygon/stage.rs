@@ -214,6 +214,7 @@ impl<'a> Stages<'a> {
                     symbol,
                     link,
                     moment,
+                    known: true,
                 });
             }
         }
@@ -223,6 +224,7 @@ impl<'a> Stages<'a> {
                 symbol,
                 link,
                 moment: t.couple,
+                known: true,
             });
         }
         for (n, r) in self.solved.iter().enumerate() {
@@ -277,6 +279,7 @@ impl<'a> Stages<'a> {
             symbol: CoupleSymbol::Guide { from, on: link },
             link,
             moment,
+            known: true,
         })
     }
 
@@ -340,7 +343,7 @@ impl<'a> Stages<'a> {
             links: links.to_vec(),
             polygon,
             inner,
-            couples: self.stage_couples(links),
+            couples: self.stage_couples(links, unknown),
         }
     }
 
@@ -357,13 +360,22 @@ impl<'a> Stages<'a> {
 
     /// The couples on the stage's links: loads and inertia, the guides' couples
     /// (this stage's are solved by now), and on the crank the balancing torque.
-    fn stage_couples(&self, links: &[LinkId]) -> Vec<CoupleTerm> {
+    fn stage_couples(&self, links: &[LinkId], unknown: &[usize]) -> Vec<CoupleTerm> {
         let mut out: Vec<CoupleTerm> = links.iter().flat_map(|&l| self.known_couples(l)).collect();
+        for c in &mut out {
+            if let CoupleSymbol::Guide { from, on } = c.symbol {
+                c.known = !unknown.iter().any(|&n| {
+                    let (a, b) = self.ends(self.joints[n]);
+                    (a, b) == (from, on) || (b, a) == (from, on)
+                });
+            }
+        }
         if links == [self.m.driver.link] {
             out.push(CoupleTerm {
                 symbol: CoupleSymbol::Balancing,
                 link: links[0],
                 moment: self.torque,
+                known: false,
             });
         }
         out

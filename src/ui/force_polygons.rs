@@ -1,0 +1,83 @@
+//! The force polygons in the polygon pane: graphical kinetostatics of the current
+//! position, a figure per stage (the last Assur group first, the crank last), each
+//! with its table of forces and couples, and the balancing torque. Laid out by
+//! `linkage-diagram` as on the exported sheet.
+
+use eframe::egui;
+use linkage::force_polygon::ForcePolygons;
+use linkage_diagram::force_figure::{
+    FORCE_UNIT, ForceFigure, ForceRow, force_rows, row_cells, stage_equation, stage_title,
+};
+use linkage_model::session::Session;
+
+use crate::ui::polygon_paint::{INK, Paper, draw};
+
+/// The force polygons' section: the figures, or why the position has none.
+pub fn section(ui: &mut egui::Ui, session: &Session) {
+    ui.separator();
+    ui.strong("Force polygons");
+    match session.force_polygons() {
+        None => {
+            ui.label(
+                "This scene computes kinematics only. Make it compute kinetostatics or \
+                 dynamics, with its links' masses or its forces, to see them.",
+            );
+        }
+        Some(Err(e)) => {
+            ui.colored_label(
+                ui.visuals().warn_fg_color,
+                format!("No force polygons here: {e}"),
+            );
+        }
+        Some(Ok(fp)) => stages(ui, session, fp),
+    }
+}
+
+fn stages(ui: &mut egui::Ui, session: &Session, fp: &ForcePolygons) {
+    let m = session.mechanism();
+    ui.label(format!(
+        "At the scene's crank speed, from the output back to the crank. \
+         Balancing torque M_b = {:.4} N·m.",
+        fp.balancing_torque
+    ));
+    for (i, stage) in fp.stages.iter().enumerate() {
+        let title = stage_title(stage, m);
+        ui.label(egui::RichText::new(&title).strong());
+        let fig = ForceFigure::new(stage, m);
+        let paper = Paper::new(ui);
+        let laid = paper.lay_out(&fig, None);
+        draw(&paper.painter, FORCE_UNIT, &laid, None, INK);
+        egui::CollapsingHeader::new(format!("{title}: forces"))
+            .id_salt(("force table", i))
+            .default_open(false)
+            .show(ui, |ui| {
+                let ink = ui.visuals().text_color();
+                ui.label(crate::ui::typeset::job(
+                    &stage_equation(stage, m),
+                    14.0,
+                    ink,
+                ));
+                table(ui, &force_rows(stage, m), i);
+            });
+    }
+}
+
+fn table(ui: &mut egui::Ui, rows: &[ForceRow], salt: usize) {
+    let ink = ui.visuals().text_color();
+    egui::Grid::new(("forces", salt))
+        .striped(true)
+        .show(ui, |ui| {
+            for head in ["force", "magnitude", "direction", "in this stage"] {
+                ui.strong(head);
+            }
+            ui.end_row();
+            for r in rows {
+                ui.label(crate::ui::typeset::job(&r.label, 14.0, ink));
+                let (magnitude, direction) = row_cells(r);
+                ui.label(magnitude);
+                ui.label(direction);
+                ui.label(r.status);
+                ui.end_row();
+            }
+        });
+}
