@@ -126,14 +126,23 @@ pub(crate) enum Command {
         format: SummaryFormat,
     },
     /// Shaking force and moment on the frame over one cycle at the scene's crank
-    /// speed, before and after the crank counterweight that minimises the force's mean
-    /// square, with the driving torque and flywheel (δ 0.05) each needs.
+    /// speed, before and after the counterweights that balance it best (on the crank
+    /// unless --on names links pivoted to the frame), with the driving torque and
+    /// flywheel (δ 0.05) each needs.
     Shaking {
         #[command(flatten)]
         scene: SceneArgs,
         /// The point moments are taken about, m (x y).
         #[arg(long, num_args = 2, value_names = ["X", "Y"], default_values_t = [0.0, 0.0], allow_hyphen_values = true)]
         about: Vec<f64>,
+        /// The links that carry counterweights, by name (each pivoted to the frame:
+        /// the crank, a rocker); default the crank.
+        #[arg(long, num_args = 1.., value_name = "LINK")]
+        on: Vec<String>,
+        /// What the counterweights minimise: the force's root mean square or its
+        /// peak.
+        #[arg(long, value_enum, default_value_t = AimArg::Rms)]
+        aim: AimArg,
         /// Output: the key figures (text), the cycle before and after (CSV), or both
         /// (JSON).
         #[arg(long, value_enum, default_value_t = SummaryFormat::Text)]
@@ -417,6 +426,15 @@ pub enum Part {
     /// The force polygons, group by group from the output back to the crank, with
     /// their tables (a scene with kinetostatics or dynamics data).
     Forces,
+}
+
+/// What counterweights minimise.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum AimArg {
+    /// The shaking force's root mean square.
+    Rms,
+    /// The shaking force's peak.
+    Peak,
 }
 
 /// Integration method.

@@ -72,8 +72,10 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
         Command::Shaking {
             scene,
             about,
+            on,
+            aim,
             format,
-        } => shaking::run(&scene, [about[0], about[1]], format),
+        } => shaking::run(&scene, [about[0], about[1]], &on, aim, format),
         Command::Kinetostatics {
             scene,
             steps,

@@ -1,16 +1,17 @@
 //! `linkage shaking`: the shaking force and moment on the frame over a cycle, before
-//! and after the least-squares crank counterweight, and what the counterweight does
-//! to the driving torque and the flywheel.
+//! and after the counterweights that balance it best (least squares or least peak, on
+//! the crank or the links named), and what they do to the driving torque and the
+//! flywheel.
 
-use linkage::Kinematics;
 use linkage::machine::{
-    CrankCounterweight, FlywheelSizing, Shaking, crank_counterweight, shaking, size_flywheel,
-    with_counterweight,
+    BalanceAim, Counterweight, FlywheelSizing, Shaking, counterweights, shaking, size_flywheel,
+    with_counterweights,
 };
+use linkage::{Kinematics, LinkId, Mechanism};
 use serde_json::json;
 
-use crate::args::{SceneArgs, SummaryFormat};
-use crate::error::Result;
+use crate::args::{AimArg, SceneArgs, SummaryFormat};
+use crate::error::{CliError, Result};
 use crate::io::{describe, json_text, load, to_csv};
 
 /// The δ the flywheel figures are given for.
@@ -29,23 +30,60 @@ fn side(k: &mut Kinematics, about: [f64; 2]) -> linkage::Result<Side> {
     })
 }
 
+/// The links named by `on` (default: the crank).
+fn links(m: &Mechanism, on: &[String]) -> Result<Vec<LinkId>> {
+    if on.is_empty() {
+        return Ok(vec![m.driver.link]);
+    }
+    on.iter()
+        .map(|name| {
+            m.link_index(name).ok_or_else(|| {
+                let names: Vec<&str> = m.links.iter().map(|l| l.name.as_str()).collect();
+                CliError::refused(format!(
+                    "--on {name}: no such link; the links are {}",
+                    names.join(", ")
+                ))
+            })
+        })
+        .collect()
+}
+
 /// Runs both sides and formats them.
-pub fn run(args: &SceneArgs, about: [f64; 2], format: SummaryFormat) -> Result<String> {
+pub fn run(
+    args: &SceneArgs,
+    about: [f64; 2],
+    on: &[String],
+    aim: AimArg,
+    format: SummaryFormat,
+) -> Result<String> {
     let mut k = load(args)?;
+    let links = links(k.mechanism(), on)?;
+    let aim = match aim {
+        AimArg::Rms => BalanceAim::Rms,
+        AimArg::Peak => BalanceAim::Peak,
+    };
     let before = side(&mut k, about).map_err(|e| describe(args, e))?;
-    let weight = crank_counterweight(&k, &before.shaking);
-    let mut balanced = Kinematics::new(with_counterweight(k.mechanism(), &weight))?;
+    let weights =
+        counterweights(&mut k, &before.shaking, &links, aim).map_err(|e| describe(args, e))?;
+    let mut balanced = Kinematics::new(with_counterweights(k.mechanism(), &weights))?;
     let after = side(&mut balanced, about).map_err(|e| describe(args, e))?;
-    let name = &k.mechanism().name;
+    let m = k.mechanism();
     match format {
-        SummaryFormat::Text => Ok(summary(name, &weight, &before, &after)),
+        SummaryFormat::Text => Ok(summary(m, aim, &weights, &before, &after)),
         SummaryFormat::Csv => cycles_csv(&before.shaking, &after.shaking),
-        SummaryFormat::Json => json_text(&json!({
-            "scene": name,
-            "counterweight": weight,
-            "before": {"shaking": before.shaking, "flywheel": summary_of(&before.flywheel)},
-            "after": {"shaking": after.shaking, "flywheel": summary_of(&after.flywheel)},
-        })),
+        SummaryFormat::Json => {
+            let named: Vec<serde_json::Value> = weights
+                .iter()
+                .map(|c| json!({"link_name": m.links[c.link].name, "counterweight": c}))
+                .collect();
+            json_text(&json!({
+                "scene": m.name,
+                "aim": aim,
+                "counterweights": named,
+                "before": {"shaking": before.shaking, "flywheel": summary_of(&before.flywheel)},
+                "after": {"shaking": after.shaking, "flywheel": summary_of(&after.flywheel)},
+            }))
+        }
     }
 }
 
@@ -60,7 +98,13 @@ fn summary_of(f: &FlywheelSizing) -> serde_json::Value {
     })
 }
 
-fn summary(name: &str, c: &CrankCounterweight, before: &Side, after: &Side) -> String {
+fn summary(
+    m: &Mechanism,
+    aim: BalanceAim,
+    weights: &[Counterweight],
+    before: &Side,
+    after: &Side,
+) -> String {
     let row =
         |what: &str, a: f64, b: f64, unit: &str| format!("{what:<28}{a:>14.6e}{b:>14.6e} {unit}\n");
     let (s0, s1, f0, f1) = (
@@ -69,21 +113,28 @@ fn summary(name: &str, c: &CrankCounterweight, before: &Side, after: &Side) -> S
         &before.flywheel,
         &after.flywheel,
     );
+    let aim_words = match aim {
+        BalanceAim::Rms => "least squares",
+        BalanceAim::Peak => "least peak",
+    };
     let mut out = format!(
-        "{name}: shaking on the frame (moments about ({}, {}) m)\n\
-         crank counterweight (least squares): {:.6e} kg·m at {:.4} deg from the crank, \
-         {:.6e} kg at ({:.6}, {:.6}) m on it\n{:<28}{:>14}{:>14}\n",
-        s0.about_m[0],
-        s0.about_m[1],
-        c.mass_radius_kg_m,
-        c.angle_rad.to_degrees(),
-        c.mass_kg,
-        c.at_m[0],
-        c.at_m[1],
-        "",
-        "without",
-        "with"
+        "{}: shaking on the frame (moments about ({}, {}) m)\n",
+        m.name, s0.about_m[0], s0.about_m[1]
     );
+    for c in weights {
+        out += &format!(
+            "{} counterweight ({aim_words}): {:.6e} kg·m at {:.4} deg from the {}, \
+             {:.6e} kg at ({:.6}, {:.6}) m on it\n",
+            m.links[c.link].name,
+            c.mass_radius_kg_m,
+            c.angle_rad.to_degrees(),
+            m.links[c.link].name,
+            c.mass_kg,
+            c.at_m[0],
+            c.at_m[1],
+        );
+    }
+    out += &format!("{:<28}{:>14}{:>14}\n", "", "without", "with");
     out += &row("peak shaking force", s0.peak_force_n, s1.peak_force_n, "N");
     out += &row("rms shaking force", s0.rms_force_n, s1.rms_force_n, "N");
     out += &row(

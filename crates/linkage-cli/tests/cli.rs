@@ -1014,3 +1014,32 @@ fn shaking_gives_the_counterweight_and_both_cycles() {
     assert!(csv.starts_with("angle_rad,force_x_n,force_y_n,moment_n_m,balanced_force_x_n"));
     assert_eq!(csv.lines().count(), 361);
 }
+
+#[test]
+fn shaking_balances_a_four_bar_fully_on_its_crank_and_rocker_and_names_a_bad_link() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../../docs/examples/");
+    let scene = format!("{root}four_bar_masses.ron");
+    for aim in ["rms", "peak"] {
+        let (ok, json, err) = linkage(&[
+            "shaking", &scene, "--on", "crank", "rocker", "--aim", aim, "--format", "json",
+        ]);
+        assert!(ok, "{err}");
+        let v: serde_json::Value = serde_json::from_str(&json).expect("json");
+        assert_eq!(v["aim"], aim);
+        assert_eq!(v["counterweights"][1]["link_name"], "rocker");
+        let before = v["before"]["shaking"]["peak_force_n"]
+            .as_f64()
+            .expect("peak");
+        let after = v["after"]["shaking"]["peak_force_n"]
+            .as_f64()
+            .expect("peak");
+        assert!(after <= 1e-9 * before, "{aim}: {after} of {before}");
+    }
+    let (ok, _, err) = linkage(&["shaking", &scene, "--on", "coupler"]);
+    assert!(
+        !ok && err.contains("`coupler` turns about no ground pivot"),
+        "{err}"
+    );
+    let (ok, _, err) = linkage(&["shaking", &scene, "--on", "nope"]);
+    assert!(!ok && err.contains("--on nope: no such link"), "{err}");
+}

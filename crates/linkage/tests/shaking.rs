@@ -9,7 +9,7 @@
 
 mod common;
 
-use linkage::machine::{crank_counterweight, shaking, with_counterweight};
+use linkage::machine::{BalanceAim, counterweights, shaking, with_counterweights};
 use linkage::{Kinematics, LinkageError, Mechanism};
 
 const R: f64 = 0.05;
@@ -84,7 +84,8 @@ fn the_shaking_force_and_moment_of_an_engine_match_their_closed_forms() {
 fn the_least_squares_counterweight_balances_the_rotating_and_half_the_reciprocating_mass() {
     let mut k = engine();
     let before = shaking(&mut k, [0.0, 0.0]).expect("shaking");
-    let c = crank_counterweight(&k, &before);
+    let crank = [k.mechanism().driver.link];
+    let c = counterweights(&mut k, &before, &crank, BalanceAim::Rms).expect("weights")[0];
     let want = M_PIN * R + 0.5 * M_SLIDER * R;
     assert!(
         (c.mass_radius_kg_m - want).abs() <= 1e-9 * want,
@@ -97,7 +98,7 @@ fn the_least_squares_counterweight_balances_the_rotating_and_half_the_reciprocat
         (c.mass_kg * R - want).abs() <= 1e-9 * want,
         "at the crank's length"
     );
-    let mut balanced = Kinematics::new(with_counterweight(k.mechanism(), &c)).expect("k");
+    let mut balanced = Kinematics::new(with_counterweights(k.mechanism(), &[c])).expect("k");
     let after = shaking(&mut balanced, [0.0, 0.0]).expect("shaking");
     let scale = M_SLIDER * R * OMEGA * OMEGA;
     for p in &after.cycle {
@@ -125,4 +126,45 @@ fn shaking_needs_masses_and_a_turning_crank() {
     let mut k = Kinematics::new(Mechanism::from_ron(&text).expect("scene")).expect("k");
     let err = shaking(&mut k, [0.0, 0.0]).expect_err("kinematics only");
     assert!(matches!(err, LinkageError::SceneInvalid(_)), "{err}");
+}
+
+fn shaken(m: Mechanism) -> linkage::machine::Shaking {
+    let mut k = Kinematics::new(m).expect("kinematics");
+    shaking(&mut k, [0.0, 0.0]).expect("shaking")
+}
+
+#[test]
+fn the_peak_minimising_counterweight_is_a_minimum_of_the_real_peak() {
+    let mut k = engine();
+    let before = shaking(&mut k, [0.0, 0.0]).expect("shaking");
+    let m = k.mechanism().clone();
+    let crank = [m.driver.link];
+    let rms = counterweights(&mut k, &before, &crank, BalanceAim::Rms).expect("rms")[0];
+    let peak = counterweights(&mut k, &before, &crank, BalanceAim::Peak).expect("peak")[0];
+    let peak_after = shaken(with_counterweights(&m, &[peak])).peak_force_n;
+    let rms_after = shaken(with_counterweights(&m, &[rms])).peak_force_n;
+    assert!(peak_after <= rms_after, "{peak_after} > {rms_after}");
+    // No small change of the counterweight lowers the real peak.
+    let step = 1e-3 * peak.mass_radius_kg_m;
+    for i in 0..12 {
+        let turn = std::f64::consts::TAU * i as f64 / 12.0;
+        let mut moved = peak;
+        let c = [
+            peak.mass_radius_kg_m * peak.angle_rad.cos() + step * turn.cos(),
+            peak.mass_radius_kg_m * peak.angle_rad.sin() + step * turn.sin(),
+        ];
+        let radius = peak.mass_radius_kg_m / peak.mass_kg;
+        moved.angle_rad = c[1].atan2(c[0]);
+        moved.mass_radius_kg_m = c[0].hypot(c[1]);
+        moved.at_m = [
+            radius * moved.angle_rad.cos(),
+            radius * moved.angle_rad.sin(),
+        ];
+        moved.mass_kg = moved.mass_radius_kg_m / radius;
+        let p = shaken(with_counterweights(&m, &[moved])).peak_force_n;
+        assert!(
+            p >= peak_after * (1.0 - 1e-9),
+            "a step at {turn} lowers the peak: {p} < {peak_after}"
+        );
+    }
 }

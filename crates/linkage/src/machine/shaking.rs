@@ -7,13 +7,8 @@
 //! motion shakes the foundation, not a press's own working force, which the frame
 //! closes on itself.
 //!
-//! A counterweight on the crank, its mass-radius `c` in crank coordinates, adds
-//! `ω² R(φ) c` to the shaking force (its centrifugal force, through the pivot). The
-//! `c` that minimises the force's mean square over the cycle is the least-squares
-//! one, `c = −mean(R(φ)ᵀ F(φ)) / ω²`: it cancels the force's component that turns
-//! with the crank (the first harmonic, forwards).
+//! The counterweights that balance it are [`super::counterweights`].
 
-use nalgebra::{Rotation2, Vector2};
 use serde::Serialize;
 
 use super::torque::full_turn;
@@ -140,76 +135,8 @@ pub fn shaking(k: &mut Kinematics, about: [f64; 2]) -> Result<Shaking> {
     })
 }
 
-/// The crank counterweight that minimises the shaking force's mean square.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct CrankCounterweight {
-    /// Mass times radius, kg·m.
-    pub mass_radius_kg_m: f64,
-    /// Its direction in crank coordinates (from the pivot; 0 along the crank), rad.
-    pub angle_rad: f64,
-    /// Its place on the crank, m (crank coordinates, from the pivot).
-    pub at_m: [f64; 2],
-    /// Its mass at the crank's length from the pivot, kg.
-    pub mass_kg: f64,
-}
-
-/// The least-squares crank counterweight of a shaking cycle `s` of `k`'s mechanism
-/// (see the module's documentation), placed at the crank's length from its pivot.
-pub fn crank_counterweight(k: &Kinematics, s: &Shaking) -> CrankCounterweight {
-    let m = k.mechanism();
-    let w = m.driver.speed_rad_s;
-    let mut mean = Vector2::zeros();
-    for p in &s.cycle {
-        let back = Rotation2::new(-p.angle_rad);
-        mean += back * Vector2::new(p.force_n[0], p.force_n[1]);
-    }
-    let c = -mean / (s.cycle.len() as f64 * w * w);
-    let pivot = pivot_on_crank(m);
-    let radius = crank_length(m, pivot);
-    let angle = c.y.atan2(c.x);
-    let place = pivot + Vec2::new(angle.cos(), angle.sin()) * radius;
-    CrankCounterweight {
-        mass_radius_kg_m: c.norm(),
-        angle_rad: angle,
-        at_m: [place.x, place.y],
-        mass_kg: if radius > 0.0 { c.norm() / radius } else { 0.0 },
-    }
-}
-
-/// The crank's ground pivot in crank coordinates.
-fn pivot_on_crank(m: &Mechanism) -> Vec2 {
-    let rv = &m.revolutes[m.driver.pivot];
-    if rv.a == m.driver.link {
-        rv.a_local
-    } else {
-        rv.b_local
-    }
-}
-
-/// The distance of the crank's farthest point from its pivot, m.
-fn crank_length(m: &Mechanism, pivot: Vec2) -> f64 {
-    m.links[m.driver.link]
-        .points
-        .iter()
-        .map(|(_, p)| (p - pivot).norm())
-        .fold(0.0, f64::max)
-}
-
-/// `m` with the counterweight added to its crank as a point mass (the crank's mass,
-/// centroid and inertia combined with it).
-pub fn with_counterweight(m: &Mechanism, c: &CrankCounterweight) -> Mechanism {
-    let mut out = m.clone();
-    add_point_mass(
-        &mut out,
-        m.driver.link,
-        c.mass_kg,
-        Vec2::new(c.at_m[0], c.at_m[1]),
-    );
-    out
-}
-
 /// Adds a point mass `mass` at `at` (link coordinates) to `link`.
-fn add_point_mass(m: &mut Mechanism, link: LinkId, mass: f64, at: Vec2) {
+pub(super) fn add_point_mass(m: &mut Mechanism, link: LinkId, mass: f64, at: Vec2) {
     let l = &mut m.links[link];
     let (m0, g0, i0) = (
         l.mass_kg.unwrap_or(0.0),

@@ -264,6 +264,15 @@ pub enum SceneProblem {
     /// Kinetostatics with the crank at rest.
     #[error("kinetostatics needs a crank speed: the driver's `speed` is 0")]
     NoCrankSpeed,
+    /// A counterweight asked for on a link that turns about no ground pivot.
+    #[error(
+        "`{link}` turns about no ground pivot: a counterweight goes on a link pivoted \
+         to the frame (the crank, a rocker)"
+    )]
+    NotPivoted {
+        /// The link's name.
+        link: String,
+    },
     /// A drawing whose chain assembles elsewhere than drawn.
     #[error("the chain does not assemble as drawn at {point}")]
     NotAsDrawn {
