@@ -14,6 +14,7 @@ pub mod files;
 pub mod flywheel_plots;
 pub mod force_polygons;
 pub mod layout;
+pub mod machine_plots;
 pub mod panels;
 pub mod plot_layout;
 pub mod plots;

@@ -23,6 +23,10 @@ pub enum PlotTab {
     Torque,
     /// The flywheel by the energy method (kinetostatic scenes).
     Flywheel,
+    /// The real speed through the cycle with the scene's drive.
+    Steady,
+    /// The shaking force on the frame (kinetostatic scenes).
+    Shaking,
     /// omega-phi, omega-t and phi-t of the dynamic run.
     Motion,
     /// J(q) and M(q) (dynamic scenes).
@@ -37,7 +41,10 @@ pub fn tab_available(tab: PlotTab, s: &Session) -> bool {
         PlotTab::Output => !c.outputs.is_empty(),
         PlotTab::Transmission => !c.transmission_deg.is_empty(),
         // What the scene models: its curves are computed only when the tab is shown.
-        PlotTab::Torque | PlotTab::Flywheel => s.models() == Models::Kinetostatics,
+        PlotTab::Torque | PlotTab::Flywheel | PlotTab::Shaking => {
+            s.models() == Models::Kinetostatics
+        }
+        PlotTab::Steady => s.models() != Models::Kinematics && s.mechanism().drive.is_some(),
         PlotTab::Motion => matches!(s.dynamics(), Some(Ok(_))),
         PlotTab::ReducedModel => s.models() == Models::Dynamics,
     }
@@ -81,6 +88,8 @@ impl PlotsPanel {
                 (PlotTab::Transmission, "Transmission angle"),
                 (PlotTab::Torque, "Input torque, amplification"),
                 (PlotTab::Flywheel, "Flywheel"),
+                (PlotTab::Steady, "Steady speed"),
+                (PlotTab::Shaking, "Shaking force"),
                 (PlotTab::Motion, "ω–φ, ω–t, φ–t"),
                 (PlotTab::ReducedModel, "J(q), M(q)"),
             ] {
@@ -108,6 +117,8 @@ impl PlotsPanel {
             }
             PlotTab::Torque => torque_plots(ui, s),
             PlotTab::Flywheel => flywheel_tab(ui, s),
+            PlotTab::Steady => steady_tab(ui, s),
+            PlotTab::Shaking => shaking_tab(ui, s),
             PlotTab::Motion => motion_plots(ui, s),
             PlotTab::ReducedModel => reduced_model_plots(ui, s),
         }
@@ -199,6 +210,39 @@ fn flywheel_tab(ui: &mut egui::Ui, s: &Session) {
         }
         Some(Err(why)) => {
             ui.label(format!("no flywheel to size: {why}"));
+        }
+        None => {}
+    }
+}
+
+/// The steady-state tab: its plots, or why the scene has none.
+fn steady_tab(ui: &mut egui::Ui, s: &Session) {
+    let Some(c) = model_curves(ui, s) else {
+        return;
+    };
+    match &c.steady {
+        Some(Ok(st)) => {
+            let nominal = s.mechanism().driver.speed_rad_s;
+            crate::ui::machine_plots::steady_plots(ui, plot_key(s), st, nominal, cursor_deg(s));
+        }
+        Some(Err(why)) => {
+            ui.label(format!("no steady state: {why}"));
+        }
+        None => {}
+    }
+}
+
+/// The shaking-force tab: its plots, or why the scene has none.
+fn shaking_tab(ui: &mut egui::Ui, s: &Session) {
+    let Some(c) = model_curves(ui, s) else {
+        return;
+    };
+    match &c.shaking {
+        Some(Ok(sc)) => {
+            crate::ui::machine_plots::shaking_plots(ui, plot_key(s), sc, cursor_deg(s));
+        }
+        Some(Err(why)) => {
+            ui.label(format!("no shaking force: {why}"));
         }
         None => {}
     }

@@ -7,7 +7,10 @@
 use linkage::analysis::{Output, outputs, transmission_angle_at};
 use linkage::dynamics::ForceModel;
 use linkage::kinetostatics::Kinetostatics;
-use linkage::machine::{FlywheelSizing, size_flywheel};
+use linkage::machine::{
+    BalanceAim, Counterweight, FlywheelSizing, Shaking, SteadyState, counterweights, shaking,
+    size_flywheel, steady_state, with_counterweights,
+};
 use linkage::scene::Models;
 use linkage::sweep::{Sweep, sweep};
 use linkage::{Kinematics, LinkId, LinkageError, PointId, Solution};
@@ -120,12 +123,48 @@ pub struct ModelCurves {
     /// for a speed fluctuation of [`FLYWHEEL_DELTA`], or why there is none (a rocking
     /// input).
     pub flywheel: Option<Result<FlywheelSizing, LinkageError>>,
+    /// Scenes with a drive: the periodic steady state (the real speed through the
+    /// cycle), or why there is none.
+    pub steady: Option<Result<SteadyState, LinkageError>>,
+    /// Kinetostatic scenes: the shaking force before and after the crank's
+    /// least-squares counterweight, or why there is none.
+    pub shaking: Option<Result<ShakingCurves, LinkageError>>,
     /// Dynamic scenes: equivalent inertia J(q), kg·m².
     pub inertia_kg_m2: Vec<[f64; 2]>,
     /// Dynamic scenes: equivalent moment M(q) at rest, N·m.
     pub moment_n_m: Vec<[f64; 2]>,
     /// Why a modelled curve is missing (e.g. a kinetostatic failure), if one is.
     pub notes: Vec<String>,
+}
+
+/// The shaking force over a cycle, before and after a crank counterweight.
+#[derive(Clone, Debug)]
+pub struct ShakingCurves {
+    /// Without a counterweight.
+    pub before: Shaking,
+    /// The crank counterweight that minimises the force's mean square.
+    pub counterweight: Counterweight,
+    /// With it.
+    pub after: Shaking,
+}
+
+impl ShakingCurves {
+    /// The shaking force of `k`'s mechanism about the origin, before and after.
+    ///
+    /// # Errors
+    /// As [`shaking`] and [`counterweights`].
+    pub fn compute(k: &mut Kinematics) -> Result<Self, LinkageError> {
+        let before = shaking(k, [0.0, 0.0])?;
+        let crank = [k.mechanism().driver.link];
+        let weights = counterweights(k, &before, &crank, BalanceAim::Rms)?;
+        let mut balanced = Kinematics::new(with_counterweights(k.mechanism(), &weights))?;
+        let after = shaking(&mut balanced, [0.0, 0.0])?;
+        Ok(Self {
+            before,
+            counterweight: weights[0],
+            after,
+        })
+    }
 }
 
 impl ModelCurves {
@@ -139,11 +178,15 @@ impl ModelCurves {
             Models::Dynamics => curves.add_reduced_model(&mut k, &inputs),
             Models::Kinematics => {}
         }
+        if k.mechanism().models != Models::Kinematics && k.mechanism().drive.is_some() {
+            curves.steady = Some(steady_state(&k));
+        }
         curves
     }
 
     fn add_kinetostatics(&mut self, k: &mut Kinematics, inputs: &[f64]) {
         self.flywheel = Some(size_flywheel(k, FLYWHEEL_DELTA));
+        self.shaking = Some(ShakingCurves::compute(k));
         let mut ks = match Kinetostatics::new(k) {
             Ok(ks) => ks,
             Err(e) => {

@@ -1,0 +1,120 @@
+//! The machine's tabs of the plot pane: the real speed through the cycle with the
+//! scene's drive (ω against φ and against t, the nominal speed marked), and the
+//! shaking force on the frame before and after the crank's counterweight (its polar
+//! diagram, as the textbooks draw it, and its size against the crank angle).
+
+use eframe::egui;
+use egui_plot::{HLine, Line, Plot, PlotPoints, Points, VLine};
+use linkage::machine::{Shaking, SteadyState};
+
+use crate::session::curves::ShakingCurves;
+
+/// The steady state's figures, then ω–φ and ω–t side by side.
+pub fn steady_plots(
+    ui: &mut egui::Ui,
+    key: (&str, u64),
+    st: &SteadyState,
+    nominal_rad_s: f64,
+    cursor_deg: f64,
+) {
+    ui.label(format!(
+        "ω max {:.4} · min {:.4} · mean {:.4} rad/s (nominal {:.4}) · δ = {:.4} · period {:.4} s",
+        st.max_rad_s, st.min_rad_s, st.mean_rad_s, nominal_rad_s, st.delta, st.period_s
+    ));
+    let by_angle: Vec<[f64; 2]> = st
+        .cycle
+        .iter()
+        .map(|p| [p.angle_rad.to_degrees(), p.speed_rad_s])
+        .collect();
+    let by_time: Vec<[f64; 2]> = st.cycle.iter().map(|p| [p.t_s, p.speed_rad_s]).collect();
+    crate::ui::plot_layout::side_by_side(ui, 2, |ui, which, height| {
+        let (x_label, data) = if which == 0 {
+            ("crank angle (deg)", &by_angle)
+        } else {
+            ("t (s)", &by_time)
+        };
+        Plot::new((key, "steady", which))
+            .height(height)
+            .x_axis_label(x_label)
+            .y_axis_label("ω (rad/s)")
+            .allow_scroll(false)
+            .show(ui, |p| {
+                p.line(Line::new("ω, steady state", PlotPoints::from(data.clone())));
+                p.hline(HLine::new("nominal", nominal_rad_s));
+                if which == 0 {
+                    p.vline(VLine::new("now", cursor_deg));
+                }
+            });
+    });
+}
+
+/// The counterweight and the peak and rms before and after, then the polar diagram
+/// and |F| against the crank angle.
+pub fn shaking_plots(ui: &mut egui::Ui, key: (&str, u64), sc: &ShakingCurves, cursor_deg: f64) {
+    let c = &sc.counterweight;
+    ui.label(format!(
+        "crank counterweight (least squares): {:.4e} kg·m at {:.1}° from the crank · \
+         peak {:.4e} N without, {:.4e} N with · rms {:.4e} N without, {:.4e} N with",
+        c.mass_radius_kg_m,
+        c.angle_rad.to_degrees(),
+        sc.before.peak_force_n,
+        sc.after.peak_force_n,
+        sc.before.rms_force_n,
+        sc.after.rms_force_n
+    ));
+    let polar = |s: &Shaking| -> Vec<[f64; 2]> {
+        let mut pts: Vec<[f64; 2]> = s.cycle.iter().map(|p| p.force_n).collect();
+        pts.extend(pts.first().copied());
+        pts
+    };
+    let size = |s: &Shaking| -> Vec<[f64; 2]> {
+        s.cycle
+            .iter()
+            .map(|p| [p.angle_rad.to_degrees(), p.force_n[0].hypot(p.force_n[1])])
+            .collect()
+    };
+    let now = nearest(&sc.before, cursor_deg);
+    crate::ui::plot_layout::side_by_side(ui, 2, |ui, which, height| {
+        let plot = Plot::new((key, "shaking", which))
+            .height(height)
+            .allow_scroll(false);
+        if which == 0 {
+            plot.data_aspect(1.0)
+                .x_axis_label("F_x (N)")
+                .y_axis_label("F_y (N)")
+                .show(ui, |p| {
+                    p.line(Line::new("without", PlotPoints::from(polar(&sc.before))));
+                    p.line(Line::new(
+                        "with counterweight",
+                        PlotPoints::from(polar(&sc.after)),
+                    ));
+                    if let Some(f) = now {
+                        p.points(Points::new("now", PlotPoints::from(vec![f])).radius(4.0));
+                    }
+                });
+        } else {
+            plot.x_axis_label("crank angle (deg)")
+                .y_axis_label("|F| (N)")
+                .show(ui, |p| {
+                    p.line(Line::new("without", PlotPoints::from(size(&sc.before))));
+                    p.line(Line::new(
+                        "with counterweight",
+                        PlotPoints::from(size(&sc.after)),
+                    ));
+                    p.vline(VLine::new("now", cursor_deg));
+                });
+        }
+    });
+}
+
+/// The force of the cycle's position nearest `deg` (on a full turn).
+fn nearest(s: &Shaking, deg: f64) -> Option<[f64; 2]> {
+    let gap = |a: f64| {
+        let d = (a.to_degrees() - deg).rem_euclid(360.0);
+        d.min(360.0 - d)
+    };
+    s.cycle
+        .iter()
+        .min_by(|a, b| gap(a.angle_rad).total_cmp(&gap(b.angle_rad)))
+        .map(|p| p.force_n)
+}
