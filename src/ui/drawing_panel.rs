@@ -1,6 +1,7 @@
 //! The side panel while drawing: the tools, what the drawing still lacks (with its
 //! Grübler count), Done, every point's coordinates to type, names to change, the
-//! output link, the input speed, and each slider's guide and its direction.
+//! output link, the input speed, each slider's guide and its direction, the masses,
+//! force elements and drive.
 
 use eframe::egui;
 use linkage::Vec2;
@@ -42,6 +43,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     sliders(ui, st);
     crate::ui::drawing_bodies::panel(ui, st);
     crate::ui::drawing_forces::panel(ui, st);
+    crate::ui::drawing_drive::panel(ui, st);
     if let (Some(tool), Some(b)) = (chosen, st.drawing.as_mut()) {
         b.tool = tool;
         b.pending = None;

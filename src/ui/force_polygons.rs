@@ -44,6 +44,10 @@ fn stages(ui: &mut egui::Ui, session: &Session, fp: &ForcePolygons) {
         let title = stage_title(stage, m);
         ui.label(egui::RichText::new(&title).strong());
         let fig = ForceFigure::new(stage, m);
+        if fig.arrows.is_empty() {
+            ui.weak("no force on these links here (no mass, no load): the polygon is a point");
+            continue;
+        }
         let paper = Paper::new(ui);
         let laid = paper.lay_out(&fig, None);
         draw(&paper.painter, FORCE_UNIT, &laid, None, INK);

@@ -8,6 +8,7 @@ pub mod controls;
 pub mod drawing;
 pub mod drawing_bodies;
 pub mod drawing_canvas;
+pub mod drawing_drive;
 pub mod drawing_forces;
 pub mod drawing_panel;
 pub mod files;

@@ -658,3 +658,50 @@ fn a_drawn_four_bar_with_a_spring_and_a_force_runs_as_its_scene_file() {
         );
     }
 }
+
+/// The drive panel: a drawn four-bar that computes kinetostatics gets a motor from
+/// the chooser, a flywheel typed in, and its scene carries them; a gear ratio of 0 is
+/// refused by name and the drive kept.
+#[test]
+fn a_drawn_mechanism_gets_its_drive_from_the_panel() {
+    use linkage::scene::{MotorSpec, Shaft};
+    let mut h = common::app_harness();
+    h.run();
+    h.run();
+    draw_four_bar(&mut h);
+    h.get_by_label("kinetostatics").click();
+    h.run();
+    h.get_by_label("motor").click();
+    h.run();
+    h.get_by_label("linear (induction motor)").click();
+    h.run();
+    h.get_by_label("motor shaft").click();
+    h.run();
+    let drive = h
+        .state()
+        .state
+        .session
+        .scene()
+        .drive
+        .clone()
+        .expect("a drive");
+    assert!(matches!(drive.motor, MotorSpec::Linear { .. }), "{drive:?}");
+    assert_eq!(drive.flywheel_on, Shaft::Motor);
+    let mut bad = drive.clone();
+    bad.gear_ratio = 0.0;
+    linkage_lab::ui::drawing::edit(
+        &mut h.state_mut().state,
+        linkage_lab::drawing::edit::DrawingEdit::SetDrive(Some(bad)),
+    );
+    h.run();
+    let st = &h.state().state;
+    assert_eq!(st.session.scene().drive.as_ref(), Some(&drive), "kept");
+    let said = st
+        .drawing
+        .as_ref()
+        .and_then(|b| b.refusal.clone())
+        .map(|r| r.to_string())
+        .unwrap_or_default();
+    assert!(said.contains("drive.gear_ratio"), "{said}");
+    h.snapshot("drawn_four_bar_drive");
+}

@@ -47,6 +47,11 @@ pub(crate) fn forces(
                 max: pane.max,
             };
             let fig = ForceFigure::new(stage, m);
+            if fig.arrows.is_empty() {
+                let note = "no force on these links here: the polygon is a point";
+                text_at(out, below_title.centre(), note, FONT, "normal");
+                continue;
+            }
             polygon(
                 out,
                 FORCE_UNIT,

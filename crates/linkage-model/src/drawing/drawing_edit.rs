@@ -85,6 +85,9 @@ pub enum DrawingEdit {
     SetMass(Body, Option<f64>),
     /// Gravity on or off.
     SetGravity(bool),
+    /// The drive on the input: motor, gear, flywheel (`None`: the input turns at its
+    /// speed, with no motor).
+    SetDrive(Option<linkage::scene::DriveSpec>),
     /// A spring between two points, 1000 N/m, unstretched as drawn.
     AddSpring(usize, usize),
     /// A linear damper between two points, 10 N·s/m.
@@ -173,6 +176,9 @@ pub enum Refusal {
     Mass(f64),
     /// A stiffness, free length or damping coefficient that is negative or not finite.
     Coefficient(f64),
+    /// A drive the scene would refuse, with the solver's reason (the field and its
+    /// valid range).
+    Drive(String),
 }
 
 impl std::fmt::Display for Refusal {
@@ -204,6 +210,7 @@ impl std::fmt::Display for Refusal {
                 f,
                 "{v} is invalid: a stiffness, free length or damping must be finite and >= 0"
             ),
+            Self::Drive(why) => f.write_str(why),
         }
     }
 }

@@ -41,6 +41,13 @@ pub fn apply(drawing: &Drawing, edit: DrawingEdit) -> Result<Drawing, Refusal> {
         DrawingEdit::SetOutput(link) => next.output = link,
         DrawingEdit::SetModels(models) => next.models = models,
         DrawingEdit::SetGravity(on) => next.gravity = on,
+        DrawingEdit::SetDrive(drive) => {
+            if let Some(spec) = &drive {
+                linkage::model::Drive::from_spec(spec)
+                    .map_err(|e| Refusal::Drive(e.to_string()))?;
+            }
+            next.drive = drive;
+        }
         DrawingEdit::AddSpring(..)
         | DrawingEdit::AddDamper(..)
         | DrawingEdit::AddForce(_)
@@ -386,5 +393,32 @@ mod tests {
         assert_eq!(after.links.len(), 1);
         assert_eq!(after.links[0].points, [1, 2]);
         assert_eq!(after.driver, None);
+    }
+
+    #[test]
+    fn a_drive_is_kept_when_valid_and_refused_by_its_field_when_not() {
+        use linkage::scene::{DriveSpec, MotorSpec, Shaft};
+        let s = Drawing::new("drawn");
+        let mut drive = DriveSpec {
+            motor: MotorSpec::Linear {
+                no_load_rpm: 1500.0,
+                rated_torque_n_m: 500.0,
+                rated_rpm: 1450.0,
+            },
+            gear_ratio: 29.0,
+            motor_inertia_kg_m2: 0.1,
+            flywheel_kg_m2: 40.0,
+            flywheel_on: Shaft::Motor,
+        };
+        let kept = apply(&s, DrawingEdit::SetDrive(Some(drive.clone()))).expect("valid");
+        assert_eq!(kept.drive.as_ref(), Some(&drive));
+        drive.gear_ratio = 0.0;
+        let refused = apply(&kept, DrawingEdit::SetDrive(Some(drive))).expect_err("gear 0");
+        assert!(
+            refused.to_string().contains("drive.gear_ratio"),
+            "{refused}"
+        );
+        let none = apply(&kept, DrawingEdit::SetDrive(None)).expect("removed");
+        assert_eq!(none.drive, None);
     }
 }

@@ -1,0 +1,169 @@
+//! The drawing's drive in the side panel, where the drawing computes forces: the
+//! motor (none, a constant torque, a linear induction-motor line, or a table of
+//! torque against speed), the gear ratio, the rotor's inertia and a flywheel on the
+//! crank or the motor shaft. Each change is one edit, checked as the scene checks it.
+
+use eframe::egui;
+use linkage::scene::{DriveSpec, Models, MotorSpec, Shaft};
+
+use crate::drawing::edit::DrawingEdit;
+use crate::state::AppState;
+use crate::ui::drawing;
+
+/// Which characteristic the motor has, for the chooser.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    None,
+    Constant,
+    Linear,
+    Table,
+}
+
+impl Kind {
+    const ALL: [Self; 4] = [Self::None, Self::Constant, Self::Linear, Self::Table];
+
+    fn of(drive: Option<&DriveSpec>) -> Self {
+        match drive.map(|d| &d.motor) {
+            None => Self::None,
+            Some(MotorSpec::Constant { .. }) => Self::Constant,
+            Some(MotorSpec::Linear { .. }) => Self::Linear,
+            Some(MotorSpec::Table { .. }) => Self::Table,
+        }
+    }
+
+    fn label(self) -> &'static str {
+        match self {
+            Self::None => "none (the input keeps its speed)",
+            Self::Constant => "constant torque",
+            Self::Linear => "linear (induction motor)",
+            Self::Table => "table of torque against speed",
+        }
+    }
+
+    /// A first motor of this kind, to edit from.
+    fn motor(self) -> Option<MotorSpec> {
+        match self {
+            Self::None => None,
+            Self::Constant => Some(MotorSpec::Constant { torque_n_m: 100.0 }),
+            Self::Linear => Some(MotorSpec::Linear {
+                no_load_rpm: 1500.0,
+                rated_torque_n_m: 100.0,
+                rated_rpm: 1450.0,
+            }),
+            Self::Table => Some(MotorSpec::Table {
+                points: vec![(0.0, 200.0), (1450.0, 100.0), (1500.0, 0.0)],
+            }),
+        }
+    }
+}
+
+/// The drive's editor, shown where the drawing computes forces.
+pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
+    let Some(b) = st.drawing.as_ref() else {
+        return;
+    };
+    if b.drawing().models == Models::Kinematics {
+        return;
+    }
+    let before = b.drawing().drive.clone();
+    let mut drive = before.clone();
+    ui.separator();
+    ui.strong("Drive");
+    let kind = Kind::of(drive.as_ref());
+    let mut chosen = kind;
+    egui::ComboBox::from_label("motor")
+        .selected_text(kind.label())
+        .show_ui(ui, |ui| {
+            for k in Kind::ALL {
+                ui.selectable_value(&mut chosen, k, k.label());
+            }
+        });
+    if chosen != kind {
+        drive = chosen.motor().map(|motor| DriveSpec {
+            motor,
+            gear_ratio: drive.as_ref().map_or(1.0, |d| d.gear_ratio),
+            motor_inertia_kg_m2: drive.as_ref().map_or(0.0, |d| d.motor_inertia_kg_m2),
+            flywheel_kg_m2: drive.as_ref().map_or(0.0, |d| d.flywheel_kg_m2),
+            flywheel_on: drive.as_ref().map_or(Shaft::Crank, |d| d.flywheel_on),
+        });
+    }
+    if let Some(d) = drive.as_mut() {
+        motor(ui, &mut d.motor);
+        gear_and_flywheel(ui, d);
+    }
+    if drive != before {
+        drawing::edit(st, DrawingEdit::SetDrive(drive));
+    }
+}
+
+/// A number with its unit.
+fn number(ui: &mut egui::Ui, label: &str, value: &mut f64, unit: &str) {
+    let speed = 0.01 * value.abs().max(1.0);
+    ui.horizontal(|ui| {
+        // The name first: it names the value for screen readers.
+        let name = ui.label(label);
+        ui.add(egui::DragValue::new(value).speed(speed).suffix(unit))
+            .labelled_by(name.id);
+    });
+}
+
+fn motor(ui: &mut egui::Ui, m: &mut MotorSpec) {
+    match m {
+        MotorSpec::Constant { torque_n_m } => number(ui, "torque", torque_n_m, " N·m"),
+        MotorSpec::Linear {
+            no_load_rpm,
+            rated_torque_n_m,
+            rated_rpm,
+        } => {
+            number(ui, "no-load speed", no_load_rpm, " rpm");
+            number(ui, "rated torque", rated_torque_n_m, " N·m");
+            number(ui, "rated speed (below no-load)", rated_rpm, " rpm");
+        }
+        MotorSpec::Table { points } => table(ui, points),
+    }
+}
+
+/// The table's rows, in rising speed; a row can be added after the last or removed.
+fn table(ui: &mut egui::Ui, points: &mut Vec<(f64, f64)>) {
+    let mut remove = None;
+    egui::Grid::new("motor table")
+        .num_columns(3)
+        .show(ui, |ui| {
+            let speed = ui.strong("speed");
+            let torque_head = ui.strong("torque");
+            ui.end_row();
+            for (i, (rpm, torque)) in points.iter_mut().enumerate() {
+                ui.add(egui::DragValue::new(rpm).speed(1.0).suffix(" rpm"))
+                    .labelled_by(speed.id);
+                ui.add(egui::DragValue::new(torque).speed(0.5).suffix(" N·m"))
+                    .labelled_by(torque_head.id);
+                if ui.small_button("remove").clicked() {
+                    remove = Some(i);
+                }
+                ui.end_row();
+            }
+        });
+    if let Some(i) = remove.filter(|_| points.len() > 1) {
+        points.remove(i);
+    }
+    if ui.button("add a row").clicked() {
+        let last = points.last().copied().unwrap_or((0.0, 0.0));
+        points.push((last.0 + 100.0, last.1));
+    }
+}
+
+fn gear_and_flywheel(ui: &mut egui::Ui, d: &mut DriveSpec) {
+    number(
+        ui,
+        "gear ratio (motor turns per crank turn)",
+        &mut d.gear_ratio,
+        "",
+    );
+    number(ui, "rotor inertia", &mut d.motor_inertia_kg_m2, " kg·m²");
+    number(ui, "flywheel", &mut d.flywheel_kg_m2, " kg·m²");
+    ui.horizontal(|ui| {
+        ui.label("flywheel on the");
+        ui.radio_value(&mut d.flywheel_on, Shaft::Crank, "crank");
+        ui.radio_value(&mut d.flywheel_on, Shaft::Motor, "motor shaft");
+    });
+}
