@@ -156,6 +156,16 @@ pub(crate) enum Command {
         #[command(flatten)]
         args: TradeoffArgs,
     },
+    /// The course sheet: the plan of positions (12 by default), the output's
+    /// displacement, velocity and acceleration diagrams with the positions marked,
+    /// the polygons at chosen positions and the force polygons at the first (SVG;
+    /// --png too).
+    CourseSheet {
+        #[command(flatten)]
+        scene: SceneArgs,
+        #[command(flatten)]
+        args: CourseArgs,
+    },
     /// An A4 sheet of one position to hand in: pose, velocity and acceleration
     /// polygons with scales, vector-equation tables, instant centres (SVG; --png too).
     Diagram {
@@ -340,6 +350,27 @@ pub(crate) struct DiagramArgs {
     /// drawn where the scene has masses or forces and the position has them.
     #[arg(long, value_enum, value_delimiter = ',', default_values_t = DEFAULT_PARTS)]
     pub(crate) what: Vec<Part>,
+}
+
+/// Options of `linkage course-sheet`.
+#[derive(clap::Args, Debug)]
+pub(crate) struct CourseArgs {
+    /// Positions over the crank's range, numbered from 0 at its start.
+    #[arg(long, default_value_t = 12)]
+    pub(crate) positions: usize,
+    /// The positions drawn with their polygons (the first also with its force
+    /// polygons); default the second and the one half a range on.
+    #[arg(long, num_args = 1..)]
+    pub(crate) chosen: Vec<usize>,
+    /// Write the SVG here (without --svg or --png it goes to standard output).
+    #[arg(long)]
+    pub(crate) svg: Option<PathBuf>,
+    /// Write a PNG here, rendered from the SVG.
+    #[arg(long)]
+    pub(crate) png: Option<PathBuf>,
+    /// PNG resolution, dots per inch.
+    #[arg(long, default_value_t = 150.0)]
+    pub(crate) dpi: f32,
 }
 
 /// What `linkage diagram` draws unless told.

@@ -8,6 +8,7 @@
 mod args;
 mod commands;
 mod counts;
+mod course;
 mod diagram;
 mod error;
 mod flywheel;
@@ -60,6 +61,7 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
         Command::Report { scene } => commands::report(&scene),
         Command::Synth { what } => commands::synth(what),
         Command::Diagram { scene, args } => diagram::run(&scene, &args),
+        Command::CourseSheet { scene, args } => course::run(&scene, &args),
         Command::Share { scene, decode } => commands::share(scene.as_deref(), decode.as_deref()),
         Command::Simulate { scene, sim, format } if sim.steady => simulate::steady(&scene, format),
         Command::Simulate { scene, sim, format } => simulate::run(&scene, &sim, format),

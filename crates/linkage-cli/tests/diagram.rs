@@ -181,3 +181,52 @@ fn the_default_sheet_draws_force_polygons_where_the_scene_has_forces() {
     assert_ne!(code, Some(0));
     assert!(err.contains("kinematics only"), "{err}");
 }
+
+/// The course sheet of the quick-return shaper cutting: it parses, holds the plan
+/// with every position numbered, the three diagrams, the polygons at the chosen
+/// positions and the force polygons at the first; the PNG decodes.
+#[test]
+fn the_course_sheet_of_the_quick_return_holds_what_a_course_asks_for() {
+    let file = format!(
+        "{}/../../docs/examples/quick_return_cutting.ron",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let (code, svg, err) = run_linkage(&["course-sheet", &file, "--chosen", "2", "8"]);
+    assert_eq!(code, Some(0), "{err}");
+    let drawn = texts(&parse(&svg));
+    for want in [
+        "Plan of positions",
+        "ram displacement (m)",
+        "ram velocity (m/s)",
+        "ram acceleration (m/s²)",
+        "Position 2 (crank at 60.0°): polygons",
+        "Position 8 (crank at 240.0°): polygons",
+        "Force polygons",
+    ] {
+        assert!(drawn.iter().any(|t| t == want), "{want} missing: {drawn:?}");
+    }
+    for n in 0..12 {
+        assert!(
+            drawn.iter().any(|t| *t == n.to_string()),
+            "position {n} unnumbered"
+        );
+    }
+    let (code, _, err) = run_linkage(&["course-sheet", &file, "--positions", "6", "--chosen", "6"]);
+    assert_ne!(code, Some(0));
+    assert!(
+        err.contains("chosen position = 6 is invalid: 0 to 5"),
+        "{err}"
+    );
+    let dir = std::env::temp_dir().join(format!("linkage-course-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("scratch dir");
+    let png = dir.join("course.png");
+    let (code, _, err) =
+        run_linkage(&["course-sheet", &file, "--png", png.to_str().expect("path")]);
+    assert_eq!(code, Some(0), "{err}");
+    let bytes = std::fs::read(&png).expect("png written");
+    assert_eq!(&bytes[1..4], b"PNG");
+    let width = u32::from_be_bytes([bytes[16], bytes[17], bytes[18], bytes[19]]);
+    // A4 is 210 mm wide: 1240 px at 150 dpi.
+    assert!((1239..=1241).contains(&width), "{width} px wide");
+    std::fs::remove_dir_all(dir).expect("clean up");
+}

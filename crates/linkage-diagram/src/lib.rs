@@ -22,6 +22,7 @@
 #![forbid(unsafe_code)]
 
 pub mod construction;
+pub mod course;
 pub mod force_figure;
 pub mod geometry;
 pub mod label;
@@ -33,6 +34,7 @@ pub mod polygon_figure;
 pub mod pose_figure;
 pub mod pose_layout;
 pub mod svg;
+pub mod svg_course;
 mod svg_forces;
 
 pub use force_figure::ForceFigure;

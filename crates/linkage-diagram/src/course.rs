@@ -1,0 +1,166 @@
+//! The course sheet's data: what a machine-theory course asks a student to draw for a
+//! mechanism — its plan of positions (N positions over the crank's range, 12 by
+//! default, numbered from the start), the displacement, velocity and acceleration
+//! diagrams of its output against the crank angle with the positions marked, the
+//! velocity and acceleration polygons at chosen positions, and the force polygons at
+//! the first chosen one (where the scene has masses or forces).
+//! [`crate::svg_course`] draws it.
+
+use linkage::analysis::{Output, outputs};
+use linkage::force_polygon::{ForcePolygons, force_polygons};
+use linkage::kinetostatics::Kinetostatics;
+use linkage::polygon::{VectorEquation, polygons};
+use linkage::sweep::{sweep, sweep_range};
+use linkage::{Kinematics, LinkageError, Mechanism, Result, Solution};
+
+/// Positions on the sheet unless asked.
+pub const DEFAULT_POSITIONS: usize = 12;
+
+/// Steps of the diagrams over the range.
+const DIAGRAM_STEPS: usize = 361;
+
+/// The main output's motion against the crank angle (deg on x).
+#[derive(Clone, Debug, PartialEq)]
+pub struct OutputSeries {
+    /// The output link's name.
+    pub name: String,
+    /// A rocker (deg, deg/s, deg/s²) or a slider (m, m/s, m/s²).
+    pub is_angle: bool,
+    /// Displacement.
+    pub s: Vec<[f64; 2]>,
+    /// Velocity.
+    pub v: Vec<[f64; 2]>,
+    /// Acceleration.
+    pub a: Vec<[f64; 2]>,
+}
+
+impl OutputSeries {
+    /// The units of s, v and a.
+    pub fn units(&self) -> [&'static str; 3] {
+        if self.is_angle {
+            ["deg", "deg/s", "deg/s²"]
+        } else {
+            ["m", "m/s", "m/s²"]
+        }
+    }
+}
+
+/// One position drawn with its polygons.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ChosenPosition {
+    /// Its number on the plan (0 the start).
+    pub number: usize,
+    /// Its velocity and acceleration polygon equations.
+    pub equations: Vec<VectorEquation>,
+}
+
+/// Everything the course sheet draws.
+#[derive(Clone, Debug)]
+pub struct CourseSheet {
+    /// The mechanism.
+    pub mechanism: Mechanism,
+    /// The positions, numbered from 0 at the range's start.
+    pub positions: Vec<Solution>,
+    /// The positions drawn with their polygons.
+    pub chosen: Vec<ChosenPosition>,
+    /// The main output's diagrams.
+    pub output: Option<OutputSeries>,
+    /// The force polygons at the first chosen position, where the scene has force
+    /// data.
+    pub forces: Option<ForcePolygons>,
+}
+
+impl CourseSheet {
+    /// The sheet of `k`'s mechanism with `count` positions and polygons at the
+    /// positions numbered `chosen`.
+    ///
+    /// # Errors
+    /// Fewer than 2 positions, a chosen number past the last position, or a position
+    /// that does not solve.
+    pub fn compute(k: &mut Kinematics, count: usize, chosen: &[usize]) -> Result<Self> {
+        if count < 2 {
+            return Err(invalid("positions", count, "at least 2"));
+        }
+        if let Some(&bad) = chosen.iter().find(|&&c| c >= count) {
+            return Err(invalid(
+                "chosen position",
+                bad,
+                &format!("0 to {}", count - 1),
+            ));
+        }
+        let ([a, b], full) = sweep_range(k)?;
+        let div = if full { count } else { count - 1 };
+        let speed = k.mechanism().driver.speed_rad_s;
+        let mut positions = Vec::with_capacity(count);
+        for i in 0..count {
+            let mut s = k.empty_solution();
+            k.solve_into(a + (b - a) * i as f64 / div as f64, speed, &mut s)?;
+            positions.push(s);
+        }
+        let chosen: Vec<ChosenPosition> = chosen
+            .iter()
+            .map(|&number| ChosenPosition {
+                number,
+                equations: polygons(k, &positions[number]),
+            })
+            .collect();
+        let forces = chosen.first().and_then(|c| {
+            let input = positions[c.number].input_rad;
+            let mut ks = Kinetostatics::new(k).ok()?;
+            force_polygons(k, &mut ks, input).ok()
+        });
+        Ok(Self {
+            output: output_series(k)?,
+            mechanism: k.mechanism().clone(),
+            positions,
+            chosen,
+            forces,
+        })
+    }
+}
+
+fn invalid(name: &str, value: usize, valid: &str) -> LinkageError {
+    LinkageError::InvalidParameter {
+        name: name.into(),
+        value: value as f64,
+        valid: valid.into(),
+    }
+}
+
+/// The main output's s, v and a over the range (rocker angles unwrapped).
+fn output_series(k: &mut Kinematics) -> Result<Option<OutputSeries>> {
+    let m = k.mechanism();
+    let main = m.output;
+    let all = outputs(k);
+    let is_main = |o: &&Output| match o {
+        Output::Rocker { link, .. } => *link == main,
+        Output::Slide { slider, .. } => m.sliders[*slider].slider == main,
+    };
+    let Some(out) = all.iter().find(is_main).or_else(|| all.first()).cloned() else {
+        return Ok(None);
+    };
+    let sw = sweep(k, DIAGRAM_STEPS)?;
+    let unit = |x: f64| if out.is_angle() { x.to_degrees() } else { x };
+    let series = |f: &dyn Fn(&Solution, &[f64]) -> f64| -> Vec<[f64; 2]> {
+        sw.solutions
+            .iter()
+            .zip(&sw.angles)
+            .map(|(s, row)| [s.input_rad.to_degrees(), f(s, row)])
+            .filter(|p| p[1].is_finite())
+            .collect()
+    };
+    let s = match &out {
+        Output::Rocker { link, .. } => {
+            let link = link.index();
+            series(&|_, row| row[link].to_degrees())
+        }
+        Output::Slide { .. } => series(&|s, _| out.value(s)),
+    };
+    Ok(Some(OutputSeries {
+        name: out.name().to_string(),
+        is_angle: out.is_angle(),
+        s,
+        v: series(&|s, _| unit(out.rate(s))),
+        a: series(&|s, _| unit(out.acceleration(s))),
+    }))
+}

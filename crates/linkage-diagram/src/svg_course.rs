@@ -1,0 +1,351 @@
+//! The course sheet as SVG: the plan of positions (every position in thin lines,
+//! the start in the links' colour, each numbered at its output point), the output's
+//! displacement, velocity and acceleration diagrams against the crank angle with the
+//! positions marked, the velocity and acceleration polygons at the chosen positions,
+//! and the force polygons at the first of them — one sheet, A4 wide, as long as it
+//! needs.
+
+use std::fmt::Write as _;
+
+use linkage::{Mechanism, Solution};
+
+use crate::course::CourseSheet;
+use crate::geometry::{Pt, Rect};
+use crate::layout::{Fit, Sizes, layout_polygon, round_scale};
+use crate::polygon_figure::PolygonFigure;
+use crate::svg::{
+    FONT, MARGIN, PAGE_W, TITLE_H, frame, line, measure, polygon, round_text, text_at,
+};
+use linkage::polygon::Quantity;
+
+const PLAN_H: f64 = 380.0;
+const CHART_H: f64 = 150.0;
+const POLYGON_H: f64 = 300.0;
+const BLUE: &str = "#1e5aaa";
+const GREY: &str = "#9a9a9a";
+
+/// The sheet as SVG text.
+pub fn course_sheet(c: &CourseSheet) -> String {
+    let sizes = Sizes {
+        font_px: FONT,
+        ..Sizes::default()
+    };
+    let width = PAGE_W - 2.0 * MARGIN;
+    let m = &c.mechanism;
+    let mut body = String::new();
+    let title = format!(
+        "{}: {} positions, ω = {:.3} rad/s",
+        m.name,
+        c.positions.len(),
+        m.driver.speed_rad_s
+    );
+    text_at(&mut body, [MARGIN, MARGIN + 14.0], &title, 16.0, "bold");
+    let mut y = MARGIN + 30.0;
+    plan(
+        &mut body,
+        m,
+        &c.positions,
+        Rect::from_min_size([MARGIN, y], width, PLAN_H),
+        sizes,
+    );
+    y += PLAN_H + 10.0;
+    if let Some(o) = &c.output {
+        let marks: Vec<f64> = c
+            .positions
+            .iter()
+            .map(|s| s.input_rad.to_degrees())
+            .collect();
+        let units = o.units();
+        for (i, (what, data)) in [
+            ("displacement", &o.s),
+            ("velocity", &o.v),
+            ("acceleration", &o.a),
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            let pane = Rect::from_min_size([MARGIN, y], width, CHART_H);
+            let label = format!("{} {what} ({})", o.name, units[i]);
+            chart(&mut body, pane, &label, data, &marks);
+            y += CHART_H + 8.0;
+        }
+    }
+    for chosen in &c.chosen {
+        let s = &c.positions[chosen.number];
+        let heading = format!(
+            "Position {} (crank at {:.1}°): polygons",
+            chosen.number,
+            s.input_rad.to_degrees()
+        );
+        text_at(&mut body, [MARGIN, y + 14.0], &heading, 14.0, "bold");
+        y += 22.0;
+        let w = (width - 10.0) / 2.0;
+        for (i, q) in [Quantity::Velocity, Quantity::Acceleration]
+            .into_iter()
+            .enumerate()
+        {
+            let pane = Rect::from_min_size([MARGIN + i as f64 * (w + 10.0), y], w, POLYGON_H);
+            frame(&mut body, &pane);
+            let fig = PolygonFigure::of_position(q, m, s, &chosen.equations);
+            let below = Rect {
+                min: [pane.min[0], pane.min[1] + TITLE_H],
+                max: pane.max,
+            };
+            let name = match q {
+                Quantity::Velocity => "Velocity polygon",
+                Quantity::Acceleration => "Acceleration polygon",
+            };
+            text_at(
+                &mut body,
+                [pane.min[0] + 6.0, pane.min[1] + 15.0],
+                name,
+                12.0,
+                "bold",
+            );
+            polygon(
+                &mut body,
+                fig.unit(),
+                &layout_polygon(&fig, below, sizes, &measure),
+            );
+        }
+        y += POLYGON_H + 10.0;
+    }
+    if let (Some(fp), Some(first)) = (&c.forces, c.chosen.first()) {
+        let heading = format!(
+            "Position {}: forces at the scene's crank speed",
+            first.number
+        );
+        text_at(&mut body, [MARGIN, y + 14.0], &heading, 14.0, "bold");
+        y = crate::svg_forces::forces(&mut body, m, fp, y + 22.0, sizes);
+    }
+    let height = y + MARGIN;
+    format!(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n\
+         <svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" \
+         width=\"{:.1}mm\" height=\"{:.1}mm\" viewBox=\"0 0 {PAGE_W} {height:.1}\" \
+         font-family=\"Ubuntu, Liberation Sans, Arial, Helvetica, sans-serif\">\n\
+         <title>{}</title>\n\
+         <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n{body}</svg>\n",
+        PAGE_W * 25.4 / 96.0,
+        height * 25.4 / 96.0,
+        title.replace('&', "&amp;").replace('<', "&lt;")
+    )
+}
+
+/// The point each position is numbered at: the crank pin (the driver's point
+/// farthest from its pivot), which the textbook numbers 0, 1, … round its circle.
+fn tip(m: &Mechanism, s: &Solution) -> Option<Pt> {
+    let crank = &m.links[m.driver.link];
+    let rv = &m.revolutes[m.driver.pivot];
+    let pivot = if rv.a == m.driver.link {
+        rv.a_local
+    } else {
+        rv.b_local
+    };
+    let local = crank
+        .points
+        .iter()
+        .map(|(_, p)| *p)
+        .max_by(|a, b| (a - pivot).norm().total_cmp(&(b - pivot).norm()))?;
+    let at = s.links[m.driver.link].point(&local).position;
+    Some([at.x, at.y])
+}
+
+/// Every position's links, the start drawn strong, each numbered.
+fn plan(out: &mut String, m: &Mechanism, positions: &[Solution], pane: Rect, sizes: Sizes) {
+    frame(out, &pane);
+    text_at(
+        out,
+        [pane.min[0] + 6.0, pane.min[1] + 15.0],
+        "Plan of positions",
+        12.0,
+        "bold",
+    );
+    let outline = |s: &Solution| -> Vec<Vec<Pt>> {
+        m.moving_links()
+            .map(|l| {
+                m.links[l]
+                    .points
+                    .iter()
+                    .map(|(_, local)| {
+                        let p = s.links[l].point(local).position;
+                        [p.x, p.y]
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    let all: Vec<Vec<Vec<Pt>>> = positions.iter().map(outline).collect();
+    let Some(units) = Rect::around(all.iter().flatten().flatten().copied()) else {
+        return;
+    };
+    let inner = Rect {
+        min: [pane.min[0], pane.min[1] + TITLE_H],
+        max: pane.max,
+    };
+    let fit = Fit::new(units, inner, sizes);
+    for (i, links) in all.iter().enumerate().rev() {
+        let (colour, width) = if i == 0 { (BLUE, 2.5) } else { (GREY, 0.8) };
+        for l in links {
+            let px: Vec<Pt> = l.iter().map(|&p| fit.px(p)).collect();
+            for pair in px.windows(2) {
+                line(out, pair[0], pair[1], colour, width, false);
+            }
+            if px.len() > 2 {
+                line(out, px[px.len() - 1], px[0], colour, width, false);
+            }
+        }
+        if let Some(t) = tip(m, &positions[i]) {
+            let at = fit.px(t);
+            text_at(
+                out,
+                [at[0] + 4.0, at[1] - 4.0],
+                &i.to_string(),
+                11.0,
+                "normal",
+            );
+        }
+    }
+    for (_, local) in &m.links[m.ground].points {
+        let p = fit.px([local.x, local.y]);
+        let _ = writeln!(
+            out,
+            "<polygon points=\"{:.1},{:.1} {:.1},{:.1} {:.1},{:.1}\" fill=\"#cccccc\" stroke=\"#333333\"/>",
+            p[0],
+            p[1],
+            p[0] - 6.0,
+            p[1] + 10.0,
+            p[0] + 6.0,
+            p[1] + 10.0
+        );
+    }
+    let bar = fit.scale_bar(units.width().max(units.height()), inner, sizes);
+    line(out, bar.from, bar.to, "#000000", 2.0, false);
+    text_at(
+        out,
+        [bar.to[0] + 6.0, bar.to[1] + 4.0],
+        &format!("{} m", round_text(bar.value)),
+        FONT,
+        "normal",
+    );
+}
+
+/// A line chart of `data` (crank angle on x) with the positions at `marks` numbered.
+fn chart(out: &mut String, pane: Rect, label: &str, data: &[[f64; 2]], marks: &[f64]) {
+    frame(out, &pane);
+    text_at(
+        out,
+        [pane.min[0] + 6.0, pane.min[1] + 14.0],
+        label,
+        12.0,
+        "bold",
+    );
+    let Some(box_) = Rect::around(data.iter().copied()) else {
+        return;
+    };
+    let plot = Rect {
+        min: [pane.min[0] + 60.0, pane.min[1] + 22.0],
+        max: [pane.max[0] - 10.0, pane.max[1] - 22.0],
+    };
+    let (y0, y1) = value_range(data);
+    let to_px = |p: Pt| -> Pt {
+        [
+            plot.min[0] + (p[0] - box_.min[0]) / box_.width().max(1e-300) * plot.width(),
+            plot.max[1] - (p[1] - y0) / (y1 - y0) * plot.height(),
+        ]
+    };
+    // Value ticks at a round step, with the zero line where it falls inside.
+    let step = round_scale(y1 - y0);
+    if step > 0.0 {
+        let mut v = (y0 / step).ceil() * step;
+        while v <= y1 + 1e-9 * step {
+            let p = to_px([box_.min[0], v]);
+            line(
+                out,
+                [plot.min[0], p[1]],
+                [plot.max[0], p[1]],
+                "#e4e4e4",
+                0.7,
+                false,
+            );
+            // A tick at zero reads 0, not the float noise of the steps that reach it.
+            let tick = if v.abs() < 1e-9 * step {
+                "0".to_string()
+            } else if v.abs() >= 1e5 {
+                format!("{v:.1e}")
+            } else {
+                round_text(v)
+            };
+            text_at(out, [pane.min[0] + 4.0, p[1] + 4.0], &tick, 10.0, "normal");
+            v += step;
+        }
+    }
+    for (i, &x) in marks.iter().enumerate() {
+        if x < box_.min[0] - 1e-9 || x > box_.max[0] + 1e-9 {
+            continue;
+        }
+        let p = to_px([x, y0]);
+        line(
+            out,
+            [p[0], plot.min[1]],
+            [p[0], plot.max[1]],
+            "#c9d6ea",
+            0.8,
+            false,
+        );
+        text_at(
+            out,
+            [p[0] - 3.0, plot.max[1] + 13.0],
+            &i.to_string(),
+            10.0,
+            "normal",
+        );
+    }
+    let points: Vec<String> = data
+        .iter()
+        .map(|&p| {
+            let q = to_px(p);
+            format!("{:.1},{:.1}", q[0], q[1])
+        })
+        .collect();
+    // Clipped to the plot: near a dead point of a rocking input the rates run off
+    // to infinity, past the range the axis shows.
+    let clip = format!("clip{:.0}", pane.min[1]);
+    let _ = writeln!(
+        out,
+        "<clipPath id=\"{clip}\"><rect x=\"{:.1}\" y=\"{:.1}\" width=\"{:.1}\" height=\"{:.1}\"/></clipPath>\n\
+         <polyline points=\"{}\" fill=\"none\" stroke=\"{BLUE}\" stroke-width=\"1.6\" clip-path=\"url(#{clip})\"/>",
+        plot.min[0],
+        plot.min[1],
+        plot.width(),
+        plot.height(),
+        points.join(" ")
+    );
+    text_at(
+        out,
+        [pane.max[0] - 200.0, pane.min[1] + 14.0],
+        "against the crank angle; positions numbered",
+        10.0,
+        "normal",
+    );
+}
+
+/// The values the axis shows: from the 1st to the 99th percentile, widened by a
+/// tenth each way, so that the runaway rates by a rocking input's dead points do not
+/// flatten the rest of the curve; a constant gets a unit either side.
+fn value_range(data: &[[f64; 2]]) -> (f64, f64) {
+    let mut v: Vec<f64> = data.iter().map(|p| p[1]).collect();
+    v.sort_by(f64::total_cmp);
+    let at = |q: f64| v[((v.len() - 1) as f64 * q).round() as usize];
+    let (lo, hi) = (at(0.01), at(0.99));
+    let (lo, hi) = (
+        lo.min(v[0].max(lo - (hi - lo))),
+        hi.max(v[v.len() - 1].min(hi + (hi - lo))),
+    );
+    let pad = 0.1 * (hi - lo);
+    if pad > 0.0 {
+        (lo - pad, hi + pad)
+    } else {
+        (lo - 1.0, hi + 1.0)
+    }
+}

@@ -1,0 +1,45 @@
+//! The course sheet of every shipped scene and every example (read from their
+//! directories), with the default 12 positions and with 5: it is made, holds no
+//! non-finite number, numbers every position, its positions are evenly spaced over
+//! the crank's range, and the output's diagrams start at position 0.
+
+mod common;
+
+use linkage::Kinematics;
+use linkage_diagram::course::CourseSheet;
+use linkage_diagram::svg_course::course_sheet;
+
+#[test]
+fn every_scene_gets_a_course_sheet_with_its_positions_on_its_diagrams() {
+    let examples = format!("{}/../../docs/examples", env!("CARGO_MANIFEST_DIR"));
+    let mut scenes = common::scenes();
+    for e in std::fs::read_dir(&examples).expect("examples") {
+        let p = e.expect("entry").path();
+        if p.extension().is_some_and(|x| x == "ron") {
+            let text = std::fs::read_to_string(&p).expect("readable");
+            let m = linkage::Mechanism::from_ron(&text).expect("valid");
+            scenes.push((p.display().to_string(), m));
+        }
+    }
+    for (file, m) in scenes {
+        for count in [12, 5] {
+            let mut k = Kinematics::new(m.clone()).expect("kinematics");
+            let sheet = CourseSheet::compute(&mut k, count, &[1, count - 1])
+                .unwrap_or_else(|e| panic!("{file}: {e}"));
+            assert_eq!(sheet.positions.len(), count);
+            let svg = course_sheet(&sheet);
+            assert!(!svg.contains("NaN") && !svg.contains("inf"), "{file}");
+            for n in 0..count {
+                assert!(svg.contains(&format!(">{n}</text>")), "{file}: position {n}");
+            }
+            let angles: Vec<f64> = sheet.positions.iter().map(|s| s.input_rad).collect();
+            let steps: Vec<f64> = angles.windows(2).map(|w| w[1] - w[0]).collect();
+            for s in &steps {
+                assert!((s - steps[0]).abs() <= 1e-9 * steps[0].abs(), "{file}: uneven");
+            }
+            let o = sheet.output.as_ref().expect("an output");
+            let first = o.s.first().expect("samples");
+            assert!((first[0] - angles[0].to_degrees()).abs() <= 1e-9, "{file}");
+        }
+    }
+}
