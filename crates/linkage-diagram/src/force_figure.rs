@@ -6,10 +6,9 @@
 use linkage::Mechanism;
 use linkage::force_polygon::{CoupleTerm, ForceVector, Stage, StagePolygon, SymbolParts};
 
+use crate::figure::{ArrowStyle, Figure, Vertex, extent_of};
 use crate::geometry::{Pt, Rect};
 use crate::label::{Label, Run, Script};
-use crate::layout::Figure;
-use crate::polygon_figure::{ArrowStyle, Vertex, extent_of};
 
 /// The unit of a force polygon.
 pub const FORCE_UNIT: &str = "N";

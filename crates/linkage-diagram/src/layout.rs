@@ -3,24 +3,11 @@
 //! ([`crate::placement`]). Pane coordinates are pixels, y down; the figure's are
 //! m/s or m/s², y up.
 
+use crate::figure::ArrowStyle;
+pub use crate::figure::Figure;
 use crate::geometry::{Pt, Rect, distance};
 use crate::label::Label;
 use crate::placement::{Obstacles, place_arrow_label, place_vertex_label};
-use crate::polygon_figure::{ArrowStyle, Vertex};
-
-/// What a polygon pane lays out: arrows with styles and labels, and named vertices.
-/// The velocity and acceleration polygons ([`crate::PolygonFigure`]) and the force
-/// polygons ([`crate::force_figure::ForceFigure`]) are laid out by the same code.
-pub trait Figure {
-    /// Each arrow's tail, head and style, in the figure's units.
-    fn arrow_ends(&self) -> Vec<(Pt, Pt, ArrowStyle)>;
-    /// The label of arrow `index`, if it carries one.
-    fn arrow_label(&self, index: usize) -> Option<Label>;
-    /// The named vertices, the pole (if any) first.
-    fn vertices(&self) -> &[Vertex];
-    /// The box of its arrows and vertices, in its units.
-    fn extent(&self) -> Rect;
-}
 
 /// Sizes of the drawing, in pixels.
 #[derive(Clone, Copy, Debug, PartialEq)]

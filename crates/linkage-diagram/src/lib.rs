@@ -23,6 +23,7 @@
 
 pub mod construction;
 pub mod course;
+pub mod figure;
 pub mod force_figure;
 pub mod geometry;
 pub mod label;
@@ -35,6 +36,7 @@ pub mod pose_figure;
 pub mod pose_layout;
 pub mod svg;
 pub mod svg_course;
+mod svg_draw;
 mod svg_forces;
 
 pub use force_figure::ForceFigure;

@@ -6,69 +6,10 @@
 use linkage::polygon::{Component, Quantity, Symbol, Term, VectorEquation};
 use linkage::{Mechanism, Solution};
 
+pub use crate::figure::{ArrowStyle, Vertex};
+use crate::figure::{Figure, extent_of};
 use crate::geometry::{Pt, Rect};
 use crate::label::Label;
-use crate::layout::Figure;
-
-/// How an arrow is drawn.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum ArrowStyle {
-    /// A joint's absolute vector, from the pole.
-    Absolute,
-    /// A relative vector (`v_CB`).
-    Relative,
-    /// A normal component.
-    Normal,
-    /// A tangential component.
-    Tangential,
-    /// A Coriolis component.
-    Coriolis,
-    /// A sliding component.
-    Sliding,
-    /// A force known before its stage is solved (a load, an inertia force, the
-    /// reaction of a stage solved before).
-    Load,
-    /// A reaction the stage solves for.
-    Reaction,
-    /// A group's inner reaction: the polygon's diagonal.
-    Inner,
-}
-
-impl ArrowStyle {
-    fn of(symbol: &Symbol) -> Self {
-        match symbol.component {
-            Component::Whole => Self::Relative,
-            Component::Normal => Self::Normal,
-            Component::Tangential => Self::Tangential,
-            Component::Coriolis => Self::Coriolis,
-            Component::Sliding => Self::Sliding,
-        }
-    }
-
-    /// Its colour, sRGB: the same in the app and on the sheet.
-    pub fn rgb(self) -> [u8; 3] {
-        match self {
-            Self::Absolute => [30, 90, 170],
-            Self::Relative => [70, 70, 70],
-            Self::Normal => [40, 140, 200],
-            Self::Tangential => [220, 130, 20],
-            Self::Coriolis => [210, 40, 40],
-            Self::Sliding => [40, 150, 70],
-            Self::Load => [30, 90, 170],
-            Self::Reaction => [200, 50, 40],
-            Self::Inner => [40, 150, 70],
-        }
-    }
-
-    /// Whether it is drawn dashed (a component, not a whole vector; a force
-    /// polygon's diagonal).
-    pub fn dashed(self) -> bool {
-        !matches!(
-            self,
-            Self::Absolute | Self::Relative | Self::Load | Self::Reaction
-        )
-    }
-}
 
 /// One arrow, in the polygon's units.
 #[derive(Clone, Debug, PartialEq)]
@@ -82,15 +23,6 @@ pub struct Arrow {
     /// The term it draws (for an absolute vector `v_B`, which its end point's name
     /// labels in the figure).
     pub symbol: Symbol,
-}
-
-/// A named point of the polygon: the pole or the end of an absolute vector.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Vertex {
-    /// Where, in the polygon's units.
-    pub at: Pt,
-    /// Its name: `p`, `b`, `c'`.
-    pub name: String,
 }
 
 /// A polygon ready to lay out.
@@ -212,12 +144,15 @@ impl Figure for PolygonFigure {
     }
 }
 
-/// The box of `ends` and `vertices`; a point at the origin when there are none.
-pub(crate) fn extent_of(ends: impl Iterator<Item = Pt>, vertices: &[Vertex]) -> Rect {
-    Rect::around(ends.chain(vertices.iter().map(|v| v.at))).unwrap_or(Rect {
-        min: [0.0; 2],
-        max: [0.0; 2],
-    })
+/// The style a term's component is drawn in.
+fn style_of(symbol: &Symbol) -> ArrowStyle {
+    match symbol.component {
+        Component::Whole => ArrowStyle::Relative,
+        Component::Normal => ArrowStyle::Normal,
+        Component::Tangential => ArrowStyle::Tangential,
+        Component::Coriolis => ArrowStyle::Coriolis,
+        Component::Sliding => ArrowStyle::Sliding,
+    }
 }
 
 /// The unit of a quantity.
@@ -248,7 +183,7 @@ fn chain(terms: &[Term], joints: &[&(String, Pt)], out: &mut Vec<Arrow>) {
             out.push(Arrow {
                 from: at,
                 to: next,
-                style: ArrowStyle::of(&t.symbol),
+                style: style_of(&t.symbol),
                 symbol: t.symbol.clone(),
             });
         }

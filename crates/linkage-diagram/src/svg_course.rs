@@ -9,11 +9,11 @@ use std::fmt::Write as _;
 
 use linkage::{Mechanism, Solution};
 
-use crate::course::CourseSheet;
+use crate::course::{ChosenPosition, CourseSheet, OutputSeries};
 use crate::geometry::{Pt, Rect};
 use crate::layout::{Fit, Sizes, layout_polygon, round_scale};
 use crate::polygon_figure::PolygonFigure;
-use crate::svg::{
+use crate::svg_draw::{
     FONT, MARGIN, PAGE_W, TITLE_H, frame, line, measure, polygon, round_text, text_at,
 };
 use linkage::polygon::Quantity;
@@ -50,65 +50,10 @@ pub fn course_sheet(c: &CourseSheet) -> String {
     );
     y += PLAN_H + 10.0;
     if let Some(o) = &c.output {
-        let marks: Vec<f64> = c
-            .positions
-            .iter()
-            .map(|s| s.input_rad.to_degrees())
-            .collect();
-        let units = o.units();
-        for (i, (what, data)) in [
-            ("displacement", &o.s),
-            ("velocity", &o.v),
-            ("acceleration", &o.a),
-        ]
-        .into_iter()
-        .enumerate()
-        {
-            let pane = Rect::from_min_size([MARGIN, y], width, CHART_H);
-            let label = format!("{} {what} ({})", o.name, units[i]);
-            chart(&mut body, pane, &label, data, &marks);
-            y += CHART_H + 8.0;
-        }
+        y = diagrams(&mut body, o, &c.positions, y);
     }
     for chosen in &c.chosen {
-        let s = &c.positions[chosen.number];
-        let heading = format!(
-            "Position {} (crank at {:.1}°): polygons",
-            chosen.number,
-            s.input_rad.to_degrees()
-        );
-        text_at(&mut body, [MARGIN, y + 14.0], &heading, 14.0, "bold");
-        y += 22.0;
-        let w = (width - 10.0) / 2.0;
-        for (i, q) in [Quantity::Velocity, Quantity::Acceleration]
-            .into_iter()
-            .enumerate()
-        {
-            let pane = Rect::from_min_size([MARGIN + i as f64 * (w + 10.0), y], w, POLYGON_H);
-            frame(&mut body, &pane);
-            let fig = PolygonFigure::of_position(q, m, s, &chosen.equations);
-            let below = Rect {
-                min: [pane.min[0], pane.min[1] + TITLE_H],
-                max: pane.max,
-            };
-            let name = match q {
-                Quantity::Velocity => "Velocity polygon",
-                Quantity::Acceleration => "Acceleration polygon",
-            };
-            text_at(
-                &mut body,
-                [pane.min[0] + 6.0, pane.min[1] + 15.0],
-                name,
-                12.0,
-                "bold",
-            );
-            polygon(
-                &mut body,
-                fig.unit(),
-                &layout_polygon(&fig, below, sizes, &measure),
-            );
-        }
-        y += POLYGON_H + 10.0;
+        y = chosen_polygons(&mut body, m, &c.positions[chosen.number], chosen, y, sizes);
     }
     if let (Some(fp), Some(first)) = (&c.forces, c.chosen.first()) {
         let heading = format!(
@@ -130,6 +75,78 @@ pub fn course_sheet(c: &CourseSheet) -> String {
         height * 25.4 / 96.0,
         title.replace('&', "&amp;").replace('<', "&lt;")
     )
+}
+
+/// The output's s, v and a diagrams from `y` on; returns the y below.
+fn diagrams(body: &mut String, o: &OutputSeries, positions: &[Solution], mut y: f64) -> f64 {
+    let width = PAGE_W - 2.0 * MARGIN;
+    let marks: Vec<f64> = positions.iter().map(|s| s.input_rad.to_degrees()).collect();
+    let units = o.units();
+    for (i, (what, data)) in [
+        ("displacement", &o.s),
+        ("velocity", &o.v),
+        ("acceleration", &o.a),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let pane = Rect::from_min_size([MARGIN, y], width, CHART_H);
+        let label = format!("{} {what} ({})", o.name, units[i]);
+        chart(body, pane, &label, data, &marks);
+        y += CHART_H + 8.0;
+    }
+    y
+}
+
+/// A chosen position's velocity and acceleration polygons from `y` on; returns the
+/// y below.
+fn chosen_polygons(
+    body: &mut String,
+    m: &Mechanism,
+    s: &Solution,
+    chosen: &ChosenPosition,
+    mut y: f64,
+    sizes: Sizes,
+) -> f64 {
+    let width = PAGE_W - 2.0 * MARGIN;
+    let heading = format!(
+        "Position {} (crank at {:.1}°): polygons",
+        chosen.number,
+        s.input_rad.to_degrees()
+    );
+    text_at(body, [MARGIN, y + 14.0], &heading, 14.0, "bold");
+    y += 22.0;
+    let w = (width - 10.0) / 2.0;
+    for (i, q) in [Quantity::Velocity, Quantity::Acceleration]
+        .into_iter()
+        .enumerate()
+    {
+        let pane = Rect::from_min_size([MARGIN + i as f64 * (w + 10.0), y], w, POLYGON_H);
+        frame(body, &pane);
+        let fig = PolygonFigure::of_position(q, m, s, &chosen.equations);
+        let below = Rect {
+            min: [pane.min[0], pane.min[1] + TITLE_H],
+            max: pane.max,
+        };
+        let name = match q {
+            Quantity::Velocity => "Velocity polygon",
+            Quantity::Acceleration => "Acceleration polygon",
+        };
+        text_at(
+            body,
+            [pane.min[0] + 6.0, pane.min[1] + 15.0],
+            name,
+            12.0,
+            "bold",
+        );
+        polygon(
+            body,
+            fig.unit(),
+            &layout_polygon(&fig, below, sizes, &measure),
+        );
+    }
+    y += POLYGON_H + 10.0;
+    y
 }
 
 /// The point each position is numbered at: the crank pin (the driver's point
@@ -230,6 +247,23 @@ fn plan(out: &mut String, m: &Mechanism, positions: &[Solution], pane: Rect, siz
     );
 }
 
+/// A chart's mapping from (crank angle, value) to pixels.
+struct Axes {
+    plot: Rect,
+    x: [f64; 2],
+    y: [f64; 2],
+}
+
+impl Axes {
+    fn px(&self, p: Pt) -> Pt {
+        let (plot, [x0, x1], [y0, y1]) = (&self.plot, self.x, self.y);
+        [
+            plot.min[0] + (p[0] - x0) / (x1 - x0).max(1e-300) * plot.width(),
+            plot.max[1] - (p[1] - y0) / (y1 - y0) * plot.height(),
+        ]
+    }
+}
+
 /// A line chart of `data` (crank angle on x) with the positions at `marks` numbered.
 fn chart(out: &mut String, pane: Rect, label: &str, data: &[[f64; 2]], marks: &[f64]) {
     frame(out, &pane);
@@ -240,76 +274,94 @@ fn chart(out: &mut String, pane: Rect, label: &str, data: &[[f64; 2]], marks: &[
         12.0,
         "bold",
     );
-    let Some(box_) = Rect::around(data.iter().copied()) else {
+    let note = "against the crank angle; positions numbered";
+    text_at(
+        out,
+        [pane.max[0] - 200.0, pane.min[1] + 14.0],
+        note,
+        10.0,
+        "normal",
+    );
+    let Some(extent) = Rect::around(data.iter().copied()) else {
         return;
     };
-    let plot = Rect {
-        min: [pane.min[0] + 60.0, pane.min[1] + 22.0],
-        max: [pane.max[0] - 10.0, pane.max[1] - 22.0],
-    };
     let (y0, y1) = value_range(data);
-    let to_px = |p: Pt| -> Pt {
-        [
-            plot.min[0] + (p[0] - box_.min[0]) / box_.width().max(1e-300) * plot.width(),
-            plot.max[1] - (p[1] - y0) / (y1 - y0) * plot.height(),
-        ]
+    let axes = Axes {
+        plot: Rect {
+            min: [pane.min[0] + 60.0, pane.min[1] + 22.0],
+            max: [pane.max[0] - 10.0, pane.max[1] - 22.0],
+        },
+        x: [extent.min[0], extent.max[0]],
+        y: [y0, y1],
     };
-    // Value ticks at a round step, with the zero line where it falls inside.
+    value_ticks(out, &axes, pane);
+    position_marks(out, &axes, marks);
+    curve(out, &axes, data, pane);
+}
+
+/// Grid lines at a round step of the value, labelled.
+fn value_ticks(out: &mut String, axes: &Axes, pane: Rect) {
+    let [y0, y1] = axes.y;
     let step = round_scale(y1 - y0);
-    if step > 0.0 {
-        let mut v = (y0 / step).ceil() * step;
-        while v <= y1 + 1e-9 * step {
-            let p = to_px([box_.min[0], v]);
-            line(
-                out,
-                [plot.min[0], p[1]],
-                [plot.max[0], p[1]],
-                "#e4e4e4",
-                0.7,
-                false,
-            );
-            // A tick at zero reads 0, not the float noise of the steps that reach it.
-            let tick = if v.abs() < 1e-9 * step {
-                "0".to_string()
-            } else if v.abs() >= 1e5 {
-                format!("{v:.1e}")
-            } else {
-                round_text(v)
-            };
-            text_at(out, [pane.min[0] + 4.0, p[1] + 4.0], &tick, 10.0, "normal");
-            v += step;
-        }
+    if step <= 0.0 {
+        return;
     }
-    for (i, &x) in marks.iter().enumerate() {
-        if x < box_.min[0] - 1e-9 || x > box_.max[0] + 1e-9 {
-            continue;
-        }
-        let p = to_px([x, y0]);
+    let mut v = (y0 / step).ceil() * step;
+    while v <= y1 + 1e-9 * step {
+        let p = axes.px([axes.x[0], v]);
         line(
             out,
-            [p[0], plot.min[1]],
-            [p[0], plot.max[1]],
+            [axes.plot.min[0], p[1]],
+            [axes.plot.max[0], p[1]],
+            "#e4e4e4",
+            0.7,
+            false,
+        );
+        // A tick at zero reads 0, not the float noise of the steps that reach it.
+        let tick = if v.abs() < 1e-9 * step {
+            "0".to_string()
+        } else if v.abs() >= 1e5 {
+            format!("{v:.1e}")
+        } else {
+            round_text(v)
+        };
+        text_at(out, [pane.min[0] + 4.0, p[1] + 4.0], &tick, 10.0, "normal");
+        v += step;
+    }
+}
+
+/// A line and the number at each position's crank angle.
+fn position_marks(out: &mut String, axes: &Axes, marks: &[f64]) {
+    let [x0, x1] = axes.x;
+    for (i, &x) in marks.iter().enumerate() {
+        if x < x0 - 1e-9 || x > x1 + 1e-9 {
+            continue;
+        }
+        let p = axes.px([x, axes.y[0]]);
+        line(
+            out,
+            [p[0], axes.plot.min[1]],
+            [p[0], axes.plot.max[1]],
             "#c9d6ea",
             0.8,
             false,
         );
-        text_at(
-            out,
-            [p[0] - 3.0, plot.max[1] + 13.0],
-            &i.to_string(),
-            10.0,
-            "normal",
-        );
+        let at = [p[0] - 3.0, axes.plot.max[1] + 13.0];
+        text_at(out, at, &i.to_string(), 10.0, "normal");
     }
+}
+
+/// The curve, clipped to the plot: near a dead point of a rocking input the rates
+/// run off to infinity, past the range the axis shows.
+fn curve(out: &mut String, axes: &Axes, data: &[[f64; 2]], pane: Rect) {
     let points: Vec<String> = data
         .iter()
         .map(|&p| {
-            let q = to_px(p);
+            let q = axes.px(p);
             format!("{:.1},{:.1}", q[0], q[1])
         })
         .collect();
-    // Clipped to the plot: near a dead point of a rocking input the rates run off
-    // to infinity, past the range the axis shows.
+    let plot = &axes.plot;
     let clip = format!("clip{:.0}", pane.min[1]);
     let _ = writeln!(
         out,
@@ -320,13 +372,6 @@ fn chart(out: &mut String, pane: Rect, label: &str, data: &[[f64; 2]], marks: &[
         plot.width(),
         plot.height(),
         points.join(" ")
-    );
-    text_at(
-        out,
-        [pane.max[0] - 200.0, pane.min[1] + 14.0],
-        "against the crank angle; positions numbered",
-        10.0,
-        "normal",
     );
 }
 

@@ -10,7 +10,7 @@ use crate::force_figure::{
 };
 use crate::geometry::Rect;
 use crate::layout::{Sizes, layout_polygon};
-use crate::svg::{FONT, MARGIN, PAGE_W, TITLE_H, frame, label_at, measure, polygon, text_at};
+use crate::svg_draw::{FONT, MARGIN, PAGE_W, TITLE_H, frame, label_at, measure, polygon, text_at};
 
 /// Panes per row.
 const PER_ROW: usize = 2;

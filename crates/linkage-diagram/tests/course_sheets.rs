@@ -30,12 +30,18 @@ fn every_scene_gets_a_course_sheet_with_its_positions_on_its_diagrams() {
             let svg = course_sheet(&sheet);
             assert!(!svg.contains("NaN") && !svg.contains("inf"), "{file}");
             for n in 0..count {
-                assert!(svg.contains(&format!(">{n}</text>")), "{file}: position {n}");
+                assert!(
+                    svg.contains(&format!(">{n}</text>")),
+                    "{file}: position {n}"
+                );
             }
             let angles: Vec<f64> = sheet.positions.iter().map(|s| s.input_rad).collect();
             let steps: Vec<f64> = angles.windows(2).map(|w| w[1] - w[0]).collect();
             for s in &steps {
-                assert!((s - steps[0]).abs() <= 1e-9 * steps[0].abs(), "{file}: uneven");
+                assert!(
+                    (s - steps[0]).abs() <= 1e-9 * steps[0].abs(),
+                    "{file}: uneven"
+                );
             }
             let o = sheet.output.as_ref().expect("an output");
             let first = o.s.first().expect("samples");

@@ -1,6 +1,5 @@
 //! Force elements and the reduction to the input coordinate.
 
-use super::load_terms::Action;
 use crate::error::{LinkageError, Result};
 use crate::ids::{LinkId, PointId};
 use crate::model::SceneProblem;
@@ -105,7 +104,7 @@ pub struct Load {
 }
 
 /// Adds a couple `t` to a link turning at `omega`.
-fn couple(load: &mut Load, t: f64, omega: f64) {
+pub(super) fn couple(load: &mut Load, t: f64, omega: f64) {
     load.moment += t;
     load.power += t * omega;
 }
@@ -332,29 +331,6 @@ impl ForceModel {
             }
         }
         e
-    }
-
-    /// Applied loads on every link at the motion `sol` (real speeds): per link the
-    /// resultant force, its moment about the world origin and its power. Ground's
-    /// entry is computed like any other and ignored by callers.
-    pub fn applied_loads(&self, sol: &Solution) -> Vec<Load> {
-        let mut loads = vec![Load::default(); sol.links.len()];
-        for term in self.load_terms(sol) {
-            let l = &mut loads[term.link];
-            match term.action {
-                Action::Force {
-                    at,
-                    velocity,
-                    force,
-                } => {
-                    l.force += force;
-                    l.moment += cross(&at, &force);
-                    l.power += force.dot(&velocity);
-                }
-                Action::Couple { moment } => couple(l, moment, sol.links[term.link].omega_rad_s),
-            }
-        }
-        loads
     }
 
     /// Inertia loads m·a_G and the rate of angular momentum about the world origin

@@ -3,8 +3,9 @@
 //! per-link resultants of [`ForceModel::applied_loads`] are their sums, so the
 //! polygons and the Newton–Euler solution see the same loads.
 
-use super::forces::{Damper, ForceModel};
+use super::forces::{Damper, ForceModel, Load, couple};
 use crate::ids::{LinkId, PointId};
+use crate::motion::cross;
 use crate::motion::{PointMotion, Solution, Vec2};
 use crate::scene::ForceWhen;
 
@@ -60,6 +61,29 @@ pub struct LoadTerm {
 }
 
 impl ForceModel {
+    /// Applied loads on every link at the motion `sol` (real speeds): per link the
+    /// resultant force, its moment about the world origin and its power. Ground's
+    /// entry is computed like any other and ignored by callers.
+    pub fn applied_loads(&self, sol: &Solution) -> Vec<Load> {
+        let mut loads = vec![Load::default(); sol.links.len()];
+        for term in self.load_terms(sol) {
+            let l = &mut loads[term.link];
+            match term.action {
+                Action::Force {
+                    at,
+                    velocity,
+                    force,
+                } => {
+                    l.force += force;
+                    l.moment += cross(&at, &force);
+                    l.power += force.dot(&velocity);
+                }
+                Action::Couple { moment } => couple(l, moment, sol.links[term.link].omega_rad_s),
+            }
+        }
+        loads
+    }
+
     /// Every applied load at the motion `sol`, in the order weights, springs,
     /// dampers, external forces, torques. A working-stroke force that is off at `sol`
     /// is left out; a spring or damper whose ends meet gives nothing.

@@ -5,9 +5,8 @@
 
 use nalgebra::{DMatrix, DVector};
 
-use super::{
-    CoupleSymbol, CoupleTerm, ForceSymbol, ForceVector, JointForce, JointId, Stage, StagePolygon,
-};
+use super::parts::{CoupleTerm, ForceVector, JointForce, JointId, Stage, StagePolygon};
+use super::symbol::{CoupleSymbol, ForceSymbol};
 use crate::dynamics::{Action, ForceModel, InertiaTerm, LoadTerm};
 use crate::error::{LinkageError, Result};
 use crate::ids::{LinkId, PointId};
