@@ -1,5 +1,6 @@
 //! The machine's tabs of the plot pane: the real speed through the cycle with the
-//! scene's drive (ω against φ and against t, the nominal speed marked), and the
+//! scene's drive (ω against φ and against t, the nominal speed marked, and the run-up
+//! from rest to it), and the
 //! shaking force on the frame before and after the crank's counterweight (its polar
 //! diagram, as the textbooks draw it, and its size against the crank angle).
 
@@ -14,6 +15,7 @@ pub fn steady_plots(
     ui: &mut egui::Ui,
     key: (&str, u64),
     st: &SteadyState,
+    run_up: Option<&[[f64; 2]]>,
     nominal_rad_s: f64,
     cursor_deg: f64,
 ) {
@@ -27,11 +29,13 @@ pub fn steady_plots(
         .map(|p| [p.angle_rad.to_degrees(), p.speed_rad_s])
         .collect();
     let by_time: Vec<[f64; 2]> = st.cycle.iter().map(|p| [p.t_s, p.speed_rad_s]).collect();
-    crate::ui::plot_layout::side_by_side(ui, 2, |ui, which, height| {
-        let (x_label, data) = if which == 0 {
-            ("crank angle (deg)", &by_angle)
-        } else {
-            ("t (s)", &by_time)
+    let from_rest: Vec<[f64; 2]> = run_up.map(<[_]>::to_vec).unwrap_or_default();
+    let plots = if from_rest.is_empty() { 2 } else { 3 };
+    crate::ui::plot_layout::side_by_side(ui, plots, |ui, which, height| {
+        let (x_label, name, data) = match which {
+            0 => ("crank angle (deg)", "ω, steady state", &by_angle),
+            1 => ("t (s)", "ω, steady state", &by_time),
+            _ => ("t (s), from rest", "ω, run-up from rest", &from_rest),
         };
         Plot::new((key, "steady", which))
             .height(height)
@@ -39,7 +43,7 @@ pub fn steady_plots(
             .y_axis_label("ω (rad/s)")
             .allow_scroll(false)
             .show(ui, |p| {
-                p.line(Line::new("ω, steady state", PlotPoints::from(data.clone())));
+                p.line(Line::new(name, PlotPoints::from(data.clone())));
                 p.hline(HLine::new("nominal", nominal_rad_s));
                 if which == 0 {
                     p.vline(VLine::new("now", cursor_deg));

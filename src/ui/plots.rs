@@ -223,7 +223,15 @@ fn steady_tab(ui: &mut egui::Ui, s: &Session) {
     match &c.steady {
         Some(Ok(st)) => {
             let nominal = s.mechanism().driver.speed_rad_s;
-            crate::ui::machine_plots::steady_plots(ui, plot_key(s), st, nominal, cursor_deg(s));
+            let run_up = c.run_up.as_ref().and_then(|r| r.as_ref().ok());
+            crate::ui::machine_plots::steady_plots(
+                ui,
+                plot_key(s),
+                st,
+                run_up.map(Vec::as_slice),
+                nominal,
+                cursor_deg(s),
+            );
         }
         Some(Err(why)) => {
             ui.label(format!("no steady state: {why}"));

@@ -3,10 +3,13 @@
 //! extremes by root-finding); target (issue 24) at most 5 ms. The steady state with
 //! that flywheel and a linear motor through the reduction of 29
 //! (`docs/examples/die_cutter_linear_motor.ron`: shooting, one DOP853 turn per try,
-//! and the sampled cycle); target at most 50 ms. Criterion times each from a built
-//! `Kinematics`.
+//! and the sampled cycle); target at most 50 ms. The force polygons of one position
+//! (what the app redoes on every change of the pose): well under a frame. Criterion
+//! times each from a built `Kinematics`.
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use linkage::force_polygon::force_polygons;
+use linkage::kinetostatics::Kinetostatics;
 use linkage::machine::{size_flywheel, steady_state};
 use linkage::{Kinematics, Mechanism};
 
@@ -32,5 +35,18 @@ fn die_cutter_steady_state(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, die_cutter_flywheel, die_cutter_steady_state);
+fn die_cutter_force_polygons(c: &mut Criterion) {
+    let mut k = scene("assets/scenes/die_cutter.ron");
+    let mut ks = Kinetostatics::new(&mut k).unwrap_or_else(|e| panic!("{e}"));
+    c.bench_function("die_cutter_force_polygons_one_position", |b| {
+        b.iter(|| force_polygons(&mut k, &mut ks, 1.0).unwrap_or_else(|e| panic!("{e}")));
+    });
+}
+
+criterion_group!(
+    benches,
+    die_cutter_flywheel,
+    die_cutter_steady_state,
+    die_cutter_force_polygons
+);
 criterion_main!(benches);

@@ -5,7 +5,7 @@
 //! moment M(q)) only when its plot is shown ([`ModelCurves`]).
 
 use linkage::analysis::{Output, outputs, transmission_angle_at};
-use linkage::dynamics::ForceModel;
+use linkage::dynamics::{ForceModel, Method, Settings, simulate};
 use linkage::kinetostatics::Kinetostatics;
 use linkage::machine::{
     BalanceAim, Counterweight, FlywheelSizing, Shaking, SteadyState, counterweights, shaking,
@@ -126,6 +126,9 @@ pub struct ModelCurves {
     /// Scenes with a drive: the periodic steady state (the real speed through the
     /// cycle), or why there is none.
     pub steady: Option<Result<SteadyState, LinkageError>>,
+    /// Scenes with a drive: the run-up from rest, ω against t (s, rad/s), over
+    /// [`RUN_UP_PERIODS`] periods of the steady state, or why there is none.
+    pub run_up: Option<Result<Vec<[f64; 2]>, LinkageError>>,
     /// Kinetostatic scenes: the shaking force before and after the crank's
     /// least-squares counterweight, or why there is none.
     pub shaking: Option<Result<ShakingCurves, LinkageError>>,
@@ -135,6 +138,21 @@ pub struct ModelCurves {
     pub moment_n_m: Vec<[f64; 2]>,
     /// Why a modelled curve is missing (e.g. a kinetostatic failure), if one is.
     pub notes: Vec<String>,
+}
+
+/// How many steady-state periods the run-up from rest is shown over.
+pub const RUN_UP_PERIODS: f64 = 8.0;
+
+/// The drive's run-up from rest: ω against t over [`RUN_UP_PERIODS`] periods, by
+/// DOP853 at rtol 1e-8.
+fn run_up(k: &Kinematics, period_s: f64) -> Result<Vec<[f64; 2]>, LinkageError> {
+    let mut settings = Settings::new(Method::Dop853);
+    settings.rtol = 1e-8;
+    settings.atol = 1e-10;
+    settings.t_end = RUN_UP_PERIODS * period_s;
+    settings.output_dt = Some(period_s / 60.0);
+    let sim = simulate(k, &settings)?;
+    Ok(sim.samples.iter().map(|s| [s.t, s.q_dot]).collect())
 }
 
 /// The shaking force over a cycle, before and after a crank counterweight.
@@ -179,7 +197,9 @@ impl ModelCurves {
             Models::Kinematics => {}
         }
         if k.mechanism().models != Models::Kinematics && k.mechanism().drive.is_some() {
-            curves.steady = Some(steady_state(&k));
+            let steady = steady_state(&k);
+            curves.run_up = steady.as_ref().ok().map(|st| run_up(&k, st.period_s));
+            curves.steady = Some(steady);
         }
         curves
     }
