@@ -337,19 +337,27 @@ pub(crate) struct DiagramArgs {
     /// Input (crank) angle in degrees.
     #[arg(long, allow_hyphen_values = true)]
     pub(crate) input_deg: f64,
+    /// Where the sheet goes.
+    #[command(flatten)]
+    pub(crate) out: SheetOut,
+    /// What the sheet holds, comma-separated. By default the force polygons are
+    /// drawn where the scene has masses or forces and the position has them.
+    #[arg(long, value_enum, value_delimiter = ',', default_values_t = DEFAULT_PARTS)]
+    pub(crate) what: Vec<Part>,
+}
+
+/// Where a sheet goes: SVG and PNG files, or the SVG to standard output.
+#[derive(clap::Args, Debug)]
+pub(crate) struct SheetOut {
     /// Write the SVG here (without --svg or --png it goes to standard output).
     #[arg(long)]
     pub(crate) svg: Option<PathBuf>,
     /// Write a PNG here, rendered from the SVG.
     #[arg(long)]
     pub(crate) png: Option<PathBuf>,
-    /// PNG resolution, dots per inch (the sheet is A4).
+    /// PNG resolution, dots per inch (the sheet is A4 wide).
     #[arg(long, default_value_t = 150.0)]
     pub(crate) dpi: f32,
-    /// What the sheet holds, comma-separated. By default the force polygons are
-    /// drawn where the scene has masses or forces and the position has them.
-    #[arg(long, value_enum, value_delimiter = ',', default_values_t = DEFAULT_PARTS)]
-    pub(crate) what: Vec<Part>,
 }
 
 /// Options of `linkage course-sheet`.
@@ -362,15 +370,9 @@ pub(crate) struct CourseArgs {
     /// polygons); default the second and the one half a range on.
     #[arg(long, num_args = 1..)]
     pub(crate) chosen: Vec<usize>,
-    /// Write the SVG here (without --svg or --png it goes to standard output).
-    #[arg(long)]
-    pub(crate) svg: Option<PathBuf>,
-    /// Write a PNG here, rendered from the SVG.
-    #[arg(long)]
-    pub(crate) png: Option<PathBuf>,
-    /// PNG resolution, dots per inch.
-    #[arg(long, default_value_t = 150.0)]
-    pub(crate) dpi: f32,
+    /// Where the sheet goes.
+    #[command(flatten)]
+    pub(crate) out: SheetOut,
 }
 
 /// What `linkage diagram` draws unless told.

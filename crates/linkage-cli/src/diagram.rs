@@ -10,7 +10,7 @@ use linkage::kinetostatics::Kinetostatics;
 use linkage::polygon::polygons;
 use linkage_diagram::svg::{Parts, Position, sheet};
 
-use crate::args::{DEFAULT_PARTS, DiagramArgs, Part, SceneArgs};
+use crate::args::{DEFAULT_PARTS, DiagramArgs, Part, SceneArgs, SheetOut};
 use crate::error::{CliError, Result};
 use crate::io::load;
 
@@ -23,12 +23,7 @@ pub fn run(scene: &SceneArgs, args: &DiagramArgs) -> Result<String> {
             args.input_deg
         )));
     }
-    if !(args.dpi.is_finite() && (10.0..=1200.0).contains(&args.dpi)) {
-        return Err(CliError::refused(format!(
-            "--dpi {} is out of range: 10 to 1200",
-            args.dpi
-        )));
-    }
+    check_dpi(&args.out)?;
     let mut k = load(scene)?;
     let has = |p: Part| args.what.contains(&p);
     let input_rad = args.input_deg.to_radians();
@@ -63,30 +58,47 @@ pub fn run(scene: &SceneArgs, args: &DiagramArgs) -> Result<String> {
         forces: forces.as_ref(),
     };
     let svg = sheet(&position, parts);
-    if let Some(path) = &args.svg {
-        std::fs::write(path, &svg).map_err(|source| CliError::Write {
-            path: path.to_path_buf(),
-            source,
-        })?;
-    }
-    if let Some(path) = &args.png {
-        let png = render_png(&svg, args.dpi)?;
-        std::fs::write(path, png).map_err(|source| CliError::Write {
-            path: path.to_path_buf(),
-            source,
-        })?;
-    }
-    Ok(if args.svg.is_none() && args.png.is_none() {
-        svg
-    } else {
-        String::new()
-    })
+    write_sheet(svg, &args.out)
 }
 
 /// The force polygons at `input_rad`.
 fn forces_at(k: &mut Kinematics, input_rad: f64) -> linkage::Result<ForcePolygons> {
     let mut ks = Kinetostatics::new(k)?;
     force_polygons(k, &mut ks, input_rad)
+}
+
+/// Refuses a resolution outside 10 to 1200 dpi.
+pub fn check_dpi(out: &SheetOut) -> Result<()> {
+    if out.dpi.is_finite() && (10.0..=1200.0).contains(&out.dpi) {
+        Ok(())
+    } else {
+        Err(CliError::refused(format!(
+            "--dpi {} is out of range: 10 to 1200",
+            out.dpi
+        )))
+    }
+}
+
+/// Writes `svg` (and its PNG) where `out` says; returns what goes to standard output
+/// (the SVG when no file was named).
+pub fn write_sheet(svg: String, out: &SheetOut) -> Result<String> {
+    let write = |path: &std::path::Path, bytes: &[u8]| {
+        std::fs::write(path, bytes).map_err(|source| CliError::Write {
+            path: path.to_path_buf(),
+            source,
+        })
+    };
+    if let Some(path) = &out.svg {
+        write(path, svg.as_bytes())?;
+    }
+    if let Some(path) = &out.png {
+        write(path, &render_png(&svg, out.dpi)?)?;
+    }
+    Ok(if out.svg.is_none() && out.png.is_none() {
+        svg
+    } else {
+        String::new()
+    })
 }
 
 /// The SVG rendered at `dpi`, as PNG bytes, with the app's own font.

@@ -17,7 +17,7 @@ use crate::pose_figure::PoseFigure;
 use crate::pose_layout::{LaidPose, layout_pose};
 pub use crate::svg_draw::round_text;
 use crate::svg_draw::{
-    FONT, MARGIN, PAGE_H, PAGE_W, TITLE_H, circle, escape, frame, label_at, leaders_and_label,
+    FONT, MARGIN, PAGE_H, PAGE_W, TITLE_H, circle, document, frame, label_at, leaders_and_label,
     line, measure, polygon, polygon_shape, scale_bar, text_at,
 };
 
@@ -134,18 +134,7 @@ pub fn sheet(pos: &Position<'_>, parts: Parts) -> String {
     {
         y = crate::svg_forces::forces(&mut body, m, fp, y + 10.0, sizes);
     }
-    let height = PAGE_H.max(y + MARGIN);
-    format!(
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n\
-         <svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" \
-         width=\"{:.1}mm\" height=\"{:.1}mm\" viewBox=\"0 0 {PAGE_W} {height:.1}\" \
-         font-family=\"Ubuntu, Liberation Sans, Arial, Helvetica, sans-serif\">\n\
-         <title>{}</title>\n\
-         <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n{body}</svg>\n",
-        PAGE_W * 25.4 / 96.0,
-        height * 25.4 / 96.0,
-        escape(&title)
-    )
+    document(&title, &body, PAGE_H.max(y + MARGIN))
 }
 
 fn polygon_title(q: Quantity) -> &'static str {

@@ -14,7 +14,7 @@ use crate::geometry::{Pt, Rect};
 use crate::layout::{Fit, Sizes, layout_polygon, round_scale};
 use crate::polygon_figure::PolygonFigure;
 use crate::svg_draw::{
-    FONT, MARGIN, PAGE_W, TITLE_H, frame, line, measure, polygon, round_text, text_at,
+    FONT, MARGIN, PAGE_W, TITLE_H, document, frame, line, measure, polygon, round_text, text_at,
 };
 use linkage::polygon::Quantity;
 
@@ -63,18 +63,7 @@ pub fn course_sheet(c: &CourseSheet) -> String {
         text_at(&mut body, [MARGIN, y + 14.0], &heading, 14.0, "bold");
         y = crate::svg_forces::forces(&mut body, m, fp, y + 22.0, sizes);
     }
-    let height = y + MARGIN;
-    format!(
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n\
-         <svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" \
-         width=\"{:.1}mm\" height=\"{:.1}mm\" viewBox=\"0 0 {PAGE_W} {height:.1}\" \
-         font-family=\"Ubuntu, Liberation Sans, Arial, Helvetica, sans-serif\">\n\
-         <title>{}</title>\n\
-         <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n{body}</svg>\n",
-        PAGE_W * 25.4 / 96.0,
-        height * 25.4 / 96.0,
-        title.replace('&', "&amp;").replace('<', "&lt;")
-    )
+    document(&title, &body, y + MARGIN)
 }
 
 /// The output's s, v and a diagrams from `y` on; returns the y below.

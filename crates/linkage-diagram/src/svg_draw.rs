@@ -21,6 +21,22 @@ pub(crate) fn measure(label: &Label) -> [f64; 2] {
     label.approximate_size(FONT)
 }
 
+/// A whole SVG document `height` px tall (A4 wide, sized in millimetres) around
+/// `body`, titled `title`.
+pub(crate) fn document(title: &str, body: &str, height: f64) -> String {
+    format!(
+        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n\
+         <svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" \
+         width=\"{:.1}mm\" height=\"{:.1}mm\" viewBox=\"0 0 {PAGE_W} {height:.1}\" \
+         font-family=\"Ubuntu, Liberation Sans, Arial, Helvetica, sans-serif\">\n\
+         <title>{}</title>\n\
+         <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n{body}</svg>\n",
+        PAGE_W * 25.4 / 96.0,
+        height * 25.4 / 96.0,
+        escape(title)
+    )
+}
+
 /// `#rrggbb`.
 pub(crate) fn hex([r, g, b]: [u8; 3]) -> String {
     format!("#{r:02x}{g:02x}{b:02x}")
