@@ -83,18 +83,37 @@ impl PlotsPanel {
             self.tab = PlotTab::Output;
         }
         ui.horizontal_wrapped(|ui| {
-            for (tab, label) in [
-                (PlotTab::Output, "Output s, v, a"),
-                (PlotTab::Transmission, "Transmission angle"),
-                (PlotTab::Torque, "Input torque, amplification"),
-                (PlotTab::Flywheel, "Flywheel"),
-                (PlotTab::Steady, "Steady speed"),
-                (PlotTab::Shaking, "Shaking force"),
-                (PlotTab::Motion, "ω–φ, ω–t, φ–t"),
-                (PlotTab::ReducedModel, "J(q), M(q)"),
+            // Short names, so that a phone's sheet holds the row; the full name on
+            // hover.
+            for (tab, label, full) in [
+                (PlotTab::Output, "Output", "the output's s, v, a"),
+                (PlotTab::Transmission, "Transmission", "transmission angle"),
+                (
+                    PlotTab::Torque,
+                    "Torque",
+                    "input torque and force amplification",
+                ),
+                (
+                    PlotTab::Flywheel,
+                    "Flywheel",
+                    "flywheel by the energy method",
+                ),
+                (
+                    PlotTab::Steady,
+                    "Speed",
+                    "the real speed with the drive: steady state and run-up",
+                ),
+                (
+                    PlotTab::Shaking,
+                    "Shaking",
+                    "shaking force, with the crank counterweight",
+                ),
+                (PlotTab::Motion, "ω–φ, ω–t, φ–t", "the dynamic run"),
+                (PlotTab::ReducedModel, "J(q), M(q)", "the reduced model"),
             ] {
                 if tab_available(tab, &st.session) {
-                    ui.selectable_value(&mut self.tab, tab, label);
+                    ui.selectable_value(&mut self.tab, tab, label)
+                        .on_hover_text(full);
                 }
             }
         });
