@@ -1,7 +1,8 @@
 //! The flywheel tab of the plot pane: the energy method on the scene's cycle. The
 //! torque the load asks for at the nominal speed beside its mean (what a motor gives),
 //! the work surplus W(φ) of that mean with its largest and smallest values marked, and
-//! the figures: mean torque and power, ΔW_max and the flywheel J_F = ΔW_max/(ω² δ).
+//! the figures: mean torque and power, ΔW_max and the flywheel J_F = ΔW_max/(ω² δ);
+//! and Wittenbauer's energy–inertia diagram (the surplus against the reduced inertia).
 
 use eframe::egui;
 use egui_plot::{HLine, Line, Plot, PlotPoints, Points, VLine};
@@ -27,11 +28,19 @@ pub fn flywheel_plots(
         .iter()
         .map(|c| [c.angle_rad.to_degrees(), c.surplus_j])
         .collect();
+    // Wittenbauer's energy–inertia diagram: the surplus against the reduced inertia,
+    // a closed curve over the cycle.
+    let mut wittenbauer: Vec<[f64; 2]> = sized
+        .cycle
+        .iter()
+        .map(|c| [c.reduced_inertia_kg_m2, c.surplus_j])
+        .collect();
+    wittenbauer.extend(wittenbauer.first().copied());
     let extremes = vec![
         [sized.angle_of_max_rad.to_degrees(), sized.surplus_max_j],
         [sized.angle_of_min_rad.to_degrees(), sized.surplus_min_j],
     ];
-    crate::ui::plot_layout::side_by_side(ui, 2, |ui, which, height| {
+    crate::ui::plot_layout::side_by_side(ui, 3, |ui, which, height| {
         let plot = Plot::new((key, "flywheel", which))
             .height(height)
             .x_axis_label("crank angle (deg)")
@@ -44,6 +53,18 @@ pub fn flywheel_plots(
                 ));
                 p.hline(HLine::new("mean: the motor's", sized.mean_torque_n_m));
                 p.vline(VLine::new("now", cursor_deg));
+            });
+        } else if which == 2 {
+            let plot = Plot::new((key, "flywheel", which))
+                .height(height)
+                .x_axis_label("J_red (kg·m²)")
+                .y_axis_label("W (J)")
+                .allow_scroll(false);
+            plot.show(ui, |p| {
+                p.line(Line::new(
+                    "energy–inertia (Wittenbauer)",
+                    PlotPoints::from(wittenbauer.clone()),
+                ));
             });
         } else {
             plot.y_axis_label("W (J)").show(ui, |p| {

@@ -53,8 +53,7 @@ fn harness_on_example(file: &str) -> egui_kittest::Harness<'static, linkage_lab:
 #[test]
 fn the_steady_speed_tab_shows_the_die_cutter_with_its_motor() {
     let mut h = harness_on_example("die_cutter_linear_motor.ron");
-    h.get_by_role_and_label(Role::Button, "Speed")
-        .click();
+    h.get_by_role_and_label(Role::Button, "Speed").click();
     for _ in 0..4 {
         h.run();
     }
@@ -72,8 +71,7 @@ fn the_steady_speed_tab_shows_the_die_cutter_with_its_motor() {
 #[test]
 fn the_shaking_tab_shows_the_engine_before_and_after_its_counterweight() {
     let mut h = harness_on_example("slider_crank_engine.ron");
-    h.get_by_role_and_label(Role::Button, "Shaking")
-        .click();
+    h.get_by_role_and_label(Role::Button, "Shaking").click();
     for _ in 0..4 {
         h.run();
     }
