@@ -18,6 +18,7 @@
 pub mod analysis;
 pub mod assembly;
 pub mod branch_points;
+pub mod cam;
 pub mod drawing;
 pub mod dyad;
 pub mod dynamics;

@@ -1,0 +1,14 @@
+//! Cams: motion laws and the programs they make over a cam's turn.
+//!
+//! - [`laws`]: the normalised motion laws (dwell aside) with their derivatives.
+//! - [`program`]: segments (rise, dwell, return) over the turn, the follower's motion
+//!   at any cam angle, the continuity at every join, the laws' peak coefficients.
+
+mod laws;
+mod program;
+
+pub use laws::{Law, Motion};
+pub use program::{
+    Continuity, FollowerMotion, Join, PeakCoefficients, Program, Segment, SegmentKind,
+    peak_coefficients,
+};
