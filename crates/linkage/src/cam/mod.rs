@@ -3,10 +3,16 @@
 //! - [`laws`]: the normalised motion laws (dwell aside) with their derivatives.
 //! - [`program`]: segments (rise, dwell, return) over the turn, the follower's motion
 //!   at any cam angle, the continuity at every join, the laws' peak coefficients.
+//! - [`DiscCam`]: a disc cam with a translating or oscillating follower: pitch curve,
+//!   profile, pressure angle and radii of curvature at any cam angle.
 
+mod disc;
+mod extremes;
 mod laws;
 mod program;
 
+pub use disc::{CamPoint, DiscCam, Face, Follower};
+pub use extremes::{CamExtremes, Extreme};
 pub use laws::{Law, Motion};
 pub use program::{
     Continuity, FollowerMotion, Join, PeakCoefficients, Program, Segment, SegmentKind,
