@@ -5,14 +5,17 @@
 //!   at any cam angle, the continuity at every join, the laws' peak coefficients.
 //! - [`DiscCam`]: a disc cam with a translating or oscillating follower: pitch curve,
 //!   profile, pressure angle and radii of curvature at any cam angle.
+//! - [`Geneva`]: the external Geneva wheel, an intermittent indexer.
 
 mod disc;
 mod extremes;
+mod geneva;
 mod laws;
 mod program;
 
 pub use disc::{CamPoint, DiscCam, Face, Follower};
 pub use extremes::{CamExtremes, Extreme};
+pub use geneva::{Geneva, GenevaMotion};
 pub use laws::{Law, Motion};
 pub use program::{
     Continuity, FollowerMotion, Join, PeakCoefficients, Program, Segment, SegmentKind,
