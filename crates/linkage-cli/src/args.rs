@@ -100,6 +100,23 @@ pub(crate) enum Command {
         #[arg(long, value_enum, default_value_t = Format::Csv)]
         format: Format,
     },
+    /// A disc cam from its file (RON, millimetres and degrees): s, v, a, jerk, pitch
+    /// and profile points, pressure angle and radii of curvature over the turn (CSV,
+    /// or JSON with the joins' continuity, the laws' peak coefficients and the cam's
+    /// extremes); --dxf writes the profile for manufacture.
+    Cam {
+        /// The cam file.
+        file: PathBuf,
+        /// Cam angles over the turn.
+        #[arg(long, default_value_t = 360)]
+        samples: usize,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = crate::cam::CamFormat::Csv)]
+        format: crate::cam::CamFormat,
+        /// Write the profile, the pitch curve and the base circle as DXF (mm) here.
+        #[arg(long)]
+        dxf: Option<PathBuf>,
+    },
     /// Input torque (Newton-Euler and virtual work), joint reactions and force
     /// amplification over one input cycle at the scene's crank speed.
     Kinetostatics {

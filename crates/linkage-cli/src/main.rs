@@ -6,6 +6,8 @@
 #![forbid(unsafe_code)]
 
 mod args;
+mod cam;
+mod cam_dxf;
 mod commands;
 mod counts;
 mod course;
@@ -61,6 +63,12 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
         Command::Report { scene } => commands::report(&scene),
         Command::Synth { what } => commands::synth(what),
         Command::Diagram { scene, args } => diagram::run(&scene, &args),
+        Command::Cam {
+            file,
+            samples,
+            format,
+            dxf,
+        } => cam::run(&file, samples, format, dxf.as_deref()),
         Command::CourseSheet { scene, args } => course::run(&scene, &args),
         Command::Share { scene, decode } => commands::share(scene.as_deref(), decode.as_deref()),
         Command::Simulate { scene, sim, format } if sim.steady => simulate::steady(&scene, format),

@@ -1,4 +1,5 @@
 //! What the CLI tests share: the path of a shipped scene and a run of the binary.
+#![allow(dead_code)]
 
 use std::process::Command;
 

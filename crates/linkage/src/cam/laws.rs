@@ -8,10 +8,10 @@
 //! here in closed form piece by piece, their amplitude set so that s(1) = 1: so each
 //! value is exact, not a quadrature.
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 
 /// A motion law for a rise (a return is a rise run backwards).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
 pub enum Law {
     /// s = u: infinite acceleration at the ends (only for teaching).
     ConstantVelocity,

@@ -6,12 +6,14 @@
 //! - [`DiscCam`]: a disc cam with a translating or oscillating follower: pitch curve,
 //!   profile, pressure angle and radii of curvature at any cam angle.
 //! - [`Geneva`]: the external Geneva wheel, an intermittent indexer.
+//! - [`CamSpec`]: a cam file (RON, millimetres and degrees) and its [`CamDesign`].
 
 mod disc;
 mod extremes;
 mod geneva;
 mod laws;
 mod program;
+mod spec;
 
 pub use disc::{CamPoint, DiscCam, Face, Follower};
 pub use extremes::{CamExtremes, Extreme};
@@ -21,3 +23,4 @@ pub use program::{
     Continuity, FollowerMotion, Join, PeakCoefficients, Program, Segment, SegmentKind,
     peak_coefficients,
 };
+pub use spec::{CamDesign, CamSpec, FaceSpec, FollowerSpec, SegmentSpec};
