@@ -111,8 +111,8 @@ pub(crate) enum Command {
         #[arg(long, default_value_t = 360)]
         samples: usize,
         /// Output format.
-        #[arg(long, value_enum, default_value_t = crate::cam::CamFormat::Csv)]
-        format: crate::cam::CamFormat,
+        #[arg(long, value_enum, default_value_t = CamFormat::Csv)]
+        format: CamFormat,
         /// Write the profile, the pitch curve and the base circle as DXF (mm) here.
         #[arg(long)]
         dxf: Option<PathBuf>,
@@ -476,6 +476,15 @@ pub enum Part {
     /// The force polygons, group by group from the output back to the crank, with
     /// their tables (a scene with kinetostatics or dynamics data).
     Forces,
+}
+
+/// What `linkage cam` writes.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub enum CamFormat {
+    /// A row per cam angle.
+    Csv,
+    /// The figures and the rows.
+    Json,
 }
 
 /// What counterweights minimise.

@@ -9,17 +9,9 @@ use std::path::Path;
 use linkage::cam::{CamDesign, CamPoint, CamSpec, Law, SegmentKind, peak_coefficients};
 use serde_json::json;
 
+use crate::args::CamFormat;
 use crate::error::{CliError, Result};
 use crate::io::{json_text, to_csv};
-
-/// What `linkage cam` writes.
-#[derive(Clone, Copy, Debug, clap::ValueEnum, PartialEq, Eq)]
-pub enum CamFormat {
-    /// A row per cam angle.
-    Csv,
-    /// The figures and the rows.
-    Json,
-}
 
 /// Reads the cam file at `path`.
 fn design(path: &Path) -> Result<CamDesign> {
@@ -40,12 +32,7 @@ fn sampled(d: &CamDesign, samples: usize) -> Vec<CamPoint> {
 }
 
 /// Runs the command.
-pub fn run(
-    path: &Path,
-    samples: usize,
-    format: CamFormat,
-    dxf: Option<&Path>,
-) -> Result<String> {
+pub fn run(path: &Path, samples: usize, format: CamFormat, dxf: Option<&Path>) -> Result<String> {
     if !(4..=1_000_000).contains(&samples) {
         return Err(CliError::refused(format!(
             "--samples {samples} is out of range: 4 to 1000000"
