@@ -171,7 +171,7 @@ impl DiscCam {
 
     /// The pitch point C in the frame and its first two derivatives by θ, with the
     /// follower's direction of travel there.
-    fn contact(&self, m: &FollowerMotion) -> ([Vec2; 3], Vec2) {
+    fn pitch_point(&self, m: &FollowerMotion) -> ([Vec2; 3], Vec2) {
         let rp = self.prime_radius_m();
         match self.follower {
             Follower::Translating {
@@ -208,7 +208,7 @@ impl DiscCam {
     /// The cam and follower at cam angle `theta`.
     pub fn at(&self, theta: f64) -> CamPoint {
         let m = self.program.at(theta);
-        let ([c, c1, c2], travel) = self.contact(&m);
+        let ([c, c1, c2], travel) = self.pitch_point(&m);
         let q1 = c1 - j(c);
         let q2 = c2 - j(c1) * 2.0 - c;
         let tangent = q1 / q1.norm();

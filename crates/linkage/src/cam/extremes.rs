@@ -37,7 +37,7 @@ const SCAN: usize = 256;
 
 /// The θ in [a, b] where `f` is largest, and its value: the best of a scan, then a
 /// golden-section search between its neighbours.
-fn largest(f: &dyn Fn(f64) -> f64, a: f64, b: f64) -> Extreme {
+pub(super) fn largest(f: &dyn Fn(f64) -> f64, a: f64, b: f64) -> Extreme {
     let at = |i: usize| a + (b - a) * i as f64 / SCAN as f64;
     let best = (0..=SCAN)
         .max_by(|&i, &k| f(at(i)).total_cmp(&f(at(k))))

@@ -4,7 +4,8 @@
 //! - [`program`]: segments (rise, dwell, return) over the turn, the follower's motion
 //!   at any cam angle, the continuity at every join, the laws' peak coefficients.
 //! - [`DiscCam`]: a disc cam with a translating or oscillating follower: pitch curve,
-//!   profile, pressure angle and radii of curvature at any cam angle.
+//!   profile, pressure angle and radii of curvature at any cam angle; the smallest
+//!   base circle for a pressure-angle limit, the contact force and the least preload.
 //! - [`Geneva`]: the external Geneva wheel, an intermittent indexer.
 //! - [`CamSpec`]: a cam file (RON, millimetres and degrees) and its [`CamDesign`].
 
@@ -13,6 +14,7 @@ mod extremes;
 mod geneva;
 mod laws;
 mod program;
+mod sizing;
 mod spec;
 
 pub use disc::{CamPoint, DiscCam, Face, Follower};
@@ -23,4 +25,5 @@ pub use program::{
     Continuity, FollowerMotion, Join, PeakCoefficients, Program, Segment, SegmentKind,
     peak_coefficients,
 };
+pub use sizing::{Contact, FollowerLoad};
 pub use spec::{CamDesign, CamSpec, FaceSpec, FollowerSpec, SegmentSpec};

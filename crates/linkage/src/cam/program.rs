@@ -149,6 +149,17 @@ impl Program {
         &self.segments
     }
 
+    /// The largest lift of its rises and returns.
+    pub fn largest_lift(&self) -> f64 {
+        self.segments
+            .iter()
+            .map(|s| match s.kind {
+                SegmentKind::Rise { lift, .. } | SegmentKind::Return { lift, .. } => lift,
+                SegmentKind::Dwell => 0.0,
+            })
+            .fold(0.0, f64::max)
+    }
+
     /// The follower's motion at cam angle `theta` (rad, any turn).
     pub fn at(&self, theta: f64) -> FollowerMotion {
         let t = theta.rem_euclid(TAU);
@@ -207,15 +218,11 @@ impl Program {
     /// The class of a join's jumps, each compared with its own scale: the largest
     /// lift over the shortest segment's angle to the derivative's power.
     fn class(&self, jumps: &[f64; 4]) -> Continuity {
-        let lift = self.bases.iter().fold(0.0_f64, |m, b| m.max(b.abs())).max(
-            self.segments
-                .iter()
-                .map(|s| match s.kind {
-                    SegmentKind::Rise { lift, .. } | SegmentKind::Return { lift, .. } => lift,
-                    SegmentKind::Dwell => 0.0,
-                })
-                .fold(0.0, f64::max),
-        );
+        let lift = self
+            .bases
+            .iter()
+            .fold(0.0_f64, |m, b| m.max(b.abs()))
+            .max(self.largest_lift());
         let shortest = self
             .segments
             .iter()
