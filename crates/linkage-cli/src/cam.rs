@@ -41,12 +41,25 @@ pub fn run(path: &Path, samples: usize, format: CamFormat, dxf: Option<&Path>) -
     let d = design(path)?;
     let points = sampled(&d, samples);
     if let Some(out) = dxf {
-        crate::cam_dxf::write(out, &d, &points)?;
+        write_dxf(out, &d, &points)?;
     }
     match format {
         CamFormat::Csv => rows_csv(&d, &points),
         CamFormat::Json => figures_json(&d, &points),
     }
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn write_dxf(out: &Path, d: &CamDesign, points: &[CamPoint]) -> Result<()> {
+    crate::cam_dxf::write(out, d, points)
+}
+
+/// The CLI is only type-checked for wasm32, where the DXF crate does not build.
+#[cfg(target_arch = "wasm32")]
+fn write_dxf(_: &Path, _: &CamDesign, _: &[CamPoint]) -> Result<()> {
+    Err(CliError::refused(
+        "--dxf is not available in a wasm32 build".to_string(),
+    ))
 }
 
 const HEADER: [&str; 12] = [

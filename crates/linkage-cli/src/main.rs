@@ -7,6 +7,7 @@
 
 mod args;
 mod cam;
+#[cfg(not(target_arch = "wasm32"))]
 mod cam_dxf;
 mod commands;
 mod counts;

@@ -1,7 +1,7 @@
 //! Cams: motion laws and the programs they make over a cam's turn.
 //!
-//! - [`laws`]: the normalised motion laws (dwell aside) with their derivatives.
-//! - [`program`]: segments (rise, dwell, return) over the turn, the follower's motion
+//! - [`Law`]: the normalised motion laws (dwell aside) with their derivatives.
+//! - [`Program`]: segments (rise, dwell, return) over the turn, the follower's motion
 //!   at any cam angle, the continuity at every join, the laws' peak coefficients.
 //! - [`DiscCam`]: a disc cam with a translating or oscillating follower: pitch curve,
 //!   profile, pressure angle and radii of curvature at any cam angle; the smallest
