@@ -148,3 +148,46 @@ fn the_smallest_base_circle_meets_the_pressure_angle_limit() {
         .expect_err("past 90°");
     assert!(e.to_string().contains("between 0 and 90"), "{e}");
 }
+
+/// A roller that keeps the pressure angle within the limit on its own (a small lift
+/// on a large roller) gives the search's floor, at once: the search used to halve
+/// towards a base circle of zero and never end (found by `cam_random.rs`).
+#[test]
+fn a_roller_that_meets_the_limit_alone_gives_the_floor() {
+    let rr = 0.02;
+    let follower = Follower::Translating {
+        offset_m: -0.0008,
+        face: Face::Roller { radius_m: rr },
+    };
+    let seg = |kind, angle_rad| Segment { kind, angle_rad };
+    let small = Program::new(vec![
+        seg(
+            SegmentKind::Rise {
+                law: Law::ModifiedSine,
+                lift: 0.0005,
+            },
+            3.0,
+        ),
+        seg(
+            SegmentKind::Return {
+                law: Law::SimpleHarmonic,
+                lift: 0.0005,
+            },
+            2.0 * PI - 3.0,
+        ),
+    ])
+    .expect("a turn");
+    let cam = DiscCam::new(small, 0.0035, follower).expect("fits");
+    let rb = cam
+        .smallest_base_radius(40f64.to_radians())
+        .expect("a radius");
+    assert!(rb > 0.0 && rb <= 1e-9 * 0.0035 * 1.000001, "{rb}");
+    let sized = DiscCam::new(cam.program.clone(), rb, follower).expect("a cam");
+    let worst = sized
+        .extremes()
+        .pressure_by_segment
+        .iter()
+        .map(|e| e.value.abs())
+        .fold(0.0, f64::max);
+    assert!(worst <= 40f64.to_radians(), "{}", worst.to_degrees());
+}

@@ -84,7 +84,9 @@ impl DiscCam {
     }
 
     /// The smallest base circle (its radius, m) at which the pressure angle stays
-    /// within `limit_rad` over the turn, found by bisection to 1e-12 relative.
+    /// within `limit_rad` over the turn, found by bisection to 1e-12 relative. Where a
+    /// roller keeps the angle within the limit on any base circle, the answer is the
+    /// floor of the search, 1e-9 of the larger of the lift and the base radius.
     ///
     /// # Errors
     /// A limit outside (0°, 90°), or one no base circle up to 10⁴ times the lift
@@ -120,8 +122,19 @@ impl DiscCam {
                 });
             }
         }
-        let mut lo = 0.0;
-        while hi - lo > 1e-12 * hi {
+        // A roller can keep the pressure angle within the limit on its own, down to
+        // any base circle: then the floor is the answer.
+        let floor = 1e-9 * scale;
+        if fits(floor) {
+            return Ok(floor);
+        }
+        let mut lo = floor;
+        // Halving a bracket of at most 10⁴ · scale down to 1e-12 of itself takes
+        // under 60 steps; the bound keeps a non-monotone case from looping.
+        for _ in 0..200 {
+            if hi - lo <= 1e-12 * hi {
+                break;
+            }
             let mid = 0.5 * (lo + hi);
             if fits(mid) {
                 hi = mid;
