@@ -10,6 +10,7 @@ use linkage::polygon::{Quantity, Symbol, VectorEquation};
 use linkage_diagram::PolygonFigure;
 use linkage_diagram::label::Label;
 use linkage_diagram::layout::LaidPolygon;
+use linkage_diagram::polygon_figure::title;
 
 use crate::state::AppState;
 use crate::ui::construction::ConstructionView;
@@ -64,13 +65,6 @@ impl PolygonPane {
             .default_open(false)
             .show(ui, |ui| self.construction.ui(ui, st));
         crate::ui::force_polygons::section(ui, &st.session);
-    }
-}
-
-fn title(q: Quantity) -> &'static str {
-    match q {
-        Quantity::Velocity => "Velocity polygon",
-        Quantity::Acceleration => "Acceleration polygon",
     }
 }
 

@@ -10,7 +10,7 @@ use linkage::analysis::{Output, outputs};
 use linkage::force_polygon::{ForcePolygons, force_polygons};
 use linkage::kinetostatics::Kinetostatics;
 use linkage::polygon::{VectorEquation, polygons};
-use linkage::sweep::{sweep, sweep_range};
+use linkage::sweep::sweep;
 use linkage::{Kinematics, LinkageError, Mechanism, Result, Solution};
 
 /// Positions on the sheet unless asked.
@@ -88,15 +88,9 @@ impl CourseSheet {
                 &format!("0 to {}", count - 1),
             ));
         }
-        let ([a, b], full) = sweep_range(k)?;
-        let div = if full { count } else { count - 1 };
-        let speed = k.mechanism().driver.speed_rad_s;
-        let mut positions = Vec::with_capacity(count);
-        for i in 0..count {
-            let mut s = k.empty_solution();
-            k.solve_into(a + (b - a) * i as f64 / div as f64, speed, &mut s)?;
-            positions.push(s);
-        }
+        // The sweep's own positions: evenly over the range, a full turn without its
+        // repeated end, branch points stepped past.
+        let positions = sweep(k, count)?.solutions;
         let chosen: Vec<ChosenPosition> = chosen
             .iter()
             .map(|&number| ChosenPosition {

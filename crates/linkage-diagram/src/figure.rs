@@ -74,14 +74,16 @@ pub trait Figure {
     fn arrow_label(&self, index: usize) -> Option<Label>;
     /// The named vertices, the pole (if any) first.
     fn vertices(&self) -> &[Vertex];
-    /// The box of its arrows and vertices, in its units.
-    fn extent(&self) -> Rect;
-}
-
-/// The box of `ends` and `vertices`; a point at the origin when there are none.
-pub(crate) fn extent_of(ends: impl Iterator<Item = Pt>, vertices: &[Vertex]) -> Rect {
-    Rect::around(ends.chain(vertices.iter().map(|v| v.at))).unwrap_or(Rect {
-        min: [0.0; 2],
-        max: [0.0; 2],
-    })
+    /// The box of its arrows and vertices, in its units (a point at the origin when
+    /// it has none).
+    fn extent(&self) -> Rect {
+        let ends = self
+            .arrow_ends()
+            .into_iter()
+            .flat_map(|(from, to, _)| [from, to]);
+        Rect::around(ends.chain(self.vertices().iter().map(|v| v.at))).unwrap_or(Rect {
+            min: [0.0; 2],
+            max: [0.0; 2],
+        })
+    }
 }

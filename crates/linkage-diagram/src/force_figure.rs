@@ -6,8 +6,8 @@
 use linkage::Mechanism;
 use linkage::force_polygon::{CoupleTerm, ForceVector, Stage, StagePolygon, SymbolParts};
 
-use crate::figure::{ArrowStyle, Figure, Vertex, extent_of};
-use crate::geometry::{Pt, Rect};
+use crate::figure::{ArrowStyle, Figure, Vertex};
+use crate::geometry::Pt;
 use crate::label::{Label, Run, Script};
 
 /// The unit of a force polygon.
@@ -113,13 +113,6 @@ impl Figure for ForceFigure {
 
     fn vertices(&self) -> &[Vertex] {
         &self.vertices
-    }
-
-    fn extent(&self) -> Rect {
-        extent_of(
-            self.arrows.iter().flat_map(|a| [a.from, a.to]),
-            &self.vertices,
-        )
     }
 }
 

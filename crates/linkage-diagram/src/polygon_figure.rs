@@ -6,8 +6,8 @@
 use linkage::polygon::{Component, Quantity, Symbol, Term, VectorEquation};
 use linkage::{Mechanism, Solution};
 
+use crate::figure::Figure;
 pub use crate::figure::{ArrowStyle, Vertex};
-use crate::figure::{Figure, extent_of};
 use crate::geometry::{Pt, Rect};
 use crate::label::Label;
 
@@ -110,10 +110,7 @@ impl PolygonFigure {
 
     /// The box of its arrows and vertices, in its units.
     pub fn extent(&self) -> Rect {
-        extent_of(
-            self.arrows.iter().flat_map(|a| [a.from, a.to]),
-            &self.vertices,
-        )
+        Figure::extent(self)
     }
 
     /// The label of an arrow: its symbol typeset, or for an absolute vector none
@@ -138,10 +135,6 @@ impl Figure for PolygonFigure {
     fn vertices(&self) -> &[Vertex] {
         &self.vertices
     }
-
-    fn extent(&self) -> Rect {
-        Self::extent(self)
-    }
 }
 
 /// The style a term's component is drawn in.
@@ -152,6 +145,14 @@ fn style_of(symbol: &Symbol) -> ArrowStyle {
         Component::Tangential => ArrowStyle::Tangential,
         Component::Coriolis => ArrowStyle::Coriolis,
         Component::Sliding => ArrowStyle::Sliding,
+    }
+}
+
+/// The title of a quantity's polygon: "Velocity polygon".
+pub fn title(quantity: Quantity) -> &'static str {
+    match quantity {
+        Quantity::Velocity => "Velocity polygon",
+        Quantity::Acceleration => "Acceleration polygon",
     }
 }
 

@@ -12,13 +12,13 @@ use linkage::{Mechanism, Solution};
 use crate::geometry::Rect;
 use crate::label::{Label, Script};
 use crate::layout::{Sizes, layout_polygon};
-use crate::polygon_figure::{PolygonFigure, unit};
+use crate::polygon_figure::{self, PolygonFigure, unit};
 use crate::pose_figure::PoseFigure;
 use crate::pose_layout::{LaidPose, layout_pose};
 pub use crate::svg_draw::round_text;
 use crate::svg_draw::{
-    FONT, MARGIN, PAGE_H, PAGE_W, TITLE_H, circle, document, frame, label_at, leaders_and_label,
-    line, measure, polygon, polygon_shape, scale_bar, text_at,
+    FONT, MARGIN, PAGE_H, PAGE_W, circle, document, frame, label_at, leaders_and_label, line,
+    measure, polygon, polygon_shape, scale_bar, text_at, titled_pane,
 };
 
 /// Which parts the sheet holds.
@@ -104,18 +104,7 @@ pub fn sheet(pos: &Position<'_>, parts: Parts) -> String {
             let fig = PolygonFigure::of_position(q, m, s, pos.equations);
             let pane = Rect::from_min_size([MARGIN + i as f64 * (w + 10.0), y], w, 320.0);
             // The figure keeps clear of the pane's title.
-            let below_title = Rect {
-                min: [pane.min[0], pane.min[1] + TITLE_H],
-                max: pane.max,
-            };
-            frame(&mut body, &pane);
-            text_at(
-                &mut body,
-                [pane.min[0] + 6.0, pane.min[1] + 15.0],
-                polygon_title(q),
-                13.0,
-                "bold",
-            );
+            let below_title = titled_pane(&mut body, &pane, polygon_figure::title(q), 13.0);
             polygon(
                 &mut body,
                 fig.unit(),
@@ -135,13 +124,6 @@ pub fn sheet(pos: &Position<'_>, parts: Parts) -> String {
         y = crate::svg_forces::forces(&mut body, m, fp, y + 10.0, sizes);
     }
     document(&title, &body, PAGE_H.max(y + MARGIN))
-}
-
-fn polygon_title(q: Quantity) -> &'static str {
-    match q {
-        Quantity::Velocity => "Velocity polygon",
-        Quantity::Acceleration => "Acceleration polygon",
-    }
 }
 
 /// Draws the pose; the centres not drawn are listed below it. Returns the y below.

@@ -12,9 +12,10 @@ use linkage::{Mechanism, Solution};
 use crate::course::{ChosenPosition, CourseSheet, OutputSeries};
 use crate::geometry::{Pt, Rect};
 use crate::layout::{Fit, Sizes, layout_polygon, round_scale};
-use crate::polygon_figure::PolygonFigure;
+use crate::polygon_figure::{PolygonFigure, title};
 use crate::svg_draw::{
     FONT, MARGIN, PAGE_W, TITLE_H, document, frame, line, measure, polygon, round_text, text_at,
+    titled_pane,
 };
 use linkage::polygon::Quantity;
 
@@ -111,23 +112,8 @@ fn chosen_polygons(
         .enumerate()
     {
         let pane = Rect::from_min_size([MARGIN + i as f64 * (w + 10.0), y], w, POLYGON_H);
-        frame(body, &pane);
+        let below = titled_pane(body, &pane, title(q), 12.0);
         let fig = PolygonFigure::of_position(q, m, s, &chosen.equations);
-        let below = Rect {
-            min: [pane.min[0], pane.min[1] + TITLE_H],
-            max: pane.max,
-        };
-        let name = match q {
-            Quantity::Velocity => "Velocity polygon",
-            Quantity::Acceleration => "Acceleration polygon",
-        };
-        text_at(
-            body,
-            [pane.min[0] + 6.0, pane.min[1] + 15.0],
-            name,
-            12.0,
-            "bold",
-        );
         polygon(
             body,
             fig.unit(),

@@ -37,6 +37,23 @@ pub(crate) fn document(title: &str, body: &str, height: f64) -> String {
     )
 }
 
+/// A framed pane with `title` (bold, `title_px`) at its top left; returns the part
+/// below the title, where its figure goes.
+pub(crate) fn titled_pane(out: &mut String, pane: &Rect, title: &str, title_px: f64) -> Rect {
+    frame(out, pane);
+    text_at(
+        out,
+        [pane.min[0] + 6.0, pane.min[1] + 15.0],
+        title,
+        title_px,
+        "bold",
+    );
+    Rect {
+        min: [pane.min[0], pane.min[1] + TITLE_H],
+        max: pane.max,
+    }
+}
+
 /// `#rrggbb`.
 pub(crate) fn hex([r, g, b]: [u8; 3]) -> String {
     format!("#{r:02x}{g:02x}{b:02x}")

@@ -10,7 +10,7 @@ use crate::force_figure::{
 };
 use crate::geometry::Rect;
 use crate::layout::{Sizes, layout_polygon};
-use crate::svg_draw::{FONT, MARGIN, PAGE_W, TITLE_H, frame, label_at, measure, polygon, text_at};
+use crate::svg_draw::{FONT, MARGIN, PAGE_W, label_at, measure, polygon, text_at, titled_pane};
 
 /// Panes per row.
 const PER_ROW: usize = 2;
@@ -33,19 +33,7 @@ pub(crate) fn forces(
     for row in fp.stages.chunks(PER_ROW) {
         for (i, stage) in row.iter().enumerate() {
             let pane = Rect::from_min_size([MARGIN + i as f64 * (w + 10.0), y], w, PANE_H);
-            frame(out, &pane);
-            let title = stage_title(stage, m);
-            text_at(
-                out,
-                [pane.min[0] + 6.0, pane.min[1] + 15.0],
-                &title,
-                12.0,
-                "bold",
-            );
-            let below_title = Rect {
-                min: [pane.min[0], pane.min[1] + TITLE_H],
-                max: pane.max,
-            };
+            let below_title = titled_pane(out, &pane, &stage_title(stage, m), 12.0);
             let fig = ForceFigure::new(stage, m);
             if fig.arrows.is_empty() {
                 let note = "no force on these links here: the polygon is a point";

@@ -78,11 +78,7 @@ pub(super) fn largest(f: &dyn Fn(f64) -> f64, a: f64, b: f64) -> Extreme {
 impl DiscCam {
     /// The cam's extremes over the turn.
     pub fn extremes(&self) -> CamExtremes {
-        let mut starts = vec![0.0];
-        for s in self.program.segments() {
-            starts.push(starts.last().copied().unwrap_or(0.0) + s.angle_rad);
-        }
-        let spans: Vec<(f64, f64)> = starts.windows(2).map(|w| (w[0], w[1])).collect();
+        let spans = self.program.spans();
         let pressure_by_segment = spans
             .iter()
             .map(|&(a, b)| {

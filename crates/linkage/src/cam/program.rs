@@ -149,6 +149,15 @@ impl Program {
         &self.segments
     }
 
+    /// Each segment's cam angles, (start, end), rad.
+    pub fn spans(&self) -> Vec<(f64, f64)> {
+        self.starts
+            .iter()
+            .zip(&self.segments)
+            .map(|(&start, seg)| (start, start + seg.angle_rad))
+            .collect()
+    }
+
     /// The largest lift of its rises and returns.
     pub fn largest_lift(&self) -> f64 {
         self.segments

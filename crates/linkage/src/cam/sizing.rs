@@ -73,14 +73,12 @@ impl DiscCam {
     /// alone keeps it there), found by a scan and a golden-section search per
     /// segment.
     pub fn least_preload(&self, speed_rad_s: f64, l: &FollowerLoad) -> f64 {
-        let mut start = 0.0;
-        let mut most = f64::NEG_INFINITY;
-        for s in self.program.segments() {
-            let f = |t: f64| -self.demand(t, speed_rad_s, l);
-            most = most.max(super::extremes::largest(&f, start, start + s.angle_rad).value);
-            start += s.angle_rad;
-        }
-        most.max(0.0)
+        let f = |t: f64| -self.demand(t, speed_rad_s, l);
+        self.program
+            .spans()
+            .into_iter()
+            .map(|(a, b)| super::extremes::largest(&f, a, b).value)
+            .fold(0.0, f64::max)
     }
 
     /// The smallest base circle (its radius, m) at which the pressure angle stays

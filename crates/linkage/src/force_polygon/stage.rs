@@ -351,10 +351,15 @@ impl<'a> Stages<'a> {
         let ForceSymbol::Reaction { point, from, on } = f.symbol else {
             return false;
         };
-        unknown.iter().any(|&n| {
-            let (a, b) = self.ends(self.joints[n]);
-            self.point(self.joints[n]) == point && ((a, b) == (from, on) || (b, a) == (from, on))
-        })
+        unknown
+            .iter()
+            .any(|&n| self.point(self.joints[n]) == point && self.between(n, from, on))
+    }
+
+    /// Whether joint `n` joins links `x` and `y` (either way round).
+    fn between(&self, n: usize, x: LinkId, y: LinkId) -> bool {
+        let (a, b) = self.ends(self.joints[n]);
+        (a, b) == (x, y) || (b, a) == (x, y)
     }
 
     /// The couples on the stage's links: loads and inertia, the guides' couples
@@ -363,10 +368,7 @@ impl<'a> Stages<'a> {
         let mut out: Vec<CoupleTerm> = links.iter().flat_map(|&l| self.known_couples(l)).collect();
         for c in &mut out {
             if let CoupleSymbol::Guide { from, on } = c.symbol {
-                c.known = !unknown.iter().any(|&n| {
-                    let (a, b) = self.ends(self.joints[n]);
-                    (a, b) == (from, on) || (b, a) == (from, on)
-                });
+                c.known = !unknown.iter().any(|&n| self.between(n, from, on));
             }
         }
         if links == [self.m.driver.link] {
