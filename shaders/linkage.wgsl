@@ -23,6 +23,7 @@ const SPRING: u32 = 5u;
 const ARROW: u32 = 6u;
 const LINE: u32 = 7u;
 const DASH: u32 = 8u;
+const FILL: u32 = 9u;
 
 struct Instance {
     @location(0) p0: vec2<f32>,
@@ -205,6 +206,10 @@ fn fs_main(in: VertexOut) -> @location(0) vec4<f32> {
         alpha = coverage(min(shaft, tip));
     } else if in.kind == LINE {
         alpha = coverage(segment(p, in.p0, in.p1).x - in.radius);
+    } else if in.kind == FILL {
+        // A triangle of one flat colour without an outline: pieces of a larger area
+        // (a cam's disc) that meet edge to edge.
+        alpha = coverage(triangle(p, in.p0, in.p1, in.p2) - in.radius);
     } else if in.kind == DASH {
         // Dashes of param.x metres with equal gaps.
         let s = segment(p, in.p0, in.p1);

@@ -38,6 +38,7 @@ const uint SPRING = 5u;
 const uint ARROW = 6u;
 const uint LINE = 7u;
 const uint DASH = 8u;
+const uint FILL = 9u;
 
 layout(std140) uniform View_block_0Fragment { View _group_0_binding_0_fs; };
 
@@ -272,12 +273,18 @@ void main() {
                                     float _e309 = coverage((_e305.x - in_.radius));
                                     alpha = _e309;
                                 } else {
-                                    if ((in_.kind == DASH)) {
-                                        vec2 _e315 = segment(p_3, in_.p0_, in_.p1_);
-                                        float along = (_e315.y * length((in_.p1_ - in_.p0_)));
-                                        float gap = (((abs((fract((along / (2.0 * in_.param.x))) - 0.5)) * 2.0) * in_.param.x) - (0.5 * in_.param.x));
-                                        float _e346 = coverage(max((_e315.x - in_.radius), -(gap)));
-                                        alpha = _e346;
+                                    if ((in_.kind == FILL)) {
+                                        float _e316 = triangle(p_3, in_.p0_, in_.p1_, in_.p2_);
+                                        float _e319 = coverage((_e316 - in_.radius));
+                                        alpha = _e319;
+                                    } else {
+                                        if ((in_.kind == DASH)) {
+                                            vec2 _e325 = segment(p_3, in_.p0_, in_.p1_);
+                                            float along = (_e325.y * length((in_.p1_ - in_.p0_)));
+                                            float gap = (((abs((fract((along / (2.0 * in_.param.x))) - 0.5)) * 2.0) * in_.param.x) - (0.5 * in_.param.x));
+                                            float _e356 = coverage(max((_e325.x - in_.radius), -(gap)));
+                                            alpha = _e356;
+                                        }
                                     }
                                 }
                             }
@@ -287,13 +294,13 @@ void main() {
             }
         }
     }
-    float _e347 = alpha;
-    float a_2 = (_e347 * in_.color.w);
+    float _e357 = alpha;
+    float a_2 = (_e357 * in_.color.w);
     if ((a_2 <= 0.002)) {
         discard;
     }
-    vec4 _e353 = colour;
-    _fs2p_location0 = vec4((_e353.xyz * a_2), a_2);
+    vec4 _e363 = colour;
+    _fs2p_location0 = vec4((_e363.xyz * a_2), a_2);
     return;
 }
 

@@ -38,6 +38,7 @@ const uint SPRING = 5u;
 const uint ARROW = 6u;
 const uint LINE = 7u;
 const uint DASH = 8u;
+const uint FILL = 9u;
 
 layout(std140) uniform View_block_0Vertex { View _group_0_binding_0_vs; };
 

@@ -5,26 +5,12 @@
 
 use glam::Vec2;
 
+use super::cam_shapes::{cam_discs, rollers};
+use super::drawn::{Drawn, colour};
 use super::shape::{Kind, Shape};
 use super::view::Camera;
 use crate::session::Session;
 use linkage::PointId;
-
-/// Colours, gamma-space RGBA.
-pub(super) mod colour {
-    pub const LINK: [f32; 4] = [0.28, 0.47, 0.72, 1.0];
-    pub const PLATE: [f32; 4] = [0.36, 0.55, 0.78, 0.85];
-    pub const DRIVER: [f32; 4] = [0.82, 0.52, 0.18, 1.0];
-    pub const GROUND: [f32; 4] = [0.55, 0.55, 0.55, 1.0];
-    pub const PIN: [f32; 4] = [0.12, 0.12, 0.14, 1.0];
-    pub const MARK: [f32; 4] = [0.75, 0.2, 0.55, 1.0];
-    pub const BLOCK: [f32; 4] = [0.45, 0.62, 0.42, 1.0];
-    pub const SPRING: [f32; 4] = [0.78, 0.25, 0.2, 1.0];
-    pub const TRACE: [f32; 4] = [0.62, 0.38, 0.85, 1.0];
-    pub const VELOCITY: [f32; 4] = [0.1, 0.65, 0.25, 1.0];
-    pub const ACCELERATION: [f32; 4] = [0.9, 0.2, 0.15, 1.0];
-    pub const FORCE: [f32; 4] = [0.16, 0.2, 0.62, 1.0];
-}
 
 /// What to draw besides the links.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -96,30 +82,6 @@ pub(super) fn ground_pivot(push: &mut impl FnMut(Option<Shape>), c: Vec2, pin: f
     }
 }
 
-/// The pose as drawn: where its points fall in the camera's local coordinates, and
-/// how thick its bars and pins are.
-struct Drawn<'a> {
-    s: &'a Session,
-    cam: &'a Camera,
-    /// A bar's width, m.
-    bar: f32,
-    /// A pin's radius, m.
-    pin: f32,
-}
-
-impl Drawn<'_> {
-    /// Point `p` of the pose, m.
-    fn at(&self, p: PointId) -> [f64; 2] {
-        let q = self.s.pose().points[p].position;
-        [q.x, q.y]
-    }
-
-    /// Point `p` in the camera's local coordinates.
-    fn pos(&self, p: PointId) -> Vec2 {
-        self.cam.local(self.at(p))
-    }
-}
-
 /// Fills `out` with the shapes of the session's current pose.
 pub fn build(
     out: &mut Vec<Shape>,
@@ -150,7 +112,9 @@ pub fn build(
     if layers.traces {
         push_traces(&mut push, s, cam, 0.22 * d.bar);
     }
+    cam_discs(&mut push, &d);
     links(&mut push, &d);
+    rollers(&mut push, &d);
     sliders_springs_and_pins(&mut push, &d);
     arrows(&mut push, &d, layers, m_per_px)
 }

@@ -5,7 +5,8 @@
 use glam::Vec2;
 use linkage::drawing::Drawing;
 
-use super::build::{coil, colour, ground_pivot};
+use super::build::{coil, ground_pivot};
+use super::drawn::colour;
 use super::shape::{Kind, Shape};
 use super::view::Camera;
 

@@ -6,7 +6,9 @@
 //! with the GLSL naga translated from the same WGSL, `shaders/gl/`).
 
 pub mod build;
+mod cam_shapes;
 pub mod drawing_shapes;
+mod drawn;
 pub mod shape;
 pub mod view;
 

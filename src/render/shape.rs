@@ -27,6 +27,9 @@ pub enum Kind {
     Line = 7,
     /// Dashed line `p0`–`p1`, dashes `param.x` long.
     Dash = 8,
+    /// Triangle `p0 p1 p2` of one flat colour, grown by `radius` (pieces of a larger
+    /// area, such as a cam's disc, that meet edge to edge without seams).
+    Fill = 9,
 }
 
 /// One instance: positions in metres relative to the view centre (f32 is enough

@@ -11,13 +11,23 @@ use crate::session::dynamic_run::{IntegratorChoice, METHODS};
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
 
-/// "degrees of freedom: 3(n − 1) − 2j = …" for the mechanism's links and joints.
+/// "degrees of freedom: 3(n − 1) − 2j = …" for the mechanism's links and joints,
+/// with "− h" for its cam contacts (higher pairs, one constraint each) where it has
+/// any.
 pub fn mobility_line(m: &linkage::Mechanism) -> String {
     let n = m.links.len();
     let j = m.revolutes.len() + m.sliders.len();
-    let dof = 3 * (n as i64 - 1) - 2 * j as i64;
+    let h = m.cams.len();
+    let dof = 3 * (n as i64 - 1) - 2 * j as i64 - h as i64;
+    if h == 0 {
+        return format!(
+            "degrees of freedom: 3(n − 1) − 2j = 3·{} − 2·{j} = {dof} ({n} links, {j} joints)",
+            n - 1
+        );
+    }
     format!(
-        "degrees of freedom: 3(n − 1) − 2j = 3·{} − 2·{j} = {dof} ({n} links, {j} joints)",
+        "degrees of freedom: 3(n − 1) − 2j − h = 3·{} − 2·{j} − {h} = {dof} ({n} links, {j} \
+         joints, {h} cam contacts)",
         n - 1
     )
 }
@@ -42,7 +52,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     ))
     .on_hover_text("Smallest singular value ratio of the group Jacobians: how far from a dead point or toggle.");
     ui.label(mobility_line(k.mechanism()))
-        .on_hover_text("Grübler–Kutzbach count over links and lower pairs; the solver also checks the true mobility from the constraint Jacobian's rank, which redundant joints do not fool.");
+        .on_hover_text("Grübler–Kutzbach count over links, lower pairs and cam contacts; the solver also checks the true mobility from the constraint Jacobian's rank, which redundant joints do not fool.");
     if st.timing.show {
         ui.label(format!(
             "CPU per frame: {:.0} µs (pose, polygons and shapes {:.0} µs)",

@@ -78,7 +78,7 @@ fn circle_diagram(painter: &egui::Painter, rect: Rect, m: &Mechanism, found: &In
             FoundBy::Pin(_) | FoundBy::Slide(_) => {
                 painter.line_segment([a, b], stroke);
             }
-            FoundBy::Kennedy(_) | FoundBy::Velocities => {
+            FoundBy::Kennedy(_) | FoundBy::Velocities | FoundBy::CamContact(_) => {
                 painter.extend(egui::Shape::dashed_line(&[a, b], stroke, 4.0, 3.0));
             }
         }

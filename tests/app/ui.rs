@@ -142,6 +142,18 @@ fn main_view_snapshot() {
     h.snapshot("gravity_flipper_50deg");
 }
 
+/// The cam on the feed's main shaft: its disc turns with the crank and the roller
+/// rides it, at a crank angle inside the cam's rise.
+#[test]
+fn cam_and_four_bar_on_one_shaft_snapshot() {
+    let mut h = harness();
+    open_scene(&mut h, "paper_cup_cam_feed");
+    h.get_by_role_and_label(Role::Slider, CRANK_LABEL)
+        .set_value_accesskit(60.0);
+    h.run();
+    h.snapshot("paper_cup_cam_feed_60deg");
+}
+
 #[test]
 fn an_edit_shows_in_the_view_in_the_frame_that_makes_it() {
     let mut h = harness();

@@ -267,6 +267,9 @@ fn instant_centres_json(m: &Mechanism, s: &Solution) -> Value {
                     format!("Kennedy via {}, {}", m.links[k].name, m.links[l].name)
                 }
                 FoundBy::Velocities => "velocities (Kennedy's lines coincide here)".into(),
+                FoundBy::CamContact(c) => {
+                    format!("cam {}: common normal and Kennedy", m.cams[c].name)
+                }
             };
             match c.centre {
                 Centre::At(p) => json!({"links": names(c.links), "at": p, "found_by": found_by}),

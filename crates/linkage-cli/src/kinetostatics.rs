@@ -30,8 +30,10 @@ pub fn run(args: &SceneArgs, steps: usize, format: Format) -> Result<String> {
             for j in &s.joints {
                 header.push(format!("{}_fx", j.name));
                 header.push(format!("{}_fy", j.name));
-                if j.kind == JointKind::Prismatic {
-                    header.push(format!("{}_couple", j.name));
+                match j.kind {
+                    JointKind::Prismatic => header.push(format!("{}_couple", j.name)),
+                    JointKind::CamContact => header.push(format!("{}_push", j.name)),
+                    JointKind::Revolute => {}
                 }
             }
             header.push("amplification".into());
@@ -43,8 +45,10 @@ pub fn run(args: &SceneArgs, steps: usize, format: Format) -> Result<String> {
         ];
         for j in &s.joints {
             row.extend([Some(j.force.0), Some(j.force.1)]);
-            if j.kind == JointKind::Prismatic {
-                row.push(Some(j.couple));
+            match j.kind {
+                JointKind::Prismatic => row.push(Some(j.couple)),
+                JointKind::CamContact => row.push(j.push),
+                JointKind::Revolute => {}
             }
         }
         row.push(s.amplification);

@@ -25,6 +25,7 @@ macro_rules! embedded {
 /// the directory agree.
 pub const BUILTIN_SCENES: &[BuiltinScene] = &[
     embedded!("scenes", "paper_cup_feed"),
+    embedded!("scenes", "paper_cup_cam_feed"),
     embedded!("scenes", "die_cutter"),
     embedded!("scenes", "gravity_flipper"),
     embedded!("scenes", "die_cutter_as_printed"),

@@ -13,6 +13,8 @@ pub enum DyadKind {
     Rpr,
     /// A pin between two sliders.
     Prp,
+    /// Not a dyad: a cam's follower, one link placed by the cam.
+    CamFollower,
 }
 
 impl std::fmt::Display for DyadKind {
@@ -22,6 +24,7 @@ impl std::fmt::Display for DyadKind {
             DyadKind::Rrp => "RRP",
             DyadKind::Rpr => "RPR",
             DyadKind::Prp => "PRP",
+            DyadKind::CamFollower => "cam",
         })
     }
 }
@@ -41,6 +44,9 @@ pub struct DyadLabel {
 impl std::fmt::Display for DyadLabel {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         let [a, b] = &self.links;
+        if self.kind == DyadKind::CamFollower {
+            return write!(f, "cam follower {a} at {}", self.inner_point);
+        }
         write!(f, "{} dyad ({a}, {b}) at {}", self.kind, self.inner_point)
     }
 }

@@ -4,6 +4,10 @@
 //! Kennedy's theorem (the three centres of any three links lie on one line), an
 //! unknown centre P_ij being where the lines P_ik–P_kj and P_il–P_lj cross.
 //!
+//! A cam contact is a higher pair: its centre lies on the common normal at the
+//! contact, and by Kennedy on the line of the cam's and the follower's centres with
+//! ground.
+//!
 //! Kennedy's construction uses the pose alone, not the velocities, so its centres
 //! check the velocity solution independently. Points are homogeneous coordinates
 //! (x, y, w), so that a centre at infinity (two links in relative translation) is a
@@ -45,6 +49,9 @@ pub enum FoundBy {
     Slide(usize),
     /// Kennedy's theorem through the centres of these two other links.
     Kennedy([LinkId; 2]),
+    /// A cam contact (index into `Mechanism::cams`): the common normal at the contact
+    /// crossed with the line of the cam's and the follower's centres with ground.
+    CamContact(usize),
     /// Where the two links' velocities agree (Kennedy's lines all coincide here).
     Velocities,
 }
@@ -102,6 +109,19 @@ pub fn instant_centres(m: &Mechanism, s: &Solution) -> InstantCentres {
             normal,
             FoundBy::Slide(i),
         );
+    }
+    for (i, cam) in m.cams.iter().enumerate() {
+        let contact = cam.contact(s.links[cam.cam].angle_rad());
+        let at = contact.roller / scale;
+        let normal = Vector3::new(at.x, at.y, 1.0).cross(&Vector3::new(
+            contact.normal.x,
+            contact.normal.y,
+            0.0,
+        ));
+        let (c, f, g) = (cam.cam.index(), cam.follower.index(), m.ground.index());
+        if let (Some(cg), Some(fg)) = (table.get(c, g), table.get(f, g)) {
+            table.set(c, f, normal.cross(&cg.cross(&fg)), FoundBy::CamContact(i));
+        }
     }
     while table.kennedy_pass() {}
     for i in 0..n {

@@ -24,20 +24,27 @@ pub enum JointKind {
     Revolute,
     /// A slider on its guide: a force normal to the guide and a couple.
     Prismatic,
+    /// A roller on a cam: a force along the contact normal, pushing for contact (a
+    /// pull means the follower lifts off unless a spring or a groove holds it).
+    CamContact,
 }
 
 /// The reaction in one joint.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct JointReaction {
-    /// Column-ready name: revolute `POINT_LINKA_LINKB`, prismatic `SLIDER_on_GUIDE`.
+    /// Column-ready name: revolute `POINT_LINKA_LINKB`, prismatic `SLIDER_on_GUIDE`,
+    /// cam contact `ROLLER_CAM_FOLLOWER`.
     pub name: String,
     /// The joint's kind: whether `couple` is part of its reaction.
     pub kind: JointKind,
-    /// Force on the second link from the first (revolute), or on the slider from the
-    /// guide (prismatic), N, as (x, y).
+    /// Force on the second link from the first (revolute), on the slider from the
+    /// guide (prismatic), or on the follower from the cam, N, as (x, y).
     pub force: (f64, f64),
     /// Prismatic only: the couple on the slider from the guide, N·m (0 for a revolute).
     pub couple: f64,
+    /// Cam contacts only: the force along the contact normal, N; negative where the
+    /// follower would lift off the cam unless a spring or a groove holds it.
+    pub push: Option<f64>,
 }
 
 /// Kinetostatic state at one input angle.
@@ -49,7 +56,8 @@ pub struct KinetostaticState {
     pub torque_newton_euler: f64,
     /// Input torque from virtual work (power balance), N·m.
     pub torque_virtual_work: f64,
-    /// Every joint reaction, revolutes then prismatic joints in scene order.
+    /// Every joint reaction: revolutes, prismatic joints, then cam contacts, in scene
+    /// order.
     pub joints: Vec<JointReaction>,
     /// Quasi-static force amplification of the output: output force (N, slider) or
     /// torque (N·m, rocker) per N·m of input torque, i.e. 1/|output velocity ratio|;
@@ -117,10 +125,10 @@ impl Kinetostatics {
             .sum();
         let torque_virtual_work = power_needed / omega;
 
-        // Newton–Euler: unknowns (Fx, Fy) per revolute, (N, C) per prismatic, T.
+        // Newton–Euler: unknowns (Fx, Fy) per revolute, (N, C) per prismatic, N per
+        // cam contact, T.
         let row_of = |link: LinkId| moving.iter().position(|&l| l == link).map(|i| 3 * i);
-        let (nr, np) = (m.revolutes.len(), m.sliders.len());
-        let n = 2 * nr + 2 * np + 1;
+        let n = unknown_count(m);
         if 3 * moving.len() != n {
             return Err(LinkageError::NotDecomposable(format!(
                 "kinetostatics needs a 1-DOF chain: {} equations for {n} unknowns",
@@ -150,13 +158,18 @@ impl Kinetostatics {
     }
 }
 
+/// The Newton–Euler system's unknowns: (Fx, Fy) per revolute, (N, C) per prismatic
+/// joint, N per cam contact, then the input torque.
+fn unknown_count(m: &crate::Mechanism) -> usize {
+    2 * m.revolutes.len() + 2 * m.sliders.len() + m.cams.len() + 1
+}
+
 /// The Newton–Euler system's matrix: three rows per moving link (force x, y, moment
-/// about the origin), a column per unknown: (Fx, Fy) per revolute, (N, C) per
-/// prismatic joint, then the input torque.
+/// about the origin), a column per unknown (see [`unknown_count`]).
 fn reaction_matrix(m: &crate::Mechanism, sol: &Solution, moving: &[LinkId]) -> DMatrix<f64> {
     let row_of = |link: LinkId| moving.iter().position(|&l| l == link).map(|i| 3 * i);
     let (nr, np) = (m.revolutes.len(), m.sliders.len());
-    let n = 2 * nr + 2 * np + 1;
+    let n = unknown_count(m);
     let mut a = DMatrix::<f64>::zeros(n, n);
     // A force f at point p on `link` in unknown column `col` (times the unknown).
     let put = |a: &mut DMatrix<f64>, link: LinkId, col: usize, f: Vec2, p: Vec2| {
@@ -186,14 +199,20 @@ fn reaction_matrix(m: &crate::Mechanism, sol: &Solution, moving: &[LinkId]) -> D
             a[(r + 2, col + 1)] -= 1.0;
         }
     }
+    for (j, cam) in m.cams.iter().enumerate() {
+        let contact = cam.contact(sol.links[cam.cam].angle_rad());
+        let col = 2 * nr + 2 * np + j;
+        put(&mut a, cam.follower, col, contact.normal, contact.roller);
+        put(&mut a, cam.cam, col, -contact.normal, contact.point);
+    }
     if let Some(r) = row_of(m.driver.link) {
         a[(r + 2, n - 1)] = 1.0;
     }
     a
 }
 
-/// Every joint's reaction from the solved unknowns `x`, revolutes then prismatic
-/// joints.
+/// Every joint's reaction from the solved unknowns `x`: revolutes, prismatic joints,
+/// then cam contacts.
 fn reactions(m: &crate::Mechanism, sol: &Solution, x: &DVector<f64>) -> Vec<JointReaction> {
     let nr = m.revolutes.len();
     let name = |link: LinkId| m.links[link].name.as_str();
@@ -204,6 +223,7 @@ fn reactions(m: &crate::Mechanism, sol: &Solution, x: &DVector<f64>) -> Vec<Join
             kind: JointKind::Revolute,
             force: (x[2 * j], x[2 * j + 1]),
             couple: 0.0,
+            push: None,
         });
     }
     for (j, sl) in m.sliders.iter().enumerate() {
@@ -213,6 +233,24 @@ fn reactions(m: &crate::Mechanism, sol: &Solution, x: &DVector<f64>) -> Vec<Join
             kind: JointKind::Prismatic,
             force: (normal.x * x[2 * nr + 2 * j], normal.y * x[2 * nr + 2 * j]),
             couple: x[2 * nr + 2 * j + 1],
+            push: None,
+        });
+    }
+    let first_cam = 2 * nr + 2 * m.sliders.len();
+    for (j, cam) in m.cams.iter().enumerate() {
+        let normal = cam.contact(sol.links[cam.cam].angle_rad()).normal;
+        let push = x[first_cam + j];
+        joints.push(JointReaction {
+            name: format!(
+                "{}_{}_{}",
+                m.points[cam.roller].name,
+                name(cam.cam),
+                name(cam.follower)
+            ),
+            kind: JointKind::CamContact,
+            force: (normal.x * push, normal.y * push),
+            couple: 0.0,
+            push: Some(push),
         });
     }
     joints

@@ -35,6 +35,7 @@ pub mod polygon;
 pub mod real;
 mod roots_util;
 pub mod scene;
+mod scene_cam;
 mod scene_drive;
 pub mod scene_scale;
 pub mod share;

@@ -9,6 +9,7 @@
 use indexmap::IndexMap;
 use serde::{Deserialize, Serialize};
 
+pub use crate::scene_cam::CamJointSpec;
 pub use crate::scene_drive::{DriveSpec, MotorSpec, Shaft};
 
 use crate::error::{LinkageError, Result};
@@ -377,6 +378,9 @@ pub struct SceneFile {
     /// state); absent: the driver turns at its speed, or is released.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub drive: Option<DriveSpec>,
+    /// Cam joints: a disc cam on one link driving a follower link.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub cams: Vec<CamJointSpec>,
 }
 
 impl SceneFile {

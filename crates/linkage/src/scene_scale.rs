@@ -97,7 +97,43 @@ impl SceneFile {
         if let Some(drive) = &mut out.drive {
             scale_drive(drive, &k);
         }
+        scale_cams(&mut out, s);
         out
+    }
+}
+
+/// The cam joints: the roller's radius is a length, and so are a translating
+/// follower's rest and lifts; an arm's are angles.
+fn scale_cams(out: &mut SceneFile, s: f64) {
+    use crate::cam::SegmentSpec;
+    let ground_points: Vec<&String> = out
+        .links
+        .iter()
+        .filter(|l| l.ground)
+        .flat_map(|l| l.points.keys())
+        .collect();
+    let arms: Vec<bool> = out
+        .cams
+        .iter()
+        .map(|cam| {
+            out.links
+                .iter()
+                .filter(|l| l.name == cam.follower)
+                .flat_map(|l| l.points.keys())
+                .any(|p| ground_points.contains(&p))
+        })
+        .collect();
+    for (cam, arm) in out.cams.iter_mut().zip(arms) {
+        cam.roller_radius *= s;
+        if arm {
+            continue;
+        }
+        cam.rest *= s;
+        for segment in &mut cam.segments {
+            if let SegmentSpec::Rise { lift, .. } | SegmentSpec::Return { lift, .. } = segment {
+                *lift *= s;
+            }
+        }
     }
 }
 

@@ -34,6 +34,9 @@ fn velocities_and_accelerations_match_finite_differences() {
             if s.conditioning < 0.3 {
                 continue; // next to a dead point the derivatives are unbounded
             }
+            if common::near_cam_join(k.mechanism(), &s, 2.0 * h) {
+                continue; // a cam's jerk jumps at its program's joins
+            }
             let (lo, hi) = (solve(&mut k, x - h), solve(&mut k, x + h));
             let (lo2, hi2) = (solve(&mut k, x - h / 2.0), solve(&mut k, x + h / 2.0));
             let rich = |f: &dyn Fn(&Solution) -> f64| {
@@ -90,7 +93,7 @@ fn velocities_and_accelerations_match_finite_differences() {
 /// 0.3 to 1 away from dead points, so there this is 1e-12 within a factor of 10).
 #[test]
 fn closed_form_and_newton_agree_to_1e12() {
-    for file in SCENES {
+    for file in SCENES.into_iter().filter(|f| common::has_newton(f)) {
         let mut cf = kinematics(file, SolverPath::ClosedForm);
         let mut nw = kinematics(file, SolverPath::Newton);
         assert_eq!(nw.path(), linkage::PathKind::Newton);

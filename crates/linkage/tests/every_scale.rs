@@ -22,6 +22,13 @@ use linkage::{Kinematics, Mechanism};
 /// Agreement asked for, as a share of each quantity's scale.
 const AGREE: f64 = 1e-9;
 
+/// Agreement of a dynamic run through a cam's joins, where the follower's jerk jumps:
+/// the reduced model's inertia is not twice differentiable there, so the adaptive
+/// integrator's error estimate is not of its order there, round-off can flip a step
+/// between accepted and refused, and the two runs then differ by the global error
+/// (DOP853 at rtol 1e-10 over a second: 1.5e-8 of the speed measured, not round-off).
+const AGREE_ACROSS_CAM_JOINS: f64 = 1e-7;
+
 /// Every scene and template file, with its text.
 fn every_scene() -> Vec<(String, String)> {
     let mut out: Vec<(String, String)> = common::SCENES
@@ -44,8 +51,13 @@ fn kinematics(scene: &SceneFile, what: &str) -> Kinematics {
 /// `got` against `want` times `factor`, to `AGREE` of `scale` (the quantity's own
 /// size in the unscaled scene, e.g. its largest value over a cycle).
 fn close(what: &str, want: f64, got: f64, factor: f64, scale: f64) {
+    close_to(what, want, got, factor, scale, AGREE);
+}
+
+/// [`close`] to `agree` of `scale`.
+fn close_to(what: &str, want: f64, got: f64, factor: f64, scale: f64, agree: f64) {
     let expected = want * factor;
-    let allowed = AGREE * scale.abs().max(f64::MIN_POSITIVE) * factor.abs();
+    let allowed = agree * scale.abs().max(f64::MIN_POSITIVE) * factor.abs();
     assert!(
         (got - expected).abs() <= allowed,
         "{what}: {got:e}, expected {expected:e} (unscaled {want:e} × {factor:e}), off by {:e} of the scale",
@@ -193,6 +205,18 @@ fn check_table(
     b: &[Vec<f64>],
     kind: &dyn Fn(usize) -> (&'static str, f64),
 ) {
+    check_table_to(what, header, a, b, kind, AGREE);
+}
+
+/// [`check_table`] to `agree` of each column's scale.
+fn check_table_to(
+    what: &str,
+    header: &[String],
+    a: &[Vec<f64>],
+    b: &[Vec<f64>],
+    kind: &dyn Fn(usize) -> (&'static str, f64),
+    agree: f64,
+) {
     assert_eq!(a.len(), b.len(), "{what}: rows");
     let mut scales = std::collections::HashMap::new();
     for c in 0..header.len() {
@@ -207,13 +231,8 @@ fn check_table(
             continue;
         }
         for (i, (x, y)) in a.iter().zip(b).enumerate() {
-            close(
-                &format!("{what}: {name} at row {i}"),
-                x[c],
-                y[c],
-                factor,
-                scale,
-            );
+            let what = format!("{what}: {name} at row {i}");
+            close_to(&what, x[c], y[c], factor, scale, agree);
         }
     }
 }
@@ -369,11 +388,14 @@ fn check_scaled(file: &str, base: &SceneFile, exponent: i32) {
         let m = Mechanism::from_scene(scene).unwrap_or_else(|e| panic!("{what}: {e}"));
         Kinematics::with_path(m, SolverPath::Newton).unwrap_or_else(|e| panic!("{what}: {e}"))
     };
-    let (_, a) = sweep_rows(&mut newton(base, file), file);
-    let (_, b) = sweep_rows(&mut newton(&scaled, &what), &what);
-    check_table(&format!("{what}: sweep by Newton"), &header, &a, &b, &|c| {
-        column_kind(&header[c], &k)
-    });
+    // A cam joint has no Newton path (cam_joint.rs checks that it says so).
+    if base.cams.is_empty() {
+        let (_, a) = sweep_rows(&mut newton(base, file), file);
+        let (_, b) = sweep_rows(&mut newton(&scaled, &what), &what);
+        check_table(&format!("{what}: sweep by Newton"), &header, &a, &b, &|c| {
+            column_kind(&header[c], &k)
+        });
+    }
 
     if base.models != Models::Kinematics {
         let m = ka.mechanism();
@@ -395,7 +417,13 @@ fn check_scaled(file: &str, base: &SceneFile, exponent: i32) {
             ("energy", k.torque()),
             ("energy", k.torque()),
         ];
-        check_table(&format!("{what}: simulate"), &header, &a, &b, &|c| kinds[c]);
+        let agree = if base.cams.is_empty() {
+            AGREE
+        } else {
+            AGREE_ACROSS_CAM_JOINS
+        };
+        let what = format!("{what}: simulate");
+        check_table_to(&what, &header, &a, &b, &|c| kinds[c], agree);
     }
 }
 

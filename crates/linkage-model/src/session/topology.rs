@@ -1,6 +1,7 @@
 //! Which points are joints and which joints each link carries. It depends only on the
 //! mechanism, so it is derived once per edit instead of in every frame's drawing.
 
+use linkage::motion::Vec2;
 use linkage::{Mechanism, PointId};
 
 /// The joint structure of one mechanism, by point and link index.
@@ -15,7 +16,14 @@ pub struct Topology {
     pub link_others: Vec<Vec<PointId>>,
     /// Points on moving links that are not joints: drawn as marks.
     pub marks: Vec<PointId>,
+    /// Per cam joint (as `Mechanism::cams`): its profile in the cam link's own
+    /// coordinates, m, a closed outline of [`CAM_OUTLINE`] points. Made once per
+    /// mechanism, since a frame only turns it with its link.
+    pub cam_profiles: Vec<Vec<Vec2>>,
 }
+
+/// Points of a cam's drawn outline: a segment every 2 degrees of cam.
+pub const CAM_OUTLINE: usize = 180;
 
 impl Topology {
     /// The topology of `m`.
@@ -47,11 +55,17 @@ impl Topology {
             .point_ids()
             .filter(|i| joint_points.binary_search(i).is_err() && m.points[*i].link != m.ground)
             .collect();
+        let cam_profiles = m
+            .cams
+            .iter()
+            .map(|c| c.profile_on_cam(CAM_OUTLINE))
+            .collect();
         Self {
             joint_points,
             link_joints,
             link_others,
             marks,
+            cam_profiles,
         }
     }
 }

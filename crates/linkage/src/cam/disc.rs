@@ -86,6 +86,29 @@ pub struct CamPoint {
     pub profile_radius_m: f64,
 }
 
+/// The pitch curve where the roller's centre is, on a cam turning counter-clockwise.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Pitch {
+    /// The outward normal, in the frame (away from the cam's centre where convex).
+    pub(crate) outward: Vec2,
+    /// The radius of curvature, m (positive convex, negative concave).
+    pub(crate) radius_m: f64,
+}
+
+/// The pitch curve at a roller centre C (from the cam's centre, in the frame) and its
+/// first two derivatives by the cam's angle: what the point's path leaves on the cam
+/// that turns under it (see the module's documentation). Shared by the disc cam and
+/// the cam joint of a mechanism, which place C differently.
+pub(crate) fn pitch_on_turning_cam([c, c1, c2]: [Vec2; 3]) -> Pitch {
+    let q1 = c1 - j(c);
+    let q2 = c2 - j(c1) * 2.0 - c;
+    let tangent = q1 / q1.norm();
+    Pitch {
+        outward: j(tangent),
+        radius_m: -q1.norm().powi(3) / cross(q1, q2),
+    }
+}
+
 /// `v` turned by +90°.
 fn j(v: Vec2) -> Vec2 {
     Vec2::new(-v.y, v.x)
@@ -96,7 +119,7 @@ fn cross(a: Vec2, b: Vec2) -> f64 {
 }
 
 /// `v` turned by `angle`.
-fn turn(v: Vec2, angle: f64) -> Vec2 {
+pub(crate) fn turn(v: Vec2, angle: f64) -> Vec2 {
     let (s, c) = angle.sin_cos();
     Vec2::new(c * v.x - s * v.y, s * v.x + c * v.y)
 }
@@ -209,11 +232,10 @@ impl DiscCam {
     pub fn at(&self, theta: f64) -> CamPoint {
         let m = self.program.at(theta);
         let ([c, c1, c2], travel) = self.pitch_point(&m);
-        let q1 = c1 - j(c);
-        let q2 = c2 - j(c1) * 2.0 - c;
-        let tangent = q1 / q1.norm();
-        let outward = j(tangent);
-        let pitch_radius = -q1.norm().powi(3) / cross(q1, q2);
+        let Pitch {
+            outward,
+            radius_m: pitch_radius,
+        } = pitch_on_turning_cam([c, c1, c2]);
         let (profile, profile_radius, normal) = match self.face() {
             Face::Roller { radius_m } => (c - outward * radius_m, pitch_radius - radius_m, outward),
             Face::KnifeEdge => (c, pitch_radius, outward),

@@ -18,6 +18,7 @@ mod sizing;
 mod spec;
 
 pub use disc::{CamPoint, DiscCam, Face, Follower};
+pub(crate) use disc::{pitch_on_turning_cam, turn};
 pub use extremes::{CamExtremes, Extreme};
 pub use geneva::{Geneva, GenevaMotion};
 pub use laws::{Law, Motion};
@@ -26,4 +27,5 @@ pub use program::{
     peak_coefficients,
 };
 pub use sizing::{Contact, FollowerLoad};
+pub(crate) use spec::segments_of;
 pub use spec::{CamDesign, CamSpec, FaceSpec, FollowerSpec, SegmentSpec};

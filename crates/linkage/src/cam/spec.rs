@@ -141,30 +141,7 @@ impl CamSpec {
         let mm = 1e-3;
         let oscillating = matches!(self.follower, FollowerSpec::Oscillating { .. });
         let lift_unit = if oscillating { 1f64.to_radians() } else { mm };
-        let segments = self
-            .segments
-            .iter()
-            .map(|s| match *s {
-                SegmentSpec::Rise { law, lift, deg } => Segment {
-                    kind: SegmentKind::Rise {
-                        law,
-                        lift: lift * lift_unit,
-                    },
-                    angle_rad: deg.to_radians(),
-                },
-                SegmentSpec::Dwell { deg } => Segment {
-                    kind: SegmentKind::Dwell,
-                    angle_rad: deg.to_radians(),
-                },
-                SegmentSpec::Return { law, lift, deg } => Segment {
-                    kind: SegmentKind::Return {
-                        law,
-                        lift: lift * lift_unit,
-                    },
-                    angle_rad: deg.to_radians(),
-                },
-            })
-            .collect();
+        let segments = segments_of(&self.segments, lift_unit);
         let face = |f: FaceSpec| match f {
             FaceSpec::KnifeEdge => Face::KnifeEdge,
             FaceSpec::Roller { radius_mm } => Face::Roller {
@@ -201,4 +178,32 @@ impl CamSpec {
             speed_rad_s: self.rpm * std::f64::consts::TAU / 60.0,
         })
     }
+}
+
+/// The segments in SI: angles from degrees, lifts times `lift_unit` (metres or
+/// radians per unit of the file's lifts).
+pub(crate) fn segments_of(specs: &[SegmentSpec], lift_unit: f64) -> Vec<Segment> {
+    specs
+        .iter()
+        .map(|s| match *s {
+            SegmentSpec::Rise { law, lift, deg } => Segment {
+                kind: SegmentKind::Rise {
+                    law,
+                    lift: lift * lift_unit,
+                },
+                angle_rad: deg.to_radians(),
+            },
+            SegmentSpec::Dwell { deg } => Segment {
+                kind: SegmentKind::Dwell,
+                angle_rad: deg.to_radians(),
+            },
+            SegmentSpec::Return { law, lift, deg } => Segment {
+                kind: SegmentKind::Return {
+                    law,
+                    lift: lift * lift_unit,
+                },
+                angle_rad: deg.to_radians(),
+            },
+        })
+        .collect()
 }

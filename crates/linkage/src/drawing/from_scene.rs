@@ -20,6 +20,8 @@ pub enum NotDrawable {
     BlockCarriesPoints(String),
     /// A force element at a point the drawing does not have (a guide's own point).
     PointNotDrawn(String),
+    /// A cam joint: a drawing has pins and sliders only, so it would be lost.
+    CamJoint(String),
 }
 
 impl std::fmt::Display for NotDrawable {
@@ -34,6 +36,10 @@ impl std::fmt::Display for NotDrawable {
             Self::PointNotDrawn(point) => {
                 write!(f, "a force element acts at {point}, which a drawing does not have")
             }
+            Self::CamJoint(joint) => write!(
+                f,
+                "its cam joint {joint} would be lost: a drawing has pins and sliders"
+            ),
         }
     }
 }
@@ -174,6 +180,9 @@ fn check_drawable(scene: &SceneFile, m: &Mechanism) -> Result<(), NotDrawable> {
         .any(|d| matches!(d, DamperSpec::Rotational { .. }));
     if rotational || !f.torques.is_empty() || !f.stops.is_empty() {
         return Err(NotDrawable::Forces);
+    }
+    if let Some(cam) = m.cams.first() {
+        return Err(NotDrawable::CamJoint(cam.name.clone()));
     }
     match m
         .sliders

@@ -350,6 +350,7 @@ impl Drawing {
             forces: self.forces_spec(),
             solver: Default::default(),
             drive: self.drive.clone(),
+            cams: Vec::new(),
         }
     }
 

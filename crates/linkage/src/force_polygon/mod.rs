@@ -47,7 +47,9 @@ pub fn force_polygons(
     let mut stages = Vec::with_capacity(groups.len() + 1);
     for (index, &(i, j)) in groups.iter().enumerate().rev() {
         let dyad = k.dyad(index).expect("a closed-form chain names its groups");
-        stages.push(solver.solve(Stage::Group { index, dyad }, &[i, j], input_rad)?);
+        // A cam's follower is a stage of one link: its pin and the cam's push.
+        let links: &[LinkId] = if i == j { &[i] } else { &[i, j] };
+        stages.push(solver.solve(Stage::Group { index, dyad }, links, input_rad)?);
     }
     let link = m.driver.link;
     stages.push(solver.solve(Stage::Crank { link }, &[link], input_rad)?);

@@ -13,6 +13,8 @@ pub enum JointId {
     Revolute(usize),
     /// `Mechanism::sliders[n]`.
     Prismatic(usize),
+    /// `Mechanism::cams[n]`: the cam's push on its follower, along the common normal.
+    Cam(usize),
 }
 
 /// One force of a polygon.

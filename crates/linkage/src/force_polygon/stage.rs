@@ -36,6 +36,7 @@ impl<'a> Stages<'a> {
     pub(super) fn new(m: &'a Mechanism, sol: &'a Solution, forces: &ForceModel) -> Self {
         let mut joints: Vec<JointId> = (0..m.revolutes.len()).map(JointId::Revolute).collect();
         joints.extend((0..m.sliders.len()).map(JointId::Prismatic));
+        joints.extend((0..m.cams.len()).map(JointId::Cam));
         Self {
             m,
             sol,
@@ -48,11 +49,12 @@ impl<'a> Stages<'a> {
     }
 
     /// The joint's (first, second) links: a revolute's (a, b), a prismatic joint's
-    /// (guide, slider).
+    /// (guide, slider), a cam contact's (cam, follower).
     fn ends(&self, j: JointId) -> (LinkId, LinkId) {
         match j {
             JointId::Revolute(r) => (self.m.revolutes[r].a, self.m.revolutes[r].b),
             JointId::Prismatic(p) => (self.m.sliders[p].guide, self.m.sliders[p].slider),
+            JointId::Cam(c) => (self.m.cams[c].cam, self.m.cams[c].follower),
         }
     }
 
@@ -60,11 +62,15 @@ impl<'a> Stages<'a> {
         match j {
             JointId::Revolute(r) => self.m.revolutes[r].point,
             JointId::Prismatic(p) => self.m.sliders[p].point,
+            // The push acts along the common normal, which runs through the roller's
+            // centre.
+            JointId::Cam(c) => self.m.cams[c].roller,
         }
     }
 
     /// The unit loads of a joint's unknowns on its second link: (force, couple) per
-    /// unknown: x and y of a revolute; the guide's normal force and its couple.
+    /// unknown: x and y of a revolute; the guide's normal force and its couple; a
+    /// cam's push along the common normal.
     fn unit_loads(&self, j: JointId) -> Vec<(Vec2, f64)> {
         match j {
             JointId::Revolute(_) => vec![(Vec2::x(), 0.0), (Vec2::y(), 0.0)],
@@ -72,7 +78,22 @@ impl<'a> Stages<'a> {
                 let normal = perp(&self.m.sliders[p].direction(&self.sol.links));
                 vec![(normal, 0.0), (Vec2::zeros(), 1.0)]
             }
+            JointId::Cam(c) => {
+                let cam = &self.m.cams[c];
+                vec![(cam.contact(self.sol.links[cam.cam].angle_rad()).normal, 0.0)]
+            }
         }
+    }
+
+    /// The first column of each unknown joint's unknowns, and the column count.
+    fn columns(&self, unknown: &[usize]) -> (Vec<usize>, usize) {
+        let mut first = Vec::with_capacity(unknown.len());
+        let mut count = 0;
+        for &n in unknown {
+            first.push(count);
+            count += self.unit_loads(self.joints[n]).len();
+        }
+        (first, count)
     }
 
     /// Solves the stage of `links`: the joints on them not yet solved, and on the
@@ -91,7 +112,8 @@ impl<'a> Stages<'a> {
                 links.contains(&a) || links.contains(&b)
             })
             .collect();
-        let columns = 2 * unknown.len() + usize::from(crank);
+        let (first_column, joint_columns) = self.columns(&unknown);
+        let columns = joint_columns + usize::from(crank);
         if columns != 3 * links.len() {
             return Err(LinkageError::NotDecomposable(format!(
                 "a force polygon stage of {} links has {columns} unknowns",
@@ -102,7 +124,7 @@ impl<'a> Stages<'a> {
             || self.sol.links[links[0]].origin.position,
             |&n| self.sol.points[self.point(self.joints[n])].position,
         );
-        let (a, b) = self.system(links, &unknown, crank, origin);
+        let (a, b) = self.system(links, &unknown, &first_column, crank, origin);
         let x = a.lu().solve(&b).ok_or_else(|| LinkageError::Singular {
             input_deg: input_rad.to_degrees(),
             reason: "a group's reactions are indeterminate here (a dead point)".into(),
@@ -111,8 +133,8 @@ impl<'a> Stages<'a> {
             let units = self.unit_loads(self.joints[n]);
             let mut r = Reaction::default();
             for (k, (f, m)) in units.iter().enumerate() {
-                r.force += f * x[2 * c + k];
-                r.couple += m * x[2 * c + k];
+                r.force += f * x[first_column[c] + k];
+                r.couple += m * x[first_column[c] + k];
             }
             self.solved[n] = Some(r);
         }
@@ -128,6 +150,7 @@ impl<'a> Stages<'a> {
         &self,
         links: &[LinkId],
         unknown: &[usize],
+        first_column: &[usize],
         crank: bool,
         origin: Vec2,
     ) -> (DMatrix<f64>, DVector<f64>) {
@@ -140,11 +163,12 @@ impl<'a> Stages<'a> {
             let (first, second) = self.ends(joint);
             let p = self.sol.points[self.point(joint)].position - origin;
             for (k, (f, m)) in self.unit_loads(joint).into_iter().enumerate() {
+                let col = first_column[c] + k;
                 for (link, sign) in [(second, 1.0), (first, -1.0)] {
                     if let Some(r) = row(link) {
-                        a[(r, 2 * c + k)] += sign * f.x;
-                        a[(r + 1, 2 * c + k)] += sign * f.y;
-                        a[(r + 2, 2 * c + k)] += sign * (cross(&p, &f) + m);
+                        a[(r, col)] += sign * f.x;
+                        a[(r + 1, col)] += sign * f.y;
+                        a[(r + 2, col)] += sign * (cross(&p, &f) + m);
                     }
                 }
             }
@@ -297,7 +321,7 @@ impl<'a> Stages<'a> {
                     let r = self.solved[n]?;
                     let mut f = self.reaction_on(joint, r, link)?;
                     f.magnitude_known = false;
-                    f.direction_known = matches!(joint, JointId::Prismatic(_));
+                    f.direction_known = matches!(joint, JointId::Prismatic(_) | JointId::Cam(_));
                     Some(f)
                 })
                 .collect()

@@ -3,6 +3,7 @@
 //! driver, the branches, the guesses, the forces and the solver's settings. Each
 //! section names what it refuses and, where one exists, the valid range.
 
+use super::cams::cam_joints;
 use super::driver::{branches, driver, guesses};
 use super::forces::convert_forces;
 use super::joints::{Names, check_mobility, revolutes, sliders};
@@ -28,7 +29,7 @@ impl Mechanism {
             points: &bodies.points,
         };
         let sliders = sliders(scene, &names, units)?;
-        check_mobility(&bodies, &revolutes, &sliders)?;
+        check_mobility(&bodies, &revolutes, &sliders, scene.cams.len())?;
         let ground = bodies
             .links
             .iter()
@@ -36,6 +37,7 @@ impl Mechanism {
             .map(LinkId)
             .ok_or(invalid(SceneProblem::GroundCount { found: 0 }))?;
         let driver = driver(scene, &names, ground, &revolutes, units)?;
+        let cams = cam_joints(scene, &names, ground, &revolutes, &sliders, units)?;
         let branches = branches(scene, &bodies.points)?;
         let output = match &scene.output {
             Some(name) => names.link("output", name)?,
@@ -77,6 +79,7 @@ impl Mechanism {
             solver: scene.solver,
             size_m: bodies.size_m,
             drive: scene.drive.as_ref().map(Drive::from_spec).transpose()?,
+            cams,
         })
     }
 }

@@ -106,9 +106,10 @@ pub(super) fn check_mobility(
     b: &Bodies,
     revolutes: &[Revolute],
     sliders: &[Prismatic],
+    cams: usize,
 ) -> Result<()> {
     let moving = b.links.len() - 1;
-    let mobility = 3 * moving as i64 - 2 * (revolutes.len() + sliders.len()) as i64;
+    let mobility = 3 * moving as i64 - 2 * (revolutes.len() + sliders.len()) as i64 - cams as i64;
     if mobility == 1 {
         return Ok(());
     }
@@ -140,6 +141,7 @@ pub(super) fn check_mobility(
         mobility,
         moving,
         joints: revolutes.len() + sliders.len(),
+        cams,
         lone,
         made,
     }))

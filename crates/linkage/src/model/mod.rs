@@ -8,6 +8,9 @@ use crate::motion::{LinkMotion, SlideMotion, Vec2, perp};
 use crate::real::{Real, splat, splat_vec};
 use crate::scene::{Branch, ForcesSpec, Models, SceneFile, SolverSpec};
 
+mod cam_joint;
+mod cam_problem;
+mod cams;
 mod drive;
 mod driver;
 mod forces;
@@ -17,6 +20,8 @@ mod links;
 mod problem;
 mod units;
 
+pub use cam_joint::{CamContact, CamJoint, FollowerGuide};
+pub use cam_problem::CamProblem;
 pub use drive::{Drive, Motor};
 pub use problem::{LonePoint, MadeJoint, SceneProblem};
 
@@ -169,6 +174,8 @@ pub struct Mechanism {
     pub size_m: f64,
     /// The motor, gear and flywheel on the driver, if the scene gives them.
     pub drive: Option<Drive>,
+    /// Cam joints: a disc cam on one link driving a follower link.
+    pub cams: Vec<CamJoint>,
 }
 
 /// Largest angle a scene may give, rad (about 3200 turns). A double holds angles up to

@@ -104,7 +104,8 @@ pub enum SceneProblem {
     },
     /// The count of links and joints does not give one degree of freedom.
     #[error(
-        "the chain has mobility {mobility} (3 x {moving} moving links - 2 x {joints} joints); a \
+        "the chain has mobility {mobility} (3 x {moving} moving links - 2 x {joints} joints - \
+         {cams} cam contacts); a \
          single-input mechanism needs exactly 1. Joints are made by a point name shared between \
          links; these points are on one link only: {}",
         lone_points_hint(lone, made)
@@ -116,10 +117,20 @@ pub enum SceneProblem {
         moving: usize,
         /// Joints (revolute and prismatic).
         joints: usize,
+        /// Cam contacts (one constraint each).
+        cams: usize,
         /// Points on one link only, where a joint may be missing (a misspelt name).
         lone: Vec<LonePoint>,
         /// The joints made, to compare with the drawing.
         made: Vec<MadeJoint>,
+    },
+    /// A cam joint that cannot be built.
+    #[error("cam joint `{joint}`: {problem}")]
+    Cam {
+        /// The joint, `cam/follower`.
+        joint: String,
+        /// Why.
+        problem: crate::model::cam_problem::CamProblem,
     },
     /// The driver is the frame.
     #[error("the driver cannot be the ground link")]

@@ -439,6 +439,7 @@ fn die_cutter_scene(
         },
         solver: SolverSpec::default(),
         drive: None,
+        cams: Vec::new(),
     }
 }
 
@@ -531,5 +532,6 @@ pub(crate) fn four_bar(f: &FourBar) -> SceneFile {
         forces: ForcesSpec::default(),
         solver: SolverSpec::default(),
         drive: None,
+        cams: Vec::new(),
     }
 }

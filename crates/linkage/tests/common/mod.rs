@@ -8,8 +8,9 @@ use linkage::scene::SolverPath;
 use linkage::{Kinematics, Mechanism};
 
 /// Every scene shipped in `assets/scenes`.
-pub const SCENES: [&str; 6] = [
+pub const SCENES: [&str; 7] = [
     "paper_cup_feed.ron",
+    "paper_cup_cam_feed.ron",
     "die_cutter.ron",
     "die_cutter_as_printed.ron",
     "gravity_flipper.ron",
@@ -44,6 +45,35 @@ pub fn scene_text(file: &str) -> String {
 /// A shipped scene, validated.
 pub fn mechanism(file: &str) -> Mechanism {
     Mechanism::from_ron(&scene_text(file)).unwrap_or_else(|e| panic!("{file}: {e}"))
+}
+
+/// Whether a shipped scene has the Newton path too: a scene with a cam joint is
+/// solved in closed form only (Newton refuses it by name, see `cam_joint.rs`).
+pub fn has_newton(file: &str) -> bool {
+    mechanism(file).cams.is_empty()
+}
+
+/// The solver paths a shipped scene has: closed form, and Newton where
+/// [`has_newton`].
+pub fn paths(file: &str) -> Vec<SolverPath> {
+    let mut paths = vec![SolverPath::ClosedForm];
+    if has_newton(file) {
+        paths.push(SolverPath::Newton);
+    }
+    paths
+}
+
+/// Whether a cam of `m` is within `within` rad of a join of its program at the solved
+/// position `s`: there the follower's higher derivatives jump (a cycloid's jerk at a
+/// dwell), so finite differences across it lose their order.
+pub fn near_cam_join(m: &Mechanism, s: &linkage::Solution, within: f64) -> bool {
+    m.cams.iter().any(|cam| {
+        let theta = s.links[cam.cam].angle_rad() - cam.phase_rad;
+        cam.program
+            .spans()
+            .iter()
+            .any(|&(start, _)| wrap(theta - start).abs() < within)
+    })
 }
 
 /// A shipped scene on the given solver path.

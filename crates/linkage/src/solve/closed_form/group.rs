@@ -1,6 +1,7 @@
 //! One Assur group of the decomposition: a dyad of one of the four kinds, solved
 //! and measured through one interface.
 
+use super::cam::CamFollow;
 use super::parts::{Failure, GroupOk};
 use super::prp::Prp;
 use super::rpr::Rpr;
@@ -20,6 +21,8 @@ pub(crate) enum Group {
     Rrp(Rrp),
     Rpr(Rpr),
     Prp(Prp),
+    /// A cam joint's follower (one link).
+    Cam(CamFollow),
 }
 
 impl Group {
@@ -37,12 +40,14 @@ impl Group {
             Group::Rrp(g) => g.solve(links, motion, group),
             Group::Rpr(g) => g.solve(links, motion, group),
             Group::Prp(g) => g.solve(links, motion, group),
+            Group::Cam(g) => g.solve(links),
         }
     }
 
-    /// The two unknown links.
+    /// The two unknown links (a cam's follower twice: it is one).
     pub(crate) fn links(&self) -> (LinkId, LinkId) {
         match self {
+            Group::Cam(g) => (g.follower(), g.follower()),
             Group::Rrr(g) => (g.i, g.j),
             Group::Rrp(g) => (g.i, g.j),
             Group::Rpr(g) => (g.slider, g.guide),
@@ -56,7 +61,7 @@ impl Group {
             Group::Rrr(g) => g.sign = -g.sign,
             Group::Rrp(g) => g.sign = -g.sign,
             Group::Rpr(g) => g.sign = -g.sign,
-            Group::Prp(_) => {}
+            Group::Prp(_) | Group::Cam(_) => {}
         }
     }
 
@@ -83,7 +88,7 @@ impl Group {
             }
             Group::Rrp(g) => Some(along(g.sign)),
             Group::Rpr(g) => Some(along(g.sign)),
-            Group::Prp(_) => None,
+            Group::Prp(_) | Group::Cam(_) => None,
         }
     }
 
@@ -94,6 +99,7 @@ impl Group {
             Group::Rrp(_) => DyadKind::Rrp,
             Group::Rpr(_) => DyadKind::Rpr,
             Group::Prp(_) => DyadKind::Prp,
+            Group::Cam(_) => DyadKind::CamFollower,
         }
     }
 }

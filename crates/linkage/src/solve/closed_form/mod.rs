@@ -10,6 +10,7 @@
 //! position, [`crate::real::Lanes`] several at once in SIMD lanes. Their tests are
 //! lane masks: a group fails if it fails in any lane.
 mod branches;
+mod cam;
 mod group;
 mod guide;
 mod joints;
@@ -33,6 +34,7 @@ use crate::roots_util::{refine, sign_changes};
 use crate::scene::Branch;
 
 use branches::Branches;
+use cam::CamFollow;
 pub(crate) use group::Group;
 use joints::{JointRef, joint_links};
 pub(crate) use parts::{Failure, TANGENT_SLACK};
@@ -79,14 +81,23 @@ impl ClosedForm {
 
         let mut groups = Vec::new();
         let mut group_points = Vec::new();
+        // A cam's follower is placed by its cam, never by a dyad.
+        let followers: Vec<LinkId> = m.cams.iter().map(|c| c.follower).collect();
         while known.iter().any(|k| !k) {
+            if let Some(group) = Self::next_cam(m, &known) {
+                known[group.follower()] = true;
+                used[follower_joint(m, &group.cam)] = true;
+                group_points.push(group.cam.roller);
+                groups.push(Group::Cam(group));
+                continue;
+            }
             let mut found = None;
             'search: for (ji, &jij) in joints.iter().enumerate() {
                 if used[ji] {
                     continue;
                 }
                 let (i, j) = joint_links(m, jij);
-                if known[i] || known[j] {
+                if known[i] || known[j] || followers.contains(&i) || followers.contains(&j) {
                     continue;
                 }
                 let to_known = |l: LinkId| -> Vec<(usize, JointRef, LinkId)> {
@@ -163,6 +174,19 @@ impl ClosedForm {
             driver_pivot_world: ground_local,
             link_count: m.links.len(),
             ground: m.ground,
+        })
+    }
+
+    /// The first cam joint whose cam is placed and whose follower is not.
+    fn next_cam(m: &Mechanism, known: &[bool]) -> Option<CamFollow> {
+        let (joint, cam) = m
+            .cams
+            .iter()
+            .enumerate()
+            .find(|(_, c)| known[c.cam] && !known[c.follower])?;
+        Some(CamFollow {
+            joint,
+            cam: cam.clone(),
         })
     }
 
@@ -322,6 +346,15 @@ impl ClosedForm {
                     .unwrap_or(0.0)
             })
             .collect()
+    }
+}
+
+/// The follower's joint with ground, as an index into the decomposition's joints
+/// (revolutes, then prismatic joints).
+fn follower_joint(m: &Mechanism, cam: &crate::model::CamJoint) -> usize {
+    match cam.guide {
+        crate::model::FollowerGuide::Arm { pivot, .. } => pivot,
+        crate::model::FollowerGuide::Slide { slider, .. } => m.revolutes.len() + slider,
     }
 }
 

@@ -210,6 +210,15 @@ impl Newton {
                 valid: "must be finite and > 0".into(),
             });
         }
+        if let Some(cam) = m.cams.first() {
+            // The loop closures here are lower pairs only; a cam's follower is placed
+            // by the closed form, which every chain of dyads and cams has.
+            return Err(LinkageError::NotDecomposable(format!(
+                "the cam joint `{}` is solved in closed form only: the chain must split into \
+                 the crank, cam followers and RRR, RRP, RPR or PRP dyads",
+                cam.name
+            )));
+        }
         let (tree, cuts) = spanning_tree(m)?;
         let unknowns = tree.len() - 1;
         if 2 * cuts.len() != unknowns {

@@ -1,0 +1,291 @@
+//! A cam as a joint of the mechanism: the paper-cup feed whose rocker pivot rides on
+//! a cam-driven bell crank, against references written here: the program, finite
+//! differences of the solved positions, the pitch curve differentiated numerically on
+//! the turning cam, the standalone disc cam, and virtual work for the torque.
+
+mod common;
+
+use std::f64::consts::TAU;
+
+use linkage::cam::{DiscCam, Face, Follower, Law, Program, Segment, SegmentKind};
+use linkage::kinetostatics::Kinetostatics;
+use linkage::motion::Vec2;
+use linkage::scene::{Models, SolverPath};
+use linkage::{Kinematics, LinkageError, Mechanism};
+
+use common::{kinematics, mechanism, wrap};
+
+const SCENE: &str = "paper_cup_cam_feed.ron";
+
+fn turn(v: Vec2, a: f64) -> Vec2 {
+    let (s, c) = a.sin_cos();
+    Vec2::new(c * v.x - s * v.y, s * v.x + c * v.y)
+}
+
+#[test]
+fn the_follower_turns_by_the_program_at_every_crank_angle() {
+    let mut k = kinematics(SCENE, SolverPath::Auto);
+    let m = k.mechanism().clone();
+    let cam = &m.cams[0];
+    let omega = m.driver.speed_rad_s;
+    for i in 0..720 {
+        let phi = TAU * i as f64 / 720.0;
+        let s = k.solve(phi).expect("solves");
+        let program = cam.program.at(phi);
+        let arm = &s.links[cam.follower];
+        assert!(
+            wrap(arm.angle_rad() - cam.rest - program.s).abs() < 1e-12,
+            "at {phi}"
+        );
+        assert!((arm.omega_rad_s - program.v * omega).abs() < 1e-12 * omega);
+        assert!((arm.alpha_rad_s2 - program.a * omega * omega).abs() < 1e-10 * omega * omega);
+    }
+}
+
+#[test]
+fn velocities_and_accelerations_match_finite_differences_of_positions() {
+    let mut k = kinematics(SCENE, SolverPath::Auto);
+    let m = k.mechanism().clone();
+    let omega = m.driver.speed_rad_s;
+    let h = 1e-5;
+    for i in 0..72 {
+        let phi = 0.013 + TAU * i as f64 / 72.0;
+        let [a, b, c] = [phi - h, phi, phi + h].map(|x| k.solve(x).expect("solves"));
+        for p in m.point_ids() {
+            let (pa, pb, pc) = (a.points[p], b.points[p], c.points[p]);
+            let v_fd = (pc.position - pa.position) / (2.0 * h) * omega;
+            let a_fd = (pc.position - pb.position * 2.0 + pa.position) / (h * h) * omega * omega;
+            let size = m.size_m;
+            assert!(
+                (v_fd - pb.velocity).norm() < 1e-6 * size * omega,
+                "{} at {phi}: {v_fd} vs {}",
+                m.points[p].name,
+                pb.velocity
+            );
+            assert!(
+                (a_fd - pb.acceleration).norm() < 1e-3 * size * omega * omega,
+                "{} at {phi}",
+                m.points[p].name
+            );
+        }
+    }
+}
+
+/// The pitch curve as the turning cam sees it, from the solved roller positions by
+/// central differences: its normal and radius of curvature at the cam angle.
+fn pitch_by_differences(k: &mut Kinematics, phi: f64, h: f64) -> (Vec2, f64) {
+    let m = k.mechanism().clone();
+    let cam = &m.cams[0];
+    let q = |k: &mut Kinematics, x: f64| {
+        let s = k.solve(x).expect("solves");
+        turn(s.points[cam.roller].position - cam.centre, -x)
+    };
+    let [a, b, c] = [phi - h, phi, phi + h].map(|x| q(k, x));
+    let d1 = (c - a) / (2.0 * h);
+    let d2 = (c - b * 2.0 + a) / (h * h);
+    let radius = d1.norm().powi(3) / (d1.x * d2.y - d1.y * d2.x);
+    // The cam turns counter-clockwise, so the roller runs clockwise on it: the
+    // outward normal is the tangent turned by +90°, back in the world.
+    let outward = Vec2::new(-d1.y, d1.x) / d1.norm();
+    (turn(outward, phi), -radius)
+}
+
+#[test]
+fn the_contact_normal_and_curvature_match_the_pitch_curve_differentiated_on_the_cam() {
+    let mut k = kinematics(SCENE, SolverPath::Auto);
+    let m = k.mechanism().clone();
+    let cam = &m.cams[0];
+    for i in 0..36 {
+        let phi = 0.021 + TAU * i as f64 / 36.0;
+        let contact = cam.contact(phi);
+        let (normal, radius) = pitch_by_differences(&mut k, phi, 1e-4);
+        assert!((contact.normal - normal).norm() < 1e-6, "normal at {phi}");
+        assert!(
+            (contact.pitch_radius_m - radius).abs() < 1e-5 * radius.abs().max(m.size_m),
+            "radius at {phi}: {} vs {radius}",
+            contact.pitch_radius_m
+        );
+        // The contact point is the roller's radius in along the normal, and the
+        // pressure angle is between the normal and the roller centre's velocity.
+        let s = k.solve(phi).expect("solves");
+        let roller = s.points[cam.roller];
+        assert!((contact.roller - roller.position).norm() < 1e-12 * m.size_m);
+        let gap = (contact.point - roller.position).norm() - cam.roller_radius_m;
+        assert!(gap.abs() < 1e-12 * m.size_m);
+        if roller.velocity.norm() > 1e-9 * m.size_m {
+            let v = roller.velocity / roller.velocity.norm();
+            let cos = v.dot(&contact.normal).abs();
+            assert!(
+                (cos - contact.pressure_angle_rad.cos()).abs() < 1e-9,
+                "at {phi}"
+            );
+        }
+    }
+}
+
+/// A scene of the disc cam's own layout: the cam's centre at the origin, the arm's
+/// pivot on +x at `pivot`, the roller above the axis (as `DiscCam` places it).
+fn disc_layout_scene(pivot: f64, arm: f64, base: f64, roller: f64, rest_deg: f64) -> String {
+    format!(
+        r#"Scene(
+    name: "disc cam layout", models: Kinematics, length_unit: Millimetre,
+    links: [
+        (name: "ground", ground: true, points: {{"A": (0.0, 0.0), "O": ({pivot}, 0.0)}}),
+        (name: "cam", points: {{"A": (0.0, 0.0), "T": ({base}, 0.0)}}),
+        (name: "arm", points: {{"O": (0.0, 0.0), "R": ({arm}, 0.0)}}),
+    ],
+    driver: (link: "cam", speed: Rpm(60.0)),
+    output: Some("arm"),
+    cams: [(cam: "cam", follower: "arm", roller: "R", roller_radius: {roller},
+        rest: {rest_deg}, segments: [
+            Rise(law: Cycloidal, lift: 20.0, deg: 120.0), Dwell(deg: 60.0),
+            Return(law: ModifiedSine, lift: 20.0, deg: 100.0), Dwell(deg: 80.0)])],
+)"#
+    )
+}
+
+#[test]
+fn an_arm_in_the_disc_cams_layout_gives_the_disc_cams_profile_and_pressure_angle() {
+    let (pivot, arm, base, roller): (f64, f64, f64, f64) = (120.0, 90.0, 40.0, 10.0);
+    let rp = base + roller;
+    let gamma0 = ((rp * rp - pivot * pivot - arm * arm) / (2.0 * pivot * arm)).acos();
+    let m = Mechanism::from_ron(&disc_layout_scene(
+        pivot,
+        arm,
+        base,
+        roller,
+        gamma0.to_degrees(),
+    ))
+    .expect("valid");
+    let seg = |kind, deg: f64| Segment {
+        kind,
+        angle_rad: deg.to_radians(),
+    };
+    let lift = 20f64.to_radians();
+    let program = Program::new(vec![
+        seg(
+            SegmentKind::Rise {
+                law: Law::Cycloidal,
+                lift,
+            },
+            120.0,
+        ),
+        seg(SegmentKind::Dwell, 60.0),
+        seg(
+            SegmentKind::Return {
+                law: Law::ModifiedSine,
+                lift,
+            },
+            100.0,
+        ),
+        seg(SegmentKind::Dwell, 80.0),
+    ])
+    .expect("program");
+    let mm = 1e-3;
+    let follower = Follower::Oscillating {
+        pivot_m: pivot * mm,
+        arm_m: arm * mm,
+        face: Face::Roller {
+            radius_m: roller * mm,
+        },
+    };
+    let disc = DiscCam::new(program, base * mm, follower).expect("disc cam");
+    let cam = &m.cams[0];
+    for i in 0..3600 {
+        let theta = TAU * i as f64 / 3600.0;
+        let (joint, reference) = (cam.contact(theta), disc.at(theta));
+        let on_cam = turn(joint.point - cam.centre, -theta);
+        let expected = Vec2::new(reference.profile_m[0], reference.profile_m[1]);
+        assert!(
+            (on_cam - expected).norm() < 1e-9 * base * mm,
+            "profile at {theta}"
+        );
+        let (a, b) = (joint.pressure_angle_rad, reference.pressure_angle_rad);
+        assert!(
+            (a.tan() - b.tan()).abs() < 1e-9 * (1.0 + b.tan().abs()),
+            "at {theta}"
+        );
+        let (ra, rb) = (joint.pitch_radius_m, reference.pitch_radius_m);
+        assert!(
+            (ra - rb).abs() < 1e-9 * rb.abs().max(base * mm),
+            "at {theta}"
+        );
+    }
+}
+
+/// The scene with masses, gravity and a speed: kinetostatics through the cam.
+fn loaded() -> Kinematics {
+    let mut m = mechanism(SCENE);
+    m.models = Models::Kinetostatics;
+    let size = m.size_m;
+    for (n, l) in m.link_ids().enumerate() {
+        if l == m.ground {
+            continue;
+        }
+        let link = &mut m.links[l];
+        let k = 1.0 + 0.37 * n as f64;
+        let centre = link.points.iter().map(|(_, p)| *p).sum::<Vec2>() / link.points.len() as f64;
+        link.mass_kg = Some(0.5 * k);
+        link.centroid_m = Some(centre + Vec2::new(0.02, -0.01) * size);
+        link.inertia_kg_m2 = Some(0.5 * k * (0.2 * size).powi(2));
+    }
+    m.forces.gravity = Some((0.0, -9.81));
+    Kinematics::new(m).expect("solves")
+}
+
+#[test]
+fn the_torque_through_the_cam_contact_agrees_with_virtual_work() {
+    let mut k = loaded();
+    let mut ks = Kinetostatics::new(&mut k).expect("kinetostatics");
+    let mut largest = 0.0_f64;
+    let mut states = Vec::new();
+    for i in 0..360 {
+        let s = ks.at(&mut k, TAU * i as f64 / 360.0).expect("solves");
+        largest = largest.max(s.torque_virtual_work.abs());
+        states.push(s);
+    }
+    for s in &states {
+        let diff = s.torque_newton_euler - s.torque_virtual_work;
+        assert!(diff.abs() < 1e-9 * largest, "at {}: {diff}", s.input_rad);
+        let cam = s.joints.last().expect("the cam contact");
+        let push = cam.push.expect("a cam contact's push");
+        assert!((push.hypot(0.0) - cam.force.0.hypot(cam.force.1)).abs() < 1e-9 * largest);
+    }
+}
+
+#[test]
+fn a_cam_joint_is_refused_by_name_where_it_cannot_work() {
+    let text = common::scene_text(SCENE);
+    let cases = [
+        (r#"cam: "crank""#, r#"cam: "coupler""#, "no pin on ground"),
+        (
+            r#"follower: "bell_crank""#,
+            r#"follower: "rocker""#,
+            "pinned to ground",
+        ),
+        (
+            "roller_radius: 15.0",
+            "roller_radius: 90.0",
+            "no cam is left",
+        ),
+        (
+            "roller_radius: 15.0",
+            "roller_radius: -1.0",
+            "roller_radius",
+        ),
+    ];
+    for (from, to, expected) in cases {
+        let err = Mechanism::from_ron(&text.replace(from, to)).expect_err(to);
+        assert!(err.to_string().contains(expected), "{to}: {err}");
+    }
+    // Without its cam the bell crank is free: the count names the cam contacts.
+    let start = text.find("    cams: [").expect("cams");
+    let without = format!("{})", &text[..start]);
+    let err = Mechanism::from_ron(&without).expect_err("two degrees of freedom");
+    assert!(err.to_string().contains("mobility 2"), "{err}");
+    assert!(err.to_string().contains("0 cam contacts"), "{err}");
+    // Newton has no cam contact: asked for, it says so.
+    let err = Kinematics::with_path(mechanism(SCENE), SolverPath::Newton).expect_err("newton");
+    assert!(matches!(err, LinkageError::NotDecomposable(_)), "{err}");
+    assert!(err.to_string().contains("closed form only"), "{err}");
+}
