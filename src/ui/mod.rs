@@ -26,5 +26,6 @@ pub mod report;
 pub mod scene_picker;
 pub mod sheet;
 pub mod synthesis;
+pub mod timing_plot;
 pub mod typeset;
 pub mod viewport;

@@ -19,6 +19,8 @@ pub enum PlotTab {
     Output,
     /// Transmission angle against crank angle.
     Transmission,
+    /// Every output against the main shaft, with its dwells.
+    Timing,
     /// Input torque and force amplification (kinetostatic scenes).
     Torque,
     /// The flywheel by the energy method (kinetostatic scenes).
@@ -40,6 +42,7 @@ pub fn tab_available(tab: PlotTab, s: &Session) -> bool {
     match tab {
         PlotTab::Output => !c.outputs.is_empty(),
         PlotTab::Transmission => !c.transmission_deg.is_empty(),
+        PlotTab::Timing => !c.timing.lanes.is_empty(),
         // What the scene models: its curves are computed only when the tab is shown.
         PlotTab::Torque | PlotTab::Flywheel | PlotTab::Shaking => {
             s.models() == Models::Kinetostatics
@@ -89,6 +92,11 @@ impl PlotsPanel {
                 (PlotTab::Output, "Output", "the output's s, v, a"),
                 (PlotTab::Transmission, "Transmission", "transmission angle"),
                 (
+                    PlotTab::Timing,
+                    "Timing",
+                    "timing diagram: every output against the main shaft, dwells shaded",
+                ),
+                (
                     PlotTab::Torque,
                     "Torque",
                     "input torque and force amplification",
@@ -133,6 +141,11 @@ impl PlotsPanel {
                         Some(x),
                     )],
                 );
+            }
+            PlotTab::Timing => {
+                crate::ui::plot_layout::side_by_side(ui, 1, |ui, _, height| {
+                    crate::ui::timing_plot::timing_plot(ui, s, cursor_deg(s), height);
+                });
             }
             PlotTab::Torque => torque_plots(ui, s),
             PlotTab::Flywheel => flywheel_tab(ui, s),

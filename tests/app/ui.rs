@@ -152,6 +152,14 @@ fn cam_and_four_bar_on_one_shaft_snapshot() {
         .set_value_accesskit(60.0);
     h.run();
     h.snapshot("paper_cup_cam_feed_60deg");
+    // The timing tab: the bell crank's dwells shaded, and the slider.
+    h.get_by_role_and_label(Role::Button, "Timing").click();
+    h.run();
+    let timing = &h.state().state.session.curves().timing;
+    let names: Vec<&str> = timing.lanes.iter().map(|l| l.name.as_str()).collect();
+    assert_eq!(names, ["bell_crank", "slider"]);
+    assert_eq!(timing.lanes[0].dwells.len(), 2);
+    h.snapshot("paper_cup_cam_feed_timing");
 }
 
 #[test]

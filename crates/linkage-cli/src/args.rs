@@ -183,6 +183,22 @@ pub(crate) enum Command {
         #[command(flatten)]
         args: CourseArgs,
     },
+    /// The timing diagram: every output (links pinned to ground, sliders) against the
+    /// main shaft's angle as a share of its stroke, with its dwells (CSV or JSON;
+    /// --svg and --png write the sheet).
+    Timing {
+        #[command(flatten)]
+        scene: SceneArgs,
+        /// Shaft angles over the cycle.
+        #[arg(long, default_value_t = 360)]
+        samples: usize,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = Format::Csv)]
+        format: Format,
+        /// Where the sheet goes (no sheet without --svg or --png).
+        #[command(flatten)]
+        out: SheetOut,
+    },
     /// An A4 sheet of one position to hand in: pose, velocity and acceleration
     /// polygons with scales, vector-equation tables, instant centres (SVG; --png too).
     Diagram {

@@ -23,6 +23,7 @@ mod simulate;
 mod synth_function;
 mod synth_motion;
 mod synth_path;
+mod timing;
 mod tradeoff;
 
 use std::io::{ErrorKind, Write};
@@ -71,6 +72,12 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
             dxf,
         } => cam::run(&file, samples, format, dxf.as_deref()),
         Command::CourseSheet { scene, args } => course::run(&scene, &args),
+        Command::Timing {
+            scene,
+            samples,
+            format,
+            out,
+        } => timing::run(&scene, samples, format, &out),
         Command::Share { scene, decode } => commands::share(scene.as_deref(), decode.as_deref()),
         Command::Simulate { scene, sim, format } if sim.steady => simulate::steady(&scene, format),
         Command::Simulate { scene, sim, format } => simulate::run(&scene, &sim, format),

@@ -38,6 +38,7 @@ pub mod svg;
 pub mod svg_course;
 mod svg_draw;
 mod svg_forces;
+pub mod svg_timing;
 
 pub use force_figure::ForceFigure;
 pub use geometry::{Pt, Rect};

@@ -289,3 +289,127 @@ fn a_cam_joint_is_refused_by_name_where_it_cannot_work() {
     assert!(matches!(err, LinkageError::NotDecomposable(_)), "{err}");
     assert!(err.to_string().contains("closed form only"), "{err}");
 }
+
+/// A translating roller follower in the disc cam's layout: its guide along +y at the
+/// offset, the roller's centre on the slider, travel from the guide's point on the
+/// x-axis.
+fn translating_layout_scene(offset: f64, base: f64, roller: f64) -> String {
+    let rest = ((base + roller).powi(2) - offset * offset).sqrt();
+    format!(
+        r#"Scene(
+    name: "translating layout", models: Kinematics, length_unit: Millimetre,
+    links: [
+        (name: "ground", ground: true, points: {{"A": (0.0, 0.0), "T": ({offset}, 0.0)}}),
+        (name: "cam", points: {{"A": (0.0, 0.0), "Q": ({base}, 0.0)}}),
+        (name: "follower", points: {{"R": (0.0, 0.0)}}),
+    ],
+    sliders: [(slider: "follower", point: "R", guide: "ground", through: "T", angle: 90.0)],
+    driver: (link: "cam", speed: Rpm(60.0)),
+    output: Some("follower"),
+    cams: [(cam: "cam", follower: "follower", roller: "R", roller_radius: {roller},
+        rest: {rest}, segments: [
+            Rise(law: Cycloidal, lift: 20.0, deg: 120.0), Dwell(deg: 60.0),
+            Return(law: ModifiedSine, lift: 20.0, deg: 100.0), Dwell(deg: 80.0)])],
+)"#
+    )
+}
+
+#[test]
+fn a_translating_follower_gives_the_disc_cams_profile_and_pressure_angle() {
+    let (offset, base, roller): (f64, f64, f64) = (8.0, 40.0, 10.0);
+    let mut k = Kinematics::new(
+        Mechanism::from_ron(&translating_layout_scene(offset, base, roller)).expect("valid"),
+    )
+    .expect("solves");
+    let m = k.mechanism().clone();
+    let seg = |kind, deg: f64| Segment {
+        kind,
+        angle_rad: deg.to_radians(),
+    };
+    let lift = 20e-3;
+    let program = Program::new(vec![
+        seg(
+            SegmentKind::Rise {
+                law: Law::Cycloidal,
+                lift,
+            },
+            120.0,
+        ),
+        seg(SegmentKind::Dwell, 60.0),
+        seg(
+            SegmentKind::Return {
+                law: Law::ModifiedSine,
+                lift,
+            },
+            100.0,
+        ),
+        seg(SegmentKind::Dwell, 80.0),
+    ])
+    .expect("program");
+    let mm = 1e-3;
+    let face = Face::Roller {
+        radius_m: roller * mm,
+    };
+    let follower = Follower::Translating {
+        offset_m: offset * mm,
+        face,
+    };
+    let disc = DiscCam::new(program, base * mm, follower).expect("disc cam");
+    let cam = &m.cams[0];
+    let omega = m.driver.speed_rad_s;
+    for i in 0..3600 {
+        let theta = TAU * i as f64 / 3600.0;
+        let (joint, reference) = (cam.contact(theta), disc.at(theta));
+        let on_cam = turn(joint.point - cam.centre, -theta);
+        let expected = Vec2::new(reference.profile_m[0], reference.profile_m[1]);
+        assert!(
+            (on_cam - expected).norm() < 1e-9 * base * mm,
+            "profile at {theta}"
+        );
+        let (a, b) = (joint.pressure_angle_rad, reference.pressure_angle_rad);
+        assert!(
+            (a.tan() - b.tan()).abs() < 1e-9 * (1.0 + b.tan().abs()),
+            "at {theta}"
+        );
+        // The slider itself moves by the program.
+        let s = k.solve(theta).expect("solves");
+        let slide = s.slides[0];
+        let motion = disc.program.at(theta);
+        let rest = cam.rest;
+        assert!((slide.displacement_m - rest - motion.s).abs() < 1e-12 * base * mm);
+        assert!((slide.velocity_m_s - motion.v * omega).abs() < 1e-12 * base * mm * omega);
+    }
+}
+
+#[test]
+fn the_timing_diagram_shows_the_cams_dwells_and_the_linkages_motion_on_one_shaft() {
+    let mut k = kinematics(SCENE, SolverPath::Auto);
+    let m = k.mechanism().clone();
+    let cam = &m.cams[0];
+    let diagram = linkage::analysis::timing(&mut k, 720).expect("timing");
+    let names: Vec<&str> = diagram.lanes.iter().map(|l| l.name.as_str()).collect();
+    // The outputs: links pinned to ground (the rocker now rides the bell crank), then
+    // sliders.
+    assert_eq!(names, ["bell_crank", "slider"]);
+    let arm = &diagram.lanes[0];
+    // The program's dwells, to the half degree the diagram is sampled at.
+    let lift = cam.program.largest_lift();
+    let expected = [[110.0, 180.0], [290.0, 359.5]];
+    assert_eq!(arm.dwells.len(), 2, "{:?}", arm.dwells);
+    for (got, want) in arm.dwells.iter().zip(expected) {
+        for (g, w) in got.iter().zip(want) {
+            assert!(
+                (g.to_degrees() - w).abs() <= 0.5 + 1e-9,
+                "{got:?} vs {want:?}"
+            );
+        }
+    }
+    // Its share of the stroke is the program's lift over the largest lift.
+    for (x, share) in diagram.shaft_rad.iter().zip(&arm.share) {
+        let s = cam.program.at(*x).s;
+        assert!((share - s / lift).abs() < 1e-9, "at {x}");
+    }
+    assert!((arm.range[1] - arm.range[0] - lift).abs() < 1e-12);
+    // The slider, moved by the four-bar too, never rests for two samples.
+    assert!(diagram.lanes[1].dwells.is_empty());
+}

@@ -4,7 +4,7 @@
 //! kinematics (input torque and force amplification; equivalent inertia J(q) and
 //! moment M(q)) only when its plot is shown ([`ModelCurves`]).
 
-use linkage::analysis::{Output, outputs, transmission_angle_at};
+use linkage::analysis::{Output, TimingDiagram, outputs, timing_of_sweep, transmission_angle_at};
 use linkage::dynamics::{ForceModel, Method, Settings, simulate};
 use linkage::kinetostatics::Kinetostatics;
 use linkage::machine::{
@@ -66,6 +66,8 @@ pub struct Curves {
     pub range_rad: [f64; 2],
     /// Whether the input turns fully.
     pub full_rotation: bool,
+    /// The timing diagram: every output against the main shaft, with its dwells.
+    pub timing: TimingDiagram,
 }
 
 impl Curves {
@@ -107,6 +109,7 @@ impl Curves {
             range_rad: sw.range,
             full_rotation,
             input_deg,
+            timing: timing_of_sweep(k, &sw),
         })
     }
 }

@@ -1,6 +1,7 @@
 //! Analyses of any 1-DOF chain: assembly range, limit positions of every output
 //! (found by Brent root-finding on the output's velocity ratio, bracketed on a grid),
-//! strokes, swings, time ratio K, Grashof class, transmission angle and toggles.
+//! strokes, swings, time ratio K, Grashof class, transmission angle and toggles, and
+//! the timing diagram of every output against the main shaft.
 
 mod grashof;
 mod limits;
@@ -8,6 +9,7 @@ mod outputs;
 mod ranges;
 mod report;
 mod time_ratio;
+mod timing;
 mod toggles;
 mod transmission;
 
@@ -18,6 +20,7 @@ pub use outputs::{Output, outputs};
 pub use ranges::{assembly_ranges_of, sweep_range};
 pub use report::{Report, report};
 pub use time_ratio::{Stroke, TimeRatioNote, time_ratio};
+pub use timing::{TimingDiagram, TimingLane, timing, timing_lane, timing_of_sweep};
 pub use toggles::{Tangency, Toggle};
 pub use transmission::{
     TransmissionAngle, collinear_joints, transmission_angle, transmission_angle_at,

@@ -1,0 +1,132 @@
+//! The timing diagram as an SVG sheet: one lane per output, stacked against the main
+//! shaft's angle, each curve its share of the output's stroke (lowest at the lane's
+//! foot, highest at its head), its dwells shaded, the shaft's angle gridded every
+//! 30 degrees, and each lane's stroke written beside it.
+
+use std::fmt::Write as _;
+
+use linkage::analysis::{TimingDiagram, TimingLane};
+
+use crate::geometry::Rect;
+use crate::svg_draw::{MARGIN, PAGE_W, document, line, text_at, titled_pane};
+
+/// A lane's height, px.
+const LANE_H: f64 = 70.0;
+/// The room left of the lanes for their names, px.
+const NAMES_W: f64 = 120.0;
+const CURVE: &str = "#2f5f9e";
+const DWELL: &str = "#f1e3bf";
+
+/// The timing diagram of `title`'s scene.
+pub fn timing_sheet(title: &str, d: &TimingDiagram) -> String {
+    let mut body = String::new();
+    let lanes_h = LANE_H * d.lanes.len().max(1) as f64;
+    let height = 2.0 * MARGIN + 40.0 + lanes_h + 40.0;
+    let pane = Rect {
+        min: [MARGIN, MARGIN],
+        max: [PAGE_W - MARGIN, height - MARGIN],
+    };
+    let inner = titled_pane(&mut body, &pane, &format!("Timing diagram: {title}"), 14.0);
+    let plot = Rect {
+        min: [inner.min[0] + NAMES_W, inner.min[1] + 10.0],
+        max: [inner.max[0] - 12.0, inner.min[1] + 10.0 + lanes_h],
+    };
+    let (Some(&x0), Some(&x1)) = (d.shaft_rad.first(), d.shaft_rad.last()) else {
+        return document(title, &body, height);
+    };
+    let span = (x1 - x0).max(1e-300);
+    let x_px = |x: f64| plot.min[0] + (x - x0) / span * plot.width();
+    shaft_grid(&mut body, &plot, x0, x1, &x_px);
+    for (i, lane) in d.lanes.iter().enumerate() {
+        let top = plot.min[1] + LANE_H * i as f64;
+        let band = Rect {
+            min: [plot.min[0], top + 8.0],
+            max: [plot.max[0], top + LANE_H - 8.0],
+        };
+        draw_lane(&mut body, lane, &band, &d.shaft_rad, &x_px);
+        let at = [inner.min[0] + 6.0, band.min[1] + 14.0];
+        text_at(&mut body, at, &lane.name, 12.0, "bold");
+        let stroke = stroke_text(lane);
+        text_at(&mut body, [at[0], at[1] + 16.0], &stroke, 10.0, "normal");
+    }
+    document(title, &body, height)
+}
+
+/// The lane's stroke as a reader writes it: degrees or millimetres.
+fn stroke_text(lane: &TimingLane) -> String {
+    let [lo, hi] = lane.range;
+    if lane.is_angle {
+        format!("swing {:.2} deg", (hi - lo).to_degrees())
+    } else {
+        format!("stroke {:.2} mm", (hi - lo) * 1e3)
+    }
+}
+
+/// Vertical lines every 30 degrees of the shaft, labelled under the plot.
+fn shaft_grid(out: &mut String, plot: &Rect, x0: f64, x1: f64, x_px: &dyn Fn(f64) -> f64) {
+    let step = 30f64.to_radians();
+    let mut x = (x0 / step).ceil() * step;
+    while x <= x1 + 1e-9 {
+        let px = x_px(x);
+        line(
+            out,
+            [px, plot.min[1]],
+            [px, plot.max[1]],
+            "#e4e4e4",
+            0.7,
+            false,
+        );
+        let label = format!("{:.0}", x.to_degrees());
+        text_at(out, [px - 8.0, plot.max[1] + 14.0], &label, 10.0, "normal");
+        x += step;
+    }
+    let note = "main shaft angle (deg); dwells shaded";
+    text_at(
+        out,
+        [plot.max[0] - 190.0, plot.max[1] + 28.0],
+        note,
+        10.0,
+        "normal",
+    );
+}
+
+/// One lane: its dwells shaded, its foot and head ruled, its curve.
+fn draw_lane(
+    out: &mut String,
+    lane: &TimingLane,
+    band: &Rect,
+    shaft: &[f64],
+    x_px: &dyn Fn(f64) -> f64,
+) {
+    for [a, b] in &lane.dwells {
+        let (xa, xb) = (x_px(*a), x_px(*b));
+        let _ = writeln!(
+            out,
+            "<rect x=\"{xa:.1}\" y=\"{:.1}\" width=\"{:.1}\" height=\"{:.1}\" fill=\"{DWELL}\"/>",
+            band.min[1],
+            (xb - xa).max(0.5),
+            band.height()
+        );
+    }
+    for y in [band.min[1], band.max[1]] {
+        line(
+            out,
+            [band.min[0], y],
+            [band.max[0], y],
+            "#bbbbbb",
+            0.6,
+            true,
+        );
+    }
+    let points: Vec<String> = shaft
+        .iter()
+        .zip(&lane.share)
+        .filter(|(_, s)| s.is_finite())
+        .map(|(&x, &s)| format!("{:.1},{:.1}", x_px(x), band.max[1] - s * band.height()))
+        .collect();
+    let _ = writeln!(
+        out,
+        "<polyline points=\"{}\" fill=\"none\" stroke=\"{CURVE}\" stroke-width=\"1.6\"/>",
+        points.join(" ")
+    );
+}
