@@ -103,7 +103,7 @@ pub(crate) enum Command {
     /// A disc cam from its file (RON, millimetres and degrees): s, v, a, jerk, pitch
     /// and profile points, pressure angle and radii of curvature over the turn (CSV,
     /// or JSON with the joins' continuity, the laws' peak coefficients and the cam's
-    /// extremes); --dxf writes the profile for manufacture.
+    /// extremes); --dxf writes the profile for manufacture, --svg its sheet.
     Cam {
         /// The cam file.
         file: PathBuf,
@@ -116,6 +116,10 @@ pub(crate) enum Command {
         /// Write the profile, the pitch curve and the base circle as DXF (mm) here.
         #[arg(long)]
         dxf: Option<PathBuf>,
+        /// Write the profile's sheet (full size where it fits A4, limits marked) as
+        /// SVG here.
+        #[arg(long)]
+        svg: Option<PathBuf>,
     },
     /// Input torque (Newton-Euler and virtual work), joint reactions and force
     /// amplification over one input cycle at the scene's crank speed.

@@ -6,12 +6,24 @@
 
 use std::path::Path;
 
-use linkage::cam::{CamDesign, CamPoint, CamSpec, Law, SegmentKind, peak_coefficients};
+use linkage::cam::{
+    CAM_TABLE_HEADER, CamDesign, CamPoint, CamSpec, Law, SegmentKind, cam_table_row,
+    peak_coefficients,
+};
 use serde_json::json;
 
 use crate::args::CamFormat;
 use crate::error::{CliError, Result};
 use crate::io::{json_text, to_csv};
+
+/// The pressure-angle limit the sheet marks: 30 deg for a translating follower, 45
+/// for an arm, as for a cam joint.
+fn pressure_limit(d: &CamDesign) -> f64 {
+    match d.cam.follower {
+        linkage::cam::Follower::Translating { .. } => 30f64.to_radians(),
+        linkage::cam::Follower::Oscillating { .. } => 45f64.to_radians(),
+    }
+}
 
 /// Reads the cam file at `path`.
 fn design(path: &Path) -> Result<CamDesign> {
@@ -31,8 +43,13 @@ fn sampled(d: &CamDesign, samples: usize) -> Vec<CamPoint> {
         .collect()
 }
 
-/// Runs the command.
-pub fn run(path: &Path, samples: usize, format: CamFormat, dxf: Option<&Path>) -> Result<String> {
+/// Runs the command; `[dxf, svg]` are where the profile's files go, if asked.
+pub fn run(
+    path: &Path,
+    samples: usize,
+    format: CamFormat,
+    [dxf, svg]: [Option<&Path>; 2],
+) -> Result<String> {
     if !(4..=1_000_000).contains(&samples) {
         return Err(CliError::refused(format!(
             "--samples {samples} is out of range: 4 to 1000000"
@@ -43,6 +60,18 @@ pub fn run(path: &Path, samples: usize, format: CamFormat, dxf: Option<&Path>) -
     if let Some(out) = dxf {
         write_dxf(out, &d, &points)?;
     }
+    if let Some(out) = svg {
+        let sheet = linkage_diagram::svg_cam::cam_sheet(&linkage_diagram::svg_cam::CamSheet {
+            title: &d.name,
+            points: &points,
+            base_radius_m: d.cam.base_radius_m,
+            pressure_limit_rad: pressure_limit(&d),
+        });
+        std::fs::write(out, sheet).map_err(|source| CliError::Write {
+            path: out.to_path_buf(),
+            source,
+        })?;
+    }
     match format {
         CamFormat::Csv => rows_csv(&d, &points),
         CamFormat::Json => figures_json(&d, &points),
@@ -51,7 +80,15 @@ pub fn run(path: &Path, samples: usize, format: CamFormat, dxf: Option<&Path>) -
 
 #[cfg(not(target_arch = "wasm32"))]
 fn write_dxf(out: &Path, d: &CamDesign, points: &[CamPoint]) -> Result<()> {
-    crate::cam_dxf::write(out, d, points)
+    let profile: Vec<[f64; 2]> = points.iter().map(|p| p.profile_m).collect();
+    let pitch: Vec<[f64; 2]> = points.iter().map(|p| p.pitch_m).collect();
+    let write_error = |e: String| CliError::Write {
+        path: out.to_path_buf(),
+        source: std::io::Error::other(e),
+    };
+    let bytes = linkage_diagram::cam_dxf::cam_dxf(&profile, &pitch, d.cam.base_radius_m)
+        .map_err(|e| write_error(e.to_string()))?;
+    std::fs::write(out, bytes).map_err(|e| write_error(e.to_string()))
 }
 
 /// The CLI is only type-checked for wasm32, where the DXF crate does not build.
@@ -62,44 +99,13 @@ fn write_dxf(_: &Path, _: &CamDesign, _: &[CamPoint]) -> Result<()> {
     ))
 }
 
-const HEADER: [&str; 12] = [
-    "angle_deg",
-    "s",
-    "v",
-    "a",
-    "jerk",
-    "pitch_x_m",
-    "pitch_y_m",
-    "profile_x_m",
-    "profile_y_m",
-    "pressure_angle_deg",
-    "pitch_radius_m",
-    "profile_radius_m",
-];
-
-/// A row: the follower's motion at the cam's speed (SI; rad for an oscillating
-/// follower), the points and the figures.
+/// A row: the follower's motion at the cam's speed and the cam's points and figures.
 fn row(d: &CamDesign, p: &CamPoint) -> Vec<f64> {
-    let w = d.speed_rad_s;
-    let m = &p.motion;
-    vec![
-        p.angle_rad.to_degrees(),
-        m.s,
-        m.v * w,
-        m.a * w * w,
-        m.j * w * w * w,
-        p.pitch_m[0],
-        p.pitch_m[1],
-        p.profile_m[0],
-        p.profile_m[1],
-        p.pressure_angle_rad.to_degrees(),
-        p.pitch_radius_m,
-        p.profile_radius_m,
-    ]
+    cam_table_row(p, d.speed_rad_s).to_vec()
 }
 
 fn rows_csv(d: &CamDesign, points: &[CamPoint]) -> Result<String> {
-    let header: Vec<String> = HEADER.iter().map(|h| h.to_string()).collect();
+    let header: Vec<String> = CAM_TABLE_HEADER.iter().map(|h| h.to_string()).collect();
     let rows: Vec<Vec<f64>> = points.iter().map(|p| row(d, p)).collect();
     to_csv(&header, &rows)
 }
@@ -124,7 +130,7 @@ fn figures_json(d: &CamDesign, points: &[CamPoint]) -> Result<String> {
         .map(|p| {
             let r = row(d, p);
             serde_json::Value::Object(
-                HEADER
+                CAM_TABLE_HEADER
                     .iter()
                     .zip(r)
                     .map(|(h, v)| (h.to_string(), json!(v)))

@@ -7,8 +7,6 @@
 
 mod args;
 mod cam;
-#[cfg(not(target_arch = "wasm32"))]
-mod cam_dxf;
 mod commands;
 mod counts;
 mod course;
@@ -70,7 +68,8 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
             samples,
             format,
             dxf,
-        } => cam::run(&file, samples, format, dxf.as_deref()),
+            svg,
+        } => cam::run(&file, samples, format, [dxf.as_deref(), svg.as_deref()]),
         Command::CourseSheet { scene, args } => course::run(&scene, &args),
         Command::Timing {
             scene,

@@ -21,6 +21,8 @@
 #![warn(missing_docs)]
 #![forbid(unsafe_code)]
 
+#[cfg(feature = "dxf")]
+pub mod cam_dxf;
 pub mod construction;
 pub mod course;
 pub mod figure;
@@ -35,6 +37,7 @@ pub mod polygon_figure;
 pub mod pose_figure;
 pub mod pose_layout;
 pub mod svg;
+pub mod svg_cam;
 pub mod svg_course;
 mod svg_draw;
 mod svg_forces;

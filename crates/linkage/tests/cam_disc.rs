@@ -208,7 +208,8 @@ fn oscillating() -> DiscCam {
 fn oscillating_reference(theta: f64) -> (f64, [f64; 2], f64) {
     let [s, v, a] = motion(theta, SWING);
     let rp = RB + RR;
-    let gamma0 = ((rp * rp - PIVOT * PIVOT - ARM * ARM) / (2.0 * PIVOT * ARM)).acos();
+    // The roller below the line of centres, a lift swinging it outward.
+    let gamma0 = -((rp * rp - PIVOT * PIVOT - ARM * ARM) / (2.0 * PIVOT * ARM)).acos();
     let g = gamma0 + s;
     // The roller centre in the frame and its derivatives by θ.
     let (cx, cy) = (PIVOT + ARM * g.cos(), ARM * g.sin());
@@ -306,4 +307,38 @@ fn a_roller_bigger_than_the_pitch_curve_is_an_undercut_and_bad_sizes_are_named()
     };
     let e = DiscCam::new(program(H), RB, off).expect_err("offset past the circle");
     assert!(e.to_string().contains("follower offset"), "{e}");
+}
+
+/// A lift moves the roller away from the cam's centre, for either follower: the
+/// profile never comes inside the base circle, and touches it where the lift is 0.
+#[test]
+fn a_lift_moves_the_roller_outward_and_the_profile_stays_on_or_outside_the_base_circle() {
+    let translating = DiscCam::new(
+        program(H),
+        RB,
+        Follower::Translating {
+            offset_m: 0.3 * RB,
+            face: Face::Roller { radius_m: RR },
+        },
+    )
+    .expect("fits");
+    for cam in [oscillating(), translating] {
+        let mut least = f64::INFINITY;
+        for i in 0..3600 {
+            let p = cam.at(2.0 * PI * i as f64 / 3600.0);
+            let r = p.profile_m[0].hypot(p.profile_m[1]);
+            assert!(r >= RB * (1.0 - 1e-12), "{r} inside the base circle {RB}");
+            let pitch = p.pitch_m[0].hypot(p.pitch_m[1]);
+            let outward = pitch - (RB + RR);
+            assert!(
+                outward >= -1e-12 * RB,
+                "the pitch curve inside the prime circle"
+            );
+            if p.motion.s > 0.1 * H.min(SWING) {
+                assert!(outward > 0.0, "a lift that does not move the roller out");
+            }
+            least = least.min(r);
+        }
+        assert!((least - RB).abs() < 1e-9 * RB, "{least}");
+    }
 }

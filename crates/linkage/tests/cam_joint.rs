@@ -124,7 +124,7 @@ fn the_contact_normal_and_curvature_match_the_pitch_curve_differentiated_on_the_
 }
 
 /// A scene of the disc cam's own layout: the cam's centre at the origin, the arm's
-/// pivot on +x at `pivot`, the roller above the axis (as `DiscCam` places it).
+/// pivot on +x at `pivot`, the roller below the axis (as `DiscCam` places it).
 fn disc_layout_scene(pivot: f64, arm: f64, base: f64, roller: f64, rest_deg: f64) -> String {
     format!(
         r#"Scene(
@@ -148,7 +148,7 @@ fn disc_layout_scene(pivot: f64, arm: f64, base: f64, roller: f64, rest_deg: f64
 fn an_arm_in_the_disc_cams_layout_gives_the_disc_cams_profile_and_pressure_angle() {
     let (pivot, arm, base, roller): (f64, f64, f64, f64) = (120.0, 90.0, 40.0, 10.0);
     let rp = base + roller;
-    let gamma0 = ((rp * rp - pivot * pivot - arm * arm) / (2.0 * pivot * arm)).acos();
+    let gamma0 = -((rp * rp - pivot * pivot - arm * arm) / (2.0 * pivot * arm)).acos();
     let m = Mechanism::from_ron(&disc_layout_scene(
         pivot,
         arm,

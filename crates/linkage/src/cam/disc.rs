@@ -42,8 +42,9 @@ pub enum Follower {
         /// What touches the cam.
         face: Face,
     },
-    /// Turns about a pivot at (`pivot_m`, 0) with an arm `arm_m` long; the program's
-    /// displacement is the arm's angle, rad, counter-clockwise.
+    /// Turns about a pivot at (`pivot_m`, 0) with an arm `arm_m` long, its roller
+    /// below the line of centres; the program's displacement is the arm's angle, rad,
+    /// counter-clockwise, which swings the roller away from the cam's centre.
     Oscillating {
         /// The pivot's distance from the cam's centre, m.
         pivot_m: f64,
@@ -214,7 +215,10 @@ impl DiscCam {
             }
             Follower::Oscillating { pivot_m, arm_m, .. } => {
                 let pivot = Vec2::new(pivot_m, 0.0);
-                let gamma0 = ((rp * rp - pivot_m * pivot_m - arm_m * arm_m)
+                // The roller below the line of centres at zero lift, so that a lift
+                // (counter-clockwise) swings it away from the cam's centre: the
+                // distance² p² + l² + 2pl·cos γ grows as γ rises to 0.
+                let gamma0 = -((rp * rp - pivot_m * pivot_m - arm_m * arm_m)
                     / (2.0 * pivot_m * arm_m))
                     .clamp(-1.0, 1.0)
                     .acos();

@@ -16,6 +16,7 @@ mod laws;
 mod program;
 mod sizing;
 mod spec;
+mod table;
 
 pub use disc::{CamPoint, DiscCam, Face, Follower};
 pub(crate) use disc::{pitch_on_turning_cam, turn};
@@ -29,3 +30,4 @@ pub use program::{
 pub use sizing::{Contact, FollowerLoad};
 pub(crate) use spec::segments_of;
 pub use spec::{CamDesign, CamSpec, FaceSpec, FollowerSpec, SegmentSpec};
+pub use table::{CAM_TABLE_HEADER, cam_table_row};

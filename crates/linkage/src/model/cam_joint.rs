@@ -6,7 +6,7 @@
 
 use nalgebra::UnitComplex;
 
-use crate::cam::{FollowerMotion, Program, pitch_on_turning_cam, turn};
+use crate::cam::{CamPoint, FollowerMotion, Program, pitch_on_turning_cam, turn};
 use crate::ids::{LinkId, PointId};
 use crate::model::Prismatic;
 use crate::motion::{LinkMotion, PointMotion, Vec2, perp};
@@ -183,6 +183,47 @@ impl CamJoint {
             pitch_radius_m: pitch.radius_m,
             profile_radius_m: pitch.radius_m - self.roller_radius_m,
         }
+    }
+
+    /// The cam and its follower at the cam link's angle `cam_angle` as a cam file's
+    /// cam gives them: the program's lift (from the lowest position, not the rest)
+    /// and its rates per radian of cam, and the pitch and profile points in the cam's
+    /// own frame about its centre (the cam link's axes).
+    pub fn point_at(&self, cam_angle: f64) -> CamPoint {
+        let contact = self.contact(cam_angle);
+        let on_cam = |p: Vec2| {
+            let q = turn(p - self.centre, -cam_angle);
+            [q.x, q.y]
+        };
+        CamPoint {
+            angle_rad: cam_angle,
+            motion: self.program.at(cam_angle - self.phase_rad),
+            pitch_m: on_cam(contact.roller),
+            profile_m: on_cam(contact.point),
+            pressure_angle_rad: contact.pressure_angle_rad,
+            pitch_radius_m: contact.pitch_radius_m,
+            profile_radius_m: contact.profile_radius_m,
+        }
+    }
+
+    /// The largest pressure angle a designer allows: 30° for a translating follower,
+    /// 45° for an arm (whose guide is a pin, not a sliding stem that can jam), as the
+    /// textbooks advise.
+    pub fn pressure_limit_rad(&self) -> f64 {
+        match self.guide {
+            FollowerGuide::Arm { .. } => 45f64.to_radians(),
+            FollowerGuide::Slide { .. } => 30f64.to_radians(),
+        }
+    }
+
+    /// The base circle's radius: the profile's least distance from the cam's centre
+    /// over `samples` cam angles, m.
+    pub fn base_radius_m(&self, samples: usize) -> f64 {
+        let n = samples.max(3);
+        (0..n)
+            .map(|i| std::f64::consts::TAU * i as f64 / n as f64)
+            .map(|theta| (self.contact(theta).point - self.centre).norm())
+            .fold(f64::INFINITY, f64::min)
     }
 
     /// The cam's profile in the cam link's own coordinates, at `samples` cam angles

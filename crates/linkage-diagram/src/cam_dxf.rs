@@ -1,0 +1,55 @@
+//! A cam's profile (and its pitch curve and base circle, each on its own layer) as a
+//! DXF drawing in millimetres, written by the `dxf` crate: closed lightweight
+//! polylines through the sampled points, which a CAM program offsets or fits.
+
+use dxf::entities::{Circle, Entity, EntityType, LwPolyline};
+use dxf::enums::{AcadVersion, Units};
+use dxf::{Drawing, DxfError, LwPolylineVertex, Point};
+
+/// The profile's layer.
+pub const PROFILE_LAYER: &str = "PROFILE";
+/// The pitch curve's layer.
+pub const PITCH_LAYER: &str = "PITCH";
+/// The base circle's layer.
+pub const BASE_CIRCLE_LAYER: &str = "BASE_CIRCLE";
+
+fn polyline(points: &[[f64; 2]], layer: &str) -> Entity {
+    let mut line = LwPolyline::default();
+    line.set_is_closed(true);
+    line.vertices = points
+        .iter()
+        .map(|&[x, y]| LwPolylineVertex {
+            x: x * 1e3,
+            y: y * 1e3,
+            ..Default::default()
+        })
+        .collect();
+    let mut e = Entity::new(EntityType::LwPolyline(line));
+    e.common.layer = layer.to_string();
+    e
+}
+
+/// The DXF of a cam: its `profile` and `pitch` curve (m, in the cam's frame about its
+/// centre) and its base circle of `base_radius_m`.
+///
+/// # Errors
+/// The `dxf` crate's, writing to memory.
+pub fn cam_dxf(
+    profile: &[[f64; 2]],
+    pitch: &[[f64; 2]],
+    base_radius_m: f64,
+) -> Result<Vec<u8>, DxfError> {
+    let mut drawing = Drawing::new();
+    // Lightweight polylines came with R14; the crate writes R12 unless told.
+    drawing.header.version = AcadVersion::R2000;
+    drawing.header.default_drawing_units = Units::Millimeters;
+    drawing.add_entity(polyline(profile, PROFILE_LAYER));
+    drawing.add_entity(polyline(pitch, PITCH_LAYER));
+    let base = Circle::new(Point::new(0.0, 0.0, 0.0), base_radius_m * 1e3);
+    let mut circle = Entity::new(EntityType::Circle(base));
+    circle.common.layer = BASE_CIRCLE_LAYER.to_string();
+    drawing.add_entity(circle);
+    let mut bytes = Vec::new();
+    drawing.save(&mut bytes)?;
+    Ok(bytes)
+}
