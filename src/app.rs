@@ -292,7 +292,7 @@ impl eframe::App for LinkageApp {
     /// The frame's work before any panel is laid out: the screen's arrangement, the
     /// animation's step, the keyboard, dropped files, a changed address, and the
     /// commands the panels left that only the app can carry out.
-    fn logic(&mut self, ctx: &egui::Context, _frame: &mut eframe::Frame) {
+    fn logic(&mut self, ctx: &egui::Context, frame: &mut eframe::Frame) {
         let started = web_time::Instant::now();
         let st = &mut self.state;
         if st.layout.update(ctx) {
@@ -318,6 +318,7 @@ impl eframe::App for LinkageApp {
             undo_shortcuts(ctx, st);
         }
         self.panels.files.take_dropped(ctx, st);
+        self.panels.files.take_requested(ctx, st, frame);
         #[cfg(target_arch = "wasm32")]
         {
             self.fragment_watch.install(ctx);

@@ -1,4 +1,5 @@
-//! What a file prompt does: open or save a scene, export the sweep or the sheet.
+//! What a file prompt does: open or save a scene, export the sweep, the sheet or a
+//! cam.
 //! Shared by the files panel, the desktop's dialog and the browser's picker.
 
 /// What a file prompt will do.
@@ -14,6 +15,12 @@ pub enum FileAction {
     ExportSheet,
     /// The same sheet as PNG.
     ExportSheetPng,
+    /// Write a cam joint (by its index) over its turn as CSV.
+    CamCsv(usize),
+    /// Write a cam joint's profile sheet as SVG.
+    CamSvg(usize),
+    /// Write a cam joint's profile as DXF for manufacture (the desktop app).
+    CamDxf(usize),
 }
 
 impl FileAction {
@@ -25,6 +32,9 @@ impl FileAction {
             Self::ExportCsv => "Export sweep CSV",
             Self::ExportSheet => "Export diagram sheet (SVG)",
             Self::ExportSheetPng => "Export diagram sheet (PNG)",
+            Self::CamCsv(_) => "Export cam table (CSV)",
+            Self::CamSvg(_) => "Export cam profile (SVG)",
+            Self::CamDxf(_) => "Export cam profile (DXF)",
         }
     }
 
@@ -32,9 +42,10 @@ impl FileAction {
     pub fn file_type(self) -> (&'static str, &'static str) {
         match self {
             Self::Open | Self::SaveScene => ("Linkage scene", "ron"),
-            Self::ExportCsv => ("CSV table", "csv"),
-            Self::ExportSheet => ("SVG drawing", "svg"),
+            Self::ExportCsv | Self::CamCsv(_) => ("CSV table", "csv"),
+            Self::ExportSheet | Self::CamSvg(_) => ("SVG drawing", "svg"),
             Self::ExportSheetPng => ("PNG picture", "png"),
+            Self::CamDxf(_) => ("DXF drawing", "dxf"),
         }
     }
 }

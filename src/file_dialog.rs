@@ -75,12 +75,7 @@ impl PathChooser for SystemDialog {
         // on a helper thread so that the window keeps drawing while the dialog is open.
         let pending: PendingDialog = match request.action {
             FileAction::Open => Box::pin(dialog.pick_file()),
-            FileAction::SaveScene
-            | FileAction::ExportCsv
-            | FileAction::ExportSheet
-            | FileAction::ExportSheetPng => {
-                Box::pin(dialog.set_file_name(&request.suggested_name).save_file())
-            }
+            _ => Box::pin(dialog.set_file_name(&request.suggested_name).save_file()),
         };
         spawn_waiting(pending, reply);
     }

@@ -76,6 +76,9 @@ pub struct Commands {
     pub fit: bool,
     /// Open the synthesis window, or close it when open.
     pub toggle_synthesis: bool,
+    /// A file action another panel asked for (the cam panel's exports), started by
+    /// the files panel.
+    pub file: Option<crate::file_action::FileAction>,
 }
 
 /// Whether and how fast the animation runs.

@@ -1,6 +1,6 @@
 //! A cam joint as drawn: the cam's disc turning with its link (a fan of triangles
 //! from its centre, so that the whole profile is filled, and its outline) and the
-//! follower's roller on it.
+//! follower's roller on it. The rim is red where the cam passes a limit.
 
 use glam::Vec2;
 
@@ -10,7 +10,13 @@ use super::shape::{Kind, Shape};
 /// The cams' discs, drawn under the links.
 pub(super) fn cam_discs(push: &mut impl FnMut(Option<Shape>), d: &Drawn<'_>) {
     let (m, pose) = (d.s.mechanism(), d.s.pose());
-    for (cam, profile) in m.cams.iter().zip(&d.s.topology().cam_profiles) {
+    let topology = d.s.topology();
+    for ((cam, profile), past) in m
+        .cams
+        .iter()
+        .zip(&topology.cam_profiles)
+        .zip(&topology.cam_past_limit)
+    {
         let link = &pose.links[cam.cam];
         let on_screen: Vec<Vec2> = profile
             .iter()
@@ -31,13 +37,12 @@ pub(super) fn cam_discs(push: &mut impl FnMut(Option<Shape>), d: &Drawn<'_>) {
                 colour::CAM,
                 [0.0; 2],
             ));
-            push(Shape::new(
-                Kind::Line,
-                [a, b, a],
-                0.25 * d.bar,
-                colour::CAM_EDGE,
-                [0.0; 2],
-            ));
+            // The rim in red where the cam passes a limit (pressure angle, undercut).
+            let (edge, width) = match past.get(i) {
+                Some(true) => (colour::PAST_LIMIT, 0.6 * d.bar),
+                _ => (colour::CAM_EDGE, 0.25 * d.bar),
+            };
+            push(Shape::new(Kind::Line, [a, b, a], width, edge, [0.0; 2]));
         }
     }
 }

@@ -25,6 +25,8 @@ pub(super) mod colour {
     pub const CAM: [f32; 4] = [0.80, 0.74, 0.58, 1.0];
     pub const CAM_EDGE: [f32; 4] = [0.42, 0.36, 0.24, 1.0];
     pub const ROLLER: [f32; 4] = [0.30, 0.30, 0.34, 1.0];
+    /// A cam's rim where it passes a limit.
+    pub const PAST_LIMIT: [f32; 4] = [0.85, 0.15, 0.12, 1.0];
 }
 
 /// The pose as drawn: where its points fall in the camera's local coordinates, and

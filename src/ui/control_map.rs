@@ -37,6 +37,8 @@ pub enum ControlKind {
     Layer,
     /// A file button of the top bar (open, save, export).
     FileButton,
+    /// A cam panel control: a segment's law or angle, the lift, the roller, an export.
+    Cam,
     /// The polygon pane's enlarge / narrower button.
     PolygonLayout,
     /// Undo or redo.

@@ -59,6 +59,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     springs(ui, st, touch);
     masses(ui, st, touch);
     branches(ui, st);
+    crate::ui::cam_panel::cam_panels(ui, st);
 }
 
 /// Play or pause, and the animation's speed (on a narrow phone, under the button).

@@ -95,6 +95,19 @@ impl Files {
         self.take_answers(st);
     }
 
+    /// Starts a file action another panel asked for (the cam panel's exports): the
+    /// file buttons may be out of sight, in a phone's menu.
+    pub fn take_requested(
+        &mut self,
+        ctx: &egui::Context,
+        st: &mut AppState,
+        frame: &eframe::Frame,
+    ) {
+        if let Some(action) = st.commands.file.take() {
+            self.start(ctx, st, action, frame);
+        }
+    }
+
     /// Acts on a file the browser delivered.
     #[cfg(target_arch = "wasm32")]
     fn take_answers(&mut self, st: &mut AppState) {
@@ -114,12 +127,7 @@ impl Files {
                 PathAnswer::Chosen(path) => {
                     let path = match action {
                         FileAction::Open => path,
-                        FileAction::SaveScene
-                        | FileAction::ExportCsv
-                        | FileAction::ExportSheet
-                        | FileAction::ExportSheetPng => {
-                            crate::file_dialog::with_extension(path, action.file_type().1)
-                        }
+                        _ => crate::file_dialog::with_extension(path, action.file_type().1),
                     };
                     self.dialog.last_dir = path.parent().map(std::path::Path::to_path_buf);
                     run(st, action, &path);
@@ -214,10 +222,10 @@ impl Files {
                 crate::web::download_svg_as_png(&default_name(st, action), &sheet(st), SHEET_DPI)
                     .map_err(WriteError::Browser)
             }
-            FileAction::SaveScene | FileAction::ExportCsv | FileAction::ExportSheet => {
+            _ => {
                 let mime = match action {
-                    FileAction::ExportCsv => "text/csv",
-                    FileAction::ExportSheet => "image/svg+xml",
+                    FileAction::ExportCsv | FileAction::CamCsv(_) => "text/csv",
+                    FileAction::ExportSheet | FileAction::CamSvg(_) => "image/svg+xml",
                     _ => "text/plain",
                 };
                 contents(st, action).and_then(|bytes| {
@@ -277,6 +285,9 @@ fn default_name(st: &AppState, action: FileAction) -> String {
             st.session.input_rad().to_degrees(),
             action.file_type().1
         ),
+        FileAction::CamCsv(i) | FileAction::CamSvg(i) | FileAction::CamDxf(i) => {
+            format!("{stem}_cam{}.{}", i + 1, action.file_type().1)
+        }
     }
 }
 
@@ -297,6 +308,17 @@ enum WriteError {
     /// Open reads; it writes nothing.
     #[error("nothing to write when opening")]
     Opening,
+    /// The scene has no cam joint of that number (an edit took it away).
+    #[error("the scene has no cam joint {0}")]
+    NoCam(usize),
+    /// The DXF crate's own words.
+    #[cfg(not(target_arch = "wasm32"))]
+    #[error("{0}")]
+    Dxf(String),
+    /// The browser build has no DXF writer (its crate needs randomness wasm32 lacks).
+    #[cfg(target_arch = "wasm32")]
+    #[error("the DXF is written by the desktop app; the browser exports CSV and SVG")]
+    DxfInBrowser,
     /// The browser refused (its own words).
     #[cfg(target_arch = "wasm32")]
     #[error("{0}")]
@@ -314,8 +336,39 @@ fn contents(st: &AppState, action: FileAction) -> Result<Vec<u8>, WriteError> {
         FileAction::ExportCsv => Ok(st.session.sweep_csv()?.into_bytes()),
         FileAction::ExportSheet => Ok(sheet(st).into_bytes()),
         FileAction::ExportSheetPng => sheet_png(st),
+        FileAction::CamCsv(i) => st
+            .session
+            .cam_csv(i)
+            .map(String::into_bytes)
+            .ok_or(WriteError::NoCam(i + 1)),
+        FileAction::CamSvg(i) => st
+            .session
+            .cam_svg(i)
+            .map(String::into_bytes)
+            .ok_or(WriteError::NoCam(i + 1)),
+        FileAction::CamDxf(i) => cam_dxf(st, i),
         FileAction::Open => Err(WriteError::Opening),
     }
+}
+
+/// Cam joint `i`'s profile, pitch curve and base circle as DXF.
+#[cfg(not(target_arch = "wasm32"))]
+fn cam_dxf(st: &AppState, i: usize) -> Result<Vec<u8>, WriteError> {
+    let c = st
+        .session
+        .curves()
+        .cams
+        .get(i)
+        .ok_or(WriteError::NoCam(i + 1))?;
+    let profile: Vec<[f64; 2]> = c.points.iter().map(|p| p.profile_m).collect();
+    let pitch: Vec<[f64; 2]> = c.points.iter().map(|p| p.pitch_m).collect();
+    linkage_diagram::cam_dxf::cam_dxf(&profile, &pitch, c.base_radius_m)
+        .map_err(|e| WriteError::Dxf(e.to_string()))
+}
+
+#[cfg(target_arch = "wasm32")]
+fn cam_dxf(_: &AppState, _: usize) -> Result<Vec<u8>, WriteError> {
+    Err(WriteError::DxfInBrowser)
 }
 
 /// The sheet of the current position, instant centres as the view shows them.
@@ -393,10 +446,7 @@ fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {
             Ok(text) => open_text(st, name, &text),
             Err(e) => report(st, log::Level::Warn, format!("cannot read {shown}: {e}")),
         },
-        FileAction::SaveScene
-        | FileAction::ExportCsv
-        | FileAction::ExportSheet
-        | FileAction::ExportSheetPng => {
+        _ => {
             let written = contents(st, action)
                 .and_then(|t| std::fs::write(path, t).map_err(WriteError::File));
             match written {

@@ -1,6 +1,8 @@
 //! The panels, one file each.
 
 pub mod accuracy;
+pub mod cam_panel;
+pub mod cam_plots;
 pub mod centres;
 pub mod construction;
 pub mod control_map;

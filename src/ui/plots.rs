@@ -21,6 +21,10 @@ pub enum PlotTab {
     Transmission,
     /// Every output against the main shaft, with its dwells.
     Timing,
+    /// A cam's follower: lift, velocity, acceleration and jerk against the cam angle.
+    CamMotion,
+    /// A cam's pressure angle and radius of curvature against their limits.
+    CamLimits,
     /// Input torque and force amplification (kinetostatic scenes).
     Torque,
     /// The flywheel by the energy method (kinetostatic scenes).
@@ -43,6 +47,7 @@ pub fn tab_available(tab: PlotTab, s: &Session) -> bool {
         PlotTab::Output => !c.outputs.is_empty(),
         PlotTab::Transmission => !c.transmission_deg.is_empty(),
         PlotTab::Timing => !c.timing.lanes.is_empty(),
+        PlotTab::CamMotion | PlotTab::CamLimits => crate::ui::cam_plots::has_cams(s),
         // What the scene models: its curves are computed only when the tab is shown.
         PlotTab::Torque | PlotTab::Flywheel | PlotTab::Shaking => {
             s.models() == Models::Kinetostatics
@@ -97,6 +102,16 @@ impl PlotsPanel {
                     "timing diagram: every output against the main shaft, dwells shaded",
                 ),
                 (
+                    PlotTab::CamMotion,
+                    "Cam s v a j",
+                    "the cam's follower: lift, velocity, acceleration, jerk",
+                ),
+                (
+                    PlotTab::CamLimits,
+                    "Cam limits",
+                    "the cam's pressure angle and radius of curvature against their limits",
+                ),
+                (
                     PlotTab::Torque,
                     "Torque",
                     "input torque and force amplification",
@@ -147,6 +162,8 @@ impl PlotsPanel {
                     crate::ui::timing_plot::timing_plot(ui, s, cursor_deg(s), height);
                 });
             }
+            PlotTab::CamMotion => crate::ui::cam_plots::motion_plots(ui, s),
+            PlotTab::CamLimits => crate::ui::cam_plots::limit_plots(ui, s),
             PlotTab::Torque => torque_plots(ui, s),
             PlotTab::Flywheel => flywheel_tab(ui, s),
             PlotTab::Steady => steady_tab(ui, s),

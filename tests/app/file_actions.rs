@@ -392,3 +392,71 @@ fn the_desktop_binary_answers_its_command_line_and_names_a_missing_display() {
         "{err}"
     );
 }
+
+/// The cam panel's exports of the paper-cup feed's cam: the table as CSV (the
+/// session's, every cam angle), the profile sheet as SVG, and the DXF read back by
+/// the `dxf` crate with every profile point of the table in it (to 1e-9 mm).
+#[test]
+fn the_cam_panel_exports_csv_svg_and_a_dxf_holding_every_profile_point() {
+    let dir = scratch("cam-export");
+    let (mut h, _) = harness_answering(PathAnswer::Cancelled);
+    let session = linkage_lab::session::Session::open_builtin("paper_cup_cam_feed").expect("opens");
+    h.state_mut().state.session = session;
+    h.run();
+    let mut written = Vec::new();
+    for (label, file) in [
+        ("Cam CSV…", "cam.csv"),
+        ("Cam SVG…", "cam.svg"),
+        ("Cam DXF…", "cam.dxf"),
+    ] {
+        let path = dir.join(file);
+        let dialog = Arc::new(Scripted {
+            answer: PathAnswer::Chosen(path.clone()),
+            asked: Mutex::new(Vec::new()),
+        });
+        h.state_mut().panels.files.dialog.chooser = dialog.clone();
+        click(&mut h, label);
+        h.run();
+        let asked = dialog.asked.lock().expect("not poisoned").clone();
+        assert_eq!(asked.len(), 1, "{label}");
+        assert!(path.exists(), "{label}: {}", status(&h));
+        written.push(path);
+    }
+    let csv = std::fs::read_to_string(&written[0]).expect("csv");
+    assert_eq!(
+        Some(csv.as_str()),
+        h.state().state.session.cam_csv(0).as_deref()
+    );
+    let svg = std::fs::read_to_string(&written[1]).expect("svg");
+    assert!(
+        svg.contains("Cam profile: crank/bell_crank"),
+        "{}",
+        &svg[..200]
+    );
+    let drawing = dxf::Drawing::load_file(&written[2]).expect("the DXF parses");
+    let profile = drawing
+        .entities()
+        .find_map(|e| match &e.specific {
+            dxf::entities::EntityType::LwPolyline(p) if e.common.layer == "PROFILE" => {
+                Some(p.clone())
+            }
+            _ => None,
+        })
+        .expect("a profile polyline");
+    let rows: Vec<Vec<f64>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().expect("a number")).collect())
+        .collect();
+    assert_eq!(profile.vertices.len(), rows.len());
+    for (v, row) in profile.vertices.iter().zip(&rows) {
+        let (x, y) = (row[7] * 1e3, row[8] * 1e3);
+        assert!(
+            (v.x - x).abs() < 1e-9 && (v.y - y).abs() < 1e-9,
+            "({}, {}) vs ({x}, {y})",
+            v.x,
+            v.y
+        );
+    }
+    std::fs::remove_dir_all(dir).expect("clean up");
+}

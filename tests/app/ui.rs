@@ -162,6 +162,61 @@ fn cam_and_four_bar_on_one_shaft_snapshot() {
     h.snapshot("paper_cup_cam_feed_timing");
 }
 
+/// The cam panel: a segment's angle moves the join (the next segment makes up the
+/// difference), the lift scales the program, a span that leaves the next segment
+/// nothing is refused with its range, and undo takes the edits back.
+#[test]
+fn the_cam_panel_edits_the_program_and_undo_takes_it_back() {
+    use linkage::cam::SegmentSpec;
+    let mut h = harness();
+    open_scene(&mut h, "paper_cup_cam_feed");
+    let spans = |h: &Harness<'static, LinkageApp>| -> Vec<f64> {
+        h.state().state.session.scene().cams[0]
+            .segments
+            .iter()
+            .map(|s| match *s {
+                SegmentSpec::Rise { deg, .. }
+                | SegmentSpec::Dwell { deg }
+                | SegmentSpec::Return { deg, .. } => deg,
+            })
+            .collect()
+    };
+    assert_eq!(spans(&h), [110.0, 70.0, 110.0, 70.0]);
+    h.get_by_role_and_label(Role::SpinButton, "1 rise")
+        .set_value_accesskit(100.0);
+    h.run();
+    assert_eq!(spans(&h), [100.0, 80.0, 110.0, 70.0]);
+    let swing = |h: &Harness<'static, LinkageApp>| {
+        let lane = &h.state().state.session.curves().timing.lanes[0];
+        (lane.range[1] - lane.range[0]).to_degrees()
+    };
+    assert!((swing(&h) - 8.0).abs() < 1e-9);
+    h.get_by_role_and_label(Role::SpinButton, "lift")
+        .set_value_accesskit(10.0);
+    h.run();
+    assert!((swing(&h) - 10.0).abs() < 1e-9, "{}", swing(&h));
+    h.get_by_role_and_label(Role::SpinButton, "2 dwell")
+        .set_value_accesskit(200.0);
+    h.run();
+    let notice = h.state().state.session.message().unwrap_or_default();
+    assert!(notice.contains("between 0 and 190"), "{notice}");
+    assert_eq!(spans(&h), [100.0, 80.0, 110.0, 70.0]);
+    h.get_by_role_and_label(Role::Button, "Cam limits").click();
+    h.run();
+    h.snapshot("paper_cup_cam_feed_cam_limits");
+    h.get_by_role_and_label(Role::Button, "Cam s v a j").click();
+    h.run();
+    h.snapshot("paper_cup_cam_feed_cam_motion");
+    for _ in 0..2 {
+        h.state_mut()
+            .state
+            .edit(linkage_lab::session::SceneEdit::Undo);
+        h.run();
+    }
+    assert_eq!(spans(&h), [110.0, 70.0, 110.0, 70.0]);
+    assert!((swing(&h) - 8.0).abs() < 1e-9);
+}
+
 #[test]
 fn an_edit_shows_in_the_view_in_the_frame_that_makes_it() {
     let mut h = harness();

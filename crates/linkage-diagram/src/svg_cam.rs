@@ -31,13 +31,6 @@ pub struct CamSheet<'a> {
     pub pressure_limit_rad: f64,
 }
 
-/// Whether the cam at `p` passes a limit: the pressure angle past `limit`, or the
-/// profile undercut (its radius of curvature not positive where the pitch curve is
-/// convex: the roller cuts away the cam it should run on).
-pub fn past_limit(p: &CamPoint, limit: f64) -> bool {
-    p.pressure_angle_rad.abs() > limit || (p.pitch_radius_m > 0.0 && p.profile_radius_m <= 0.0)
-}
-
 /// The sheet.
 pub fn cam_sheet(c: &CamSheet<'_>) -> String {
     let side = PAGE_W - 2.0 * MARGIN;
@@ -98,7 +91,7 @@ fn draw_cam(out: &mut String, c: &CamSheet<'_>, px: &dyn Fn([f64; 2]) -> Pt, sca
     for p in c
         .points
         .iter()
-        .filter(|p| past_limit(p, c.pressure_limit_rad))
+        .filter(|p| p.past_limit(c.pressure_limit_rad))
     {
         circle(out, px(p.profile_m), 2.2, PAST_LIMIT, "none");
     }

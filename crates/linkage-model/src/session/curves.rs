@@ -68,6 +68,8 @@ pub struct Curves {
     pub full_rotation: bool,
     /// The timing diagram: every output against the main shaft, with its dwells.
     pub timing: TimingDiagram,
+    /// Every cam joint over its turn.
+    pub cams: Vec<super::cam_curves::CamCurves>,
 }
 
 impl Curves {
@@ -110,6 +112,7 @@ impl Curves {
             full_rotation,
             input_deg,
             timing: timing_of_sweep(k, &sw),
+            cams: super::cam_curves::CamCurves::of(k.mechanism()),
         })
     }
 }

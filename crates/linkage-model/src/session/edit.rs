@@ -59,6 +59,13 @@ pub enum SceneEdit {
         /// Where to, metres.
         to_m: [f64; 2],
     },
+    /// Change a cam joint's program or roller, by its index in the scene's `cams`.
+    Cam {
+        /// Which cam joint.
+        cam: usize,
+        /// What changes.
+        edit: super::cam_edit::CamEdit,
+    },
     /// Put back the scene as opened.
     Reset,
     /// Put a whole scene (a synthesized design) in place of this one, at its own
@@ -85,6 +92,7 @@ impl Session {
             SceneEdit::FlipBranch { point } => self.flip_branch(&point),
             SceneEdit::Integrator(choice) => self.set_integrator(choice),
             SceneEdit::MovePoint { name, to_m } => self.move_point(&name, to_m),
+            SceneEdit::Cam { cam, edit } => self.edit_cam(cam, edit),
             SceneEdit::Reset => self.reset(),
             SceneEdit::Replace(scene) => self.replace(*scene),
             SceneEdit::Undo => self.travel(true),
@@ -228,7 +236,7 @@ impl Session {
 
     /// Rebuilds everything from `scene` at the current input; on failure nothing
     /// changes and the notice says `what` failed and why.
-    fn rebuild(&mut self, target: EditTarget, scene: SceneFile, what: String) {
+    pub(super) fn rebuild(&mut self, target: EditTarget, scene: SceneFile, what: String) {
         match super::Built::new(&scene, Some(self.input_rad())) {
             Ok(built) => self.commit(target, scene, built),
             Err(why) => self.message = Some(Notice::EditRefused { what, why }),

@@ -1,5 +1,5 @@
 //! What the session writes for the user: the sweep as CSV and the sheet of the
-//! current position as SVG.
+//! current position as SVG, and a cam joint as CSV and its profile as SVG.
 
 use linkage::sweep::{csv_header, csv_row, sweep};
 
@@ -46,5 +46,39 @@ impl Session {
             ..Default::default()
         };
         linkage_diagram::svg::sheet(&position, parts)
+    }
+}
+
+impl Session {
+    /// Cam joint `index` over its turn as CSV, in the `linkage cam` format (SI, an
+    /// arm's lift in radians, rates at the cam's speed); `None` without that joint.
+    pub fn cam_csv(&self, index: usize) -> Option<String> {
+        use linkage::cam::{CAM_TABLE_HEADER, cam_table_row};
+        let c = self.curves().cams.get(index)?;
+        let mut out = CAM_TABLE_HEADER.join(",");
+        out.push('\n');
+        for p in &c.points {
+            let row: Vec<String> = cam_table_row(p, c.speed_rad_s)
+                .iter()
+                .map(f64::to_string)
+                .collect();
+            out.push_str(&row.join(","));
+            out.push('\n');
+        }
+        Some(out)
+    }
+
+    /// Cam joint `index`'s profile sheet as SVG (as `linkage cam --svg` draws one);
+    /// `None` without that joint.
+    pub fn cam_svg(&self, index: usize) -> Option<String> {
+        let c = self.curves().cams.get(index)?;
+        Some(linkage_diagram::svg_cam::cam_sheet(
+            &linkage_diagram::svg_cam::CamSheet {
+                title: &c.name,
+                points: &c.points,
+                base_radius_m: c.base_radius_m,
+                pressure_limit_rad: c.pressure_limit_rad,
+            },
+        ))
     }
 }

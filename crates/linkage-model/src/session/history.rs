@@ -22,6 +22,8 @@ pub enum EditTarget {
     Branch(String),
     /// A point moved (dragged in the editor).
     Point(String),
+    /// A cam joint's program or roller, by its index.
+    Cam(usize),
     /// Everything put back as opened.
     Reset,
     /// A whole scene put in place (a synthesized design).

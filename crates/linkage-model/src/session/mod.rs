@@ -7,6 +7,8 @@
 
 pub mod analyses;
 mod built;
+pub mod cam_curves;
+pub mod cam_edit;
 pub mod curves;
 pub mod derived;
 pub mod document;

@@ -36,6 +36,15 @@ pub enum Notice {
         /// The valid range in words.
         valid: &'static str,
     },
+    /// A cam segment's angle that leaves the next segment none.
+    CamSpanRefused {
+        /// The segment, from 0.
+        segment: usize,
+        /// The angle asked for, deg.
+        deg: f64,
+        /// Its angle and the next one's together, deg.
+        room_deg: f64,
+    },
     /// The crank cannot go to the angle asked for.
     InputRefused(LinkageError),
     /// A point cannot go where it was dragged.
@@ -109,6 +118,16 @@ impl fmt::Display for Notice {
             Self::InvalidValue { what, value, valid } => {
                 write!(f, "{what} = {value} is invalid: {valid}; nothing changed")
             }
+            Self::CamSpanRefused {
+                segment,
+                deg,
+                room_deg,
+            } => write!(
+                f,
+                "segment {} of the cam cannot span {deg} deg: the next segment gives it room, \
+                 so it must lie between 0 and {room_deg} deg (exclusive); nothing changed",
+                segment + 1
+            ),
             Self::InputRefused(why) => write!(f, "{why}"),
             Self::PointRefused { name, why, .. } if *why == PointRefusal::NoSuchPoint => {
                 write!(f, "there is no point named {name}")

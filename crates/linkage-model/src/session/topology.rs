@@ -20,6 +20,9 @@ pub struct Topology {
     /// coordinates, m, a closed outline of [`CAM_OUTLINE`] points. Made once per
     /// mechanism, since a frame only turns it with its link.
     pub cam_profiles: Vec<Vec<Vec2>>,
+    /// Per cam joint, per outline point: whether the cam passes a limit there (the
+    /// pressure angle past the joint's limit, or undercut), drawn in red.
+    pub cam_past_limit: Vec<Vec<bool>>,
 }
 
 /// Points of a cam's drawn outline: a segment every 2 degrees of cam.
@@ -60,12 +63,23 @@ impl Topology {
             .iter()
             .map(|c| c.profile_on_cam(CAM_OUTLINE))
             .collect();
+        let cam_past_limit = m
+            .cams
+            .iter()
+            .map(|c| {
+                (0..CAM_OUTLINE)
+                    .map(|i| std::f64::consts::TAU * i as f64 / CAM_OUTLINE as f64)
+                    .map(|theta| c.point_at(theta).past_limit(c.pressure_limit_rad()))
+                    .collect()
+            })
+            .collect();
         Self {
             joint_points,
             link_joints,
             link_others,
             marks,
             cam_profiles,
+            cam_past_limit,
         }
     }
 }

@@ -87,6 +87,16 @@ pub struct CamPoint {
     pub profile_radius_m: f64,
 }
 
+impl CamPoint {
+    /// Whether the cam passes a limit here: the pressure angle past `limit_rad`, or
+    /// the profile undercut (its radius of curvature not positive where the pitch
+    /// curve is convex: the roller would cut away the cam it runs on).
+    pub fn past_limit(&self, limit_rad: f64) -> bool {
+        self.pressure_angle_rad.abs() > limit_rad
+            || (self.pitch_radius_m > 0.0 && self.profile_radius_m <= 0.0)
+    }
+}
+
 /// The pitch curve where the roller's centre is, on a cam turning counter-clockwise.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Pitch {

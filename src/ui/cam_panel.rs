@@ -1,0 +1,278 @@
+//! The cam panel, in the controls for a scene with a cam joint: the program's
+//! segments in a table (the law of each rise and return, each segment's angle), the
+//! lift and the roller, the cam's figures against their limits (the pressure angle
+//! and the radius of curvature, in red where passed), the joins' continuity and the
+//! laws' peak coefficients, and the exports (CSV, SVG, and DXF on the desktop).
+//! Every change is an undoable edit, refused with the reason where it cannot be.
+
+use eframe::egui;
+use linkage::cam::{Law, SegmentSpec, peak_coefficients};
+use linkage::scene::CamJointSpec;
+
+use crate::file_action::FileAction;
+use crate::session::SceneEdit;
+use crate::session::cam_curves::CamCurves;
+use crate::session::cam_edit::CamEdit;
+use crate::state::AppState;
+use crate::ui::control_map::ControlKind;
+
+/// Red, for a figure past its limit.
+const PAST: egui::Color32 = egui::Color32::from_rgb(220, 70, 60);
+
+/// The panel of every cam joint of the scene.
+pub fn cam_panels(ui: &mut egui::Ui, st: &mut AppState) {
+    let specs = st.session.scene().cams.clone();
+    for (index, spec) in specs.iter().enumerate() {
+        ui.separator();
+        ui.label(egui::RichText::new(format!("Cam {}/{}", spec.cam, spec.follower)).strong());
+        segments(ui, st, index, spec);
+        lift_and_roller(ui, st, index, spec);
+        if let Some(c) = st.session.curves().cams.get(index).cloned() {
+            figures(ui, &c);
+        }
+        continuity_and_peaks(ui, st, index, spec);
+        exports(ui, st, index);
+    }
+}
+
+/// A segment's kind, law and lift in words, and its angle.
+fn describe(s: &SegmentSpec) -> (&'static str, Option<Law>, f64) {
+    match *s {
+        SegmentSpec::Rise { law, deg, .. } => ("rise", Some(law), deg),
+        SegmentSpec::Dwell { deg } => ("dwell", None, deg),
+        SegmentSpec::Return { law, deg, .. } => ("return", Some(law), deg),
+    }
+}
+
+/// The table: a row per segment with its law and its angle.
+fn segments(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJointSpec) {
+    egui::Grid::new(("cam segments", cam))
+        .num_columns(3)
+        .striped(true)
+        .show(ui, |ui| {
+            for (segment, s) in spec.segments.iter().enumerate() {
+                let (kind, law, deg) = describe(s);
+                let name = ui.label(format!("{} {kind}", segment + 1));
+                match law {
+                    Some(law) => law_menu(ui, st, (cam, segment), law, name.id),
+                    None => {
+                        ui.label("");
+                    }
+                }
+                let mut to = deg;
+                let label = format!("segment {} angle (deg)", segment + 1);
+                let r = ui
+                    .add(egui::DragValue::new(&mut to).speed(0.5).suffix("°"))
+                    .labelled_by(name.id)
+                    .on_hover_text("the next segment gives or takes the difference");
+                st.controls.note(ui, ControlKind::Cam, &label, &r);
+                if r.changed() {
+                    st.edit(SceneEdit::Cam {
+                        cam,
+                        edit: CamEdit::Span { segment, deg: to },
+                    });
+                }
+                ui.end_row();
+            }
+        });
+}
+
+/// The law of a rise or return, chosen from every law.
+fn law_menu(
+    ui: &mut egui::Ui,
+    st: &mut AppState,
+    (cam, segment): (usize, usize),
+    law: Law,
+    label: egui::Id,
+) {
+    let mut chosen = law;
+    let menu = egui::ComboBox::from_id_salt(("cam law", cam, segment))
+        .selected_text(law_name(law))
+        .show_ui(ui, |ui| {
+            for l in Law::ALL {
+                ui.selectable_value(&mut chosen, l, law_name(l));
+            }
+        });
+    let r = menu.response.labelled_by(label);
+    st.controls.note(
+        ui,
+        ControlKind::Cam,
+        &format!("segment {} law", segment + 1),
+        &r,
+    );
+    if chosen != law {
+        st.edit(SceneEdit::Cam {
+            cam,
+            edit: CamEdit::Law {
+                segment,
+                law: chosen,
+            },
+        });
+    }
+}
+
+/// A law as the textbooks name it.
+pub fn law_name(law: Law) -> &'static str {
+    match law {
+        Law::ConstantVelocity => "constant velocity",
+        Law::SimpleHarmonic => "simple harmonic",
+        Law::Cycloidal => "cycloidal",
+        Law::Polynomial345 => "3-4-5 polynomial",
+        Law::Polynomial4567 => "4-5-6-7 polynomial",
+        Law::ModifiedTrapezoid => "modified trapezoid",
+        Law::ModifiedSine => "modified sine",
+        Law::ModifiedConstantVelocity => "modified constant velocity",
+    }
+}
+
+/// The largest lift (every lift scales with it) and the roller's radius.
+fn lift_and_roller(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJointSpec) {
+    let largest = spec
+        .segments
+        .iter()
+        .filter_map(|s| match s {
+            SegmentSpec::Rise { lift, .. } | SegmentSpec::Return { lift, .. } => Some(*lift),
+            SegmentSpec::Dwell { .. } => None,
+        })
+        .fold(0.0, f64::max);
+    let arm = st.session.curves().cams.get(cam).is_some_and(|c| c.is_arm);
+    let unit = if arm {
+        "°".to_string()
+    } else {
+        format!(" {}", crate::session::unit_label(st.session.scene()))
+    };
+    ui.horizontal(|ui| {
+        let name = ui.label("lift");
+        let mut to = largest;
+        let r = ui
+            .add(
+                egui::DragValue::new(&mut to)
+                    .speed(0.05)
+                    .suffix(unit.as_str()),
+            )
+            .labelled_by(name.id)
+            .on_hover_text("every rise and return scales with it");
+        st.controls.note(ui, ControlKind::Cam, "lift", &r);
+        if r.changed() {
+            st.edit(SceneEdit::Cam {
+                cam,
+                edit: CamEdit::Lift(to),
+            });
+        }
+        let name = ui.label("roller");
+        let mut radius = spec.roller_radius;
+        let unit = crate::session::unit_label(st.session.scene());
+        let r = ui
+            .add(
+                egui::DragValue::new(&mut radius)
+                    .speed(0.1)
+                    .suffix(format!(" {unit}")),
+            )
+            .labelled_by(name.id);
+        st.controls.note(ui, ControlKind::Cam, "roller", &r);
+        if r.changed() {
+            st.edit(SceneEdit::Cam {
+                cam,
+                edit: CamEdit::Roller(radius),
+            });
+        }
+    });
+}
+
+/// The base circle, the largest pressure angle and the least radii, red past their
+/// limits.
+fn figures(ui: &mut egui::Ui, c: &CamCurves) {
+    let largest = c.points.iter().max_by(|a, b| {
+        a.pressure_angle_rad
+            .abs()
+            .total_cmp(&b.pressure_angle_rad.abs())
+    });
+    let least = c
+        .points
+        .iter()
+        .min_by(|a, b| a.profile_radius_m.total_cmp(&b.profile_radius_m));
+    ui.label(format!("base circle {:.2} mm", c.base_radius_m * 1e3));
+    if let Some(p) = largest {
+        let text = format!(
+            "largest pressure angle {:.2}° at {:.1}° (limit {:.0}°)",
+            p.pressure_angle_rad.abs().to_degrees(),
+            p.angle_rad.to_degrees(),
+            c.pressure_limit_rad.to_degrees()
+        );
+        let past = p.pressure_angle_rad.abs() > c.pressure_limit_rad;
+        ui.label(if past {
+            egui::RichText::new(text).color(PAST)
+        } else {
+            text.into()
+        });
+    }
+    if let Some(p) = least {
+        let undercut = c
+            .points
+            .iter()
+            .any(|q| q.pitch_radius_m > 0.0 && q.profile_radius_m <= 0.0);
+        let text = format!(
+            "least profile radius {:.2} mm at {:.1}°{}",
+            p.profile_radius_m * 1e3,
+            p.angle_rad.to_degrees(),
+            if undercut { ": undercut" } else { "" }
+        );
+        ui.label(if undercut {
+            egui::RichText::new(text).color(PAST)
+        } else {
+            text.into()
+        });
+    }
+}
+
+/// The continuity at each join and the laws' peak coefficients, folded away.
+fn continuity_and_peaks(ui: &mut egui::Ui, st: &AppState, cam: usize, spec: &CamJointSpec) {
+    let Some(joint) = st.session.mechanism().cams.get(cam) else {
+        return;
+    };
+    egui::CollapsingHeader::new("joins and peak coefficients")
+        .id_salt(("cam joins", cam))
+        .show(ui, |ui| {
+            for j in joint.program.joins() {
+                ui.label(format!(
+                    "{:.1}°: segment {} to {}: {:?}",
+                    j.angle_rad.to_degrees(),
+                    j.before + 1,
+                    j.after + 1,
+                    j.continuity
+                ));
+            }
+            let mut laws: Vec<Law> = spec.segments.iter().filter_map(|s| describe(s).1).collect();
+            laws.dedup();
+            for law in laws {
+                let k = peak_coefficients(law);
+                ui.label(format!(
+                    "{}: C_v {:.4}, C_a {:.4}, C_j {:.4}",
+                    law_name(law),
+                    k.velocity,
+                    k.acceleration,
+                    k.jerk
+                ));
+            }
+        });
+}
+
+/// The exports: the table as CSV, the profile as SVG, and on the desktop as DXF.
+fn exports(ui: &mut egui::Ui, st: &mut AppState, cam: usize) {
+    let mut actions = vec![
+        ("Cam CSV…", FileAction::CamCsv(cam)),
+        ("Cam SVG…", FileAction::CamSvg(cam)),
+    ];
+    if cfg!(not(target_arch = "wasm32")) {
+        actions.push(("Cam DXF…", FileAction::CamDxf(cam)));
+    }
+    ui.horizontal_wrapped(|ui| {
+        for (label, action) in actions {
+            let r = ui.button(label).on_hover_text(action.title());
+            st.controls.note(ui, ControlKind::Cam, label, &r);
+            if r.clicked() {
+                st.commands.file = Some(action);
+            }
+        }
+    });
+}

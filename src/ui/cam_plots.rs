@@ -1,0 +1,180 @@
+//! The cam tabs of the plot pane: the follower's lift, velocity, acceleration and
+//! jerk against the cam's angle at the cam's speed; and the cam's limits, the
+//! pressure angle with its allowed band and the profile's radius of curvature with
+//! zero (below it, where the pitch curve is convex, the cam is undercut), each with
+//! the places past the limit marked in red.
+
+use eframe::egui;
+use egui_plot::{HLine, Line, Plot, PlotPoints, Points, VLine};
+
+use crate::session::Session;
+use crate::session::cam_curves::CamCurves;
+
+/// Red, for the places past a limit.
+const PAST: egui::Color32 = egui::Color32::from_rgb(220, 70, 60);
+
+/// Whether the scene has a cam joint to plot.
+pub fn has_cams(s: &Session) -> bool {
+    !s.curves().cams.is_empty()
+}
+
+/// The cam angle of the current pose, deg in [0, 360), for the cursor.
+fn cursor_deg(s: &Session, cam: usize) -> Option<f64> {
+    let joint = s.mechanism().cams.get(cam)?;
+    Some(
+        s.pose().links[joint.cam]
+            .angle_rad()
+            .to_degrees()
+            .rem_euclid(360.0),
+    )
+}
+
+/// s, v, a and jerk of the first cam joint's follower against the cam angle.
+pub fn motion_plots(ui: &mut egui::Ui, s: &Session) {
+    let Some(c) = s.curves().cams.first() else {
+        return;
+    };
+    let (u, scale) = if c.is_arm {
+        ("deg", 180.0 / std::f64::consts::PI)
+    } else {
+        ("mm", 1e3)
+    };
+    let w = c.speed_rad_s;
+    // Each derivative by the cam angle times the cam's speed to that power.
+    let series = [
+        (format!("lift ({u})"), 0_i32),
+        (format!("velocity ({u}/s)"), 1),
+        (format!("acceleration ({u}/s²)"), 2),
+        (format!("jerk ({u}/s³)"), 3),
+    ];
+    let cursor = cursor_deg(s, 0);
+    crate::ui::plot_layout::side_by_side(ui, series.len(), |ui, i, height| {
+        let (label, order) = &series[i];
+        let data: Vec<[f64; 2]> = c
+            .points
+            .iter()
+            .map(|p| {
+                let m = &p.motion;
+                let per_rad = [m.s, m.v, m.a, m.j][*order as usize];
+                [p.angle_rad.to_degrees(), per_rad * w.powi(*order) * scale]
+            })
+            .collect();
+        cam_plot(ui, (s, "cam motion", i), label, &data, &[], cursor, height);
+    });
+}
+
+/// The pressure angle within its band, and the profile's radius of curvature.
+pub fn limit_plots(ui: &mut egui::Ui, s: &Session) {
+    let Some(c) = s.curves().cams.first() else {
+        return;
+    };
+    let cursor = cursor_deg(s, 0);
+    let limit = c.pressure_limit_rad.to_degrees();
+    let pressure = series(c, |p| p.pressure_angle_rad.to_degrees());
+    let radius = series(c, |p| p.profile_radius_m * 1e3);
+    crate::ui::plot_layout::side_by_side(ui, 2, |ui, i, height| {
+        if i == 0 {
+            let label = format!("pressure angle (deg), limit ±{limit:.0}");
+            cam_plot(
+                ui,
+                (s, "cam limits", i),
+                &label,
+                &pressure,
+                &[-limit, limit],
+                cursor,
+                height,
+            );
+        } else {
+            let label = "profile radius of curvature (mm)";
+            cam_plot(
+                ui,
+                (s, "cam limits", i),
+                label,
+                &radius,
+                &[0.0],
+                cursor,
+                height,
+            );
+        }
+    });
+    let past: Vec<[f64; 2]> = c
+        .points
+        .iter()
+        .filter(|p| p.past_limit(c.pressure_limit_rad))
+        .map(|p| [p.angle_rad.to_degrees(), p.pressure_angle_rad.to_degrees()])
+        .collect();
+    if !past.is_empty() {
+        ui.colored_label(
+            PAST,
+            format!(
+                "{} of {} cam angles past a limit",
+                past.len(),
+                c.points.len()
+            ),
+        );
+    }
+}
+
+/// `f` of every point of the cam against its angle, deg.
+fn series(c: &CamCurves, f: impl Fn(&linkage::cam::CamPoint) -> f64) -> Vec<[f64; 2]> {
+    c.points
+        .iter()
+        .map(|p| [p.angle_rad.to_degrees(), f(p)])
+        .collect()
+}
+
+/// One plot against the cam angle, with its limit lines and the points past them.
+fn cam_plot(
+    ui: &mut egui::Ui,
+    (s, id, i): (&Session, &str, usize),
+    label: &str,
+    data: &[[f64; 2]],
+    limits: &[f64],
+    cursor: Option<f64>,
+    height: f32,
+) {
+    let [lo, hi] = crate::ui::plots::robust_range(data);
+    let (lo, hi) = limits
+        .iter()
+        .fold((lo, hi), |(a, b), &l| (a.min(l), b.max(l)));
+    Plot::new((id, i, s.scene().name.as_str(), s.generation()))
+        .height(height)
+        .include_y(lo)
+        .include_y(hi)
+        .x_axis_label("cam angle (deg)")
+        .y_axis_label(label)
+        .allow_scroll(false)
+        .show(ui, |p| {
+            p.line(Line::new(
+                label,
+                data.iter().copied().collect::<PlotPoints<'_>>(),
+            ));
+            for &l in limits {
+                p.hline(HLine::new("limit", l).color(PAST));
+            }
+            let past = out_of(data, limits);
+            if !past.is_empty() {
+                p.points(
+                    Points::new("past the limit", PlotPoints::from(past))
+                        .color(PAST)
+                        .radius(2.0),
+                );
+            }
+            if let Some(x) = cursor {
+                p.vline(VLine::new("now", x));
+            }
+        });
+}
+
+/// The points of `data` outside the band of `limits` (two: below the first or above
+/// the second; one: below it).
+fn out_of(data: &[[f64; 2]], limits: &[f64]) -> Vec<[f64; 2]> {
+    data.iter()
+        .copied()
+        .filter(|&[_, y]| match limits {
+            [lo, hi] => y < *lo || y > *hi,
+            [lo] => y < *lo,
+            _ => false,
+        })
+        .collect()
+}
