@@ -133,7 +133,7 @@ fn cam_plot(
     cursor: Option<f64>,
     height: f32,
 ) {
-    let [lo, hi] = crate::ui::plots::robust_range(data);
+    let [lo, hi] = crate::ui::plot_layout::robust_range(data);
     let (lo, hi) = limits
         .iter()
         .fold((lo, hi), |(a, b), &l| (a.min(l), b.max(l)));

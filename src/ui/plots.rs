@@ -68,6 +68,50 @@ fn cursor_deg(s: &Session) -> f64 {
     }
 }
 
+/// The tabs: the plot, its short name (so that a phone's sheet holds the row) and
+/// its full name, shown on hover.
+const TABS: [(PlotTab, &str, &str); 11] = [
+    (PlotTab::Output, "Output", "the output's s, v, a"),
+    (PlotTab::Transmission, "Transmission", "transmission angle"),
+    (
+        PlotTab::Timing,
+        "Timing",
+        "timing diagram: every output against the main shaft, dwells shaded",
+    ),
+    (
+        PlotTab::CamMotion,
+        "Cam s v a j",
+        "the cam's follower: lift, velocity, acceleration, jerk",
+    ),
+    (
+        PlotTab::CamLimits,
+        "Cam limits",
+        "the cam's pressure angle and radius of curvature against their limits",
+    ),
+    (
+        PlotTab::Torque,
+        "Torque",
+        "input torque and force amplification",
+    ),
+    (
+        PlotTab::Flywheel,
+        "Flywheel",
+        "flywheel by the energy method",
+    ),
+    (
+        PlotTab::Steady,
+        "Speed",
+        "the real speed with the drive: steady state and run-up",
+    ),
+    (
+        PlotTab::Shaking,
+        "Shaking",
+        "shaking force, with the crank counterweight",
+    ),
+    (PlotTab::Motion, "ω–φ, ω–t, φ–t", "the dynamic run"),
+    (PlotTab::ReducedModel, "J(q), M(q)", "the reduced model"),
+];
+
 /// The plot pane's own state: the tab shown.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PlotsPanel {
@@ -93,47 +137,7 @@ impl PlotsPanel {
         ui.horizontal_wrapped(|ui| {
             // Short names, so that a phone's sheet holds the row; the full name on
             // hover.
-            for (tab, label, full) in [
-                (PlotTab::Output, "Output", "the output's s, v, a"),
-                (PlotTab::Transmission, "Transmission", "transmission angle"),
-                (
-                    PlotTab::Timing,
-                    "Timing",
-                    "timing diagram: every output against the main shaft, dwells shaded",
-                ),
-                (
-                    PlotTab::CamMotion,
-                    "Cam s v a j",
-                    "the cam's follower: lift, velocity, acceleration, jerk",
-                ),
-                (
-                    PlotTab::CamLimits,
-                    "Cam limits",
-                    "the cam's pressure angle and radius of curvature against their limits",
-                ),
-                (
-                    PlotTab::Torque,
-                    "Torque",
-                    "input torque and force amplification",
-                ),
-                (
-                    PlotTab::Flywheel,
-                    "Flywheel",
-                    "flywheel by the energy method",
-                ),
-                (
-                    PlotTab::Steady,
-                    "Speed",
-                    "the real speed with the drive: steady state and run-up",
-                ),
-                (
-                    PlotTab::Shaking,
-                    "Shaking",
-                    "shaking force, with the crank counterweight",
-                ),
-                (PlotTab::Motion, "ω–φ, ω–t, φ–t", "the dynamic run"),
-                (PlotTab::ReducedModel, "J(q), M(q)", "the reduced model"),
-            ] {
+            for (tab, label, full) in TABS {
                 if tab_available(tab, &st.session) {
                     ui.selectable_value(&mut self.tab, tab, label)
                         .on_hover_text(full);
@@ -375,7 +379,7 @@ fn plot(
     (y_label, x_label, data, cursor): &PlotSpec<'_>,
     height: f32,
 ) {
-    let [lo, hi] = robust_range(data);
+    let [lo, hi] = crate::ui::plot_layout::robust_range(data);
     Plot::new(key)
         .height(height)
         .default_y_bounds(lo, hi)
@@ -391,45 +395,4 @@ fn plot(
                 p.vline(VLine::new("now", x));
             }
         });
-}
-
-/// The y range that holds the middle 96 % of the values, padded by a tenth: near a
-/// dead point velocities and accelerations grow without bound, and fitting the plot
-/// to those spikes would flatten the rest of the cycle into a line.
-pub fn robust_range(data: &[[f64; 2]]) -> [f64; 2] {
-    let mut ys: Vec<f64> = data
-        .iter()
-        .map(|p| p[1])
-        .filter(|y| y.is_finite())
-        .collect();
-    if ys.is_empty() {
-        return [-1.0, 1.0];
-    }
-    ys.sort_by(f64::total_cmp);
-    let at = |q: f64| ys[((ys.len() - 1) as f64 * q).round() as usize];
-    let (lo, hi) = (at(0.02), at(0.98));
-    let pad = 0.1
-        * (hi - lo)
-            .max(1e-9 * hi.abs().max(lo.abs()))
-            .max(f64::MIN_POSITIVE);
-    [lo - pad, hi + pad]
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn robust_range_ignores_dead_point_spikes() {
-        let mut data: Vec<[f64; 2]> = (0..100)
-            .map(|i| [f64::from(i), f64::from(i % 10)])
-            .collect();
-        data.push([100.0, 1e12]);
-        data.push([101.0, f64::NAN]);
-        let [lo, hi] = robust_range(&data);
-        assert!(lo < 0.0 && hi > 9.0 && hi < 11.0, "{lo} {hi}");
-        assert_eq!(robust_range(&[]), [-1.0, 1.0]);
-        let [lo, hi] = robust_range(&[[0.0, 5.0]]);
-        assert!(lo < 5.0 && hi > 5.0);
-    }
 }
