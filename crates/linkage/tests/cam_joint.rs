@@ -413,3 +413,31 @@ fn the_timing_diagram_shows_the_cams_dwells_and_the_linkages_motion_on_one_shaft
     // The slider, moved by the four-bar too, never rests for two samples.
     assert!(diagram.lanes[1].dwells.is_empty());
 }
+
+/// The loaded cam feed (docs/examples): its closing spring keeps the roller on the
+/// cam all the way round, and without it the push turns into a pull (the roller
+/// would lift off), which is what the kinetostatics through the contact is for.
+#[test]
+fn the_closing_spring_keeps_the_roller_on_the_cam_and_without_it_the_roller_lifts() {
+    let path = format!(
+        "{}/../../docs/examples/paper_cup_cam_feed_loaded.ron",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let text = std::fs::read_to_string(&path).expect("the example");
+    let least_push = |text: &str| {
+        let mut k = Kinematics::new(Mechanism::from_ron(text).expect("valid")).expect("solves");
+        let mut ks = Kinetostatics::new(&mut k).expect("kinetostatics");
+        let mut least = f64::INFINITY;
+        for i in 0..360 {
+            let s = ks.at(&mut k, TAU * i as f64 / 360.0).expect("solves");
+            let scale = s.torque_virtual_work.abs().max(1.0);
+            assert!((s.torque_newton_euler - s.torque_virtual_work).abs() < 1e-9 * scale);
+            least = least.min(s.joints.last().and_then(|j| j.push).expect("a push"));
+        }
+        least
+    };
+    assert!(least_push(&text) > 100.0, "{}", least_push(&text));
+    let spring = r#"springs: [(a: "D", b: "Q", k_n_per_m: 4000.0, free_length: Length(100.0))],"#;
+    assert!(text.contains(spring));
+    assert!(least_push(&text.replace(spring, "")) < 0.0);
+}
