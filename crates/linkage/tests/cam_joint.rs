@@ -10,7 +10,7 @@ use std::f64::consts::TAU;
 use linkage::cam::{DiscCam, Face, Follower, Law, Program, Segment, SegmentKind};
 use linkage::kinetostatics::Kinetostatics;
 use linkage::motion::Vec2;
-use linkage::scene::{Models, SolverPath};
+use linkage::scene::SolverPath;
 use linkage::{Kinematics, LinkageError, Mechanism};
 
 use common::{kinematics, mechanism, wrap};
@@ -123,6 +123,46 @@ fn the_contact_normal_and_curvature_match_the_pitch_curve_differentiated_on_the_
     }
 }
 
+/// The layouts' program (as their scenes write it): a cycloidal rise of `lift` over
+/// 120°, a dwell of 60°, a modified-sine return over 100°, a dwell of 80°.
+fn layout_program(lift: f64) -> Program {
+    let seg = |kind, deg: f64| Segment {
+        kind,
+        angle_rad: deg.to_radians(),
+    };
+    let (rise, fall) = (Law::Cycloidal, Law::ModifiedSine);
+    Program::new(vec![
+        seg(SegmentKind::Rise { law: rise, lift }, 120.0),
+        seg(SegmentKind::Dwell, 60.0),
+        seg(SegmentKind::Return { law: fall, lift }, 100.0),
+        seg(SegmentKind::Dwell, 80.0),
+    ])
+    .expect("program")
+}
+
+/// The cam joint's profile, pressure angle and pitch radius against the disc cam's at
+/// 3600 cam angles, to 1e-9 (of the base radius, relative).
+fn assert_like_the_disc_cam(cam: &linkage::model::CamJoint, disc: &DiscCam) {
+    let base = disc.base_radius_m;
+    for i in 0..3600 {
+        let theta = TAU * i as f64 / 3600.0;
+        let (joint, reference) = (cam.contact(theta), disc.at(theta));
+        let on_cam = turn(joint.point - cam.centre, -theta);
+        let expected = Vec2::new(reference.profile_m[0], reference.profile_m[1]);
+        assert!(
+            (on_cam - expected).norm() < 1e-9 * base,
+            "profile at {theta}"
+        );
+        let (a, b) = (joint.pressure_angle_rad, reference.pressure_angle_rad);
+        assert!(
+            (a.tan() - b.tan()).abs() < 1e-9 * (1.0 + b.tan().abs()),
+            "at {theta}"
+        );
+        let (ra, rb) = (joint.pitch_radius_m, reference.pitch_radius_m);
+        assert!((ra - rb).abs() < 1e-9 * rb.abs().max(base), "at {theta}");
+    }
+}
+
 /// A scene of the disc cam's own layout: the cam's centre at the origin, the arm's
 /// pivot on +x at `pivot`, the roller below the axis (as `DiscCam` places it).
 fn disc_layout_scene(pivot: f64, arm: f64, base: f64, roller: f64, rest_deg: f64) -> String {
@@ -157,30 +197,7 @@ fn an_arm_in_the_disc_cams_layout_gives_the_disc_cams_profile_and_pressure_angle
         gamma0.to_degrees(),
     ))
     .expect("valid");
-    let seg = |kind, deg: f64| Segment {
-        kind,
-        angle_rad: deg.to_radians(),
-    };
-    let lift = 20f64.to_radians();
-    let program = Program::new(vec![
-        seg(
-            SegmentKind::Rise {
-                law: Law::Cycloidal,
-                lift,
-            },
-            120.0,
-        ),
-        seg(SegmentKind::Dwell, 60.0),
-        seg(
-            SegmentKind::Return {
-                law: Law::ModifiedSine,
-                lift,
-            },
-            100.0,
-        ),
-        seg(SegmentKind::Dwell, 80.0),
-    ])
-    .expect("program");
+    let program = layout_program(20f64.to_radians());
     let mm = 1e-3;
     let follower = Follower::Oscillating {
         pivot_m: pivot * mm,
@@ -190,47 +207,13 @@ fn an_arm_in_the_disc_cams_layout_gives_the_disc_cams_profile_and_pressure_angle
         },
     };
     let disc = DiscCam::new(program, base * mm, follower).expect("disc cam");
-    let cam = &m.cams[0];
-    for i in 0..3600 {
-        let theta = TAU * i as f64 / 3600.0;
-        let (joint, reference) = (cam.contact(theta), disc.at(theta));
-        let on_cam = turn(joint.point - cam.centre, -theta);
-        let expected = Vec2::new(reference.profile_m[0], reference.profile_m[1]);
-        assert!(
-            (on_cam - expected).norm() < 1e-9 * base * mm,
-            "profile at {theta}"
-        );
-        let (a, b) = (joint.pressure_angle_rad, reference.pressure_angle_rad);
-        assert!(
-            (a.tan() - b.tan()).abs() < 1e-9 * (1.0 + b.tan().abs()),
-            "at {theta}"
-        );
-        let (ra, rb) = (joint.pitch_radius_m, reference.pitch_radius_m);
-        assert!(
-            (ra - rb).abs() < 1e-9 * rb.abs().max(base * mm),
-            "at {theta}"
-        );
-    }
+    assert_like_the_disc_cam(&m.cams[0], &disc);
 }
 
-/// The scene with masses, gravity and a speed: kinetostatics through the cam.
+/// The scene with masses, gravity, a spring and a speed: kinetostatics through the
+/// cam.
 fn loaded() -> Kinematics {
-    let mut m = mechanism(SCENE);
-    m.models = Models::Kinetostatics;
-    let size = m.size_m;
-    for (n, l) in m.link_ids().enumerate() {
-        if l == m.ground {
-            continue;
-        }
-        let link = &mut m.links[l];
-        let k = 1.0 + 0.37 * n as f64;
-        let centre = link.points.iter().map(|(_, p)| *p).sum::<Vec2>() / link.points.len() as f64;
-        link.mass_kg = Some(0.5 * k);
-        link.centroid_m = Some(centre + Vec2::new(0.02, -0.01) * size);
-        link.inertia_kg_m2 = Some(0.5 * k * (0.2 * size).powi(2));
-    }
-    m.forces.gravity = Some((0.0, -9.81));
-    Kinematics::new(m).expect("solves")
+    Kinematics::new(common::loaded(mechanism(SCENE))).expect("solves")
 }
 
 #[test]
@@ -322,30 +305,7 @@ fn a_translating_follower_gives_the_disc_cams_profile_and_pressure_angle() {
     )
     .expect("solves");
     let m = k.mechanism().clone();
-    let seg = |kind, deg: f64| Segment {
-        kind,
-        angle_rad: deg.to_radians(),
-    };
-    let lift = 20e-3;
-    let program = Program::new(vec![
-        seg(
-            SegmentKind::Rise {
-                law: Law::Cycloidal,
-                lift,
-            },
-            120.0,
-        ),
-        seg(SegmentKind::Dwell, 60.0),
-        seg(
-            SegmentKind::Return {
-                law: Law::ModifiedSine,
-                lift,
-            },
-            100.0,
-        ),
-        seg(SegmentKind::Dwell, 80.0),
-    ])
-    .expect("program");
+    let program = layout_program(20e-3);
     let mm = 1e-3;
     let face = Face::Roller {
         radius_m: roller * mm,
@@ -356,21 +316,10 @@ fn a_translating_follower_gives_the_disc_cams_profile_and_pressure_angle() {
     };
     let disc = DiscCam::new(program, base * mm, follower).expect("disc cam");
     let cam = &m.cams[0];
+    assert_like_the_disc_cam(cam, &disc);
     let omega = m.driver.speed_rad_s;
-    for i in 0..3600 {
-        let theta = TAU * i as f64 / 3600.0;
-        let (joint, reference) = (cam.contact(theta), disc.at(theta));
-        let on_cam = turn(joint.point - cam.centre, -theta);
-        let expected = Vec2::new(reference.profile_m[0], reference.profile_m[1]);
-        assert!(
-            (on_cam - expected).norm() < 1e-9 * base * mm,
-            "profile at {theta}"
-        );
-        let (a, b) = (joint.pressure_angle_rad, reference.pressure_angle_rad);
-        assert!(
-            (a.tan() - b.tan()).abs() < 1e-9 * (1.0 + b.tan().abs()),
-            "at {theta}"
-        );
+    for i in 0..360 {
+        let theta = TAU * i as f64 / 360.0;
         // The slider itself moves by the program.
         let s = k.solve(theta).expect("solves");
         let slide = s.slides[0];

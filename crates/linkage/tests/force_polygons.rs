@@ -14,7 +14,6 @@ mod common;
 
 use linkage::force_polygon::{ForcePolygons, ForceSymbol, JointId, Stage, force_polygons};
 use linkage::kinetostatics::Kinetostatics;
-use linkage::scene::{FreeLength, Models, SpringSpec};
 use linkage::{Kinematics, LinkageError, Mechanism, Vec2};
 
 const R: f64 = 0.04;
@@ -119,44 +118,6 @@ fn the_group_polygon_lists_the_load_first_known_and_the_outer_reactions_unknown(
     assert_eq!(names, ["R_23", "P_S", "R_14"]);
 }
 
-/// `m` with mass, centroid and inertia on every moving link, gravity, a spring from
-/// the frame to the output, and a crank speed: numbers nobody tuned, derived from
-/// the link's own size.
-fn loaded(mut m: Mechanism) -> Mechanism {
-    m.models = Models::Kinetostatics;
-    let size = m.size_m;
-    for (n, l) in m.link_ids().enumerate() {
-        if l == m.ground {
-            continue;
-        }
-        let link = &mut m.links[l];
-        let k = 1.0 + 0.37 * n as f64;
-        let (sum, count) = link
-            .points
-            .iter()
-            .fold((Vec2::zeros(), 0.0_f64), |(s, c), (_, p)| (s + p, c + 1.0));
-        let centre = sum / count.max(1.0) + Vec2::new(0.1, -0.07) * size * k.fract();
-        link.mass_kg = Some(0.5 * k);
-        link.centroid_m = Some(centre);
-        link.inertia_kg_m2 = Some(0.5 * k * (0.2 * size).powi(2));
-    }
-    m.forces.gravity = Some((0.0, -9.81));
-    let output_point = m.links[m.output].points.last().map(|(p, _)| *p);
-    let ground_point = m.links[m.ground].points.first().map(|(p, _)| *p);
-    if let (Some(a), Some(b)) = (output_point, ground_point) {
-        m.forces.springs.push(SpringSpec {
-            a: m.points[a].name.clone(),
-            b: m.points[b].name.clone(),
-            k_n_per_m: 50.0 / size,
-            free_length: FreeLength::Length(0.5 * size),
-        });
-    }
-    if m.driver.speed_rad_s == 0.0 {
-        m.driver.speed_rad_s = 12.0;
-    }
-    m
-}
-
 /// Checks one position; false where the chain does not assemble or is at a dead
 /// point of its input.
 fn agrees_with_newton_euler(
@@ -220,7 +181,7 @@ fn every_scene_and_template_given_masses_closes_its_polygons_and_matches_newton_
         );
     let mut checked = 0;
     for (file, text) in scenes {
-        let m = loaded(Mechanism::from_ron(&text).expect("scene"));
+        let m = common::loaded(Mechanism::from_ron(&text).expect("scene"));
         let mut k = Kinematics::new(m).expect("kinematics");
         if !k.has_closed_form() {
             continue;
@@ -240,7 +201,7 @@ fn every_scene_and_template_given_masses_closes_its_polygons_and_matches_newton_
 #[test]
 fn a_chain_solved_by_newton_alone_is_told_it_has_no_force_polygons() {
     let text = common::triad::Triad::locking().scene(0.0);
-    let m = loaded(Mechanism::from_ron(&text).expect("triad"));
+    let m = common::loaded(Mechanism::from_ron(&text).expect("triad"));
     let mut k = Kinematics::new(m).expect("kinematics");
     assert!(!k.has_closed_form());
     let mut ks = Kinetostatics::new(&mut k).expect("kinetostatics");

@@ -4,8 +4,8 @@
 pub mod slider_crank;
 pub mod triad;
 
-use linkage::scene::SolverPath;
-use linkage::{Kinematics, Mechanism};
+use linkage::scene::{FreeLength, Models, SolverPath, SpringSpec};
+use linkage::{Kinematics, Mechanism, Vec2};
 
 /// Every scene shipped in `assets/scenes`.
 pub const SCENES: [&str; 7] = [
@@ -111,4 +111,42 @@ pub fn motion_scales(s: &linkage::Solution, size: f64) -> (f64, f64) {
         .map(|p| p.acceleration.amax())
         .fold(size * w * w, f64::max);
     (vmax, amax)
+}
+
+/// `m` with mass, centroid and inertia on every moving link, gravity, a spring from
+/// the frame to the output, and a crank speed: numbers nobody tuned, derived from
+/// the link's own size.
+pub fn loaded(mut m: Mechanism) -> Mechanism {
+    m.models = Models::Kinetostatics;
+    let size = m.size_m;
+    for (n, l) in m.link_ids().enumerate() {
+        if l == m.ground {
+            continue;
+        }
+        let link = &mut m.links[l];
+        let k = 1.0 + 0.37 * n as f64;
+        let (sum, count) = link
+            .points
+            .iter()
+            .fold((Vec2::zeros(), 0.0_f64), |(s, c), (_, p)| (s + p, c + 1.0));
+        let centre = sum / count.max(1.0) + Vec2::new(0.1, -0.07) * size * k.fract();
+        link.mass_kg = Some(0.5 * k);
+        link.centroid_m = Some(centre);
+        link.inertia_kg_m2 = Some(0.5 * k * (0.2 * size).powi(2));
+    }
+    m.forces.gravity = Some((0.0, -9.81));
+    let output_point = m.links[m.output].points.last().map(|(p, _)| *p);
+    let ground_point = m.links[m.ground].points.first().map(|(p, _)| *p);
+    if let (Some(a), Some(b)) = (output_point, ground_point) {
+        m.forces.springs.push(SpringSpec {
+            a: m.points[a].name.clone(),
+            b: m.points[b].name.clone(),
+            k_n_per_m: 50.0 / size,
+            free_length: FreeLength::Length(0.5 * size),
+        });
+    }
+    if m.driver.speed_rad_s == 0.0 {
+        m.driver.speed_rad_s = 12.0;
+    }
+    m
 }
