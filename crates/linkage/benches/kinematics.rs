@@ -34,15 +34,10 @@ fn cycle(c: &mut Criterion) {
         ("four_bar", four_bar()),
         ("die_cutter_six_bar", scene("die_cutter.ron")),
         // A cam and a four-bar on one shaft: the cam's follower is placed lane by
-        // lane (its program branches on the angle); closed form only.
+        // lane (its program branches on the angle).
         ("paper_cup_cam_feed", scene("paper_cup_cam_feed.ron")),
     ] {
-        let paths = if mech.cams.is_empty() {
-            vec![SolverPath::ClosedForm, SolverPath::Newton]
-        } else {
-            vec![SolverPath::ClosedForm]
-        };
-        for path in paths {
+        for path in [SolverPath::ClosedForm, SolverPath::Newton] {
             let mut k = Kinematics::with_path(mech.clone(), path).unwrap_or_else(|e| panic!("{e}"));
             let mut sol = k.empty_solution();
             let w = mech.driver.speed_rad_s;

@@ -93,7 +93,7 @@ fn velocities_and_accelerations_match_finite_differences() {
 /// 0.3 to 1 away from dead points, so there this is 1e-12 within a factor of 10).
 #[test]
 fn closed_form_and_newton_agree_to_1e12() {
-    for file in SCENES.into_iter().filter(|f| common::has_newton(f)) {
+    for file in SCENES {
         let mut cf = kinematics(file, SolverPath::ClosedForm);
         let mut nw = kinematics(file, SolverPath::Newton);
         assert_eq!(nw.path(), linkage::PathKind::Newton);

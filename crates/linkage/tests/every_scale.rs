@@ -388,14 +388,11 @@ fn check_scaled(file: &str, base: &SceneFile, exponent: i32) {
         let m = Mechanism::from_scene(scene).unwrap_or_else(|e| panic!("{what}: {e}"));
         Kinematics::with_path(m, SolverPath::Newton).unwrap_or_else(|e| panic!("{what}: {e}"))
     };
-    // A cam joint has no Newton path (cam_joint.rs checks that it says so).
-    if base.cams.is_empty() {
-        let (_, a) = sweep_rows(&mut newton(base, file), file);
-        let (_, b) = sweep_rows(&mut newton(&scaled, &what), &what);
-        check_table(&format!("{what}: sweep by Newton"), &header, &a, &b, &|c| {
-            column_kind(&header[c], &k)
-        });
-    }
+    let (_, a) = sweep_rows(&mut newton(base, file), file);
+    let (_, b) = sweep_rows(&mut newton(&scaled, &what), &what);
+    check_table(&format!("{what}: sweep by Newton"), &header, &a, &b, &|c| {
+        column_kind(&header[c], &k)
+    });
 
     if base.models != Models::Kinematics {
         let m = ka.mechanism();

@@ -47,22 +47,6 @@ pub fn mechanism(file: &str) -> Mechanism {
     Mechanism::from_ron(&scene_text(file)).unwrap_or_else(|e| panic!("{file}: {e}"))
 }
 
-/// Whether a shipped scene has the Newton path too: a scene with a cam joint is
-/// solved in closed form only (Newton refuses it by name, see `cam_joint.rs`).
-pub fn has_newton(file: &str) -> bool {
-    mechanism(file).cams.is_empty()
-}
-
-/// The solver paths a shipped scene has: closed form, and Newton where
-/// [`has_newton`].
-pub fn paths(file: &str) -> Vec<SolverPath> {
-    let mut paths = vec![SolverPath::ClosedForm];
-    if has_newton(file) {
-        paths.push(SolverPath::Newton);
-    }
-    paths
-}
-
 /// Whether a cam of `m` is within `within` rad of a join of its program at the solved
 /// position `s`: there the follower's higher derivatives jump (a cycloid's jerk at a
 /// dwell), so finite differences across it lose their order.

@@ -2,7 +2,8 @@
 //!
 //! The chain is cut into a spanning tree rooted at ground (driver joint first);
 //! the unknowns are the tree joints' relative coordinates (joint angle or slide),
-//! and every joint left out of the tree closes a loop with two equations. Jacobian
+//! and every joint left out of the tree closes a loop with two equations (every cam
+//! joint adds one: its follower's coordinate is the program's lift, `cam_rows.rs`). Jacobian
 //! columns are the cut joints' relative velocities for a unit rate of one tree
 //! coordinate: a turn about that joint or a slide along it, of every link it
 //! carries, written directly from the joint points. Velocity
@@ -20,6 +21,7 @@ use crate::motion::{LinkMotion, PointMotion, Vec2, cross, perp};
 use crate::small_lu::SmallLu;
 
 mod branch;
+mod cam_rows;
 mod mobility;
 
 #[derive(Clone, Debug, PartialEq)]
@@ -124,6 +126,8 @@ pub struct Newton {
     /// to `link`, so a rate of `k` moves `link`.
     moved_by: Vec<bool>,
     cuts: Vec<Cut>,
+    /// Cam joints: a row each after the cut joints' (`cam_rows.rs`).
+    cams: Vec<crate::model::CamJoint>,
     ground: LinkId,
     /// Largest residual accepted, as a share of the size (and rad).
     tolerance: f64,
@@ -210,30 +214,22 @@ impl Newton {
                 valid: "must be finite and > 0".into(),
             });
         }
-        if let Some(cam) = m.cams.first() {
-            // The loop closures here are lower pairs only; a cam's follower is placed
-            // by the closed form, which every chain of dyads and cams has.
-            return Err(LinkageError::NotDecomposable(format!(
-                "the cam joint `{}` is solved in closed form only: the chain must split into \
-                 the crank, cam followers and RRR, RRP, RPR or PRP dyads",
-                cam.name
-            )));
-        }
         let (tree, cuts) = spanning_tree(m)?;
         let unknowns = tree.len() - 1;
-        if 2 * cuts.len() != unknowns {
+        let equations = 2 * cuts.len() + m.cams.len();
+        if equations != unknowns {
             return Err(LinkageError::from(SceneProblem::EquationCount {
-                equations: 2 * cuts.len(),
+                equations,
                 unknowns,
             }));
         }
-        let cuts_len = cuts.len();
         let moved_by = moved_by(&tree, m.links.len());
         let mut solver = Self {
             turns: vec![JointTurn::UNSET; tree.len()],
             moved_by,
             tree,
             cuts,
+            cams: m.cams.clone(),
             ground: m.ground,
             tolerance: tolerance.max(8.0 * f64::EPSILON),
             stall_residual: 1e-12,
@@ -252,8 +248,8 @@ impl Newton {
             lu: SmallLu::default(),
             rhs: DVector::zeros(unknowns),
             rates: vec![0.0; 2 * unknowns.max(1)],
-            col_buf: vec![0.0; 2 * cuts_len],
-            res_buf: vec![0.0; 2 * cuts_len],
+            col_buf: vec![0.0; equations],
+            res_buf: vec![0.0; equations],
             saved: (
                 DVector::zeros(unknowns),
                 DVector::zeros(unknowns),
@@ -420,7 +416,7 @@ impl Newton {
             };
             worst = worst.max(r0.abs() * per_m).max(r1_relative.abs());
         }
-        worst
+        worst.max(self.cam_residuals(links, out, 2 * self.cuts.len()))
     }
 
     /// Second time derivative of the cut residuals (the acceleration bias `b` when the
@@ -456,6 +452,7 @@ impl Newton {
             out[2 * c] = r0;
             out[2 * c + 1] = r1;
         }
+        self.cam_accelerations(links, out, 2 * self.cuts.len());
     }
 
     /// Velocity of the material point at `p` of `link`, and the link's angular
@@ -521,6 +518,7 @@ impl Newton {
                 }
             }
         }
+        self.cam_jacobian_rows(links, 2 * self.cuts.len());
     }
 
     /// Solves at `input_rad` with input speed `speed_rad_s` (constant), writing every
