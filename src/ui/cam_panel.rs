@@ -35,12 +35,12 @@ pub fn cam_panels(ui: &mut egui::Ui, st: &mut AppState) {
     }
 }
 
-/// A segment's kind, law and lift in words, and its angle.
-fn describe(s: &SegmentSpec) -> (&'static str, Option<Law>, f64) {
-    match *s {
-        SegmentSpec::Rise { law, deg, .. } => ("rise", Some(law), deg),
-        SegmentSpec::Dwell { deg } => ("dwell", None, deg),
-        SegmentSpec::Return { law, deg, .. } => ("return", Some(law), deg),
+/// A segment's kind in words.
+fn kind_name(s: &SegmentSpec) -> &'static str {
+    match s {
+        SegmentSpec::Rise { .. } => "rise",
+        SegmentSpec::Dwell { .. } => "dwell",
+        SegmentSpec::Return { .. } => "return",
     }
 }
 
@@ -51,7 +51,7 @@ fn segments(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJointSpe
         .striped(true)
         .show(ui, |ui| {
             for (segment, s) in spec.segments.iter().enumerate() {
-                let (kind, law, deg) = describe(s);
+                let (kind, law, deg) = (kind_name(s), s.law(), s.angle_deg());
                 let name = ui.label(format!("{} {kind}", segment + 1));
                 match law {
                     Some(law) => law_menu(ui, st, (cam, segment), law, name.id),
@@ -130,10 +130,7 @@ fn lift_and_roller(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJ
     let largest = spec
         .segments
         .iter()
-        .filter_map(|s| match s {
-            SegmentSpec::Rise { lift, .. } | SegmentSpec::Return { lift, .. } => Some(*lift),
-            SegmentSpec::Dwell { .. } => None,
-        })
+        .filter_map(SegmentSpec::lift)
         .fold(0.0, f64::max);
     let arm = st.session.curves().cams.get(cam).is_some_and(|c| c.is_arm);
     let unit = if arm {
@@ -242,7 +239,7 @@ fn continuity_and_peaks(ui: &mut egui::Ui, st: &AppState, cam: usize, spec: &Cam
                     j.continuity
                 ));
             }
-            let mut laws: Vec<Law> = spec.segments.iter().filter_map(|s| describe(s).1).collect();
+            let mut laws: Vec<Law> = spec.segments.iter().filter_map(SegmentSpec::law).collect();
             laws.dedup();
             for law in laws {
                 let k = peak_coefficients(law);

@@ -174,11 +174,7 @@ fn the_cam_panel_edits_the_program_and_undo_takes_it_back() {
         h.state().state.session.scene().cams[0]
             .segments
             .iter()
-            .map(|s| match *s {
-                SegmentSpec::Rise { deg, .. }
-                | SegmentSpec::Dwell { deg }
-                | SegmentSpec::Return { deg, .. } => deg,
-            })
+            .map(SegmentSpec::angle_deg)
             .collect()
     };
     assert_eq!(spans(&h), [110.0, 70.0, 110.0, 70.0]);

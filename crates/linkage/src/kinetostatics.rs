@@ -12,7 +12,7 @@ use serde::Serialize;
 use crate::dynamics::ForceModel;
 use crate::error::{LinkageError, Result};
 use crate::ids::LinkId;
-use crate::model::SceneProblem;
+use crate::model::{CamContact, SceneProblem};
 use crate::motion::{Solution, Vec2, cross, perp};
 use crate::solve::Kinematics;
 
@@ -135,7 +135,13 @@ impl Kinetostatics {
                 3 * moving.len()
             )));
         }
-        let a = reaction_matrix(m, sol, &moving);
+        // Each cam's contact, once for the matrix and the reactions.
+        let contacts: Vec<CamContact> = m
+            .cams
+            .iter()
+            .map(|c| c.contact(sol.links[c.cam].angle_rad()))
+            .collect();
+        let a = reaction_matrix(m, sol, &moving, &contacts);
         let mut b = DVector::<f64>::zeros(n);
         for &l in &moving {
             let r = row_of(l).unwrap_or(0);
@@ -147,7 +153,7 @@ impl Kinetostatics {
             input_deg: input_rad.to_degrees(),
             reason: "the joint reactions are indeterminate here (a dead point of the input)".into(),
         })?;
-        let joints = reactions(m, sol, &x);
+        let joints = reactions(m, sol, &x, &contacts);
         Ok(KinetostaticState {
             input_rad,
             torque_newton_euler: x[n - 1],
@@ -166,7 +172,12 @@ fn unknown_count(m: &crate::Mechanism) -> usize {
 
 /// The Newton–Euler system's matrix: three rows per moving link (force x, y, moment
 /// about the origin), a column per unknown (see [`unknown_count`]).
-fn reaction_matrix(m: &crate::Mechanism, sol: &Solution, moving: &[LinkId]) -> DMatrix<f64> {
+fn reaction_matrix(
+    m: &crate::Mechanism,
+    sol: &Solution,
+    moving: &[LinkId],
+    contacts: &[CamContact],
+) -> DMatrix<f64> {
     let row_of = |link: LinkId| moving.iter().position(|&l| l == link).map(|i| 3 * i);
     let (nr, np) = (m.revolutes.len(), m.sliders.len());
     let n = unknown_count(m);
@@ -199,8 +210,7 @@ fn reaction_matrix(m: &crate::Mechanism, sol: &Solution, moving: &[LinkId]) -> D
             a[(r + 2, col + 1)] -= 1.0;
         }
     }
-    for (j, cam) in m.cams.iter().enumerate() {
-        let contact = cam.contact(sol.links[cam.cam].angle_rad());
+    for (j, (cam, contact)) in m.cams.iter().zip(contacts).enumerate() {
         let col = 2 * nr + 2 * np + j;
         put(&mut a, cam.follower, col, contact.normal, contact.roller);
         put(&mut a, cam.cam, col, -contact.normal, contact.point);
@@ -213,7 +223,12 @@ fn reaction_matrix(m: &crate::Mechanism, sol: &Solution, moving: &[LinkId]) -> D
 
 /// Every joint's reaction from the solved unknowns `x`: revolutes, prismatic joints,
 /// then cam contacts.
-fn reactions(m: &crate::Mechanism, sol: &Solution, x: &DVector<f64>) -> Vec<JointReaction> {
+fn reactions(
+    m: &crate::Mechanism,
+    sol: &Solution,
+    x: &DVector<f64>,
+    contacts: &[CamContact],
+) -> Vec<JointReaction> {
     let nr = m.revolutes.len();
     let name = |link: LinkId| m.links[link].name.as_str();
     let mut joints = Vec::with_capacity(nr + m.sliders.len());
@@ -237,8 +252,8 @@ fn reactions(m: &crate::Mechanism, sol: &Solution, x: &DVector<f64>) -> Vec<Join
         });
     }
     let first_cam = 2 * nr + 2 * m.sliders.len();
-    for (j, cam) in m.cams.iter().enumerate() {
-        let normal = cam.contact(sol.links[cam.cam].angle_rad()).normal;
+    for (j, (cam, contact)) in m.cams.iter().zip(contacts).enumerate() {
+        let normal = contact.normal;
         let push = x[first_cam + j];
         joints.push(JointReaction {
             name: format!(

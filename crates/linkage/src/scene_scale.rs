@@ -129,10 +129,8 @@ fn scale_cams(out: &mut SceneFile, s: f64) {
             continue;
         }
         cam.rest *= s;
-        for segment in &mut cam.segments {
-            if let SegmentSpec::Rise { lift, .. } | SegmentSpec::Return { lift, .. } = segment {
-                *lift *= s;
-            }
+        for lift in cam.segments.iter_mut().filter_map(SegmentSpec::lift_mut) {
+            *lift *= s;
         }
     }
 }

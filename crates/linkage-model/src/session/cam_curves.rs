@@ -33,10 +33,15 @@ impl CamCurves {
     }
 
     fn of_joint(m: &Mechanism, c: &CamJoint) -> Self {
-        let points = (0..CAM_SAMPLES)
+        let points: Vec<CamPoint> = (0..CAM_SAMPLES)
             .map(|i| std::f64::consts::TAU * i as f64 / CAM_SAMPLES as f64)
             .map(|theta| c.point_at(theta))
             .collect();
+        // The profile's least distance from the cam's centre.
+        let base_radius_m = points
+            .iter()
+            .map(|p| p.profile_m[0].hypot(p.profile_m[1]))
+            .fold(f64::INFINITY, f64::min);
         Self {
             name: c.name.clone(),
             is_arm: matches!(c.guide, FollowerGuide::Arm { .. }),
@@ -47,7 +52,7 @@ impl CamCurves {
             } else {
                 1.0
             },
-            base_radius_m: c.base_radius_m(CAM_SAMPLES),
+            base_radius_m,
         }
     }
 }

@@ -34,23 +34,6 @@ pub enum CamEdit {
     Roller(f64),
 }
 
-/// A segment's angle, deg.
-fn span_deg(s: &SegmentSpec) -> f64 {
-    match *s {
-        SegmentSpec::Rise { deg, .. }
-        | SegmentSpec::Dwell { deg }
-        | SegmentSpec::Return { deg, .. } => deg,
-    }
-}
-
-fn set_span(s: &mut SegmentSpec, to: f64) {
-    match s {
-        SegmentSpec::Rise { deg, .. }
-        | SegmentSpec::Dwell { deg }
-        | SegmentSpec::Return { deg, .. } => *deg = to,
-    }
-}
-
 impl Session {
     /// Applies `edit` to cam joint `cam`; a refusal leaves a notice.
     pub(super) fn edit_cam(&mut self, cam: usize, edit: CamEdit) {
@@ -59,19 +42,23 @@ impl Session {
             return;
         };
         match edit {
-            CamEdit::Law { segment, law } => match joint.segments.get_mut(segment) {
-                Some(SegmentSpec::Rise { law: l, .. } | SegmentSpec::Return { law: l, .. }) => {
-                    *l = law;
+            CamEdit::Law { segment, law } => {
+                match joint
+                    .segments
+                    .get_mut(segment)
+                    .and_then(SegmentSpec::law_mut)
+                {
+                    Some(l) => *l = law,
+                    None => return,
                 }
-                _ => return,
-            },
+            }
             CamEdit::Span { segment, deg } => {
                 let n = joint.segments.len();
                 if segment >= n || n < 2 {
                     return;
                 }
                 let next = (segment + 1) % n;
-                let room = span_deg(&joint.segments[segment]) + span_deg(&joint.segments[next]);
+                let room = joint.segments[segment].angle_deg() + joint.segments[next].angle_deg();
                 if !(deg.is_finite() && deg > 0.0 && deg < room) {
                     self.message = Some(Notice::CamSpanRefused {
                         segment,
@@ -80,19 +67,14 @@ impl Session {
                     });
                     return;
                 }
-                set_span(&mut joint.segments[segment], deg);
-                set_span(&mut joint.segments[next], room - deg);
+                *joint.segments[segment].angle_deg_mut() = deg;
+                *joint.segments[next].angle_deg_mut() = room - deg;
             }
             CamEdit::Lift(to) => {
                 let largest = joint
                     .segments
                     .iter()
-                    .filter_map(|s| match s {
-                        SegmentSpec::Rise { lift, .. } | SegmentSpec::Return { lift, .. } => {
-                            Some(*lift)
-                        }
-                        SegmentSpec::Dwell { .. } => None,
-                    })
+                    .filter_map(SegmentSpec::lift)
                     .fold(0.0, f64::max);
                 if !(to.is_finite() && to > 0.0 && largest > 0.0) {
                     self.message = Some(Notice::InvalidValue {
@@ -102,10 +84,8 @@ impl Session {
                     });
                     return;
                 }
-                for s in &mut joint.segments {
-                    if let SegmentSpec::Rise { lift, .. } | SegmentSpec::Return { lift, .. } = s {
-                        *lift *= to / largest;
-                    }
+                for lift in joint.segments.iter_mut().filter_map(SegmentSpec::lift_mut) {
+                    *lift *= to / largest;
                 }
             }
             CamEdit::Roller(radius) => joint.roller_radius = radius,

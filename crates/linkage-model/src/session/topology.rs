@@ -58,21 +58,22 @@ impl Topology {
             .point_ids()
             .filter(|i| joint_points.binary_search(i).is_err() && m.points[*i].link != m.ground)
             .collect();
-        let cam_profiles = m
-            .cams
-            .iter()
-            .map(|c| c.profile_on_cam(CAM_OUTLINE))
-            .collect();
-        let cam_past_limit = m
+        // Each outline point once: where it is on the cam link, and whether it passes
+        // a limit there.
+        let (cam_profiles, cam_past_limit) = m
             .cams
             .iter()
             .map(|c| {
                 (0..CAM_OUTLINE)
-                    .map(|i| std::f64::consts::TAU * i as f64 / CAM_OUTLINE as f64)
-                    .map(|theta| c.point_at(theta).past_limit(c.pressure_limit_rad()))
-                    .collect()
+                    .map(|i| c.point_at(std::f64::consts::TAU * i as f64 / CAM_OUTLINE as f64))
+                    .map(|p| {
+                        let [x, y] = p.profile_m;
+                        let on_link = c.centre_on_cam + Vec2::new(x, y);
+                        (on_link, p.past_limit(c.pressure_limit_rad()))
+                    })
+                    .unzip()
             })
-            .collect();
+            .unzip();
         Self {
             joint_points,
             link_joints,

@@ -93,6 +93,54 @@ pub enum SegmentSpec {
     },
 }
 
+impl SegmentSpec {
+    /// Its cam angle, degrees.
+    pub fn angle_deg(&self) -> f64 {
+        match *self {
+            Self::Rise { deg, .. } | Self::Dwell { deg } | Self::Return { deg, .. } => deg,
+        }
+    }
+
+    /// Its cam angle, to change.
+    pub fn angle_deg_mut(&mut self) -> &mut f64 {
+        match self {
+            Self::Rise { deg, .. } | Self::Dwell { deg } | Self::Return { deg, .. } => deg,
+        }
+    }
+
+    /// The lift of a rise or return (none for a dwell).
+    pub fn lift(&self) -> Option<f64> {
+        match *self {
+            Self::Rise { lift, .. } | Self::Return { lift, .. } => Some(lift),
+            Self::Dwell { .. } => None,
+        }
+    }
+
+    /// The lift of a rise or return, to change.
+    pub fn lift_mut(&mut self) -> Option<&mut f64> {
+        match self {
+            Self::Rise { lift, .. } | Self::Return { lift, .. } => Some(lift),
+            Self::Dwell { .. } => None,
+        }
+    }
+
+    /// The law of a rise or return (none for a dwell).
+    pub fn law(&self) -> Option<Law> {
+        match *self {
+            Self::Rise { law, .. } | Self::Return { law, .. } => Some(law),
+            Self::Dwell { .. } => None,
+        }
+    }
+
+    /// The law of a rise or return, to change.
+    pub fn law_mut(&mut self) -> Option<&mut Law> {
+        match self {
+            Self::Rise { law, .. } | Self::Return { law, .. } => Some(law),
+            Self::Dwell { .. } => None,
+        }
+    }
+}
+
 /// A cam file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(rename = "Cam", deny_unknown_fields)]

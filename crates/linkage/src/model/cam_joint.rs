@@ -216,29 +216,6 @@ impl CamJoint {
         }
     }
 
-    /// The base circle's radius: the profile's least distance from the cam's centre
-    /// over `samples` cam angles, m.
-    pub fn base_radius_m(&self, samples: usize) -> f64 {
-        let n = samples.max(3);
-        (0..n)
-            .map(|i| std::f64::consts::TAU * i as f64 / n as f64)
-            .map(|theta| (self.contact(theta).point - self.centre).norm())
-            .fold(f64::INFINITY, f64::min)
-    }
-
-    /// The cam's profile in the cam link's own coordinates, at `samples` cam angles
-    /// over a turn (the closed outline the renderer draws on the link).
-    pub fn profile_on_cam(&self, samples: usize) -> Vec<Vec2> {
-        let n = samples.max(3);
-        (0..n)
-            .map(|i| {
-                let theta = std::f64::consts::TAU * i as f64 / n as f64;
-                let p = self.contact(theta).point;
-                self.centre_on_cam + turn(p - self.centre, -theta)
-            })
-            .collect()
-    }
-
     /// The roller centre's distance from the cam's centre at the cam link's angle.
     pub(crate) fn pitch_distance(&self, cam_angle: f64) -> f64 {
         let m = self.follower_at(cam_angle);

@@ -8,6 +8,7 @@
 use super::Newton;
 use crate::model::{CamJoint, FollowerGuide};
 use crate::motion::{LinkMotion, Vec2};
+use crate::sweep::unwrap_near;
 
 /// The follower's coordinate: an arm's angle (rad), a slider's travel along its ground
 /// guide from the guide's point (m).
@@ -24,11 +25,6 @@ fn coordinate(cam: &CamJoint, links: &[LinkMotion]) -> f64 {
     }
 }
 
-/// Wraps an angle difference into (-π, π].
-fn wrap(a: f64) -> f64 {
-    a - (a / std::f64::consts::TAU).round() * std::f64::consts::TAU
-}
-
 impl Newton {
     /// The cam rows' residuals from row `first` of `out`; returns their max-norm
     /// (rad, or metres per metre of the mechanism's size).
@@ -38,7 +34,11 @@ impl Newton {
             let lift = cam.follower_at(links[cam.cam].angle_rad()).s;
             let gap = coordinate(cam, links) - lift;
             let (r, relative) = match cam.guide {
-                FollowerGuide::Arm { .. } => (wrap(gap), wrap(gap)),
+                FollowerGuide::Arm { .. } => {
+                    // The angle's gap by whole turns to within π of none.
+                    let gap = unwrap_near(gap, 0.0);
+                    (gap, gap)
+                }
                 FollowerGuide::Slide { .. } => (gap, gap / self.size_m),
             };
             out[first + j] = r;
