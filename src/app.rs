@@ -8,6 +8,7 @@ use crate::render::shape::SharedShapes;
 use crate::session::Session;
 use crate::state::{AppState, DEFAULT_SCENE};
 use crate::ui;
+use crate::ui::control_map::ControlKind;
 
 /// What `logic` measured and saw before the panels, for the frame's accounts.
 struct FrameStart {
@@ -199,39 +200,73 @@ impl LinkageApp {
             return;
         }
         ui::report::strip(ui, &self.state);
-        egui::Panel::left("controls")
-            .default_size(290.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    ui::controls::panel(ui, &mut self.state);
-                    ui.separator();
-                    ui::accuracy::panel(ui, &mut self.state);
-                });
-            });
+        self.controls_pane(ui, |ui, st| {
+            ui::controls::panel(ui, st);
+            ui.separator();
+            ui::accuracy::panel(ui, st);
+        });
         // The controls' edits land before the polygons, plots and view are laid out,
         // so that all of them show the edit in this frame.
         self.state.apply_edits();
-        let polygons = egui::Panel::right("polygons").default_size(360.0);
-        // Enlarged, the polygons share the room beside the controls equally with the
-        // mechanism.
-        let polygons = if self.state.layout.polygons_wide {
-            polygons.exact_size(0.5 * ui.available_width())
-        } else {
-            polygons
-        };
-        polygons.show(ui, |ui| {
-            egui::ScrollArea::vertical()
-                .show(ui, |ui| self.panels.polygons.ui(ui, &mut self.state));
-        });
-        egui::Panel::bottom("plots")
-            .default_size(230.0)
-            .show(ui, |ui| self.panels.plots.ui(ui, &mut self.state));
+        self.polygon_and_plot_panes(ui);
         egui::CentralPanel::default_margins().show(ui, |ui| {
             *solver_us +=
                 self.panels
                     .viewport
                     .ui(ui, &mut self.state, &self.shapes, self.renderer.as_ref());
         });
+    }
+
+    /// The controls pane on the left, scrolled, within its limits
+    /// ([`ui::panel_budget`]); at its least width while the polygons are enlarged.
+    fn controls_pane(
+        &mut self,
+        ui: &mut egui::Ui,
+        contents: impl FnOnce(&mut egui::Ui, &mut AppState),
+    ) {
+        let window = ui.ctx().content_rect().size();
+        let limits = ui::panel_budget::controls(ui.available_rect_before_wrap(), window);
+        let layout = self.state.layout;
+        let pane = if layout.polygons_wide && self.state.drawing.is_none() {
+            egui::Panel::left(layout.panel_id("controls")).exact_size(limits.range.min)
+        } else {
+            egui::Panel::left(layout.panel_id("controls"))
+                .default_size(limits.default)
+                .size_range(limits.range)
+        };
+        let shown = pane.show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| contents(ui, &mut self.state));
+        });
+        self.state
+            .controls
+            .note_rect(ControlKind::Pane, "controls", shown.response.rect, true);
+    }
+
+    /// The polygon pane on the right and the plot pane below the view, each within
+    /// what the panes before it left the view ([`ui::panel_budget`]); each scrolls
+    /// inside itself, so that what it holds never pushes the view away.
+    fn polygon_and_plot_panes(&mut self, ui: &mut egui::Ui) {
+        let window = ui.ctx().content_rect().size();
+        let layout = self.state.layout;
+        let limits = ui::panel_budget::polygons(ui.available_rect_before_wrap(), window);
+        // Enlarged, the pane takes all the view's share leaves.
+        let polygons = if layout.polygons_wide {
+            egui::Panel::right(layout.panel_id("polygons")).exact_size(limits.largest())
+        } else {
+            egui::Panel::right(layout.panel_id("polygons"))
+                .default_size(limits.default)
+                .size_range(limits.range)
+        };
+        let shown = polygons.show(ui, |ui| self.panels.polygons.ui(ui, &mut self.state));
+        let controls = &mut self.state.controls;
+        controls.note_rect(ControlKind::Pane, "polygons", shown.response.rect, true);
+        let limits = ui::panel_budget::plots(ui.available_rect_before_wrap(), window);
+        let shown = egui::Panel::bottom(layout.panel_id("plots"))
+            .default_size(limits.default)
+            .size_range(limits.range)
+            .show(ui, |ui| self.panels.plots.ui(ui, &mut self.state));
+        let controls = &mut self.state.controls;
+        controls.note_rect(ControlKind::Pane, "plots", shown.response.rect, true);
     }
 
     /// While drawing: the tools beside the drawing; the report, plots and polygons
@@ -259,22 +294,9 @@ impl LinkageApp {
         if complete {
             ui::report::strip(ui, &self.state);
         }
-        egui::Panel::left("controls")
-            .default_size(290.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical()
-                    .show(ui, |ui| ui::drawing_panel::panel(ui, &mut self.state));
-            });
+        self.controls_pane(ui, ui::drawing_panel::panel);
         if complete {
-            egui::Panel::right("polygons")
-                .default_size(360.0)
-                .show(ui, |ui| {
-                    egui::ScrollArea::vertical()
-                        .show(ui, |ui| self.panels.polygons.ui(ui, &mut self.state));
-                });
-            egui::Panel::bottom("plots")
-                .default_size(230.0)
-                .show(ui, |ui| self.panels.plots.ui(ui, &mut self.state));
+            self.polygon_and_plot_panes(ui);
         }
         egui::CentralPanel::default_margins().show(ui, |ui| {
             ui::drawing_canvas::show(

@@ -23,7 +23,7 @@ fn main() -> std::process::ExitCode {
     let options = eframe::NativeOptions {
         viewport: eframe::egui::ViewportBuilder::default()
             .with_title("Linkage Lab")
-            .with_inner_size([1100.0, 720.0])
+            .with_inner_size([1280.0, 720.0])
             .with_drag_and_drop(true),
         ..Default::default()
     };

@@ -18,6 +18,9 @@ pub struct Camera {
     pub points_per_m: f64,
     /// `points_per_m` of the last fit (the zoom limits are relative to it).
     pub fitted_points_per_m: f64,
+    /// Whether the user panned or zoomed since the last fit: the view then stays
+    /// where the user put it when the mechanism or the view's size changes.
+    pub by_hand: bool,
 }
 
 impl Default for Camera {
@@ -26,6 +29,7 @@ impl Default for Camera {
             center_m: [0.0, 0.0],
             points_per_m: 100.0,
             fitted_points_per_m: 100.0,
+            by_hand: false,
         }
     }
 }
@@ -33,16 +37,30 @@ impl Default for Camera {
 impl Camera {
     /// Frames the box `[min x, min y, max x, max y]` (m) in `rect` with a margin.
     pub fn fit(&mut self, bounds_m: [f64; 4], rect: Rect) {
+        self.fit_within(bounds_m, rect, rect);
+    }
+
+    /// Frames the box in `inner`, a part of the view's `rect` (what the view's
+    /// legend and message leave clear), with a margin.
+    pub fn fit_within(&mut self, bounds_m: [f64; 4], rect: Rect, inner: Rect) {
+        let inner = if inner.width() > 1.0 && inner.height() > 1.0 {
+            inner
+        } else {
+            rect
+        };
         let w = (bounds_m[2] - bounds_m[0]).max(1e-12);
         let h = (bounds_m[3] - bounds_m[1]).max(1e-12);
-        let scale = (f64::from(rect.width()) / w).min(f64::from(rect.height()) / h) * 0.8;
+        let scale = (f64::from(inner.width()) / w).min(f64::from(inner.height()) / h) * 0.9;
         if scale.is_finite() && scale > 0.0 {
             self.points_per_m = scale;
             self.fitted_points_per_m = scale;
+            // The box's centre at the inner rectangle's centre (y up in the world).
+            let shift = inner.center() - rect.center();
             self.center_m = [
-                0.5 * (bounds_m[0] + bounds_m[2]),
-                0.5 * (bounds_m[1] + bounds_m[3]),
+                0.5 * (bounds_m[0] + bounds_m[2]) - f64::from(shift.x) / scale,
+                0.5 * (bounds_m[1] + bounds_m[3]) + f64::from(shift.y) / scale,
             ];
+            self.by_hand = false;
         }
     }
 
@@ -66,8 +84,12 @@ impl Camera {
 
     /// Moves the view by a screen drag.
     pub fn pan(&mut self, drag: Vec2) {
+        if drag == Vec2::ZERO {
+            return;
+        }
         self.center_m[0] -= f64::from(drag.x) / self.points_per_m;
         self.center_m[1] += f64::from(drag.y) / self.points_per_m;
+        self.by_hand = true;
     }
 
     /// Zooms by `factor` keeping the world point under `pointer` fixed.
@@ -82,6 +104,7 @@ impl Camera {
         }
         let before = self.to_world(pointer, rect);
         self.points_per_m = next;
+        self.by_hand = true;
         let after = self.to_world(pointer, rect);
         self.center_m[0] += before[0] - after[0];
         self.center_m[1] += before[1] - after[1];
@@ -126,6 +149,23 @@ mod tests {
         let back = cam.to_world(cam.to_screen(p, rect()), rect());
         assert!((back[0] - p[0]).abs() < 1e-5 && (back[1] - p[1]).abs() < 1e-5);
         assert!(cam.to_screen([0.0, 1.0], rect()).y < cam.to_screen([0.0, 0.0], rect()).y);
+    }
+
+    /// Fitted within a part of the view, the box lies inside that part; panning
+    /// marks the camera as moved by hand, a fit clears it.
+    #[test]
+    fn a_fit_within_keeps_the_box_inside_the_part_and_clears_by_hand() {
+        let mut cam = Camera::default();
+        let inner = rect().with_min_y(rect().min.y + 60.0);
+        cam.pan(Vec2::new(3.0, 0.0));
+        assert!(cam.by_hand);
+        let bounds = [-1.0, -0.5, 3.0, 2.0];
+        cam.fit_within(bounds, rect(), inner);
+        assert!(!cam.by_hand);
+        for corner in [[bounds[0], bounds[1]], [bounds[2], bounds[3]]] {
+            let p = cam.to_screen(corner, rect());
+            assert!(inner.contains(p), "{p:?} outside {inner:?}");
+        }
     }
 
     #[test]

@@ -10,6 +10,7 @@ use linkage::scene::Models;
 use crate::session::dynamic_run::{IntegratorChoice, METHODS};
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
+use crate::ui::number_field::{NumberSpec, slider_row};
 
 /// "degrees of freedom: 3(n − 1) − 2j = …" for the mechanism's links and joints,
 /// with "− h" for its cam contacts (higher pairs, one constraint each) where it has
@@ -100,30 +101,33 @@ fn integrator_menu(ui: &mut egui::Ui, st: &mut AppState, choice: &mut Integrator
 /// The adaptive methods' rtol, or the fixed step (Δφ or Δt); returns whether it
 /// changed.
 fn tolerance_slider(ui: &mut egui::Ui, st: &mut AppState, choice: &mut IntegratorChoice) -> bool {
-    let tolerance = if choice.method.is_adaptive() {
-        ui.add(
-            egui::Slider::new(&mut choice.rtol, 1e-12..=1e-3)
-                .logarithmic(true)
-                .custom_formatter(|v, _| format!("{v:.0e}"))
-                .text("rtol"),
+    let (value, spec) = if choice.method.is_adaptive() {
+        (
+            &mut choice.rtol,
+            NumberSpec::new("rtol", "", 1e-12..=1e-3).logarithmic(),
         )
     } else {
-        let (range, label) = if choice.method == Method::EnergyIncrement {
-            (1e-4..=1e-1, "Δφ (rad)")
+        let (range, label, unit) = if choice.method == Method::EnergyIncrement {
+            (1e-4..=1e-1, "Δφ (rad)", "rad")
         } else {
-            (1e-6..=1e-2, "Δt (s)")
+            (1e-6..=1e-2, "Δt (s)", "s")
         };
         choice.step = choice.step.clamp(*range.start(), *range.end());
-        ui.add(
-            egui::Slider::new(&mut choice.step, range)
-                .logarithmic(true)
-                .custom_formatter(|v, _| format!("{v:.1e}"))
-                .text(label),
+        (
+            &mut choice.step,
+            NumberSpec::new(label, unit, range).logarithmic(),
         )
     };
+    let (tolerance, input) = slider_row(ui, "tolerance", &spec, *value);
     st.controls
         .note(ui, ControlKind::Tolerance, "tolerance", &tolerance);
-    tolerance.changed()
+    match input.value() {
+        Some(v) => {
+            *value = v;
+            true
+        }
+        None => false,
+    }
 }
 
 /// The run's progress, its cost and accuracy, its warnings and end stops, or why it

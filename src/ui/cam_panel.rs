@@ -15,6 +15,7 @@ use crate::session::cam_curves::CamCurves;
 use crate::session::cam_edit::CamEdit;
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
+use crate::ui::number_field::{NumberSpec, boxed};
 
 /// Red, for a figure past its limit.
 const PAST: egui::Color32 = egui::Color32::from_rgb(220, 70, 60);
@@ -50,6 +51,7 @@ fn segments(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJointSpe
         .num_columns(3)
         .striped(true)
         .show(ui, |ui| {
+            let n = spec.segments.len();
             for (segment, s) in spec.segments.iter().enumerate() {
                 let (kind, law, deg) = (kind_name(s), s.law(), s.angle_deg());
                 let name = ui.label(format!("{} {kind}", segment + 1));
@@ -59,17 +61,18 @@ fn segments(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJointSpe
                         ui.label("");
                     }
                 }
-                let mut to = deg;
+                // The next segment gives or takes the difference: together they
+                // hold what this one may span.
+                let room = deg + spec.segments[(segment + 1) % n].angle_deg();
                 let label = format!("segment {} angle (deg)", segment + 1);
-                let r = ui
-                    .add(egui::DragValue::new(&mut to).speed(0.5).suffix("°"))
-                    .labelled_by(name.id)
-                    .on_hover_text("the next segment gives or takes the difference");
+                let spec = NumberSpec::new(&label, "°", 0.0..=room);
+                let (r, typed) = boxed(ui, ("cam segment", cam, segment), &spec, deg);
+                let r = r.on_hover_text("the next segment gives or takes the difference");
                 st.controls.note(ui, ControlKind::Cam, &label, &r);
-                if r.changed() {
+                if let Some(deg) = typed.value() {
                     st.edit(SceneEdit::Cam {
                         cam,
-                        edit: CamEdit::Span { segment, deg: to },
+                        edit: CamEdit::Span { segment, deg },
                     });
                 }
                 ui.end_row();
@@ -133,47 +136,37 @@ fn lift_and_roller(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJ
         .filter_map(SegmentSpec::lift)
         .fold(0.0, f64::max);
     let arm = st.session.curves().cams.get(cam).is_some_and(|c| c.is_arm);
-    let unit = if arm {
-        "°".to_string()
+    let length = crate::session::unit_label(st.session.scene());
+    // A lift up to ten times the one the cam has (an arm's swing below a right
+    // angle), a roller up to ten times its own: past these the cam's figures are
+    // meaningless; within them, the scene's own checks refuse what does not build.
+    let (unit, lift_range) = if arm {
+        ("°", 0.0..=(10.0 * largest).min(90.0))
     } else {
-        format!(" {}", crate::session::unit_label(st.session.scene()))
+        (length, 0.0..=10.0 * largest)
     };
-    ui.horizontal(|ui| {
-        let name = ui.label("lift");
-        let mut to = largest;
-        let r = ui
-            .add(
-                egui::DragValue::new(&mut to)
-                    .speed(0.05)
-                    .suffix(unit.as_str()),
-            )
-            .labelled_by(name.id)
-            .on_hover_text("every rise and return scales with it");
-        st.controls.note(ui, ControlKind::Cam, "lift", &r);
-        if r.changed() {
-            st.edit(SceneEdit::Cam {
-                cam,
-                edit: CamEdit::Lift(to),
-            });
-        }
-        let name = ui.label("roller");
-        let mut radius = spec.roller_radius;
-        let unit = crate::session::unit_label(st.session.scene());
-        let r = ui
-            .add(
-                egui::DragValue::new(&mut radius)
-                    .speed(0.1)
-                    .suffix(format!(" {unit}")),
-            )
-            .labelled_by(name.id);
-        st.controls.note(ui, ControlKind::Cam, "roller", &r);
-        if r.changed() {
-            st.edit(SceneEdit::Cam {
-                cam,
-                edit: CamEdit::Roller(radius),
-            });
-        }
-    });
+    let lift = format!("lift ({unit})");
+    let spec_lift = NumberSpec::new(&lift, unit, lift_range);
+    let (r, typed) = boxed(ui, ("cam lift", cam), &spec_lift, largest);
+    let r = r.on_hover_text("every rise and return scales with it");
+    st.controls.note(ui, ControlKind::Cam, "lift", &r);
+    if let Some(to) = typed.value() {
+        st.edit(SceneEdit::Cam {
+            cam,
+            edit: CamEdit::Lift(to),
+        });
+    }
+    let roller = format!("roller ({length})");
+    let top = 10.0 * spec.roller_radius.max(f64::MIN_POSITIVE);
+    let spec_roller = NumberSpec::new(&roller, length, 0.0..=top);
+    let (r, typed) = boxed(ui, ("cam roller", cam), &spec_roller, spec.roller_radius);
+    st.controls.note(ui, ControlKind::Cam, "roller", &r);
+    if let Some(radius) = typed.value() {
+        st.edit(SceneEdit::Cam {
+            cam,
+            edit: CamEdit::Roller(radius),
+        });
+    }
 }
 
 /// The base circle, the largest pressure angle and the least radii, red past their

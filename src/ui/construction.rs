@@ -27,7 +27,7 @@ const LINE: Color32 = Color32::from_rgb(120, 60, 160);
 
 impl ConstructionView {
     /// The construction section of the polygon pane.
-    pub fn ui(&mut self, ui: &mut egui::Ui, st: &AppState) {
+    pub fn ui(&mut self, ui: &mut egui::Ui, st: &AppState, figure_height: f32) {
         let equations = st.session.polygons();
         if equations.is_empty() {
             ui.weak("no equations at this position");
@@ -94,13 +94,18 @@ impl ConstructionView {
             return;
         };
         let step = &steps[view.step];
-        draw_step(ui, step, last.figure.extent());
+        draw_step(ui, step, last.figure.extent(), figure_height);
         ui.label(job(&step.says, 14.0, ink));
     }
 }
 
-fn draw_step(ui: &mut egui::Ui, step: &linkage_diagram::construction::Step, fit: Rect) {
-    let paper = Paper::new(ui);
+fn draw_step(
+    ui: &mut egui::Ui,
+    step: &linkage_diagram::construction::Step,
+    fit: Rect,
+    height: f32,
+) {
+    let paper = Paper::new(ui, height);
     let laid = paper.lay_out(&step.figure, Some(fit));
     if laid.px_per_unit <= 0.0 {
         return;

@@ -55,6 +55,13 @@ pub enum ControlKind {
     SynthesisTarget,
     /// A tab of the sheet that holds the panels on a phone or tablet.
     SheetTab,
+    /// A tab of the plot pane.
+    PlotTab,
+    /// "Reset layout": the panes back to their default sizes.
+    ResetLayout,
+    /// A pane of the desktop arrangement (controls, polygons, plots) or the
+    /// sheet of the compact ones, by its rectangle: its edge is what a user drags.
+    Pane,
     /// The top bar's menu on a phone or tablet (the file actions, New…, views).
     Menu,
 }

@@ -13,7 +13,7 @@ use linkage_model::session::Session;
 use crate::ui::polygon_paint::{INK, Paper, draw};
 
 /// The force polygons' section: the figures, or why the position has none.
-pub fn section(ui: &mut egui::Ui, session: &Session) {
+pub fn section(ui: &mut egui::Ui, session: &Session, figure_height: f32) {
     ui.separator();
     ui.strong("Force polygons");
     match session.force_polygons() {
@@ -26,14 +26,17 @@ pub fn section(ui: &mut egui::Ui, session: &Session) {
         Some(Err(e)) => {
             ui.colored_label(
                 ui.visuals().warn_fg_color,
-                format!("No force polygons here: {e}"),
+                format!(
+                    "No force polygons here: {}",
+                    linkage_model::session::words::error(e, session.scene().length_unit)
+                ),
             );
         }
-        Some(Ok(fp)) => stages(ui, session, fp),
+        Some(Ok(fp)) => stages(ui, session, fp, figure_height),
     }
 }
 
-fn stages(ui: &mut egui::Ui, session: &Session, fp: &ForcePolygons) {
+fn stages(ui: &mut egui::Ui, session: &Session, fp: &ForcePolygons, figure_height: f32) {
     let m = session.mechanism();
     ui.label(format!(
         "At the scene's crank speed, from the output back to the crank. \
@@ -48,7 +51,7 @@ fn stages(ui: &mut egui::Ui, session: &Session, fp: &ForcePolygons) {
             ui.weak("no force on these links here (no mass, no load): the polygon is a point");
             continue;
         }
-        let paper = Paper::new(ui);
+        let paper = Paper::new(ui, figure_height);
         let laid = paper.lay_out(&fig, None);
         draw(&paper.painter, FORCE_UNIT, &laid, None, INK);
         egui::CollapsingHeader::new(format!("{title}: forces"))

@@ -19,10 +19,11 @@ pub enum Arrangement {
     Broad,
 }
 
-/// Smallest screen, in points, that keeps the panels around the view: there the view
-/// keeps about 40 % of the screen, at 1500 × 950 (the desktop app's own size is
-/// 1100 × 720, where it gets 35 %; below these sizes it would get less and less).
-const WIDE_FROM: egui::Vec2 = egui::vec2(1100.0, 700.0);
+/// Smallest screen, in points, that keeps the panels around the view (a laptop's
+/// browser, 1366 × 660, and up): there the panels' limits (`panel_budget`) leave the
+/// view its share with every pane at its least size or larger. Below, the panes would
+/// be squeezed under their least sizes, and the sheet of tabs serves better.
+const WIDE_FROM: egui::Vec2 = egui::vec2(1280.0, 640.0);
 
 /// Share of the screen's area the view takes in the compact arrangements.
 pub const VIEW_SHARE: f32 = 0.54;
@@ -61,7 +62,8 @@ impl Arrangement {
         share: f32,
     ) -> (egui::Rect, egui::Rect) {
         let want = share * screen.x * screen.y;
-        let least_sheet = 3.0 * TOUCH + 80.0;
+        // The sheet keeps its tab row and two rows of touch targets.
+        let least_sheet = 3.0 * TOUCH + 20.0;
         match self {
             Self::Tall | Self::Wide => {
                 let h = (want / area.width())
@@ -127,8 +129,13 @@ pub struct LayoutState {
     pub arrangement: Arrangement,
     /// The sheet's tab shown.
     pub tab: SheetTab,
-    /// Whether the polygon pane takes half the window (desktop).
+    /// Whether the polygons are enlarged: on a desktop screen their pane as wide as
+    /// the view's share allows, on a phone or tablet each figure the sheet's full
+    /// width (the sheet scrolls) instead of fitted to the sheet's height.
     pub polygons_wide: bool,
+    /// Counts "reset layout": the panels' ids carry it, so that a reset starts them
+    /// afresh at their default sizes (egui remembers a panel's size by its id).
+    pub generation: u32,
     /// Whether the style was set for the arrangement (the first frame sets it).
     styled: bool,
 }
@@ -150,6 +157,19 @@ impl LayoutState {
     /// Whether the panels share a sheet of tabs.
     pub fn compact(&self) -> bool {
         self.arrangement.compact()
+    }
+
+    /// Back to the panels' default sizes, the polygons not enlarged.
+    pub fn reset(&mut self) {
+        self.generation = self.generation.wrapping_add(1);
+        self.polygons_wide = false;
+    }
+
+    /// A panel's id: its name, the layout's generation, and whether the polygons
+    /// are enlarged (the enlarged layout keeps its own sizes, so that "narrower"
+    /// gives back the sizes the user had).
+    pub fn panel_id(&self, name: &'static str) -> (&'static str, u32, bool) {
+        (name, self.generation, self.polygons_wide)
     }
 }
 
@@ -195,6 +215,10 @@ mod tests {
         assert_eq!(at(768.0, 1024.0), Arrangement::Tall);
         assert_eq!(at(1024.0, 768.0), Arrangement::Broad);
         assert_eq!(at(800.0, 600.0), Arrangement::Broad);
+        assert_eq!(at(1100.0, 700.0), Arrangement::Broad);
+        assert_eq!(at(1280.0, 720.0), Arrangement::Wide);
+        assert_eq!(at(1366.0, 660.0), Arrangement::Wide);
+        assert_eq!(at(1366.0, 768.0), Arrangement::Wide);
         assert_eq!(at(1500.0, 950.0), Arrangement::Wide);
     }
 

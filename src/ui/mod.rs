@@ -18,6 +18,8 @@ pub mod flywheel_plots;
 pub mod force_polygons;
 pub mod layout;
 pub mod machine_plots;
+pub mod number_field;
+pub mod panel_budget;
 pub mod panels;
 pub mod plot_layout;
 pub mod plots;

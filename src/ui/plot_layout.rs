@@ -5,24 +5,32 @@
 use eframe::egui;
 
 /// Narrowest a plot is drawn beside another, points: below, plots stand one under
-/// another (a phone's sheet), each [`STACKED_HEIGHT`] high.
+/// another (a phone's sheet).
 const LEAST_WIDTH: f32 = 200.0;
-/// Height of a plot in a stack, points.
-const STACKED_HEIGHT: f32 = 200.0;
+/// The lowest a plot is drawn, points: its axis title, three labelled ticks and its
+/// curve read. A pane lower than this scrolls instead of squashing its plots.
+pub const LEAST_HEIGHT: f32 = 150.0;
+/// The highest a plot in a stack is drawn, points (a phone's sheet shows the next
+/// one's top below it).
+const STACKED_HEIGHT: f32 = 260.0;
 
 /// Lays out `n` plots side by side where the pane is wide enough, else one under
-/// another; `draw(ui, i, height)` draws the `i`-th, `height` high.
+/// another; `draw(ui, i, height)` draws the `i`-th, `height` high: the room left in
+/// the pane's view (inside its scroll area, `ui`'s available height), never less than
+/// [`LEAST_HEIGHT`].
 pub fn side_by_side(ui: &mut egui::Ui, n: usize, mut draw: impl FnMut(&mut egui::Ui, usize, f32)) {
+    let room = ui.available_height() - ui.spacing().item_spacing.y;
     if ui.available_width() >= LEAST_WIDTH * n as f32 {
-        let height = ui.available_height().max(80.0);
+        let height = room.max(LEAST_HEIGHT);
         ui.columns(n, |cols| {
             for (i, col) in cols.iter_mut().enumerate() {
                 draw(col, i, height);
             }
         });
     } else {
+        let height = room.clamp(LEAST_HEIGHT, STACKED_HEIGHT);
         for i in 0..n {
-            draw(ui, i, STACKED_HEIGHT);
+            draw(ui, i, height);
         }
     }
 }

@@ -11,6 +11,7 @@ use crate::session::Session;
 use crate::session::curves::ModelCurves;
 use crate::session::derived::Shown;
 use crate::state::AppState;
+use crate::ui::control_map::ControlKind;
 
 /// Which plot the plot pane shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -134,17 +135,32 @@ impl PlotsPanel {
         if !tab_available(self.tab, &st.session) {
             self.tab = PlotTab::Output;
         }
+        self.tab_row(ui, st);
+        // The plots scroll inside the pane below the tab row, which stays in view:
+        // however many plots a tab holds, the pane keeps its size.
+        egui::ScrollArea::vertical()
+            .id_salt("plots")
+            .auto_shrink(false)
+            .show(ui, |ui| self.tab_body(ui, &st.session));
+    }
+
+    /// The row of tabs: short names, so that a phone's sheet holds it; the full name
+    /// on hover. Each tab is noted where it is drawn (tests check it stays in view).
+    fn tab_row(&mut self, ui: &mut egui::Ui, st: &mut AppState) {
         ui.horizontal_wrapped(|ui| {
-            // Short names, so that a phone's sheet holds the row; the full name on
-            // hover.
             for (tab, label, full) in TABS {
                 if tab_available(tab, &st.session) {
-                    ui.selectable_value(&mut self.tab, tab, label)
+                    let r = ui
+                        .selectable_value(&mut self.tab, tab, label)
                         .on_hover_text(full);
+                    st.controls.note(ui, ControlKind::PlotTab, label, &r);
                 }
             }
         });
-        let s = &st.session;
+    }
+
+    /// The shown tab's plots.
+    fn tab_body(&self, ui: &mut egui::Ui, s: &Session) {
         match self.tab {
             PlotTab::Output => output_plots(ui, s),
             PlotTab::Transmission => {

@@ -9,6 +9,9 @@ use linkage_diagram::layout::{Figure, LaidPolygon, Sizes, layout_polygon_fitting
 
 use crate::ui::typeset::galley;
 
+/// The lowest a figure is drawn, points: below, its labels would cover it.
+const LEAST_HEIGHT: f32 = 120.0;
+
 /// Label size in the figures, points.
 pub(crate) const FONT: f32 = 13.0;
 /// The figure's background: paper, in either theme.
@@ -24,8 +27,9 @@ pub fn pos(p: [f64; 2]) -> Pos2 {
     Pos2::new(p[0] as f32, p[1] as f32)
 }
 
-/// A figure's pane: the width available, about 3:4, drawn on paper in either theme
-/// so that the figure looks as it will on the sheet.
+/// A figure's pane: the width available, about 3:4 (lower where the pane that holds
+/// it is lower), drawn on paper in either theme so that the figure looks as it will
+/// on the sheet.
 pub struct Paper {
     /// Its rectangle.
     pub rect: egui::Rect,
@@ -36,10 +40,13 @@ pub struct Paper {
 }
 
 impl Paper {
-    /// Allocates the pane in `ui` and paints the paper.
-    pub fn new(ui: &mut egui::Ui) -> Self {
+    /// Allocates the pane in `ui`, at most `max_height` high (so that a figure fits
+    /// the pane it is shown in), and paints the paper.
+    pub fn new(ui: &mut egui::Ui, max_height: f32) -> Self {
         let w = ui.available_width().max(160.0);
-        let h = (w * 0.72).clamp(160.0, 560.0);
+        let h = (w * 0.72)
+            .clamp(160.0, 560.0)
+            .min(max_height.max(LEAST_HEIGHT));
         let (rect, response) = ui.allocate_exact_size(Vec2::new(w, h), Sense::hover());
         let painter = ui.painter_at(rect);
         painter.rect_filled(rect, 4.0, PAPER);

@@ -30,14 +30,21 @@ pub struct PolygonPane {
 }
 
 impl PolygonPane {
-    /// The polygon pane.
+    /// The polygon pane: its heading and enlarge button, then the figures and
+    /// tables, scrolled inside the pane. Each figure fits the pane's height (on a
+    /// phone, one figure at a time in view) unless enlarged on a phone or tablet,
+    /// where it takes the sheet's full width.
     pub fn ui(&mut self, ui: &mut egui::Ui, st: &mut AppState) {
         ui.horizontal(|ui| {
             ui.heading("Polygons");
             let (text, tip) = match (st.layout.polygons_wide, st.layout.compact()) {
-                (true, _) => ("narrower", "Give the mechanism its room back"),
-                (false, false) => ("enlarge", "Polygons and mechanism share the window equally"),
-                (false, true) => ("enlarge", "Give the sheet the larger part of the screen"),
+                (true, false) => ("narrower", "Give the mechanism its room back"),
+                (true, true) => ("fit", "Fit each polygon to the sheet's height"),
+                (false, false) => (
+                    "enlarge",
+                    "Widen the polygon pane as far as the view allows",
+                ),
+                (false, true) => ("enlarge", "Draw each polygon the sheet's full width"),
             };
             let button = ui.button(text).on_hover_text(tip);
             st.controls
@@ -46,16 +53,35 @@ impl PolygonPane {
                 st.layout.polygons_wide = !st.layout.polygons_wide;
             }
         });
+        // A figure's title and the row of its table's header stay in view with it.
+        let figure_height = if st.layout.compact() && st.layout.polygons_wide {
+            f32::INFINITY
+        } else {
+            ui.available_height() - 2.0 * ui.spacing().interact_size.y - 8.0
+        };
+        egui::ScrollArea::vertical()
+            .auto_shrink([false, true])
+            .show(ui, |ui| self.figures(ui, st, figure_height));
+    }
+
+    /// The figures, their tables, the construction and the force polygons.
+    fn figures(&mut self, ui: &mut egui::Ui, st: &AppState, figure_height: f32) {
         let before = self.hover.take();
         let mut hovered = None;
         let s = &st.session;
         for q in [Quantity::Velocity, Quantity::Acceleration] {
             ui.strong(title(q));
             let fig = PolygonFigure::of_position(q, s.mechanism(), s.pose(), s.polygons());
-            let over_figure = figure(ui, &fig, before.as_ref());
+            let over_figure = figure(ui, &fig, before.as_ref(), figure_height);
+            // A table wider than the pane scrolls sideways instead of widening it.
             let over_table = egui::CollapsingHeader::new(format!("{}: vector equations", title(q)))
                 .default_open(false)
-                .show(ui, |ui| table(ui, s.polygons(), q, before.as_ref()))
+                .show(ui, |ui| {
+                    egui::ScrollArea::horizontal()
+                        .id_salt(("equations", q))
+                        .show(ui, |ui| table(ui, s.polygons(), q, before.as_ref()))
+                        .inner
+                })
                 .body_returned
                 .flatten();
             hovered = hovered.or(over_figure).or(over_table);
@@ -63,13 +89,18 @@ impl PolygonPane {
         self.hover = hovered;
         egui::CollapsingHeader::new("Construct an equation step by step")
             .default_open(false)
-            .show(ui, |ui| self.construction.ui(ui, st));
-        crate::ui::force_polygons::section(ui, &st.session);
+            .show(ui, |ui| self.construction.ui(ui, st, figure_height));
+        crate::ui::force_polygons::section(ui, &st.session, figure_height);
     }
 }
 
-fn figure(ui: &mut egui::Ui, fig: &PolygonFigure, marked: Option<&Symbol>) -> Option<Symbol> {
-    let paper = Paper::new(ui);
+fn figure(
+    ui: &mut egui::Ui,
+    fig: &PolygonFigure,
+    marked: Option<&Symbol>,
+    height: f32,
+) -> Option<Symbol> {
+    let paper = Paper::new(ui, height);
     let laid = paper.lay_out(fig, None);
     let Paper {
         rect,

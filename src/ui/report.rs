@@ -12,7 +12,14 @@ use crate::state::AppState;
 /// report from before them, greyed, until a frame without an edit makes the new one.
 pub fn strip(ui: &mut egui::Ui, st: &AppState) {
     egui::Panel::bottom("report").show(ui, |ui| {
-        ui.horizontal_wrapped(|ui| shown(ui, st, Form::Strip));
+        ui.horizontal_wrapped(|ui| {
+            // The last file action's line first, where it does not move the top bar.
+            if let Some(status) = &st.status {
+                ui.strong(status);
+                ui.separator();
+            }
+            shown(ui, st, Form::Strip);
+        });
     });
 }
 

@@ -30,6 +30,11 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &
     discard_question(ui.ctx(), st);
 }
 
+/// Every action in rows that do not move: each button is always there (Undo and
+/// Redo greyed when there is nothing to take back), "(edited)" has its place kept
+/// while the scene is as opened, and the status line is in the report strip. So an
+/// edit changes nothing in the bar's layout, and a field being typed into keeps its
+/// place and its keystrokes.
 fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &eframe::Frame) {
     ui.horizontal_wrapped(|ui| {
         ui.strong("Linkage Lab");
@@ -44,14 +49,25 @@ fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &efr
         }
         history_buttons(ui, st);
         edited_mark(ui, st);
-        if ui.button("Fit view").clicked() {
-            st.commands.fit = true;
-        }
+        view_buttons(ui, st);
         view_toggles(ui, st);
-        if let Some(status) = &st.status {
-            ui.label(status);
-        }
     });
+}
+
+/// "Fit view" and "Reset layout".
+fn view_buttons(ui: &mut egui::Ui, st: &mut AppState) {
+    if ui.button("Fit view").clicked() {
+        st.commands.fit = true;
+    }
+    let reset = ui
+        .button("Reset layout")
+        .on_hover_text("The panes back to their default sizes, the view fitted");
+    st.controls
+        .note(ui, ControlKind::ResetLayout, "Reset layout", &reset);
+    if reset.clicked() {
+        st.layout.reset();
+        st.commands.fit = true;
+    }
 }
 
 fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &eframe::Frame) {
@@ -66,6 +82,13 @@ fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &
             synthesis_button(ui, st);
             if ui.button("Reset edits").clicked() {
                 st.edit(crate::session::SceneEdit::Reset);
+            }
+            let reset = ui.button("Reset layout");
+            st.controls
+                .note(ui, ControlKind::ResetLayout, "Reset layout", &reset);
+            if reset.clicked() {
+                st.layout.reset();
+                st.commands.fit = true;
             }
             ui.separator();
             view_toggles(ui, st);
@@ -88,16 +111,13 @@ fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &
     }
 }
 
-/// Undo, redo, fit, "(edited)" and the status line.
+/// Undo, redo, fit and "(edited)" (the status line is shown in the view).
 fn history_and_status(ui: &mut egui::Ui, st: &mut AppState) {
     history_buttons(ui, st);
     if ui.button("Fit view").clicked() {
         st.commands.fit = true;
     }
     edited_mark(ui, st);
-    if let Some(status) = &st.status {
-        ui.label(status);
-    }
 }
 
 /// The scene picker, `width` wide; labelled "Scene" beside it on a desktop screen,
@@ -109,7 +129,9 @@ fn scene_picker(ui: &mut egui::Ui, st: &mut AppState, width: f32) {
             .iter()
             .position(|b| b.key == key)
             .map_or_else(|| key.clone(), |i| names()[i].clone()),
-        SceneSource::File(name) => name.clone(),
+        // A template, a synthesised design or a file: the scene's own name (the
+        // file's name is what Save proposes).
+        SceneSource::File(_) => st.session.scene().name.clone(),
     };
     let mut chosen = None;
     let mut items = Vec::new();
@@ -179,12 +201,25 @@ fn synthesis_button(ui: &mut egui::Ui, st: &mut AppState) {
     }
 }
 
-/// "(edited)" while the scene has unsaved edits.
+/// "(edited)" while the scene has unsaved edits; its place kept while it has none,
+/// so that the bar does not move when the first edit lands.
 fn edited_mark(ui: &mut egui::Ui, st: &AppState) {
-    if st.session.is_dirty() {
-        ui.label("(edited)")
-            .on_hover_text("The scene has edits not saved to a file: Save scene… keeps them");
-    }
+    let text = "(edited)";
+    let size = egui::WidgetText::from(text)
+        .into_galley(
+            ui,
+            Some(egui::TextWrapMode::Extend),
+            f32::INFINITY,
+            egui::TextStyle::Body,
+        )
+        .size();
+    let label = egui::Label::new(if st.session.is_dirty() { text } else { "" });
+    ui.add_sized(size, label)
+        .on_hover_text(if st.session.is_dirty() {
+            "The scene has edits not saved to a file: Save scene… keeps them"
+        } else {
+            "The scene is as opened or saved"
+        });
 }
 
 /// "move points" and the overlays of the view.

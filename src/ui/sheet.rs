@@ -20,13 +20,10 @@ pub fn show(
 ) -> egui::Rect {
     let area = ui.available_rect_before_wrap();
     let screen = ui.ctx().content_rect().size();
-    // "enlarge" (the polygon pane's button) gives the sheet the larger part.
-    let share = if st.layout.polygons_wide {
-        1.0 - VIEW_SHARE
-    } else {
-        VIEW_SHARE
-    };
+    let share = VIEW_SHARE;
     let (view, sheet) = st.layout.arrangement.split(area, screen, share);
+    st.controls
+        .note_rect(ControlKind::Pane, "sheet", sheet, true);
     let mut ui = ui.new_child(
         egui::UiBuilder::new()
             .max_rect(sheet)
@@ -34,9 +31,7 @@ pub fn show(
     );
     tabs(&mut ui, st, drawing);
     ui.separator();
-    egui::ScrollArea::vertical()
-        .auto_shrink(false)
-        .show(&mut ui, |ui| page(ui, st, panels, drawing));
+    page(&mut ui, st, panels, drawing);
     st.apply_edits();
     view
 }
@@ -74,13 +69,22 @@ fn tabs(ui: &mut egui::Ui, st: &mut AppState, drawing: bool) {
     });
 }
 
+/// The tab's page: the polygons and the plots scroll inside themselves (their
+/// figures fit what the sheet shows of them), the others in the sheet's scroll.
 fn page(ui: &mut egui::Ui, st: &mut AppState, panels: &mut Panels, drawing: bool) {
+    let scrolled = |ui: &mut egui::Ui, page: &mut dyn FnMut(&mut egui::Ui)| {
+        egui::ScrollArea::vertical()
+            .auto_shrink(false)
+            .show(ui, |ui| page(ui));
+    };
     match st.layout.tab {
-        SheetTab::Controls if drawing => crate::ui::drawing_panel::panel(ui, st),
-        SheetTab::Controls => crate::ui::controls::panel(ui, st),
+        SheetTab::Controls if drawing => {
+            scrolled(ui, &mut |ui| crate::ui::drawing_panel::panel(ui, st));
+        }
+        SheetTab::Controls => scrolled(ui, &mut |ui| crate::ui::controls::panel(ui, st)),
         SheetTab::Polygons => panels.polygons.ui(ui, st),
         SheetTab::Plots => panels.plots.ui(ui, st),
-        SheetTab::Report => crate::ui::report::page(ui, st),
-        SheetTab::Accuracy => crate::ui::accuracy::panel(ui, st),
+        SheetTab::Report => scrolled(ui, &mut |ui| crate::ui::report::page(ui, st)),
+        SheetTab::Accuracy => scrolled(ui, &mut |ui| crate::ui::accuracy::panel(ui, st)),
     }
 }

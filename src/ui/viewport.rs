@@ -11,6 +11,10 @@ use crate::render::view::Camera;
 use crate::state::AppState;
 use crate::ui::point_drag::PointDrag;
 
+/// Room a pin's and a ground pivot's symbols take around the pin, points: a fit
+/// keeps the mechanism's box this far inside the view.
+const SYMBOL_ROOM: f32 = 28.0;
+
 /// The view's own state: where it looks, what it drew, and the point being dragged.
 #[derive(Clone, Debug, Default)]
 pub struct Viewport {
@@ -23,6 +27,13 @@ pub struct Viewport {
     pub drawn: Option<(u64, f64)>,
     /// A joint dragged, or the driver turned by hand.
     pub drag: PointDrag,
+    /// What the camera was last fitted to: the view's rectangle, the mechanism's
+    /// box and the legend's height. Until the user pans or zooms, a change of any
+    /// fits anew (a length edited, a pane widened, the window resized).
+    fitted_to: Option<(egui::Rect, [f64; 4], f32)>,
+    /// The part of the view the legend (top) and the message (bottom) covered last
+    /// frame, points: the fit keeps the mechanism clear of them.
+    overlay: [f32; 2],
 }
 
 /// Pans the camera by a drag (where `pan`) or two fingers, and zooms it by the wheel
@@ -78,10 +89,7 @@ impl Viewport {
     ) -> f64 {
         let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
         st.controls.view = Some([rect.min.x, rect.min.y, rect.max.x, rect.max.y]);
-        if st.commands.fit && rect.width() > 1.0 {
-            self.camera.fit(st.session.curves().bounds_m, rect);
-            st.commands.fit = false;
-        }
+        self.fit(rect, st);
         let moving_point =
             crate::ui::point_drag::handle(ui, &response, rect, st, &self.camera, &mut self.drag);
         // A dragged point or a crank turned by hand shows where the pointer is now.
@@ -114,8 +122,33 @@ impl Viewport {
         if st.view.layers.centres {
             crate::ui::centres::overlay(&painter, rect, st, &self.camera);
         }
-        legend(&painter, rect, st, self.scales);
+        self.overlay = legend(&painter, rect, st, self.scales);
         build_us
+    }
+
+    /// Fits the camera when asked, or when the view's rectangle or the mechanism's
+    /// box changed and the user has not panned or zoomed since the last fit. The
+    /// mechanism is fitted below the legend and above the message.
+    fn fit(&mut self, rect: egui::Rect, st: &mut AppState) {
+        if rect.width() <= 1.0 || rect.height() <= 1.0 {
+            return;
+        }
+        let bounds = st.session.curves().bounds_m;
+        let key = (rect, bounds, self.overlay[0]);
+        let changed = self.fitted_to != Some(key);
+        if st.commands.fit || (changed && !self.camera.by_hand) {
+            // Below the legend, above the message, and clear of the edges by the
+            // size of a ground pivot's symbol (drawn in points around its pin).
+            let [top, bottom] = self.overlay;
+            let inner = egui::Rect::from_min_max(
+                rect.min + egui::vec2(0.0, top),
+                rect.max - egui::vec2(0.0, bottom),
+            )
+            .shrink(SYMBOL_ROOM);
+            self.camera.fit_within(bounds, rect, inner);
+            self.fitted_to = Some(key);
+            st.commands.fit = false;
+        }
     }
 }
 
@@ -142,8 +175,15 @@ fn point_labels(painter: &egui::Painter, rect: egui::Rect, st: &AppState, camera
 }
 
 /// The legend at the top left (the crank, the time, the vectors' scales, what a drag
-/// does) and a refused edit's message at the bottom left.
-fn legend(painter: &egui::Painter, rect: egui::Rect, st: &AppState, scales: VectorScales) {
+/// does) and a refused edit's message at the bottom left (on a phone or tablet, the
+/// last file action's line too); returns the heights they take at the top and the
+/// bottom, points.
+fn legend(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    st: &AppState,
+    scales: VectorScales,
+) -> [f32; 2] {
     let small = FontId::proportional(12.0);
     let mut legend = format!("crank {:.2}°", st.session.input_rad().to_degrees());
     if let Some(Ok(_)) = st.session.dynamics() {
@@ -160,22 +200,36 @@ fn legend(painter: &egui::Painter, rect: egui::Rect, st: &AppState, scales: Vect
         (false, false) => "\ndrag to pan, wheel to zoom, double-click to fit",
         (false, true) => "\ndrag to pan, pinch to zoom, double-tap to fit",
     };
-    painter.text(
+    let wrap = (rect.width() - 16.0).max(40.0);
+    let top = painter.layout(legend, small, egui::Color32::from_gray(60), wrap);
+    let top_height = top.size().y + 12.0;
+    painter.galley(
         rect.left_top() + egui::vec2(8.0, 8.0),
-        Align2::LEFT_TOP,
-        legend,
-        small,
+        top,
         egui::Color32::from_gray(60),
     );
-    if let Some(msg) = st.session.message() {
-        painter.text(
-            rect.left_bottom() + egui::vec2(8.0, -8.0),
-            Align2::LEFT_BOTTOM,
-            msg,
-            FontId::proportional(13.0),
-            egui::Color32::from_rgb(170, 40, 20),
-        );
+    let status = st
+        .layout
+        .compact()
+        .then_some(st.status.as_deref())
+        .flatten();
+    let message = [st.session.message(), status.map(str::to_owned)]
+        .into_iter()
+        .flatten()
+        .collect::<Vec<_>>()
+        .join("\n");
+    if message.is_empty() {
+        return [top_height, 0.0];
     }
+    let red = egui::Color32::from_rgb(170, 40, 20);
+    let bottom = painter.layout(message, FontId::proportional(13.0), red, wrap);
+    let bottom_height = bottom.size().y + 12.0;
+    painter.galley(
+        rect.left_bottom() + egui::vec2(8.0, -8.0 - bottom.size().y),
+        bottom,
+        red,
+    );
+    [top_height, bottom_height]
 }
 
 /// The GPU-drawn shapes in `rect`, or, without a renderer, a line saying why the view

@@ -169,7 +169,7 @@ fn without_a_dialog_a_typed_path_opens_the_scene() {
         "prompt window"
     );
     let path = shipped("quick_return.ron");
-    h.get_by_role(Role::TextInput)
+    h.get_by_role_and_label(Role::TextInput, "Path (relative to the working directory):")
         .set_text_value_accesskit(path.to_str().expect("utf-8 path"));
     h.run();
     click(&mut h, "OK");

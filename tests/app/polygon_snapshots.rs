@@ -97,7 +97,7 @@ fn force_pane(file: &str, deg: f64) -> Harness<'static, (Session, bool)> {
                     *fonts_set = true;
                     return;
                 }
-                linkage_lab::ui::force_polygons::section(ui, session);
+                linkage_lab::ui::force_polygons::section(ui, session, f32::INFINITY);
             },
             (session, false),
         )

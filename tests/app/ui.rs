@@ -178,8 +178,8 @@ fn the_cam_panel_edits_the_program_and_undo_takes_it_back() {
             .collect()
     };
     assert_eq!(spans(&h), [110.0, 70.0, 110.0, 70.0]);
-    h.get_by_role_and_label(Role::SpinButton, "1 rise")
-        .set_value_accesskit(100.0);
+    h.get_by_role_and_label(Role::TextInput, "segment 1 angle (deg)")
+        .set_text_value_accesskit("100");
     h.run();
     assert_eq!(spans(&h), [100.0, 80.0, 110.0, 70.0]);
     let swing = |h: &Harness<'static, LinkageApp>| {
@@ -187,15 +187,19 @@ fn the_cam_panel_edits_the_program_and_undo_takes_it_back() {
         (lane.range[1] - lane.range[0]).to_degrees()
     };
     assert!((swing(&h) - 8.0).abs() < 1e-9);
-    h.get_by_role_and_label(Role::SpinButton, "lift")
-        .set_value_accesskit(10.0);
+    h.get_by_role_and_label(Role::TextInput, "lift (°)")
+        .set_text_value_accesskit("10");
     h.run();
     assert!((swing(&h) - 10.0).abs() < 1e-9, "{}", swing(&h));
-    h.get_by_role_and_label(Role::SpinButton, "2 dwell")
-        .set_value_accesskit(200.0);
+    h.get_by_role_and_label(Role::TextInput, "segment 2 angle (deg)")
+        .set_text_value_accesskit("200");
     h.run();
-    let notice = h.state().state.session.message().unwrap_or_default();
-    assert!(notice.contains("between 0 and 190"), "{notice}");
+    // Past what it and the next segment hold together: refused with that range.
+    assert!(
+        h.query_by_label_contains("segment 2 angle (deg): 200° is outside the range 0 … 190°")
+            .is_some(),
+        "no refusal with its range"
+    );
     assert_eq!(spans(&h), [100.0, 80.0, 110.0, 70.0]);
     h.get_by_role_and_label(Role::Button, "Cam limits").click();
     h.run();

@@ -4,20 +4,24 @@
 use thiserror::Error;
 
 use crate::assembly::AssemblyRanges;
-use crate::dyad::DyadLabel;
+use crate::dyad::{DyadLabel, Shortfall};
 pub use crate::model::SceneProblem;
 pub use crate::synthesis::refusal::DesignRefusal;
 
 /// Why a chain does not close at an input, as data ([`LinkageError::CannotAssemble`]).
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum AssemblyFailure {
-    /// A dyad does not close at this input.
-    #[error("the {dyad} does not close (margin {margin:.3e})")]
+    /// A dyad does not close at this input: in words, what falls short (the links
+    /// by their points, the distances), never the solver's dyad kind or margin.
+    #[error("{}", open_words(dyad, shortfall.as_deref()))]
     DyadOpen {
         /// The dyad.
         dyad: Box<DyadLabel>,
         /// How far from closing: its assembly margin (dimensionless, < 0).
         margin: f64,
+        /// What falls short, where the dyad's kind says (pins too far apart, a
+        /// guide out of reach).
+        shortfall: Option<Box<Shortfall>>,
     },
     /// The branch traced by Newton folds at its ends, dead points of the input.
     #[error(
@@ -157,5 +161,16 @@ impl From<SceneProblem> for LinkageError {
 impl From<DesignRefusal> for LinkageError {
     fn from(refusal: DesignRefusal) -> Self {
         Self::NoDesign(Box::new(refusal))
+    }
+}
+
+/// A dyad that does not close, in words: its shortfall, or its links by name.
+fn open_words(dyad: &DyadLabel, shortfall: Option<&Shortfall>) -> String {
+    match shortfall {
+        Some(s) => s.to_string(),
+        None => {
+            let [a, b] = &dyad.links;
+            format!("{a} and {b} cannot be joined at {}", dyad.inner_point)
+        }
     }
 }

@@ -109,7 +109,7 @@ impl Session {
             self.message = Some(Notice::LengthInvalid(e));
             return;
         }
-        let input = self.input_rad();
+        let input = self.edit_input();
         let why = match limit::try_assemble(&scene, input) {
             Ok(built) => return self.commit(EditTarget::Length(index), scene, built),
             Err(why) => why,
@@ -141,7 +141,7 @@ impl Session {
             return;
         };
         spring.k_n_per_m = k_n_per_m;
-        let what = format!("spring {index}'s constant");
+        let what = format!("the spring {}-{}'s constant", spring.a, spring.b);
         self.rebuild(EditTarget::Spring(index), scene, what);
     }
 
@@ -237,9 +237,20 @@ impl Session {
     /// Rebuilds everything from `scene` at the current input; on failure nothing
     /// changes and the notice says `what` failed and why.
     pub(super) fn rebuild(&mut self, target: EditTarget, scene: SceneFile, what: String) {
-        match super::Built::new(&scene, Some(self.input_rad())) {
+        match super::Built::new(&scene, Some(self.edit_input())) {
             Ok(built) => self.commit(target, scene, built),
             Err(why) => self.message = Some(Notice::EditRefused { what, why }),
+        }
+    }
+
+    /// The input an edit builds the scene at: the current one; for a dynamic scene
+    /// the run's start (the driver's start angle), since the edit runs it again from
+    /// there and the pose shown is the run's at its time 0.
+    fn edit_input(&self) -> f64 {
+        if self.models() == linkage::scene::Models::Dynamics {
+            self.mechanism().driver.start_rad
+        } else {
+            self.input_rad()
         }
     }
 

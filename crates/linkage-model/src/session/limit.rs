@@ -5,6 +5,8 @@
 
 use std::fmt;
 
+use linkage::dyad::{DyadLabel, Shortfall};
+use linkage::scene::LengthUnit;
 use linkage::{Kinematics, LinkageError, Mechanism, SceneFile};
 
 use super::Built;
@@ -24,21 +26,31 @@ pub enum NotAssembled {
     Solver(LinkageError),
     /// A closed-form group does not close.
     Open {
-        /// The group, named by its points.
-        group: String,
+        /// The group as its user knows it (its links and inner point).
+        dyad: Box<DyadLabel>,
         /// Its closure margin (negative: how far from closing).
         margin: f64,
+        /// What falls short (pins too far apart, a guide out of reach).
+        shortfall: Option<Box<Shortfall>>,
     },
+}
+
+impl NotAssembled {
+    /// The reason in words, lengths in `unit`: the links by their points and the
+    /// distances that do not fit, never the solver's dyad kind or margin.
+    pub fn words(&self, unit: LengthUnit) -> String {
+        match self {
+            Self::Solver(e) => super::words::error(e, unit),
+            Self::Open {
+                dyad, shortfall, ..
+            } => super::words::open(dyad, shortfall.as_deref(), unit),
+        }
+    }
 }
 
 impl fmt::Display for NotAssembled {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Self::Solver(e) => write!(f, "{e}"),
-            Self::Open { group, margin } => {
-                write!(f, "the {group} does not close (margin {margin:.3e})")
-            }
-        }
+        f.write_str(&self.words(LengthUnit::Metre))
     }
 }
 
@@ -52,10 +64,12 @@ pub(crate) fn try_assemble(scene: &SceneFile, input: f64) -> Result<Built, NotAs
     let mut kin = Kinematics::new(mech).map_err(NotAssembled::Solver)?;
     if let Some(c) = kin.closure(input)
         && !c.assembles
+        && let Some(dyad) = kin.dyad(c.group)
     {
         return Err(NotAssembled::Open {
-            group: kin.group_name(c.group),
+            dyad: Box::new(dyad),
             margin: c.margin,
+            shortfall: kin.shortfall(input, c.group).map(Box::new),
         });
     }
     Built::at(kin, input).map_err(NotAssembled::Solver)

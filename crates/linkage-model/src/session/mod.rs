@@ -25,6 +25,7 @@ pub mod pose;
 pub mod run_job;
 pub mod topology;
 pub mod url_state;
+pub mod words;
 
 #[cfg(test)]
 mod tests;
@@ -50,6 +51,7 @@ use params::{LengthParam, length_params};
 use pose::Pose;
 use run_job::{RunError, RunJob};
 use topology::Topology;
+pub use words::unit_label_of;
 
 /// The viewer's state over one scene.
 pub struct Session {
@@ -61,6 +63,9 @@ pub struct Session {
     message: Option<Notice>,
     /// Playback time of the dynamic run, s.
     time_s: f64,
+    /// How long playback has held the run's last state, s (it starts again after
+    /// half a second).
+    held_s: f64,
     /// +1 or −1: the direction of play over a limited input range (it rocks).
     play_direction: f64,
     /// Counts rebuilds: views that cache per mechanism (plot bounds) key on it.
@@ -121,6 +126,7 @@ impl Session {
             analyses: Analyses::new(built.curves),
             message: None,
             time_s: 0.0,
+            held_s: 0.0,
             play_direction: 1.0,
             generation: 0,
             edits: 0,
@@ -286,7 +292,8 @@ impl Session {
 
     /// What the last edit could not do, and why, in words (made here, when shown).
     pub fn message(&self) -> Option<String> {
-        self.message.as_ref().map(Notice::to_string)
+        let unit = self.scene().length_unit;
+        self.message.as_ref().map(|n| n.words(unit))
     }
 
     /// What the last edit could not do, as data.
@@ -400,13 +407,4 @@ fn branch_words(b: &linkage::scene::Branch) -> String {
 /// The scene's length unit as shown on sliders.
 pub fn unit_label(scene: &SceneFile) -> &'static str {
     unit_label_of(scene.length_unit)
-}
-
-/// A length unit as shown.
-pub fn unit_label_of(unit: linkage::scene::LengthUnit) -> &'static str {
-    use linkage::scene::LengthUnit;
-    match unit {
-        LengthUnit::Metre => "m",
-        LengthUnit::Millimetre => "mm",
-    }
 }

@@ -3,6 +3,7 @@
 use std::fmt;
 
 use linkage::LinkageError;
+use linkage::scene::LengthUnit;
 
 use super::limit::NotAssembled;
 use super::params::LengthError;
@@ -89,65 +90,80 @@ pub enum PointRefusal {
     OtherBranch,
 }
 
-impl fmt::Display for Notice {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl Notice {
+    /// The notice as the user reads it, lengths in the scene's `unit`: the links
+    /// by their points, the crank's angle in degrees, never the solver's terms.
+    pub fn words(&self, unit: LengthUnit) -> String {
+        use super::words::{error, significant};
         match self {
             Self::LengthRefused {
                 label,
                 value,
-                unit,
+                unit: shown,
                 input_deg,
                 why,
-                limit: Some(limit),
-            } => write!(
-                f,
-                "{label} = {value:.4} {unit} cannot assemble at input {input_deg:.2} deg: {why}. At this input {label} can go to {limit:.4} {unit}; the last valid pose stays."
-            ),
-            Self::LengthRefused {
-                label,
-                value,
-                unit,
-                why,
-                limit: None,
-                ..
-            } => write!(
-                f,
-                "{label} = {value:.4} {unit}: {why}; the last valid pose stays."
-            ),
-            Self::LengthInvalid(why) => write!(f, "{why}"),
+                limit,
+            } => {
+                let why = why.words(unit);
+                let at = significant(*input_deg, 4);
+                let value = significant(*value, 5);
+                match limit {
+                    Some(limit) => format!(
+                        "{label} = {value} {shown} does not fit at crank {at}°: {why}. At this \
+                         crank angle {label} can go to {} {shown}; the last valid pose stays.",
+                        significant(*limit, 5)
+                    ),
+                    None => {
+                        format!("{label} = {value} {shown}: {why}; the last valid pose stays.")
+                    }
+                }
+            }
+            Self::LengthInvalid(why) => why.to_string(),
             Self::InvalidValue { what, value, valid } => {
-                write!(f, "{what} = {value} is invalid: {valid}; nothing changed")
+                format!("{what} = {value} is invalid: {valid}; nothing changed")
             }
             Self::CamSpanRefused {
                 segment,
                 deg,
                 room_deg,
-            } => write!(
-                f,
-                "segment {} of the cam cannot span {deg} deg: the next segment gives it room, \
-                 so it must lie between 0 and {room_deg} deg (exclusive); nothing changed",
-                segment + 1
+            } => format!(
+                "segment {} of the cam cannot span {}°: the next segment gives it room, \
+                 so it must lie between 0 and {}° (exclusive); nothing changed",
+                segment + 1,
+                significant(*deg, 5),
+                significant(*room_deg, 5)
             ),
-            Self::InputRefused(why) => write!(f, "{why}"),
+            Self::InputRefused(why) => error(why, unit),
             Self::PointRefused { name, why, .. } if *why == PointRefusal::NoSuchPoint => {
-                write!(f, "there is no point named {name}")
+                format!("there is no point named {name}")
             }
             Self::PointRefused {
                 name,
                 to,
-                unit,
+                unit: shown,
                 why,
-            } => write!(
-                f,
-                "{name} cannot go to ({:.2}, {:.2}) {unit}: {why}",
-                to[0], to[1]
-            ),
-            Self::EditRefused { what, why } => write!(f, "{what}: {why}"),
+            } => {
+                let why = match why {
+                    PointRefusal::NotAssembled(n) => n.words(unit),
+                    other => other.to_string(),
+                };
+                format!(
+                    "{name} cannot go to ({:.2}, {:.2}) {shown}: {why}",
+                    to[0], to[1]
+                )
+            }
+            Self::EditRefused { what, why } => format!("{what}: {}", error(why, unit)),
             Self::HistoryRefused { undo, why } => {
                 let what = if *undo { "undo" } else { "redo" };
-                write!(f, "cannot {what}: {why}")
+                format!("cannot {what}: {}", error(why, unit))
             }
         }
+    }
+}
+
+impl fmt::Display for Notice {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.words(LengthUnit::Metre))
     }
 }
 

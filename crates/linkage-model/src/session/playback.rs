@@ -4,6 +4,9 @@
 use super::Session;
 use super::notice::Notice;
 
+/// How long playback holds a dynamic run's last state before it starts again, s.
+const HOLD_S: f64 = 0.5;
+
 impl Session {
     /// The input slider's range, deg: a full turn (wrapping) or the assembly interval.
     pub fn input_range_deg(&self) -> [f64; 2] {
@@ -47,14 +50,20 @@ impl Session {
             return;
         }
         if let Some(Ok(run)) = self.analyses.dynamics_mut() {
+            // To the run's end, held there half a second (the time shown stays the
+            // end's), then from the start again.
             let end = run.duration_s();
-            self.time_s = if self.time_s + dt > end + 0.5 {
-                0.0 // loop after half a second at the end
+            if self.time_s >= end {
+                self.held_s += dt;
+                if self.held_s > HOLD_S {
+                    self.time_s = 0.0;
+                    self.held_s = 0.0;
+                }
             } else {
-                self.time_s + dt
-            };
-            if let Some((_, pose)) = run.pose_at(self.time_s) {
-                self.pose.show(pose);
+                self.time_s = (self.time_s + dt).min(end);
+            }
+            if let Some(shown) = run.pose_at(self.time_s) {
+                self.show_run_pose(shown);
             }
             return;
         }
@@ -80,10 +89,25 @@ impl Session {
     pub(super) fn show_time(&mut self, t: f64) {
         if let Some(Ok(run)) = self.analyses.dynamics_mut() {
             let t = t.clamp(0.0, run.duration_s());
-            if let Some((_, pose)) = run.pose_at(t) {
+            if let Some(shown) = run.pose_at(t) {
                 self.time_s = t;
-                self.pose.show(pose);
+                self.show_run_pose(shown);
             }
         }
+    }
+
+    /// Shows a pose of the dynamic run as a pose of the scene's crank. Near the
+    /// crank's dead point the run integrates another link's angle (its coordinate
+    /// switches), and the pose it solves carries that link's angle as its input;
+    /// the crank's own angle and rate, the sample's `q` and `q̇`, go in its place, so
+    /// that the crank field, the view's legend, the plots' cursors and the force
+    /// polygons all show the one state the run is in.
+    fn show_run_pose(
+        &mut self,
+        (sample, mut pose): (linkage::dynamics::Sample, linkage::Solution),
+    ) {
+        pose.input_rad = sample.q;
+        pose.input_speed_rad_s = sample.q_dot;
+        self.pose.show(pose);
     }
 }

@@ -164,5 +164,105 @@ fn playback_follows_the_run_and_loops() {
         "the table falls: link 1 turns clockwise"
     );
     s.advance(10.0, 1.0);
-    assert_eq!(s.time_s(), 0.0, "loops after the end");
+    let end = s
+        .dynamics()
+        .and_then(|r| r.as_ref().ok())
+        .expect("a run")
+        .duration_s();
+    assert_eq!(s.time_s(), end, "holds the end");
+    s.advance(0.4, 1.0);
+    assert_eq!(s.time_s(), end, "still holds the end");
+    s.advance(0.2, 1.0);
+    assert_eq!(s.time_s(), 0.0, "loops after half a second at the end");
+}
+
+/// The gravity flipper played to its end stop shows one state: the pose's crank
+/// angle is the run's (35°, the stop), not the angle of the link the run integrated
+/// past the crank's dead point (it showed 138.6°, a pose the scene's crank cannot
+/// reach, so the force polygons said "cannot assemble"); the force polygons exist
+/// there. An edit then runs again from the run's start, where the pose goes back.
+#[test]
+fn the_flipper_played_to_its_stop_and_edited_shows_one_state() {
+    let mut s = Session::open_builtin("gravity_flipper").expect("opens");
+    s.wait_for_run();
+    let (end, stop_q) = {
+        let run = s.dynamics().expect("a run").as_ref().expect("runs");
+        let stop = run.sim.events.iter().find(|e| e.stopped).expect("the stop");
+        (run.duration_s(), stop.state.q)
+    };
+    // Played at speed 1 in 60 Hz frames, to a frame past the stop.
+    let mut t = 0.0;
+    while t <= end {
+        s.advance(1.0 / 60.0, 1.0);
+        t += 1.0 / 60.0;
+    }
+    assert!((s.time_s() - end).abs() < 1e-12, "{} {end}", s.time_s());
+    let crank = s.input_rad();
+    assert!(
+        (crank - stop_q).abs() < 1e-12,
+        "crank {} deg, the run's stop {} deg",
+        crank.to_degrees(),
+        stop_q.to_degrees()
+    );
+    assert!((crank.to_degrees() - 35.0).abs() < 1e-6);
+    let link1 = s.mechanism().link_index("link1").expect("link1");
+    let drawn = s.pose().links[link1].angle_rad();
+    assert!(
+        (drawn - crank).rem_euclid(std::f64::consts::TAU) < 1e-9,
+        "the drawn crank is at {} deg",
+        drawn.to_degrees()
+    );
+    match s.force_polygons() {
+        Some(Ok(_)) => {}
+        other => panic!("no force polygons at the stop: {other:?}"),
+    }
+    s.apply(SceneEdit::SpringK {
+        index: 0,
+        n_per_m: 1200.0,
+    });
+    assert_eq!(s.message(), None);
+    assert_eq!(s.time_s(), 0.0);
+    let start = s.mechanism().driver.start_rad;
+    assert!((s.input_rad() - start).abs() < 1e-12);
+}
+
+/// Every refusal a user meets on the shipped scenes, a length past what the chain
+/// takes at either end of its slider or the crank sent out of its range, is worded
+/// in the user's terms: the length's label, the scene's unit, the crank's angle,
+/// and never the solver's (a dyad's kind, an assembly margin, a link's index).
+#[test]
+fn refusals_name_links_and_lengths_never_the_solvers_terms() {
+    let inner = [
+        "dyad", "margin", "RRR", "RRP", "RPR", "PRP", "group ", "spring 0",
+    ];
+    let check = |key: &str, what: &str, msg: &str| {
+        for word in inner {
+            assert!(!msg.contains(word), "{key}, {what}: {word:?} in {msg:?}");
+        }
+    };
+    let mut refused = 0;
+    for b in crate::catalog::BUILTIN_SCENES {
+        let mut s = Session::open_builtin(b.key).expect("opens");
+        let unit = unit_label(s.scene());
+        for (i, p) in s.lengths().to_vec().iter().enumerate() {
+            for value in [*p.range().start(), *p.range().end()] {
+                s.apply(SceneEdit::Length { index: i, value });
+                if let Some(msg) = s.message() {
+                    check(b.key, &p.label, &msg);
+                    assert!(msg.contains(&p.label) && msg.contains(unit), "{msg}");
+                    refused += 1;
+                }
+                s.apply(SceneEdit::Reset);
+            }
+        }
+        if !s.curves().full_rotation {
+            let [lo, _] = s.input_range_deg();
+            s.apply(SceneEdit::Input { deg: lo - 20.0 });
+            let msg = s.message().expect("out of the crank's range");
+            check(b.key, "crank", &msg);
+            assert!(msg.contains("crank"), "{msg}");
+            refused += 1;
+        }
+    }
+    assert!(refused >= 10, "{refused} refusals seen");
 }

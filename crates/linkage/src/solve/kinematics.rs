@@ -2,7 +2,7 @@
 //! named errors (the reachable input range included when a chain cannot assemble).
 
 use crate::assembly::AssemblyRanges;
-use crate::dyad::DyadLabel;
+use crate::dyad::{DyadLabel, Shortfall};
 use crate::error::{AssemblyFailure, LinkageError, Result};
 use crate::ids::LinkId;
 use crate::model::Mechanism;
@@ -414,6 +414,13 @@ impl Kinematics {
         }
     }
 
+    /// How group `g` of the closed-form decomposition falls short of closing at
+    /// `input_rad` (the groups before it close there), as its user knows it; `None`
+    /// in a chain solved by Newton alone, or a group whose failure is no distance.
+    pub fn shortfall(&self, input_rad: f64, g: usize) -> Option<Shortfall> {
+        self.closed.as_ref()?.shortfall(&self.mech, input_rad, g)
+    }
+
     fn describe(&self, f: Failure, input_rad: f64) -> LinkageError {
         match f {
             Failure::CannotAssemble { group, margin } => LinkageError::CannotAssemble {
@@ -422,6 +429,7 @@ impl Kinematics {
                     Some(dyad) => AssemblyFailure::DyadOpen {
                         dyad: Box::new(dyad),
                         margin,
+                        shortfall: self.shortfall(input_rad, group).map(Box::new),
                     },
                     None => AssemblyFailure::Nowhere,
                 },
@@ -429,10 +437,13 @@ impl Kinematics {
             },
             Failure::Singular { group } => LinkageError::Singular {
                 input_deg: input_rad.to_degrees(),
-                reason: format!(
-                    "the two links of the {} are collinear (dead point), velocities are undefined",
-                    self.group_name(group)
-                ),
+                reason: match self.dyad(group) {
+                    Some(d) => format!(
+                        "{} and {} are in line at {} (a dead point): velocities are undefined",
+                        d.links[0], d.links[1], d.inner_point
+                    ),
+                    None => "the chain is at a dead point: velocities are undefined".into(),
+                },
             },
         }
     }

@@ -7,8 +7,8 @@ use super::prp::Prp;
 use super::rpr::Rpr;
 use super::rrp::Rrp;
 use super::rrr::Rrr;
-use crate::dyad::DyadKind;
-use crate::ids::LinkId;
+use crate::dyad::{DyadKind, Shortfall};
+use crate::ids::{LinkId, PointId};
 use crate::model::Mechanism;
 use crate::motion::LinkMotion;
 use crate::real::Real;
@@ -41,6 +41,27 @@ impl Group {
             Group::Rpr(g) => g.solve(links, motion, group),
             Group::Prp(g) => g.solve(links, motion, group),
             Group::Cam(g) => g.solve(links),
+        }
+    }
+
+    /// How the group falls short of closing with the known links where `links`
+    /// put them, its points named from `m` (`inner` the point the group solves
+    /// for); `None` for the groups whose failure is no distance (PRP, a cam).
+    pub(super) fn shortfall(
+        &self,
+        links: &[LinkMotion],
+        m: &Mechanism,
+        inner: PointId,
+    ) -> Option<Shortfall> {
+        let name = |p: PointId| m.points[p].name.clone();
+        match self {
+            Group::Rrr(g) => {
+                let (a, c) = g.end_points;
+                Some(g.shortfall(links, [name(a), name(c), name(inner)]))
+            }
+            Group::Rrp(g) => Some(g.shortfall(links, [name(g.points.0), name(g.points.1)])),
+            Group::Rpr(g) => Some(g.shortfall(links, [name(g.points.0), name(g.points.1)])),
+            Group::Prp(_) | Group::Cam(_) => None,
         }
     }
 

@@ -332,6 +332,24 @@ impl ClosedForm {
         worst
     }
 
+    /// How group `group` falls short of closing at `input_rad`, the groups before it
+    /// placed (they close there: `group` is the first that does not).
+    pub(crate) fn shortfall(
+        &self,
+        m: &Mechanism,
+        input_rad: f64,
+        group: usize,
+    ) -> Option<crate::dyad::Shortfall> {
+        let mut links = vec![LinkMotion::default(); m.links.len()];
+        self.place_driver(&mut links, input_rad, 0.0);
+        for (k, g) in self.groups.iter().take(group).enumerate() {
+            g.solve(&mut links, false, k).ok()?;
+        }
+        self.groups
+            .get(group)?
+            .shortfall(&links, m, *self.group_points.get(group)?)
+    }
+
     /// Velocity-system conditioning of each group at the current positions
     /// (|sin| of the angle between its two unknown directions).
     pub(crate) fn group_conditioning(&self, input_rad: f64, links: &mut [LinkMotion]) -> Vec<f64> {

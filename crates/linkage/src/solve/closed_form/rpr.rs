@@ -7,6 +7,7 @@ use super::branches::Branches;
 use super::joints::rev_pin;
 use super::parts::{Failure, GroupOk, Pair, Pin, check_margin, direction, splat_rotation};
 use crate::dyad::DyadKind;
+use crate::dyad::Shortfall;
 use crate::error::Result;
 use crate::ids::{LinkId, PointId};
 use crate::model::Mechanism;
@@ -30,6 +31,8 @@ pub(crate) struct Rpr {
     pub relative: UnitComplex<f64>,
     /// +1: the slider pin lies ahead of the guide pin along the guide.
     pub sign: f64,
+    /// The points of the slider's pin and the guide's pin (to word a refusal).
+    pub points: (PointId, PointId),
 }
 
 impl Rpr {
@@ -82,6 +85,21 @@ impl Rpr {
     }
 }
 
+impl Rpr {
+    /// How the dyad falls short with its pins where `links` put them: their
+    /// distance against the guide's offset from its pin.
+    pub(super) fn shortfall(&self, links: &[LinkMotion], names: [String; 2]) -> Shortfall {
+        let [slider_pin, guide_pin] = names;
+        let apart = (self.g.motion(links).position - self.s.motion(links).position).norm();
+        Shortfall::Slot {
+            guide_pin,
+            slider_pin,
+            offset: self.offset.abs(),
+            apart,
+        }
+    }
+}
+
 /// A slider between two pins: prismatic joint `p` between its slider and guide, each
 /// pinned to a known link (`i` pinned at `ra` to `ki`, the other at `rc` to `kc`).
 pub(super) fn rpr_group(
@@ -114,6 +132,7 @@ pub(super) fn rpr_group(
         dir_u: direction(&slide.direction_local),
         relative: slide.relative,
         sign,
+        points: (m.revolutes[s_rev].point, m.revolutes[g_rev].point),
     };
     Ok((group, slide.point))
 }

@@ -7,6 +7,7 @@ use super::guide::{guide_line, riding_point};
 use super::joints::{link_len, rev_local, rev_pin};
 use super::parts::{Failure, GroupOk, Pair, Pin, check_margin, direction, splat_rotation};
 use crate::dyad::DyadKind;
+use crate::dyad::Shortfall;
 use crate::error::Result;
 use crate::ids::{LinkId, PointId};
 use crate::model::{Mechanism, Prismatic};
@@ -28,6 +29,8 @@ pub(crate) struct Rrp {
     pub slide: Prismatic,
     /// +1: `mid` ahead along the guide of the foot of the perpendicular from `a`.
     pub sign: f64,
+    /// The points of the pin `a` and of `mid` (to word a refusal).
+    pub points: (PointId, PointId),
 }
 
 impl Rrp {
@@ -80,6 +83,24 @@ impl Rrp {
     }
 }
 
+impl Rrp {
+    /// How the dyad falls short with its pin and guide where `links` put them: the
+    /// pin's distance from the line the slider's pin runs on, against the link.
+    pub(super) fn shortfall(&self, links: &[LinkMotion], names: [String; 2]) -> Shortfall {
+        let [end, inner] = names;
+        let pa = self.a.motion(links);
+        let line = guide_line(&self.slide, links);
+        let on_line = line.through
+            + line.slider_rotation * splat_vec(&(self.mid_on_j - self.slide.slider_local));
+        Shortfall::Guide {
+            end,
+            inner,
+            length: self.len_i,
+            offset: cross(&(on_line - pa.position), &line.u).abs(),
+        }
+    }
+}
+
 /// Pin, pin, slider: link `i` pinned at `ra` to known link `ki` and at `rm` to link
 /// `j`, which slides in prismatic joint `p` on a known guide.
 pub(super) fn rrp_group(
@@ -109,6 +130,7 @@ pub(super) fn rrp_group(
         dir_i_inv: dir_i.inverse(),
         slide,
         sign,
+        points: (m.revolutes[ra].point, mid),
     };
     Ok(Some((group, mid)))
 }

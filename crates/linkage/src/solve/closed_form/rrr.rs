@@ -5,6 +5,7 @@ use nalgebra::{SimdBool, UnitComplex};
 use super::branches::Branches;
 use super::joints::{link_len, rev_local, rev_pin};
 use super::parts::{Failure, GroupOk, Pair, Pin, check_margin, direction, splat_rotation};
+use crate::dyad::Shortfall;
 use crate::error::Result;
 use crate::ids::{LinkId, PointId};
 use crate::model::Mechanism;
@@ -84,6 +85,21 @@ impl Rrr {
             margin,
             conditioning,
         })
+    }
+}
+
+impl Rrr {
+    /// How the dyad falls short with its end pins where `links` put them: their
+    /// distance against the links' lengths.
+    pub(super) fn shortfall(&self, links: &[LinkMotion], names: [String; 3]) -> Shortfall {
+        let [a, c, inner] = names;
+        let apart = (self.c.motion(links).position - self.a.motion(links).position).norm();
+        Shortfall::Apart {
+            ends: [a, c],
+            inner,
+            lengths: [self.len_i, self.len_j],
+            apart,
+        }
     }
 }
 
