@@ -13,6 +13,7 @@ use crate::file_action::FileAction;
 use crate::session::SceneEdit;
 use crate::session::cam_curves::CamCurves;
 use crate::session::cam_edit::CamEdit;
+use crate::session::words::length;
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
 use crate::ui::number_field::{NumberSpec, boxed};
@@ -29,7 +30,7 @@ pub fn cam_panels(ui: &mut egui::Ui, st: &mut AppState) {
         segments(ui, st, index, spec);
         lift_and_roller(ui, st, index, spec);
         if let Some(c) = st.session.curves().cams.get(index).cloned() {
-            figures(ui, &c);
+            figures(ui, &c, st.session.scene().length_unit);
         }
         continuity_and_peaks(ui, st, index, spec);
         exports(ui, st, index);
@@ -169,50 +170,40 @@ fn lift_and_roller(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJ
     }
 }
 
-/// The base circle, the largest pressure angle and the least radii, red past their
+/// The base circle, the largest pressure angle and the least radius of the
+/// profile, each located on the cam (not read off its samples), red past their
 /// limits.
-fn figures(ui: &mut egui::Ui, c: &CamCurves) {
-    let largest = c.points.iter().max_by(|a, b| {
-        a.pressure_angle_rad
-            .abs()
-            .total_cmp(&b.pressure_angle_rad.abs())
+fn figures(ui: &mut egui::Ui, c: &CamCurves, unit: linkage::scene::LengthUnit) {
+    ui.label(format!("base circle {}", length(c.base_radius_m, unit)));
+    let p = c.largest_pressure;
+    let text = format!(
+        "largest pressure angle {:.2}° at {:.1}° (limit {:.0}°)",
+        p.value.abs().to_degrees(),
+        p.angle_rad.to_degrees(),
+        c.pressure_limit_rad.to_degrees()
+    );
+    let past = p.value.abs() > c.pressure_limit_rad;
+    ui.label(if past {
+        egui::RichText::new(text).color(PAST)
+    } else {
+        text.into()
     });
-    let least = c
+    let undercut = c
         .points
         .iter()
-        .min_by(|a, b| a.profile_radius_m.total_cmp(&b.profile_radius_m));
-    ui.label(format!("base circle {:.2} mm", c.base_radius_m * 1e3));
-    if let Some(p) = largest {
-        let text = format!(
-            "largest pressure angle {:.2}° at {:.1}° (limit {:.0}°)",
-            p.pressure_angle_rad.abs().to_degrees(),
-            p.angle_rad.to_degrees(),
-            c.pressure_limit_rad.to_degrees()
-        );
-        let past = p.pressure_angle_rad.abs() > c.pressure_limit_rad;
-        ui.label(if past {
-            egui::RichText::new(text).color(PAST)
-        } else {
-            text.into()
-        });
-    }
-    if let Some(p) = least {
-        let undercut = c
-            .points
-            .iter()
-            .any(|q| q.pitch_radius_m > 0.0 && q.profile_radius_m <= 0.0);
-        let text = format!(
-            "least profile radius {:.2} mm at {:.1}°{}",
-            p.profile_radius_m * 1e3,
-            p.angle_rad.to_degrees(),
-            if undercut { ": undercut" } else { "" }
-        );
-        ui.label(if undercut {
-            egui::RichText::new(text).color(PAST)
-        } else {
-            text.into()
-        });
-    }
+        .any(|q| q.pitch_radius_m > 0.0 && q.profile_radius_m <= 0.0);
+    let r = c.least_profile_radius;
+    let text = format!(
+        "least profile radius {} at {:.1}°{}",
+        length(r.value, unit),
+        r.angle_rad.to_degrees(),
+        if undercut { ": undercut" } else { "" }
+    );
+    ui.label(if undercut {
+        egui::RichText::new(text).color(PAST)
+    } else {
+        text.into()
+    });
 }
 
 /// The continuity at each join and the laws' peak coefficients, folded away.

@@ -5,10 +5,11 @@
 //! the places past the limit marked in red.
 
 use eframe::egui;
-use egui_plot::{HLine, Line, Plot, PlotPoints, Points, VLine};
+use egui_plot::{HLine, Line, PlotPoints, Points, VLine};
 
 use crate::session::Session;
 use crate::session::cam_curves::CamCurves;
+use crate::ui::plot_axes::{self, Axis, Unit};
 
 /// Red, for the places past a limit.
 const PAST: egui::Color32 = egui::Color32::from_rgb(220, 70, 60);
@@ -34,32 +35,49 @@ pub fn motion_plots(ui: &mut egui::Ui, s: &Session) {
     let Some(c) = s.curves().cams.first() else {
         return;
     };
-    let (u, scale) = if c.is_arm {
-        ("deg", 180.0 / std::f64::consts::PI)
+    // An arm's swing in degrees; a translating follower's lift in the scene's
+    // unit, its velocity, acceleration and jerk in SI with their prefix.
+    let length = s.scene().length_unit;
+    let (scale, units) = if c.is_arm {
+        (
+            [180.0 / std::f64::consts::PI; 4],
+            [
+                Unit::Fixed("deg"),
+                Unit::Fixed("deg/s"),
+                Unit::Fixed("deg/s²"),
+                Unit::Fixed("deg/s³"),
+            ],
+        )
     } else {
-        ("mm", 1e3)
+        (
+            [1.0 / length.to_metres(), 1.0, 1.0, 1.0],
+            [
+                Unit::Fixed(crate::session::unit_label_of(length)),
+                Unit::Si("m/s"),
+                Unit::Si("m/s²"),
+                Unit::Si("m/s³"),
+            ],
+        )
     };
+    let names = ["lift", "velocity", "acceleration", "jerk"];
     let w = c.speed_rad_s;
-    // Each derivative by the cam angle times the cam's speed to that power.
-    let series = [
-        (format!("lift ({u})"), 0_i32),
-        (format!("velocity ({u}/s)"), 1),
-        (format!("acceleration ({u}/s²)"), 2),
-        (format!("jerk ({u}/s³)"), 3),
-    ];
     let cursor = cursor_deg(s, 0);
-    crate::ui::plot_layout::side_by_side(ui, series.len(), |ui, i, height| {
-        let (label, order) = &series[i];
+    crate::ui::plot_layout::side_by_side(ui, names.len(), |ui, i, height| {
+        // Each derivative by the cam angle times the cam's speed to that power.
         let data: Vec<[f64; 2]> = c
             .points
             .iter()
             .map(|p| {
                 let m = &p.motion;
-                let per_rad = [m.s, m.v, m.a, m.j][*order as usize];
-                [p.angle_rad.to_degrees(), per_rad * w.powi(*order) * scale]
+                let per_rad = [m.s, m.v, m.a, m.j][i];
+                [
+                    p.angle_rad.to_degrees(),
+                    per_rad * w.powi(i as i32) * scale[i],
+                ]
             })
             .collect();
-        cam_plot(ui, (s, "cam motion", i), label, &data, &[], cursor, height);
+        let axis = Axis::new(names[i], units[i]);
+        cam_plot(ui, (s, "cam motion", i), axis, &data, &[], cursor, height);
     });
 }
 
@@ -70,32 +88,30 @@ pub fn limit_plots(ui: &mut egui::Ui, s: &Session) {
     };
     let cursor = cursor_deg(s, 0);
     let limit = c.pressure_limit_rad.to_degrees();
+    let length = s.scene().length_unit;
     let pressure = series(c, |p| p.pressure_angle_rad.to_degrees());
-    let radius = series(c, |p| p.profile_radius_m * 1e3);
+    let radius = series(c, |p| p.profile_radius_m / length.to_metres());
+    let pressure_name = format!("pressure angle, limit ±{limit:.0}°");
+    let pressure_axis = Axis::new(&pressure_name, Unit::Fixed("deg"));
+    let radius_axis = Axis::new(
+        "profile radius of curvature",
+        Unit::Fixed(crate::session::unit_label_of(length)),
+    );
     crate::ui::plot_layout::side_by_side(ui, 2, |ui, i, height| {
-        if i == 0 {
-            let label = format!("pressure angle (deg), limit ±{limit:.0}");
-            cam_plot(
-                ui,
-                (s, "cam limits", i),
-                &label,
-                &pressure,
-                &[-limit, limit],
-                cursor,
-                height,
-            );
+        let (axis, data, limits) = if i == 0 {
+            (pressure_axis, &pressure, vec![-limit, limit])
         } else {
-            let label = "profile radius of curvature (mm)";
-            cam_plot(
-                ui,
-                (s, "cam limits", i),
-                label,
-                &radius,
-                &[0.0],
-                cursor,
-                height,
-            );
-        }
+            (radius_axis, &radius, vec![0.0])
+        };
+        cam_plot(
+            ui,
+            (s, "cam limits", i),
+            axis,
+            data,
+            &limits,
+            cursor,
+            height,
+        );
     });
     let past: Vec<[f64; 2]> = c
         .points
@@ -123,30 +139,32 @@ fn series(c: &CamCurves, f: impl Fn(&linkage::cam::CamPoint) -> f64) -> Vec<[f64
         .collect()
 }
 
-/// One plot against the cam angle, with its limit lines and the points past them.
+/// One plot against the cam angle, with its limit lines and the points past them
+/// (`limits` in the axis' unit, before its prefix).
 fn cam_plot(
     ui: &mut egui::Ui,
     (s, id, i): (&Session, &str, usize),
-    label: &str,
+    axis: Axis<'_>,
     data: &[[f64; 2]],
     limits: &[f64],
     cursor: Option<f64>,
     height: f32,
 ) {
+    let series = plot_axes::series(axis, data);
+    let limits: Vec<f64> = limits.iter().map(|l| l * series.factor).collect();
+    let data = series.points.as_slice();
+    let limits = limits.as_slice();
     let [lo, hi] = crate::ui::plot_layout::robust_range(data);
     let (lo, hi) = limits
         .iter()
         .fold((lo, hi), |(a, b), &l| (a.min(l), b.max(l)));
-    Plot::new((id, i, s.scene().name.as_str(), s.generation()))
-        .height(height)
+    let key = (id, i, s.scene().name.as_str(), s.generation());
+    plot_axes::plot(key, height, "cam angle (deg)", &series.title)
         .include_y(lo)
         .include_y(hi)
-        .x_axis_label("cam angle (deg)")
-        .y_axis_label(label)
-        .allow_scroll(false)
         .show(ui, |p| {
             p.line(Line::new(
-                label,
+                series.title.clone(),
                 data.iter().copied().collect::<PlotPoints<'_>>(),
             ));
             for &l in limits {

@@ -5,10 +5,12 @@
 //! and Wittenbauer's energy–inertia diagram (the surplus against the reduced inertia).
 
 use eframe::egui;
-use egui_plot::{HLine, Line, Plot, PlotPoints, Points, VLine};
+use egui_plot::{HLine, Line, PlotPoints, Points, VLine};
 use linkage::machine::FlywheelSizing;
+use linkage_diagram::numbers::{si, significant};
 
 use crate::session::curves::FLYWHEEL_DELTA;
+use crate::ui::plot_axes::{self, Axis, Unit};
 
 /// The figures in one line, then the two plots side by side (stacked when narrow).
 pub fn flywheel_plots(
@@ -36,59 +38,60 @@ pub fn flywheel_plots(
         .map(|c| [c.reduced_inertia_kg_m2, c.surplus_j])
         .collect();
     wittenbauer.extend(wittenbauer.first().copied());
-    let extremes = vec![
+    let extremes = [
         [sized.angle_of_max_rad.to_degrees(), sized.surplus_max_j],
         [sized.angle_of_min_rad.to_degrees(), sized.surplus_min_j],
     ];
+    let torque = plot_axes::series(Axis::new("T", Unit::Si("N·m")), &torque);
+    let surplus = plot_axes::series(Axis::new("W", Unit::Si("J")), &surplus);
+    let wittenbauer = plot_axes::series(Axis::new("W", Unit::Si("J")), &wittenbauer);
+    let extremes: Vec<[f64; 2]> = extremes
+        .iter()
+        .map(|&[x, y]| [x, y * surplus.factor])
+        .collect();
+    let mean = sized.mean_torque_n_m * torque.factor;
     crate::ui::plot_layout::side_by_side(ui, 3, |ui, which, height| {
-        let plot = Plot::new((key, "flywheel", which))
-            .height(height)
-            .x_axis_label("crank angle (deg)")
-            .allow_scroll(false);
-        if which == 0 {
-            plot.y_axis_label("T (N·m)").show(ui, |p| {
+        let key = (key, "flywheel", which);
+        match which {
+            0 => plot_axes::plot(key, height, CRANK_TITLE, &torque.title).show(ui, |p| {
                 p.line(Line::new(
                     "the load's torque",
-                    PlotPoints::from(torque.clone()),
+                    PlotPoints::from(torque.points.clone()),
                 ));
-                p.hline(HLine::new("mean: the motor's", sized.mean_torque_n_m));
+                p.hline(HLine::new("mean: the motor's", mean));
                 p.vline(VLine::new("now", cursor_deg));
-            });
-        } else if which == 2 {
-            let plot = Plot::new((key, "flywheel", which))
-                .height(height)
-                .x_axis_label("J_red (kg·m²)")
-                .y_axis_label("W (J)")
-                .allow_scroll(false);
-            plot.show(ui, |p| {
-                p.line(Line::new(
-                    "energy–inertia (Wittenbauer)",
-                    PlotPoints::from(wittenbauer.clone()),
-                ));
-            });
-        } else {
-            plot.y_axis_label("W (J)").show(ui, |p| {
-                p.line(Line::new("W", PlotPoints::from(surplus.clone())));
+            }),
+            1 => plot_axes::plot(key, height, CRANK_TITLE, &surplus.title).show(ui, |p| {
+                p.line(Line::new("W", PlotPoints::from(surplus.points.clone())));
                 p.points(
                     Points::new("largest and smallest", PlotPoints::from(extremes.clone()))
                         .radius(4.0),
                 );
                 p.vline(VLine::new("now", cursor_deg));
-            });
-        }
+            }),
+            _ => plot_axes::plot(key, height, "J_red (kg·m²)", &wittenbauer.title).show(ui, |p| {
+                p.line(Line::new(
+                    "energy–inertia (Wittenbauer)",
+                    PlotPoints::from(wittenbauer.points.clone()),
+                ));
+            }),
+        };
     });
 }
+
+/// The crank-angle axis' title.
+const CRANK_TITLE: &str = "crank angle (deg)";
 
 /// The energy method's figures, in two short lines.
 fn figures(s: &FlywheelSizing) -> String {
     format!(
-        "mean torque {:.4e} N·m · mean power {:.4e} W · ΔW_max {:.4e} J\n\
-         flywheel for δ = {FLYWHEEL_DELTA}: J_F = {:.4e} kg·m² (the mechanism's own: up to {:.3e}, mean {:.3e} kg·m²)",
-        s.mean_torque_n_m,
-        s.mean_power_w,
-        s.work_range_j,
-        s.flywheel_kg_m2,
-        s.reduced_inertia_kg_m2.max,
-        s.reduced_inertia_kg_m2.mean,
+        "mean torque {} · mean power {} · ΔW_max {}\n\
+         flywheel for δ = {FLYWHEEL_DELTA}: J_F = {} kg·m² (the mechanism's own: up to {}, mean {} kg·m²)",
+        si(s.mean_torque_n_m, "N·m"),
+        si(s.mean_power_w, "W"),
+        si(s.work_range_j, "J"),
+        significant(s.flywheel_kg_m2, 4),
+        significant(s.reduced_inertia_kg_m2.max, 4),
+        significant(s.reduced_inertia_kg_m2.mean, 4),
     )
 }

@@ -5,10 +5,12 @@
 //! diagram, as the textbooks draw it, and its size against the crank angle).
 
 use eframe::egui;
-use egui_plot::{HLine, Line, Plot, PlotPoints, Points, VLine};
+use egui_plot::{HLine, Line, PlotPoints, Points, VLine};
 use linkage::machine::{Shaking, SteadyState};
+use linkage_diagram::numbers::{Prefix, si, significant};
 
 use crate::session::curves::ShakingCurves;
+use crate::ui::plot_axes::{self, Axis, Unit};
 
 /// The steady state's figures, then ω–φ and ω–t side by side.
 pub fn steady_plots(
@@ -19,9 +21,15 @@ pub fn steady_plots(
     nominal_rad_s: f64,
     cursor_deg: f64,
 ) {
+    let n = |v: f64| significant(v, 4);
     ui.label(format!(
-        "ω max {:.4} · min {:.4} · mean {:.4} rad/s (nominal {:.4}) · δ = {:.4} · period {:.4} s",
-        st.max_rad_s, st.min_rad_s, st.mean_rad_s, nominal_rad_s, st.delta, st.period_s
+        "ω max {} · min {} · mean {} rad/s (nominal {}) · δ = {} · period {} s",
+        n(st.max_rad_s),
+        n(st.min_rad_s),
+        n(st.mean_rad_s),
+        n(nominal_rad_s),
+        n(st.delta),
+        n(st.period_s)
     ));
     let by_angle: Vec<[f64; 2]> = st
         .cycle
@@ -37,18 +45,13 @@ pub fn steady_plots(
             1 => ("t (s)", "ω, steady state", &by_time),
             _ => ("t (s), from rest", "ω, run-up from rest", &from_rest),
         };
-        Plot::new((key, "steady", which))
-            .height(height)
-            .x_axis_label(x_label)
-            .y_axis_label("ω (rad/s)")
-            .allow_scroll(false)
-            .show(ui, |p| {
-                p.line(Line::new(name, PlotPoints::from(data.clone())));
-                p.hline(HLine::new("nominal", nominal_rad_s));
-                if which == 0 {
-                    p.vline(VLine::new("now", cursor_deg));
-                }
-            });
+        plot_axes::plot((key, "steady", which), height, x_label, "ω (rad/s)").show(ui, |p| {
+            p.line(Line::new(name, PlotPoints::from(data.clone())));
+            p.hline(HLine::new("nominal", nominal_rad_s));
+            if which == 0 {
+                p.vline(VLine::new("now", cursor_deg));
+            }
+        });
     });
 }
 
@@ -57,56 +60,69 @@ pub fn steady_plots(
 pub fn shaking_plots(ui: &mut egui::Ui, key: (&str, u64), sc: &ShakingCurves, cursor_deg: f64) {
     let c = &sc.counterweight;
     ui.label(format!(
-        "crank counterweight (least squares): {:.4e} kg·m at {:.1}° from the crank · \
-         peak {:.4e} N without, {:.4e} N with · rms {:.4e} N without, {:.4e} N with",
-        c.mass_radius_kg_m,
-        c.angle_rad.to_degrees(),
-        sc.before.peak_force_n,
-        sc.after.peak_force_n,
-        sc.before.rms_force_n,
-        sc.after.rms_force_n
+        "crank counterweight (least squares): {} kg·m at {}° from the crank · \
+         peak {} without, {} with · rms {} without, {} with",
+        significant(c.mass_radius_kg_m, 4),
+        significant(c.angle_rad.to_degrees(), 4),
+        si(sc.before.peak_force_n, "N"),
+        si(sc.after.peak_force_n, "N"),
+        si(sc.before.rms_force_n, "N"),
+        si(sc.after.rms_force_n, "N")
     ));
+    // Both diagrams in the prefix of the larger force, the same on both axes.
+    let prefix = Prefix::for_magnitude(sc.before.peak_force_n.max(sc.after.peak_force_n));
+    let k = prefix.factor;
     let polar = |s: &Shaking| -> Vec<[f64; 2]> {
-        let mut pts: Vec<[f64; 2]> = s.cycle.iter().map(|p| p.force_n).collect();
+        let mut pts: Vec<[f64; 2]> = s
+            .cycle
+            .iter()
+            .map(|p| [p.force_n[0] * k, p.force_n[1] * k])
+            .collect();
         pts.extend(pts.first().copied());
         pts
     };
     let size = |s: &Shaking| -> Vec<[f64; 2]> {
         s.cycle
             .iter()
-            .map(|p| [p.angle_rad.to_degrees(), p.force_n[0].hypot(p.force_n[1])])
+            .map(|p| {
+                [
+                    p.angle_rad.to_degrees(),
+                    k * p.force_n[0].hypot(p.force_n[1]),
+                ]
+            })
             .collect()
     };
-    let now = nearest(&sc.before, cursor_deg);
+    let now = nearest(&sc.before, cursor_deg).map(|[x, y]| [x * k, y * k]);
+    let force = |name: &str| plot_axes::title(Axis::new(name, Unit::Si("N")), prefix);
     crate::ui::plot_layout::side_by_side(ui, 2, |ui, which, height| {
-        let plot = Plot::new((key, "shaking", which))
-            .height(height)
-            .allow_scroll(false);
         if which == 0 {
-            plot.data_aspect(1.0)
-                .x_axis_label("F_x (N)")
-                .y_axis_label("F_y (N)")
-                .show(ui, |p| {
-                    p.line(Line::new("without", PlotPoints::from(polar(&sc.before))));
-                    p.line(Line::new(
-                        "with counterweight",
-                        PlotPoints::from(polar(&sc.after)),
-                    ));
-                    if let Some(f) = now {
-                        p.points(Points::new("now", PlotPoints::from(vec![f])).radius(4.0));
-                    }
-                });
+            plot_axes::plot(
+                (key, "shaking", which),
+                height,
+                &force("F_x"),
+                &force("F_y"),
+            )
+            .data_aspect(1.0)
+            .show(ui, |p| {
+                p.line(Line::new("without", PlotPoints::from(polar(&sc.before))));
+                p.line(Line::new(
+                    "with counterweight",
+                    PlotPoints::from(polar(&sc.after)),
+                ));
+                if let Some(f) = now {
+                    p.points(Points::new("now", PlotPoints::from(vec![f])).radius(4.0));
+                }
+            });
         } else {
-            plot.x_axis_label("crank angle (deg)")
-                .y_axis_label("|F| (N)")
-                .show(ui, |p| {
-                    p.line(Line::new("without", PlotPoints::from(size(&sc.before))));
-                    p.line(Line::new(
-                        "with counterweight",
-                        PlotPoints::from(size(&sc.after)),
-                    ));
-                    p.vline(VLine::new("now", cursor_deg));
-                });
+            let key = (key, "shaking", which);
+            plot_axes::plot(key, height, "crank angle (deg)", &force("|F|")).show(ui, |p| {
+                p.line(Line::new("without", PlotPoints::from(size(&sc.before))));
+                p.line(Line::new(
+                    "with counterweight",
+                    PlotPoints::from(size(&sc.after)),
+                ));
+                p.vline(VLine::new("now", cursor_deg));
+            });
         }
     });
 }

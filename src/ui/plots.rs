@@ -4,14 +4,16 @@
 //! current position.
 
 use eframe::egui;
-use egui_plot::{Line, Plot, PlotPoints, VLine};
+use egui_plot::{Line, PlotPoints, VLine};
 use linkage::scene::Models;
+use linkage_diagram::numbers::Prefix;
 
 use crate::session::Session;
 use crate::session::curves::ModelCurves;
 use crate::session::derived::Shown;
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
+use crate::ui::plot_axes::{self, Axis, CRANK, Unit};
 
 /// Which plot the plot pane shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -92,7 +94,7 @@ const TABS: [(PlotTab, &str, &str); 11] = [
     (
         PlotTab::Torque,
         "Torque",
-        "input torque and force amplification",
+        "input torque, and the force amplification (log10 of N per N·m)",
     ),
     (
         PlotTab::Flywheel,
@@ -165,16 +167,13 @@ impl PlotsPanel {
             PlotTab::Output => output_plots(ui, s),
             PlotTab::Transmission => {
                 let x = cursor_deg(s);
+                let angle = Axis::new("transmission angle", Unit::Fixed("deg"));
+                let data = &s.curves().transmission_deg;
                 row(
                     ui,
                     "transmission",
                     plot_key(s),
-                    &[(
-                        "transmission angle (deg)",
-                        CRANK,
-                        &s.curves().transmission_deg,
-                        Some(x),
-                    )],
+                    &[(angle, CRANK, data, Some(x))],
                 );
             }
             PlotTab::Timing => {
@@ -194,9 +193,6 @@ impl PlotsPanel {
     }
 }
 
-/// The crank-angle axis' label.
-const CRANK: &str = "crank angle (deg)";
-
 /// What names a plot's curves: the scene and its generation.
 fn plot_key(s: &Session) -> (&str, u64) {
     (s.scene().name.as_str(), s.generation())
@@ -215,30 +211,49 @@ fn output_plots(ui: &mut egui::Ui, s: &Session) {
     else {
         return;
     };
-    let (u, v, a) = if out.is_angle {
-        ("deg", "deg/s", "deg/s²")
-    } else {
-        ("m", "m/s", "m/s²")
-    };
-    let plots = [
-        (format!("{} ({u})", out.name), &out.value),
-        (format!("{} rate ({v})", out.name), &out.rate),
+    // An angle in degrees; a slider's travel in the scene's own unit (mm scenes
+    // plot in mm), its speed and acceleration in m/s and m/s² with their prefix.
+    let unit = s.scene().length_unit;
+    let travel: Vec<[f64; 2]>;
+    let (value, units) = if out.is_angle {
         (
-            format!("{} acceleration ({a})", out.name),
-            &out.acceleration,
-        ),
+            out.value.as_slice(),
+            [
+                Unit::Fixed("deg"),
+                Unit::Fixed("deg/s"),
+                Unit::Fixed("deg/s²"),
+            ],
+        )
+    } else {
+        let per_m = 1.0 / unit.to_metres();
+        travel = out.value.iter().map(|&[x, y]| [x, y * per_m]).collect();
+        (
+            travel.as_slice(),
+            [
+                Unit::Fixed(crate::session::unit_label_of(unit)),
+                Unit::Si("m/s"),
+                Unit::Si("m/s²"),
+            ],
+        )
+    };
+    let names = [
+        out.name.clone(),
+        format!("{} rate", out.name),
+        format!("{} acceleration", out.name),
     ];
+    let data = [value, out.rate.as_slice(), out.acceleration.as_slice()];
     let x = cursor_deg(s);
-    row(
-        ui,
-        "output",
-        plot_key(s),
-        &plots
-            .iter()
-            .map(|(l, d)| (l.as_str(), CRANK, d.as_slice(), Some(x)))
-            .collect::<Vec<_>>(),
-    );
+    let specs: Vec<PlotSpec<'_>> = (0..3)
+        .map(|i| (Axis::new(&names[i], units[i]), CRANK, data[i], Some(x)))
+        .collect();
+    row(ui, "output", plot_key(s), &specs);
 }
+
+/// The input torque's axis.
+const TORQUE: Axis<'static> = Axis::new("input torque", Unit::Si("N·m"));
+/// The force amplification's axis: the logarithm of the output's force per unit input
+/// torque (N per N·m; the tab's hover says so).
+const AMPLIFICATION: Axis<'static> = Axis::new("log10 amplification", Unit::None);
 
 /// The input torque and the force amplification (on a log scale).
 fn torque_plots(ui: &mut egui::Ui, s: &Session) {
@@ -257,13 +272,8 @@ fn torque_plots(ui: &mut egui::Ui, s: &Session) {
         "torque",
         plot_key(s),
         &[
-            ("input torque (N·m)", CRANK, &c.torque_n_m, Some(x)),
-            (
-                "log10 force amplification (N per N·m)",
-                CRANK,
-                &log_amp,
-                Some(x),
-            ),
+            (TORQUE, CRANK, &c.torque_n_m, Some(x)),
+            (AMPLIFICATION, CRANK, &log_amp, Some(x)),
         ],
     );
 }
@@ -331,19 +341,18 @@ fn motion_plots(ui: &mut egui::Ui, s: &Session) {
         return;
     };
     let t = s.time_s();
+    let omega = Axis::new("ω", Unit::Fixed("rad/s"));
+    let phi = Axis::new("φ", Unit::Fixed("deg"));
+    let time = Axis::new("t", Unit::Fixed("s"));
+    let now = Some(s.input_rad().to_degrees());
     row(
         ui,
         "motion",
         plot_key(s),
         &[
-            (
-                "ω (rad/s)",
-                "φ (deg)",
-                &run.omega_phi,
-                Some(s.input_rad().to_degrees()),
-            ),
-            ("ω (rad/s)", "t (s)", &run.omega_t, Some(t)),
-            ("φ (deg)", "t (s)", &run.phi_t, Some(t)),
+            (omega, phi, &run.omega_phi, now),
+            (omega, time, &run.omega_t, Some(t)),
+            (phi, time, &run.phi_t, Some(t)),
         ],
     );
 }
@@ -354,13 +363,16 @@ fn reduced_model_plots(ui: &mut egui::Ui, s: &Session) {
         return;
     };
     let x = cursor_deg(s);
+    let q = Axis::new("q", Unit::Fixed("deg"));
+    let inertia = Axis::new("J(q)", Unit::Fixed("kg·m²"));
+    let moment = Axis::new("M(q) at rest", Unit::Si("N·m"));
     row(
         ui,
         "reduced",
         plot_key(s),
         &[
-            ("J(q) (kg·m²)", "q (deg)", &c.inertia_kg_m2, Some(x)),
-            ("M(q) at rest (N·m)", "q (deg)", &c.moment_n_m, Some(x)),
+            (inertia, q, &c.inertia_kg_m2, Some(x)),
+            (moment, q, &c.moment_n_m, Some(x)),
         ],
     );
 }
@@ -377,8 +389,8 @@ fn model_curves<'s>(ui: &mut egui::Ui, s: &'s Session) -> Option<&'s ModelCurves
     }
 }
 
-/// One plot of a row: (y label, x label, data, cursor position on x).
-type PlotSpec<'a> = (&'a str, &'a str, &'a [[f64; 2]], Option<f64>);
+/// One plot of a row: (y axis, x axis, data, cursor position on x).
+type PlotSpec<'a> = (Axis<'a>, Axis<'a>, &'a [[f64; 2]], Option<f64>);
 
 /// Plots side by side where the pane is wide enough, else one under another.
 fn row(ui: &mut egui::Ui, id: &str, generation: (&str, u64), plots: &[PlotSpec<'_>]) {
@@ -388,24 +400,22 @@ fn row(ui: &mut egui::Ui, id: &str, generation: (&str, u64), plots: &[PlotSpec<'
 }
 
 /// One plot, `height` high, keyed by `key` (the mechanism's, so that an edit re-fits
-/// its bounds).
+/// its bounds), its y values in the unit and prefix that suit them.
 fn plot(
     ui: &mut egui::Ui,
     key: (&str, usize, (&str, u64)),
-    (y_label, x_label, data, cursor): &PlotSpec<'_>,
+    (y, x, data, cursor): &PlotSpec<'_>,
     height: f32,
 ) {
-    let [lo, hi] = crate::ui::plot_layout::robust_range(data);
-    Plot::new(key)
-        .height(height)
+    let series = plot_axes::series(*y, data);
+    let [lo, hi] = crate::ui::plot_layout::robust_range(&series.points);
+    let x_title = plot_axes::title(*x, Prefix::NONE);
+    plot_axes::plot(key, height, &x_title, &series.title)
         .default_y_bounds(lo, hi)
-        .x_axis_label(*x_label)
-        .y_axis_label(*y_label)
-        .allow_scroll(false)
         .show(ui, |p| {
             p.line(Line::new(
-                *y_label,
-                data.iter().copied().collect::<PlotPoints<'_>>(),
+                series.title.clone(),
+                PlotPoints::from(series.points),
             ));
             if let Some(x) = cursor.filter(|x| x.is_finite()) {
                 p.vline(VLine::new("now", x));

@@ -28,6 +28,13 @@ pub struct PointDrag {
     pub turning: Option<f64>,
 }
 
+impl PointDrag {
+    /// Whether a joint is being dragged or the driver turned by hand.
+    pub fn active(&self) -> bool {
+        self.dragged_point.is_some() || self.turning.is_some()
+    }
+}
+
 /// Handles the view's pointer in edit mode; returns whether a point is being dragged
 /// (then the view does not pan).
 pub fn handle(

@@ -4,6 +4,8 @@
 use eframe::egui;
 
 use linkage::analysis::Report;
+use linkage::scene::LengthUnit;
+use linkage_model::session::words::length;
 
 use crate::session::derived::Shown;
 use crate::state::AppState;
@@ -39,14 +41,15 @@ enum Form {
 }
 
 fn shown(ui: &mut egui::Ui, st: &AppState, form: Form) {
+    let unit = st.session.scene().length_unit;
     match st.session.report_shown() {
-        Shown::Current(r) => entries(ui, r, form),
+        Shown::Current(r) => entries(ui, r, unit, form),
         Shown::Outdated(r) => {
             ui.weak("updating…");
             if form == Form::Strip {
                 ui.separator();
             }
-            ui.add_enabled_ui(false, |ui| entries(ui, r, form));
+            ui.add_enabled_ui(false, |ui| entries(ui, r, unit, form));
         }
         Shown::Pending => {
             ui.weak("report: computing…");
@@ -55,7 +58,12 @@ fn shown(ui: &mut egui::Ui, st: &AppState, form: Form) {
 }
 
 /// The report's entries, or why there is none.
-fn entries(ui: &mut egui::Ui, report: &Result<Report, linkage::LinkageError>, form: Form) {
+fn entries(
+    ui: &mut egui::Ui,
+    report: &Result<Report, linkage::LinkageError>,
+    unit: LengthUnit,
+    form: Form,
+) {
     let r = match report {
         Ok(r) => r,
         Err(e) => {
@@ -63,7 +71,7 @@ fn entries(ui: &mut egui::Ui, report: &Result<Report, linkage::LinkageError>, fo
             return;
         }
     };
-    for (k, (headline, details)) in items(r).into_iter().enumerate() {
+    for (k, (headline, details)) in items(r, unit).into_iter().enumerate() {
         match form {
             Form::Strip => {
                 if k > 0 {
@@ -86,15 +94,15 @@ fn entries(ui: &mut egui::Ui, report: &Result<Report, linkage::LinkageError>, fo
 }
 
 /// Each entry of the report: its headline and where on the cycle it occurs.
-fn items(r: &Report) -> Vec<(String, String)> {
+fn items(r: &Report, unit: LengthUnit) -> Vec<(String, String)> {
     let mut out = Vec::new();
     out.push(match &r.grashof {
         Some(g) => (
             format!("Grashof: {}", g.class),
             format!(
-                "s + l = {:.4} m, p + q = {:.4} m ({}){}",
-                g.s_plus_l_m,
-                g.p_plus_q_m,
+                "s + l = {}, p + q = {} ({}){}",
+                length(g.s_plus_l_m, unit),
+                length(g.p_plus_q_m, unit),
                 g.links.join(", "),
                 if g.change_point {
                     "; change point: the links can fold flat"
@@ -116,7 +124,7 @@ fn items(r: &Report) -> Vec<(String, String)> {
     });
     for (name, stroke) in &r.strokes_m {
         out.push((
-            format!("stroke {name} = {:.2} mm", stroke * 1e3),
+            format!("stroke {name} = {}", length(*stroke, unit)),
             limits_of(r, name),
         ));
     }

@@ -4,8 +4,10 @@
 //! laid out against each other.
 
 use eframe::egui;
-use egui_plot::{Line, Plot, PlotPoint, PlotPoints, Polygon, Text, VLine};
+use egui_plot::{Line, PlotPoint, PlotPoints, Polygon, Text, VLine};
 use linkage::analysis::TimingLane;
+use linkage::scene::LengthUnit;
+use linkage_model::session::words::length;
 
 use crate::session::Session;
 
@@ -19,12 +21,10 @@ pub fn timing_plot(ui: &mut egui::Ui, s: &Session, cursor_deg: f64, height: f32)
     let (Some(&x0), n) = (shaft_deg.first(), d.lanes.len()) else {
         return;
     };
-    Plot::new(("timing", s.scene().name.as_str(), s.generation()))
-        .height(height)
-        .x_axis_label("main shaft angle (deg)")
+    let key = ("timing", s.scene().name.as_str(), s.generation());
+    crate::ui::plot_axes::plot(key, height, "main shaft angle (deg)", "")
         .show_axes([true, false])
         .show_grid([true, false])
-        .allow_scroll(false)
         .include_y(-0.2)
         .include_y(LANE * n as f64)
         .show(ui, |p| {
@@ -45,7 +45,11 @@ pub fn timing_plot(ui: &mut egui::Ui, s: &Session, cursor_deg: f64, height: f32)
                     .map(|(&x, &y)| [x, foot + y])
                     .collect();
                 p.line(Line::new(lane.name.clone(), points));
-                let label = format!("{} ({})", lane.name, stroke_text(lane));
+                let label = format!(
+                    "{} ({})",
+                    lane.name,
+                    stroke_text(lane, s.scene().length_unit)
+                );
                 p.text(
                     Text::new(label.clone(), PlotPoint::new(x0, foot + 1.2), label)
                         .anchor(egui::Align2::LEFT_CENTER),
@@ -57,12 +61,12 @@ pub fn timing_plot(ui: &mut egui::Ui, s: &Session, cursor_deg: f64, height: f32)
         });
 }
 
-/// The lane's swing in degrees or stroke in millimetres.
-fn stroke_text(lane: &TimingLane) -> String {
+/// The lane's swing in degrees or stroke in the scene's length unit.
+fn stroke_text(lane: &TimingLane, unit: LengthUnit) -> String {
     let [lo, hi] = lane.range;
     if lane.is_angle {
         format!("swing {:.2}°", (hi - lo).to_degrees())
     } else {
-        format!("stroke {:.2} mm", (hi - lo) * 1e3)
+        format!("stroke {}", length(hi - lo, unit))
     }
 }

@@ -9,6 +9,7 @@ use crate::render::build::{VectorScales, build};
 use crate::render::shape::SharedShapes;
 use crate::render::view::Camera;
 use crate::state::AppState;
+use crate::ui::label_place::{Obstacles, place};
 use crate::ui::point_drag::PointDrag;
 
 /// Room a pin's and a ground pivot's symbols take around the pin, points: a fit
@@ -34,6 +35,8 @@ pub struct Viewport {
     /// The part of the view the legend (top) and the message (bottom) covered last
     /// frame, points: the fit keeps the mechanism clear of them.
     overlay: [f32; 2],
+    /// Where the joints' names went last frame (tests check they cover no pin).
+    pub labels: Vec<(String, egui::Rect)>,
 }
 
 /// Pans the camera by a drag (where `pan`) or two fingers, and zooms it by the wheel
@@ -89,7 +92,7 @@ impl Viewport {
     ) -> f64 {
         let (rect, response) = ui.allocate_exact_size(ui.available_size(), Sense::click_and_drag());
         st.controls.view = Some([rect.min.x, rect.min.y, rect.max.x, rect.max.y]);
-        self.fit(rect, st);
+        self.fit(ui, rect, st);
         let moving_point =
             crate::ui::point_drag::handle(ui, &response, rect, st, &self.camera, &mut self.drag);
         // A dragged point or a crank turned by hand shows where the pointer is now.
@@ -118,7 +121,7 @@ impl Viewport {
         painter.rect_filled(rect, 0.0, egui::Color32::from_rgb(246, 246, 242));
         paint_shapes(&painter, rect, view, shapes, renderer);
 
-        point_labels(&painter, rect, st, &self.camera);
+        self.labels = point_labels(&painter, rect, st, &self.camera, self.scales);
         if st.view.layers.centres {
             crate::ui::centres::overlay(&painter, rect, st, &self.camera);
         }
@@ -127,16 +130,23 @@ impl Viewport {
     }
 
     /// Fits the camera when asked, or when the view's rectangle or the mechanism's
-    /// box changed and the user has not panned or zoomed since the last fit. The
-    /// mechanism is fitted below the legend and above the message.
-    fn fit(&mut self, rect: egui::Rect, st: &mut AppState) {
+    /// box changed and the user has not panned or zoomed since the last fit: once a
+    /// slider or a pane is let go (while it is dragged the link grows in the view
+    /// that was). A joint dragged in the view never refits it: the joint stays
+    /// under the pointer. The mechanism is fitted below the legend and above the
+    /// message.
+    fn fit(&mut self, ui: &egui::Ui, rect: egui::Rect, st: &mut AppState) {
         if rect.width() <= 1.0 || rect.height() <= 1.0 {
             return;
         }
         let bounds = st.session.curves().bounds_m;
         let key = (rect, bounds, self.overlay[0]);
+        if self.drag.active() {
+            self.fitted_to = Some(key);
+        }
         let changed = self.fitted_to != Some(key);
-        if st.commands.fit || (changed && !self.camera.by_hand) {
+        let gesture = ui.input(|i| i.pointer.any_down());
+        if st.commands.fit || (changed && !self.camera.by_hand && !gesture) {
             // Below the legend, above the message, and clear of the edges by the
             // size of a ground pivot's symbol (drawn in points around its pin).
             let [top, bottom] = self.overlay;
@@ -152,26 +162,71 @@ impl Viewport {
     }
 }
 
-/// The joints' names beside them.
-fn point_labels(painter: &egui::Painter, rect: egui::Rect, st: &AppState, camera: &Camera) {
-    // Point labels beside each joint.
+/// The joints' names beside them, each where it covers no other pin, link, arrow
+/// or name ([`label_place`]); returns where each went (tests check them).
+fn point_labels(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    st: &AppState,
+    camera: &Camera,
+    scales: VectorScales,
+) -> Vec<(String, egui::Rect)> {
     let pose = st.session.pose();
     let m = st.session.mechanism();
-    let font = FontId::proportional(13.0);
-    let offset = egui::vec2(8.0, -8.0);
-    for &p in &st.session.topology().joint_points {
+    let topology = st.session.topology();
+    let screen = |p: linkage::PointId| {
         let q = pose.points[p].position;
-        if q.x.is_finite() && q.y.is_finite() {
-            let at = camera.to_screen([q.x, q.y], rect) + offset;
-            painter.text(
-                at,
-                Align2::LEFT_BOTTOM,
-                &m.points[p].name,
-                font.clone(),
-                egui::Color32::from_gray(30),
-            );
+        (q.x.is_finite() && q.y.is_finite()).then(|| camera.to_screen([q.x, q.y], rect))
+    };
+    let mut obstacles = Obstacles {
+        pins: topology
+            .joint_points
+            .iter()
+            .filter_map(|&p| screen(p))
+            .collect(),
+        ..Obstacles::default()
+    };
+    for joints in &topology.link_joints {
+        for (k, &a) in joints.iter().enumerate() {
+            for &b in &joints[k + 1..] {
+                if let (Some(a), Some(b)) = (screen(a), screen(b)) {
+                    obstacles.segments.push([a, b]);
+                }
+            }
         }
     }
+    // The arrows at the joints, as the view draws them.
+    let layers = st.view.layers;
+    for &p in &topology.joint_points {
+        let pm = &pose.points[p];
+        for (on, v, scale) in [
+            (layers.velocities, pm.velocity, scales.velocity),
+            (layers.accelerations, pm.acceleration, scales.acceleration),
+        ] {
+            let tip = pm.position + v * scale;
+            if on && scale > 0.0 && tip.x.is_finite() && tip.y.is_finite() {
+                let from = camera.to_screen([pm.position.x, pm.position.y], rect);
+                obstacles
+                    .segments
+                    .push([from, camera.to_screen([tip.x, tip.y], rect)]);
+            }
+        }
+    }
+    let font = FontId::proportional(13.0);
+    let ink = egui::Color32::from_gray(30);
+    let mut placed = Vec::new();
+    for &p in &topology.joint_points {
+        let Some(at) = screen(p) else {
+            continue;
+        };
+        let name = &m.points[p].name;
+        let galley = painter.layout_no_wrap(name.clone(), font.clone(), ink);
+        let spot = place(at, galley.size(), &obstacles);
+        painter.galley(spot.min, galley, ink);
+        obstacles.names.push(spot);
+        placed.push((name.clone(), spot));
+    }
+    placed
 }
 
 /// The legend at the top left (the crank, the time, the vectors' scales, what a drag

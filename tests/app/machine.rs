@@ -6,6 +6,7 @@ use eframe::egui::accesskit::Role;
 use egui_kittest::kittest::Queryable as _;
 use linkage::machine::size_flywheel;
 use linkage::{Kinematics, Mechanism};
+use linkage_diagram::numbers::{si, significant};
 
 use crate::common;
 use crate::ui::open_scene;
@@ -23,7 +24,7 @@ fn the_flywheel_tab_shows_the_die_cutters_flywheel() {
     let scene = h.state().state.session.scene().clone();
     let mut k = Kinematics::new(Mechanism::from_scene(&scene).expect("valid")).expect("k");
     let sized = size_flywheel(&mut k, 0.05).expect("sized");
-    let shown = format!("J_F = {:.4e} kg·m²", sized.flywheel_kg_m2);
+    let shown = format!("J_F = {} kg·m²", significant(sized.flywheel_kg_m2, 4));
     assert!(
         h.query_by_label_contains(&shown).is_some(),
         "the tab shows {shown}"
@@ -79,8 +80,9 @@ fn the_shaking_tab_shows_the_engine_before_and_after_its_counterweight() {
     let mut k = Kinematics::new(Mechanism::from_scene(&scene).expect("valid")).expect("k");
     let sc = linkage_lab::session::curves::ShakingCurves::compute(&mut k).expect("shaking");
     let shown = format!(
-        "peak {:.4e} N without, {:.4e} N with",
-        sc.before.peak_force_n, sc.after.peak_force_n
+        "peak {} without, {} with",
+        si(sc.before.peak_force_n, "N"),
+        si(sc.after.peak_force_n, "N")
     );
     assert!(
         h.query_by_label_contains(&shown).is_some(),

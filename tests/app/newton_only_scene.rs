@@ -2,6 +2,7 @@
 //! app's session: the crank slider spans the traced assembly range, moving it past a
 //! fold is refused naming that range, and the pose shown stays the last valid one.
 
+use linkage_diagram::numbers::significant;
 use linkage_lab::session::{SceneEdit, SceneSource, Session};
 
 #[test]
@@ -33,7 +34,11 @@ fn a_newton_only_scene_offers_its_traced_range_and_refuses_past_its_folds() {
     let kept = s.pose().input_rad;
     s.apply(SceneEdit::Input { deg: a - 60.0 });
     let msg = s.message().expect("refused past the fold");
-    let want = format!("reachable input range: {a:.2}..{:.2} deg", a + width);
+    let want = format!(
+        "the crank reaches {}° to {}°",
+        significant(a, 5),
+        significant(a + width, 5)
+    );
     assert!(msg.contains(&want), "{msg}");
     assert_eq!(s.pose().input_rad, kept, "the last valid pose is kept");
 }

@@ -174,8 +174,8 @@ fn targets_clicked_on_the_canvas_are_searched_to_a_design_that_opens() {
     }
     assert_eq!(h.state().state.session.scene().name, "Path generator");
     assert!(
-        h.state().state.session.is_dirty(),
-        "a design is unsaved work"
+        !h.state().state.session.is_dirty(),
+        "a fresh design is marked edited"
     );
 }
 

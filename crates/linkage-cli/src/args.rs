@@ -33,6 +33,15 @@ pub(crate) enum SummaryFormat {
     Json,
 }
 
+/// Output format of `report`.
+#[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
+pub(crate) enum ReportFormat {
+    /// A readable summary in the scene's length unit and degrees.
+    Text,
+    /// Every figure in SI (m, rad), for programs.
+    Json,
+}
+
 /// Solver path.
 #[derive(Clone, Copy, Debug, ValueEnum, PartialEq, Eq)]
 pub(crate) enum PathArg {
@@ -66,7 +75,12 @@ pub(crate) enum Command {
     Sweep {
         #[command(flatten)]
         scene: SceneArgs,
-        /// Number of positions (at least 2: the cycle's ends).
+        /// Number of positions, at least 2. A crank's full turn is cut into N equal
+        /// steps from its start angle (N = 12 gives 0, 30, …, 330 deg from the start:
+        /// the turn's end is its start again); an input that rocks between dead
+        /// points gets N positions from one end of its range to the other, both ends
+        /// included (a millionth of the range inside the dead points, which a note
+        /// on stderr names).
         #[arg(long, default_value_t = 360, allow_hyphen_values = true, value_parser = counts::at_least_two)]
         steps: usize,
         /// Output format.
@@ -84,10 +98,15 @@ pub(crate) enum Command {
         #[arg(long, value_enum, default_value_t = Format::Json)]
         format: Format,
     },
-    /// Assembly range, limit positions, strokes, swings, K, Grashof, transmission angle, toggles (JSON).
+    /// Assembly range, limit positions, strokes, swings, K, Grashof, transmission
+    /// angle, toggles, and each output's largest speed and acceleration (located):
+    /// JSON in SI for programs, or text in the scene's unit and degrees.
     Report {
         #[command(flatten)]
         scene: SceneArgs,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = ReportFormat::Json)]
+        format: ReportFormat,
     },
     /// Forward dynamics of the 1-DOF chain from rest at the scene's start angle:
     /// samples on a uniform time grid (CSV or JSON with events and cost).

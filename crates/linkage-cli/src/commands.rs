@@ -9,9 +9,9 @@ use linkage::synthesis::{DieCutterSpec, crank_rocker, die_cutter, die_cutter_as_
 use linkage::{Kinematics, LinkId, Mechanism, Solution};
 use serde_json::{Value, json};
 
-use crate::args::{Format, SceneArgs, SynthCommand};
+use crate::args::{Format, ReportFormat, SceneArgs, SynthCommand};
 use crate::error::{CliError, Result};
-use crate::io::{check_finite, describe, json_text, load, to_csv};
+use crate::io::{check_finite, describe, json_text, length_unit, load, to_csv};
 
 /// A CSV writer's failure: a failed write (a closed pipe) is the output's.
 fn csv_failure(e: csv::Error) -> CliError {
@@ -63,13 +63,17 @@ pub(crate) fn sweep(
         )));
     }
     let mut k = load(args)?;
+    let dead_points = dead_points(&k);
     if format == Format::Csv {
-        return sweep_csv(&mut k, steps, out).map_err(|f| match f {
+        sweep_csv(&mut k, steps, out).map_err(|f| match f {
             CliError::Solver(e) => describe(args, e),
             other => other,
-        });
+        })?;
+        note_dead_points(dead_points, steps);
+        return Ok(());
     }
     let sw = linkage::sweep::sweep(&mut k, steps).map_err(|e| describe(args, e))?;
+    note_dead_points(dead_points, steps);
     let m = k.mechanism();
     let header = csv_header(m);
     let rows: Vec<Vec<f64>> = sw
@@ -88,6 +92,8 @@ pub(crate) fn sweep(
             "input_speed_rad_s": m.driver.speed_rad_s,
             "range_rad": sw.range,
             "near_singular_inputs_rad": sw.near_singular,
+            "dead_points_rad": dead_points,
+            "rows_next_to_dead_points": dead_points.map_or(Vec::new(), |_| vec![0, steps - 1]),
             "columns": header,
             "rows": rows,
     }))?;
@@ -112,6 +118,32 @@ fn sweep_csv(k: &mut Kinematics, steps: usize, out: &mut dyn Write) -> Result<()
     w.flush()?;
     warn_near_singular(&info.near_singular);
     Ok(())
+}
+
+/// The input's dead points where its range ends (a rocker for input), located: the
+/// ends of the assembly interval the sweep covers; `None` for a full turn.
+fn dead_points(k: &Kinematics) -> Option<[f64; 2]> {
+    let ranges = linkage::analysis::assembly_ranges_of(k);
+    if ranges.full_rotation {
+        return None;
+    }
+    ranges.containing(k.mechanism().driver.start_rad)
+}
+
+/// Says which rows sit next to the input's dead points: the sweep's first and last,
+/// a millionth of the range inside them, where the outputs' rates grow without
+/// bound (a slider's speed of hundreds of m/s there is the dead point's, not the
+/// mechanism's working speed).
+fn note_dead_points(dead_points: Option<[f64; 2]>, steps: usize) {
+    if let Some([a, b]) = dead_points {
+        eprintln!(
+            "note: the input's range ends at dead points, {:.4} deg and {:.4} deg; rows 1 and \
+             {steps} are a millionth of the range inside them, where the outputs' speeds and \
+             accelerations grow without bound",
+            a.to_degrees(),
+            b.to_degrees()
+        );
+    }
 }
 
 fn warn_near_singular(inputs_rad: &[f64]) {
@@ -173,10 +205,18 @@ pub(crate) fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<Str
     }
 }
 
-pub(crate) fn report(args: &SceneArgs) -> Result<String> {
+pub(crate) fn report(args: &SceneArgs, format: ReportFormat) -> Result<String> {
     let mut k = load(args)?;
     let r = linkage::analysis::report(&mut k)?;
-    json_text(&serde_json::to_value(&r)?)
+    let peaks = linkage::analysis::output_peaks(&mut k).map_err(|e| describe(args, e))?;
+    match format {
+        ReportFormat::Json => {
+            let mut value = serde_json::to_value(&r)?;
+            value["output_peaks"] = serde_json::to_value(&peaks)?;
+            json_text(&value)
+        }
+        ReportFormat::Text => Ok(crate::report_text::text(&r, &peaks, length_unit(args)?)),
+    }
 }
 
 pub(crate) fn synth(what: SynthCommand) -> Result<String> {

@@ -28,7 +28,7 @@ fn summary(name: &str, s: &FlywheelSizing) -> String {
         "{name}: flywheel by the energy method at {rpm:.4} rpm ({:.6} rad/s), delta = {}\n\
          mean torque        {:.6e} N·m\n\
          mean power         {:.6e} W\n\
-         peak torque        {:.6e} N·m\n\
+         peak torque        {:.6e} N·m at {:.4} deg\n\
          work surplus range {:.6e} J (largest at {:.4} deg, smallest at {:.4} deg)\n\
          flywheel on crank  {:.6e} kg·m²\n\
          mechanism's reduced inertia {:.6e} to {:.6e} kg·m² (mean {:.6e})\n",
@@ -37,6 +37,7 @@ fn summary(name: &str, s: &FlywheelSizing) -> String {
         s.mean_torque_n_m,
         s.mean_power_w,
         s.peak_torque_n_m,
+        s.peak_torque_at_rad.to_degrees().rem_euclid(360.0),
         s.work_range_j,
         s.angle_of_max_rad.to_degrees(),
         s.angle_of_min_rad.to_degrees(),

@@ -10,6 +10,16 @@ use crate::args::{PathArg, SceneArgs};
 use crate::error::{CliError, Result};
 
 /// The scene `args` names, with their branches and speed, ready to solve.
+/// The scene file's length unit (what its lengths are written in).
+pub(crate) fn length_unit(args: &SceneArgs) -> Result<linkage::scene::LengthUnit> {
+    let text = std::fs::read_to_string(&args.scene).map_err(|source| CliError::ReadScene {
+        path: args.scene.clone(),
+        source,
+    })?;
+    let scene = linkage::SceneFile::parse(&text).map_err(|e| CliError::in_file(&args.scene, e))?;
+    Ok(scene.length_unit)
+}
+
 pub(crate) fn load(args: &SceneArgs) -> Result<Kinematics> {
     let text = std::fs::read_to_string(&args.scene).map_err(|source| CliError::ReadScene {
         path: args.scene.clone(),

@@ -22,7 +22,7 @@ pub fn run(args: &SceneArgs, steps: usize, format: Format) -> Result<String> {
         .to_vec();
     let mut rows: Vec<Vec<Option<f64>>> = Vec::with_capacity(steps);
     let mut worst = 0.0_f64;
-    let mut peak = 0.0_f64;
+    let mut sampled = Vec::with_capacity(steps);
     for i in 0..steps {
         let input = start + std::f64::consts::TAU * i as f64 / steps as f64;
         let s = ks.at(&mut k, input).map_err(|e| describe(args, e))?;
@@ -58,9 +58,18 @@ pub fn run(args: &SceneArgs, steps: usize, format: Format) -> Result<String> {
             )));
         }
         worst = worst.max((s.torque_newton_euler - s.torque_virtual_work).abs());
-        peak = peak.max(s.torque_newton_euler.abs());
+        sampled.push([input, s.torque_newton_euler.abs()]);
         rows.push(row);
     }
+    // The largest torque located between the rows, not read off them.
+    let turn = std::f64::consts::TAU;
+    let peak = linkage::extremum::locate_max(&sampled, Some(turn), |x| {
+        ks.at(&mut k, x).ok().map(|s| s.torque_newton_euler.abs())
+    })
+    .unwrap_or(linkage::extremum::Extreme {
+        angle_rad: start,
+        value: 0.0,
+    });
     match format {
         Format::Csv => {
             let text: Vec<Vec<String>> = rows
@@ -77,8 +86,9 @@ pub fn run(args: &SceneArgs, steps: usize, format: Format) -> Result<String> {
             "scene": k.mechanism().name,
             "columns": header,
             "rows": rows.iter().map(|r| r.iter().map(|v| v.map_or(Value::Null, |v| json!(v))).collect::<Vec<_>>()).collect::<Vec<_>>(),
-            "max_torque_n_m": peak,
-            "torque_agreement_relative": if peak > 0.0 { worst / peak } else { 0.0 },
+            "max_torque_n_m": peak.value,
+            "max_torque_at_rad": peak.angle_rad,
+            "torque_agreement_relative": if peak.value > 0.0 { worst / peak.value } else { 0.0 },
         })),
     }
 }

@@ -16,6 +16,7 @@ mod flywheel;
 mod io;
 mod kinetostatics;
 mod plot;
+mod report_text;
 mod shaking;
 mod simulate;
 mod synth_function;
@@ -60,7 +61,7 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
             input_deg,
             format,
         } => commands::at(&scene, input_deg, format),
-        Command::Report { scene } => commands::report(&scene),
+        Command::Report { scene, format } => commands::report(&scene, format),
         Command::Synth { what } => commands::synth(what),
         Command::Diagram { scene, args } => diagram::run(&scene, &args),
         Command::Cam {

@@ -30,6 +30,7 @@ pub mod force_figure;
 pub mod geometry;
 pub mod label;
 pub mod layout;
+pub mod numbers;
 pub mod placement;
 #[cfg(feature = "png")]
 pub mod png;

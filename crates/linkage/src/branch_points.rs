@@ -62,25 +62,8 @@ pub fn branch_points(k: &mut Kinematics, ranges: &AssemblyRanges) -> Vec<BranchP
 
 /// Minimum of a unimodal `f` on [a, b] to round-off (golden-section search: the
 /// conditioning is V-shaped at a branch point, so no derivative to find roots of).
-fn golden_minimum(mut a: f64, mut b: f64, mut f: impl FnMut(f64) -> f64) -> f64 {
-    let r = 0.5 * (5f64.sqrt() - 1.0);
-    let (mut c, mut d) = (b - r * (b - a), a + r * (b - a));
-    let (mut fc, mut fd) = (f(c), f(d));
-    for _ in 0..200 {
-        if (b - a).abs() <= 4.0 * f64::EPSILON * (1.0 + a.abs()) {
-            break;
-        }
-        if fc <= fd {
-            (b, d, fd) = (d, c, fc);
-            c = b - r * (b - a);
-            fc = f(c);
-        } else {
-            (a, c, fc) = (c, d, fd);
-            d = a + r * (b - a);
-            fd = f(d);
-        }
-    }
-    if fc <= fd { c } else { d }
+fn golden_minimum(a: f64, b: f64, mut f: impl FnMut(f64) -> f64) -> f64 {
+    crate::extremum::golden_max(|x| Some(-f(x)), a, b).map_or(0.5 * (a + b), |e| e.angle_rad)
 }
 
 /// Named joints that coincide (within 1e-6 of the mechanism's size) just beside `x`

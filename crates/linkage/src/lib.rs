@@ -23,6 +23,7 @@ pub mod drawing;
 pub mod dyad;
 pub mod dynamics;
 pub mod error;
+pub mod extremum;
 pub mod force_polygon;
 pub mod ids;
 pub mod instant_centres;

@@ -253,3 +253,32 @@ fn a_crank_turning_clockwise_needs_the_same_flywheel() {
         cw.angle_of_min_rad
     );
 }
+
+/// The peak torque is located, not read off the sizing's panels: against the closed
+/// form's own extreme (a fine grid and a golden-section search on it, written here)
+/// to the rounding of the torque, with its angle. The press's largest |T| is on its
+/// working stroke.
+#[test]
+fn the_peak_torque_is_located_on_the_closed_form() {
+    let sized = size_flywheel(&mut press(), 0.05).expect("sized");
+    let (at_max, max) = extreme(torque, 1.0);
+    let (at_min, min) = extreme(torque, -1.0);
+    let (at, want) = if max.abs() >= min.abs() {
+        (at_max, max)
+    } else {
+        (at_min, min)
+    };
+    close(sized.peak_torque_n_m, want, want.abs(), "peak torque");
+    assert!(
+        same_angle(sized.peak_torque_at_rad, at, 1e-6),
+        "at {} rad, the closed form's at {at}",
+        sized.peak_torque_at_rad
+    );
+    // A sampled peak would have been lower than the located one.
+    let sampled = sized
+        .cycle
+        .iter()
+        .map(|c| c.torque_n_m.abs())
+        .fold(0.0, f64::max);
+    assert!(sampled <= sized.peak_torque_n_m.abs() * (1.0 + 1e-15));
+}

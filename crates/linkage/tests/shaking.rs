@@ -168,3 +168,44 @@ fn the_peak_minimising_counterweight_is_a_minimum_of_the_real_peak() {
         );
     }
 }
+
+/// The peak shaking force is located between the cycle's samples: against the
+/// closed form's largest |F| (a fine grid, then golden-section search on the closed
+/// form, written here) to the rounding of the force, and at its angle.
+#[test]
+fn the_peak_shaking_force_is_located_on_the_closed_form() {
+    let s = shaking(&mut engine(), [0.0, 0.0]).expect("shaking");
+    let size = |phi: f64| {
+        let [x, y] = force(phi, 0.0, 0.0);
+        x.hypot(y)
+    };
+    let n = 20_000;
+    let h = std::f64::consts::TAU / n as f64;
+    let best = (0..n)
+        .map(|i| i as f64 * h)
+        .max_by(|a, b| size(*a).total_cmp(&size(*b)))
+        .expect("grid");
+    let (mut a, mut b) = (best - h, best + h);
+    let g = (5f64.sqrt() - 1.0) / 2.0;
+    while b - a > 1e-13 {
+        let (c, d) = (b - g * (b - a), a + g * (b - a));
+        if size(c) > size(d) {
+            b = d;
+        } else {
+            a = c;
+        }
+    }
+    let at = 0.5 * (a + b);
+    let want = size(at);
+    assert!(
+        (s.peak_force_n - want).abs() <= 1e-12 * want,
+        "{} vs {want}",
+        s.peak_force_n
+    );
+    let d = (s.peak_force_at_rad - at).rem_euclid(std::f64::consts::TAU);
+    assert!(
+        d.min(std::f64::consts::TAU - d) < 1e-6,
+        "at {} vs {at}",
+        s.peak_force_at_rad
+    );
+}

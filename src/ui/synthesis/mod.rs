@@ -124,11 +124,11 @@ fn window(
     if let Some(Chosen::Replace(scene)) = chosen {
         st.edit(SceneEdit::Replace(Box::new(scene)));
     } else if let Some(Chosen::Open(scene)) = chosen {
+        // A design is not an edit: it opens as it came out of the synthesis (whose
+        // window keeps the inputs that make it again), so it asks nothing when the
+        // user goes on to another scene.
         match Session::open_scene(SceneSource::File("synthesized.ron".into()), scene) {
-            Ok(mut session) => {
-                session.mark_unsaved();
-                st.open(session);
-            }
+            Ok(session) => st.open(session),
             Err(e) => view.result = Some(Err(SynthError::DoesNotSolve(e))),
         }
     }

@@ -7,6 +7,7 @@ use linkage::assembly::AssemblyRanges;
 use linkage::dyad::{DyadLabel, Shortfall};
 use linkage::error::AssemblyFailure;
 use linkage::scene::LengthUnit;
+pub use linkage_diagram::numbers::significant;
 
 /// A length given in metres, in `unit` with four significant digits.
 pub fn length(m: f64, unit: LengthUnit) -> String {
@@ -20,20 +21,6 @@ pub fn unit_label_of(unit: linkage::scene::LengthUnit) -> &'static str {
     match unit {
         LengthUnit::Metre => "m",
         LengthUnit::Millimetre => "mm",
-    }
-}
-
-/// `v` to `digits` significant digits, without trailing zeros.
-pub fn significant(v: f64, digits: i32) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return format!("{v}");
-    }
-    let decimals = (digits - 1 - v.abs().log10().floor() as i32).max(0) as usize;
-    let t = format!("{v:.decimals$}");
-    if t.contains('.') {
-        t.trim_end_matches('0').trim_end_matches('.').to_owned()
-    } else {
-        t
     }
 }
 

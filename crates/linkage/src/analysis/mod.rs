@@ -6,6 +6,7 @@
 mod grashof;
 mod limits;
 mod outputs;
+mod peaks;
 mod ranges;
 mod report;
 mod time_ratio;
@@ -17,6 +18,7 @@ pub use crate::assembly::AssemblyRanges;
 pub use grashof::{Grashof, GrashofClass, grashof};
 pub use limits::{Extreme, LimitPosition, limit_positions};
 pub use outputs::{Output, outputs};
+pub use peaks::{OutputPeaks, Peak, output_peaks};
 pub use ranges::{assembly_ranges_of, sweep_range};
 pub use report::{Report, report};
 pub use time_ratio::{Stroke, TimeRatioNote, time_ratio};

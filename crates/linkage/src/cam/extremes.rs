@@ -9,14 +9,7 @@ use serde::Serialize;
 
 use super::disc::{CamPoint, DiscCam};
 
-/// A value and the cam angle where it is.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Extreme {
-    /// Cam angle, rad.
-    pub angle_rad: f64,
-    /// The value there.
-    pub value: f64,
-}
+pub use crate::extremum::Extreme;
 
 /// A cam's extremes over the turn.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -36,43 +29,18 @@ pub struct CamExtremes {
 const SCAN: usize = 256;
 
 /// The θ in [a, b] where `f` is largest, and its value: the best of a scan, then a
-/// golden-section search between its neighbours.
+/// golden-section search between its neighbours ([`crate::extremum`]).
 pub(super) fn largest(f: &dyn Fn(f64) -> f64, a: f64, b: f64) -> Extreme {
-    let at = |i: usize| a + (b - a) * i as f64 / SCAN as f64;
-    let best = (0..=SCAN)
-        .max_by(|&i, &k| f(at(i)).total_cmp(&f(at(k))))
-        .unwrap_or(0);
-    let (mut lo, mut hi) = (at(best.saturating_sub(1)), at((best + 1).min(SCAN)));
-    let g = 0.5 * (5f64.sqrt() - 1.0);
-    let (mut x1, mut x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    while hi - lo > 1e-13 * (b - a).abs().max(1.0) {
-        if f1 < f2 {
-            lo = x1;
-            (x1, f1) = (x2, f2);
-            x2 = lo + g * (hi - lo);
-            f2 = f(x2);
-        } else {
-            hi = x2;
-            (x2, f2) = (x1, f1);
-            x1 = hi - g * (hi - lo);
-            f1 = f(x1);
-        }
-    }
-    // The scan's best sample stands if the search found nothing larger (a maximum
-    // at a segment's end).
-    let (x, v) = if f1 >= f2 { (x1, f1) } else { (x2, f2) };
-    if v >= f(at(best)) {
-        Extreme {
-            angle_rad: x,
-            value: v,
-        }
-    } else {
-        Extreme {
-            angle_rad: at(best),
-            value: f(at(best)),
-        }
-    }
+    let samples: Vec<[f64; 2]> = (0..=SCAN)
+        .map(|i| {
+            let x = a + (b - a) * i as f64 / SCAN as f64;
+            [x, f(x)]
+        })
+        .collect();
+    crate::extremum::locate_max(&samples, None, |x| Some(f(x))).unwrap_or(Extreme {
+        angle_rad: a,
+        value: f(a),
+    })
 }
 
 impl DiscCam {

@@ -16,6 +16,7 @@ use serde::Serialize;
 use super::gauss;
 use super::torque::{CrankLoad, CrankTorque, full_turn};
 use crate::error::{LinkageError, Result};
+use crate::extremum::{Extreme, locate_max};
 use crate::roots_util::refine;
 use crate::solve::Kinematics;
 
@@ -37,8 +38,11 @@ pub struct FlywheelSizing {
     pub mean_torque_n_m: f64,
     /// Mean power, W.
     pub mean_power_w: f64,
-    /// The torque of largest magnitude the load asks for, N·m.
+    /// The torque of largest magnitude the load asks for, N·m (located, not
+    /// sampled: [`crate::extremum`]).
     pub peak_torque_n_m: f64,
+    /// The crank angle where it is, rad.
+    pub peak_torque_at_rad: f64,
     /// Range of the work surplus ΔW_max = W_max − W_min, J.
     pub work_range_j: f64,
     /// Crank angle of the largest surplus (the fastest point), rad.
@@ -118,6 +122,7 @@ pub fn size_flywheel(k: &mut Kinematics, delta: f64) -> Result<FlywheelSizing> {
     let (cycle, surplus_at_ends) = cycle_points(&panels, start + turn, mean_torque);
     let (max, min) = extremes(&mut crank, &rule, &panels, &surplus_at_ends, mean_torque)?;
     let work_range_j = max.1 - min.1;
+    let peak = peak_torque(&mut crank, &cycle, turn);
     let inertia = InertiaRange {
         min: panels
             .iter()
@@ -131,11 +136,8 @@ pub fn size_flywheel(k: &mut Kinematics, delta: f64) -> Result<FlywheelSizing> {
         delta,
         mean_torque_n_m: mean_torque,
         mean_power_w: mean_torque * w,
-        peak_torque_n_m: cycle
-            .iter()
-            .map(|c| c.torque_n_m)
-            .max_by(|a, b| a.abs().total_cmp(&b.abs()))
-            .unwrap_or(0.0),
+        peak_torque_n_m: peak.value,
+        peak_torque_at_rad: peak.angle_rad,
         work_range_j,
         angle_of_max_rad: max.0,
         surplus_max_j: max.1,
@@ -243,6 +245,33 @@ fn cycle_points(panels: &[Panel], end: f64, mean_torque: f64) -> (Vec<CyclePoint
         at_ends.push(surplus);
     }
     (points, at_ends)
+}
+
+/// The torque of largest magnitude over the turn, signed, and where: the panels'
+/// starts bracket it, a golden-section search on the torque locates it.
+fn peak_torque(crank: &mut CrankTorque<'_>, cycle: &[CyclePoint], turn: f64) -> Extreme {
+    // Ascending angle whichever way the crank turns.
+    let mut samples: Vec<[f64; 2]> = cycle
+        .iter()
+        .take(cycle.len().saturating_sub(1))
+        .map(|c| [c.angle_rad, c.torque_n_m.abs()])
+        .collect();
+    samples.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    let located = locate_max(&samples, Some(turn.abs()), |x| {
+        crank.at(x).ok().map(|l| l.torque_n_m.abs())
+    });
+    let Some(at) = located else {
+        return Extreme {
+            angle_rad: 0.0,
+            value: 0.0,
+        };
+    };
+    // Its sign: the torque's own there.
+    let signed = crank.at(at.angle_rad).map_or(at.value, |l| l.torque_n_m);
+    Extreme {
+        angle_rad: at.angle_rad,
+        value: signed,
+    }
 }
 
 /// The largest and smallest surplus (angle, J): at a root of T − T_mean inside a panel,

@@ -14,6 +14,7 @@ use serde::Serialize;
 use super::torque::full_turn;
 use crate::dynamics::Load;
 use crate::error::Result;
+use crate::extremum::{Extreme, locate_max};
 use crate::ids::LinkId;
 use crate::kinetostatics::{KinetostaticState, Kinetostatics};
 use crate::model::Mechanism;
@@ -41,12 +42,16 @@ pub struct ShakingPoint {
 pub struct Shaking {
     /// The point moments are taken about, m.
     pub about_m: [f64; 2],
-    /// Largest force magnitude, N.
+    /// Largest force magnitude, N (located, not sampled: [`crate::extremum`]).
     pub peak_force_n: f64,
+    /// The crank angle where it is, rad.
+    pub peak_force_at_rad: f64,
     /// Root mean square of the force magnitude over the crank angle, N.
     pub rms_force_n: f64,
-    /// Largest moment magnitude, N·m.
+    /// Largest moment magnitude, N·m (located).
     pub peak_moment_n_m: f64,
+    /// The crank angle where it is, rad.
+    pub peak_moment_at_rad: f64,
     /// The cycle.
     pub cycle: Vec<ShakingPoint>,
 }
@@ -111,27 +116,47 @@ pub fn shaking(k: &mut Kinematics, about: [f64; 2]) -> Result<Shaking> {
         k.mechanism().driver.speed_rad_s,
     );
     let point = Vec2::new(about[0], about[1]);
-    let mut cycle = Vec::with_capacity(SHAKING_SAMPLES);
-    for i in 0..SHAKING_SAMPLES {
-        let angle = start + TAU.copysign(w) * i as f64 / SHAKING_SAMPLES as f64;
+    let mut at = |angle: f64| -> Result<ShakingPoint> {
         let state = ks.at(k, angle)?;
         let sol = ks.solution();
         let applied = ks.forces().applied_loads(sol);
         let (f, m) = on_frame(k.mechanism(), sol, &state, &applied, point);
-        cycle.push(ShakingPoint {
+        Ok(ShakingPoint {
             angle_rad: angle,
             force_n: [f.x, f.y],
             moment_n_m: m,
-        });
-    }
+        })
+    };
+    let cycle = (0..SHAKING_SAMPLES)
+        .map(|i| at(start + TAU.copysign(w) * i as f64 / SHAKING_SAMPLES as f64))
+        .collect::<Result<Vec<_>>>()?;
     let magnitude = |p: &ShakingPoint| p.force_n[0].hypot(p.force_n[1]);
+    let force = peak(&cycle, magnitude, |x| at(x).ok().as_ref().map(magnitude));
+    let couple = |p: &ShakingPoint| p.moment_n_m.abs();
+    let moment = peak(&cycle, couple, |x| at(x).ok().as_ref().map(couple));
     Ok(Shaking {
         about_m: about,
-        peak_force_n: cycle.iter().map(magnitude).fold(0.0, f64::max),
+        peak_force_n: force.value,
+        peak_force_at_rad: force.angle_rad,
         rms_force_n: (cycle.iter().map(|p| magnitude(p).powi(2)).sum::<f64>() / cycle.len() as f64)
             .sqrt(),
-        peak_moment_n_m: cycle.iter().map(|p| p.moment_n_m.abs()).fold(0.0, f64::max),
+        peak_moment_n_m: moment.value,
+        peak_moment_at_rad: moment.angle_rad,
         cycle,
+    })
+}
+
+/// The largest `size` over the turn: the cycle's samples bracket it, `at` locates it.
+fn peak(
+    cycle: &[ShakingPoint],
+    size: impl Fn(&ShakingPoint) -> f64,
+    at: impl FnMut(f64) -> Option<f64>,
+) -> Extreme {
+    let mut samples: Vec<[f64; 2]> = cycle.iter().map(|p| [p.angle_rad, size(p)]).collect();
+    samples.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    locate_max(&samples, Some(TAU), at).unwrap_or(Extreme {
+        angle_rad: 0.0,
+        value: 0.0,
     })
 }
 

@@ -1,0 +1,143 @@
+//! Where a joint's name goes in the mechanism view: beside its pin, on the side
+//! where it covers nothing. Each of eight places around the pin is scored by what
+//! it would cover (another joint's pin, a link, a velocity or acceleration arrow, a
+//! name already placed) and the clearest is taken; ties keep the textbook's place,
+//! above and to the right. Before, every name sat above and to the right, and at
+//! 60° on the die cutter "A" covered B's pin.
+
+use eframe::egui::{Pos2, Rect, Vec2, pos2, vec2};
+
+/// What a name must keep clear of, in screen points.
+#[derive(Clone, Debug, Default)]
+pub struct Obstacles {
+    /// Pins (their centres): a name never covers one.
+    pub pins: Vec<Pos2>,
+    /// Links and arrows, as segments: a name avoids crossing them.
+    pub segments: Vec<[Pos2; 2]>,
+    /// Names already placed.
+    pub names: Vec<Rect>,
+}
+
+/// A pin's drawn radius with a margin, points: a name keeps this far from any pin's
+/// centre.
+pub const PIN_CLEARANCE: f32 = 9.0;
+/// Half a link's drawn width with a margin, points: a name keeps this far from a
+/// link's centre line.
+const LINK_HALF_WIDTH: f32 = 6.0;
+/// The gap between a pin and its own name, points.
+const GAP: f32 = 4.0;
+
+/// The eight places around a pin, the textbook's first (above right).
+const PLACES: [(f32, f32); 8] = [
+    (1.0, -1.0),
+    (1.0, 1.0),
+    (-1.0, -1.0),
+    (-1.0, 1.0),
+    (0.0, -1.0),
+    (1.0, 0.0),
+    (0.0, 1.0),
+    (-1.0, 0.0),
+];
+
+/// The rectangle for a name of `size` beside the pin at `pin`, where it covers the
+/// least of `obstacles` (the pin itself excluded).
+pub fn place(pin: Pos2, size: Vec2, obstacles: &Obstacles) -> Rect {
+    let candidates = PLACES.iter().map(|&(dx, dy)| candidate(pin, size, dx, dy));
+    let mut best = None;
+    for (order, rect) in candidates.enumerate() {
+        let cost = cost(rect, pin, obstacles) + order as f32 * 0.01;
+        if best.is_none_or(|(c, _)| cost < c) {
+            best = Some((cost, rect));
+        }
+    }
+    best.map_or_else(|| candidate(pin, size, 1.0, -1.0), |(_, r)| r)
+}
+
+/// The name's rectangle in direction (`dx`, `dy`) from the pin, clear of its disc.
+fn candidate(pin: Pos2, size: Vec2, dx: f32, dy: f32) -> Rect {
+    let reach = PIN_CLEARANCE + GAP;
+    // The corner (or edge midpoint) nearest the pin sits `reach` away from it.
+    let anchor = pin + vec2(dx, dy) * reach;
+    let min = pos2(
+        match dx {
+            d if d > 0.0 => anchor.x,
+            d if d < 0.0 => anchor.x - size.x,
+            _ => anchor.x - size.x / 2.0,
+        },
+        match dy {
+            d if d > 0.0 => anchor.y,
+            d if d < 0.0 => anchor.y - size.y,
+            _ => anchor.y - size.y / 2.0,
+        },
+    );
+    Rect::from_min_size(min, size)
+}
+
+/// What a name at `rect` would cover: a pin or a name counts most, a segment less.
+fn cost(rect: Rect, own: Pos2, obstacles: &Obstacles) -> f32 {
+    let near = rect.expand(PIN_CLEARANCE);
+    let pins = obstacles
+        .pins
+        .iter()
+        .filter(|p| p.distance(own) > 0.5 && near.contains(**p))
+        .count();
+    let names = obstacles
+        .names
+        .iter()
+        .filter(|n| n.intersects(rect.expand(1.0)))
+        .count();
+    let segments = obstacles
+        .segments
+        .iter()
+        .filter(|&&[a, b]| crosses(rect.expand(LINK_HALF_WIDTH), a, b))
+        .count();
+    100.0 * (pins + names) as f32 + 10.0 * segments as f32
+}
+
+/// Whether the segment from `a` to `b` passes through `rect` (sampled finely
+/// enough for names a few points high).
+fn crosses(rect: Rect, a: Pos2, b: Pos2) -> bool {
+    let steps = ((b - a).length() / 3.0).ceil().clamp(1.0, 400.0) as usize;
+    (0..=steps).any(|k| rect.contains(a.lerp(b, k as f32 / steps as f32)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A pin just above and to the right of another: the name goes elsewhere.
+    #[test]
+    fn a_name_keeps_off_a_neighbouring_pin() {
+        let a = pos2(100.0, 100.0);
+        let b = pos2(114.0, 86.0);
+        let obstacles = Obstacles {
+            pins: vec![a, b],
+            segments: vec![[a, b]],
+            names: Vec::new(),
+        };
+        let rect = place(a, vec2(10.0, 14.0), &obstacles);
+        assert!(!rect.expand(PIN_CLEARANCE).contains(b), "{rect:?}");
+        assert!(rect.center().distance(a) < 40.0, "stays beside its pin");
+    }
+
+    /// With nothing around, the textbook's place: above and to the right.
+    #[test]
+    fn alone_a_name_sits_above_right() {
+        let a = pos2(50.0, 50.0);
+        let rect = place(a, vec2(10.0, 14.0), &Obstacles::default());
+        assert!(rect.min.x > a.x && rect.max.y < a.y, "{rect:?}");
+    }
+
+    /// A link leaving the pin up and to the right: the name takes another side.
+    #[test]
+    fn a_name_avoids_the_links_at_its_pin() {
+        let a = pos2(50.0, 50.0);
+        let obstacles = Obstacles {
+            pins: vec![a],
+            segments: vec![[a, pos2(150.0, -50.0)]],
+            names: Vec::new(),
+        };
+        let rect = place(a, vec2(10.0, 14.0), &obstacles);
+        assert!(!crosses(rect, a, pos2(150.0, -50.0)), "{rect:?}");
+    }
+}

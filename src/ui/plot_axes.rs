@@ -1,0 +1,260 @@
+//! Plots a person can read: round tick values labelled from one end of each axis to
+//! the other (egui_plot's default labels only the ticks it finds room for, and on a
+//! low plot that left one: 0), values in engineering form (a torque in kN·m with
+//! ticks 0, 20, 40, not 0 … 5.172e4 N·m), angles stepped by 15°, 30°, 90°, and the
+//! value under the pointer to four digits. Every tab's plots are made here.
+
+use egui_plot::{AxisHints, GridInput, GridMark, Plot};
+use linkage_diagram::numbers::{Prefix, significant};
+
+/// A plotted quantity's unit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unit {
+    /// An SI unit that takes a prefix (N, N·m, J, W, m/s, m/s²): the plot picks the
+    /// one that suits its values.
+    Si(&'static str),
+    /// A unit written as it is (deg, deg/s, rad/s, the scene's mm or m, kg·m²).
+    Fixed(&'static str),
+    /// A plain number (a ratio, a share, a logarithm).
+    None,
+}
+
+/// An axis: what it shows and in which unit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Axis<'a> {
+    /// What it shows ("input torque", "crank angle").
+    pub name: &'a str,
+    /// Its unit.
+    pub unit: Unit,
+}
+
+impl<'a> Axis<'a> {
+    /// An axis of `name` in `unit`.
+    pub const fn new(name: &'a str, unit: Unit) -> Self {
+        Self { name, unit }
+    }
+}
+
+/// The crank-angle axis most plots share.
+pub const CRANK: Axis<'static> = Axis::new("crank angle", Unit::Fixed("deg"));
+
+/// A series ready to plot: its values scaled to the axis' prefix, and the axis
+/// title with its unit ("input torque (kN·m)").
+#[derive(Clone, Debug, PartialEq)]
+pub struct Series {
+    /// The points, y scaled by the prefix.
+    pub points: Vec<[f64; 2]>,
+    /// The axis title.
+    pub title: String,
+    /// The factor the y values were multiplied by.
+    pub factor: f64,
+}
+
+/// `data` on `axis`: an SI unit takes the prefix that writes the larger of the
+/// middle 96 % of its values between 1 and 1000 (a spike at a dead point does not
+/// choose it).
+pub fn series(axis: Axis<'_>, data: &[[f64; 2]]) -> Series {
+    let prefix = match axis.unit {
+        Unit::Si(_) => {
+            let [lo, hi] = crate::ui::plot_layout::robust_range(data);
+            Prefix::for_magnitude(lo.abs().max(hi.abs()))
+        }
+        _ => Prefix::NONE,
+    };
+    Series {
+        points: data.iter().map(|&[x, y]| [x, y * prefix.factor]).collect(),
+        title: title(axis, prefix),
+        factor: prefix.factor,
+    }
+}
+
+/// An axis title with its unit and prefix.
+pub fn title(axis: Axis<'_>, prefix: Prefix) -> String {
+    match axis.unit {
+        Unit::Si(u) => format!("{} ({})", axis.name, prefix.unit(u)),
+        Unit::Fixed(u) => format!("{} ({u})", axis.name),
+        Unit::None => axis.name.to_owned(),
+    }
+}
+
+/// Whether an axis' unit is an angle (its ticks step by 15°, 30°, 90°…).
+fn is_angle(title: &str) -> bool {
+    title.ends_with("(deg)")
+}
+
+/// About how many ticks an axis gets.
+const TICKS: f64 = 5.0;
+
+/// A round step near `raw`: 1, 2, 2.5 or 5 times a power of ten; for an angle in
+/// degrees from 10° up, a divisor of the turn (15, 30, 45, 60, 90, 180).
+pub fn nice_step(raw: f64, angle: bool) -> f64 {
+    if !(raw.is_finite() && raw > 0.0) {
+        return 1.0;
+    }
+    if angle && (7.5..=180.0).contains(&raw) {
+        let steps = [10.0, 15.0, 30.0, 45.0, 60.0, 90.0, 180.0];
+        return steps
+            .into_iter()
+            .find(|&s| s >= raw * 0.75)
+            .unwrap_or(180.0);
+    }
+    let power = 10f64.powf(raw.log10().floor());
+    let mantissa = raw / power;
+    let nice = [1.0, 2.0, 2.5, 5.0, 10.0]
+        .into_iter()
+        .find(|&m| m >= mantissa * 0.75)
+        .unwrap_or(10.0);
+    nice * power
+}
+
+/// The ticks between `lo` and `hi`: every multiple of a round step, about
+/// [`TICKS`] of them.
+pub fn ticks(lo: f64, hi: f64, angle: bool) -> Vec<GridMark> {
+    let step = nice_step((hi - lo) / TICKS, angle);
+    if !(hi > lo && step > 0.0) || (hi - lo) / step > 100.0 {
+        return Vec::new();
+    }
+    let first = (lo / step).ceil() as i64;
+    let last = (hi / step).floor() as i64;
+    (first..=last)
+        .map(|k| GridMark {
+            value: k as f64 * step,
+            step_size: step,
+        })
+        .collect()
+}
+
+/// A tick's value with the decimals its step needs (none for 20, one for 2.5).
+pub fn tick_text(mark: GridMark) -> String {
+    let step = mark.step_size;
+    let decimals = if step > 0.0 && step.is_finite() {
+        let d = (-step.log10().floor()).max(0.0) as usize;
+        // 2.5, 0.25: one more digit than the power of ten.
+        if ((step / 10f64.powf(step.log10().floor())) - 2.5).abs() < 1e-9 {
+            d + 1
+        } else {
+            d
+        }
+    } else {
+        0
+    };
+    let text = format!("{:.*}", decimals, mark.value);
+    if text
+        .trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.')
+    {
+        "0".into()
+    } else {
+        text
+    }
+}
+
+fn grid(input: GridInput, angle: bool) -> Vec<GridMark> {
+    ticks(input.bounds.0, input.bounds.1, angle)
+}
+
+/// A plot `height` high, keyed by `id`, with the readable axes: its titles, round
+/// ticks labelled from end to end, the value under the pointer to four digits.
+pub fn plot<'a>(
+    id: impl std::hash::Hash + std::fmt::Debug,
+    height: f32,
+    x_title: &str,
+    y_title: &str,
+) -> Plot<'a> {
+    let (x_angle, y_angle) = (is_angle(x_title), is_angle(y_title));
+    let axis = |hints: AxisHints<'a>, title: &str| {
+        hints
+            .label(title.to_owned())
+            .formatter(|mark, _| tick_text(mark))
+    };
+    let (x_name, y_name) = (x_title.to_owned(), y_title.to_owned());
+    Plot::new(id)
+        .height(height)
+        .allow_scroll(false)
+        .x_grid_spacer(move |i| grid(i, x_angle))
+        .y_grid_spacer(move |i| grid(i, y_angle))
+        .custom_x_axes(vec![
+            axis(AxisHints::new_x(), x_title).label_spacing(28.0..=40.0),
+        ])
+        .custom_y_axes(vec![
+            axis(AxisHints::new_y(), y_title).label_spacing(12.0..=18.0),
+        ])
+        .label_formatter(move |hover| {
+            let p = pointer(hover);
+            Some(format!(
+                "{x_name} {}\n{y_name} {}",
+                significant(p.x, 4),
+                significant(p.y, 4)
+            ))
+        })
+}
+
+/// Where the pointer is over the plot.
+fn pointer(hover: &egui_plot::HoverPosition<'_>) -> egui_plot::PlotPoint {
+    match hover {
+        egui_plot::HoverPosition::NearDataPoint { position, .. }
+        | egui_plot::HoverPosition::Elsewhere { position } => *position,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Whatever a plot's range, its ticks are round, there are three to seven of
+    /// them, and the first and last lie within a step of the range's ends: an axis
+    /// is labelled from end to end.
+    #[test]
+    fn ticks_are_round_and_reach_both_ends_of_any_range() {
+        for (lo, hi) in [
+            (-6_000.0, 58_000.0),
+            (0.0, 1.0),
+            (-0.0031, 0.0042),
+            (117.0, 152.0),
+            (1e5, 1e5 + 3.0),
+            (-120.0, 7_000.0),
+        ] {
+            let marks = ticks(lo, hi, false);
+            assert!((3..=7).contains(&marks.len()), "{lo}..{hi}: {marks:?}");
+            let step = marks[0].step_size;
+            assert!(marks[0].value - lo <= step, "{lo}..{hi}: first {marks:?}");
+            assert!(hi - marks[marks.len() - 1].value <= step, "{lo}..{hi}");
+            let mantissa = step / 10f64.powf(step.log10().floor());
+            assert!(
+                [1.0, 2.0, 2.5, 5.0]
+                    .iter()
+                    .any(|m| (m - mantissa).abs() < 1e-9),
+                "{step}"
+            );
+        }
+    }
+
+    #[test]
+    fn a_turn_is_ticked_in_divisors_of_the_turn() {
+        let steps: Vec<f64> = ticks(0.0, 360.0, true).iter().map(|m| m.value).collect();
+        assert_eq!(steps, [0.0, 90.0, 180.0, 270.0, 360.0]);
+        let marks = ticks(34.3, 117.7, true);
+        assert_eq!(marks[0].step_size, 15.0);
+    }
+
+    #[test]
+    fn tick_text_has_the_decimals_its_step_needs() {
+        let mark = |value, step_size| GridMark { value, step_size };
+        assert_eq!(tick_text(mark(20_000.0, 10_000.0)), "20000");
+        assert_eq!(tick_text(mark(2.5, 2.5)), "2.5");
+        assert_eq!(tick_text(mark(0.75, 0.25)), "0.75");
+        assert_eq!(tick_text(mark(-1e-17, 0.1)), "0");
+    }
+
+    /// The die cutter's torque reads in kN·m, a crank angle stays in degrees.
+    #[test]
+    fn a_torque_takes_its_prefix_and_an_angle_none() {
+        let torque = [[0.0, -6_000.0], [90.0, 51_720.0], [180.0, 100.0]];
+        let s = series(Axis::new("input torque", Unit::Si("N·m")), &torque);
+        assert_eq!(s.title, "input torque (kN·m)");
+        assert!((s.points[1][1] - 51.72).abs() < 1e-12);
+        let s = series(CRANK, &torque);
+        assert_eq!(s.title, "crank angle (deg)");
+    }
+}
