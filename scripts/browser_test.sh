@@ -50,6 +50,11 @@ for build in webgl2 webgpu; do
     node tests/browser/links_and_drops.mjs "http://127.0.0.1:$port/" || status=1
 done
 # Layout and touch are the same code in both builds, and the WebGPU build draws
-# through SwiftShader's Vulkan at a fifth of the speed: the devices run once.
+# through SwiftShader's Vulkan at a fifth of the speed: the devices and the laptop
+# run once. Their screenshots of every scene go to SCREENSHOT_DIR, to be looked at.
+export SCREENSHOT_DIR="${SCREENSHOT_DIR:-$target_dir/browser-screens}"
+mkdir -p "$SCREENSHOT_DIR"
 LINKAGE_BUILD=webgl2 node tests/browser/every_device.mjs "http://127.0.0.1:$port/" || status=1
+LINKAGE_BUILD=webgl2 node tests/browser/laptop.mjs "http://127.0.0.1:$port/" || status=1
+echo "== screenshots in $SCREENSHOT_DIR"
 exit $status

@@ -235,7 +235,9 @@ impl LinkageApp {
                 .size_range(limits.range)
         };
         let shown = pane.show(ui, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| contents(ui, &mut self.state));
+            // Both ways: a row wider than the pane (a cam's table) scrolls inside it
+            // rather than widening it past its limit, off the window and under the view.
+            egui::ScrollArea::both().show(ui, |ui| contents(ui, &mut self.state));
         });
         self.state
             .controls

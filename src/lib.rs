@@ -22,6 +22,17 @@ pub fn controls_json() -> String {
     web::controls_json()
 }
 
+/// The CPU of a length edit of the shipped scene `key`, measured here in the page
+/// (the median of repeated edits, valid and refused, ms) as JSON, for the browser
+/// test (exported by the binary as `linkage_lab_edit_cpu`); `null` for no such scene.
+#[cfg(target_arch = "wasm32")]
+pub fn edit_cpu_json(key: &str) -> String {
+    let cpu = catalog::builtin(key)
+        .and_then(|b| linkage::SceneFile::parse(b.text).ok())
+        .and_then(|scene| session::edit_cost::edit_cpu(&scene));
+    serde_json::to_string(&cpu).unwrap_or_else(|_| "null".into())
+}
+
 pub use app::LinkageApp;
 pub use state::AppState;
 // The model lives in its own crate (no GUI); the app and its tests reach it here too.

@@ -59,3 +59,11 @@ fn main() {
 pub fn linkage_lab_controls() -> String {
     linkage_lab::controls_json()
 }
+
+/// The browser test's hook: the CPU of a length edit of the shipped scene `key`,
+/// measured in the page (`window.wasmBindings.linkage_lab_edit_cpu(key)`).
+#[cfg(target_arch = "wasm32")]
+#[wasm_bindgen::prelude::wasm_bindgen]
+pub fn linkage_lab_edit_cpu(key: String) -> String {
+    linkage_lab::edit_cpu_json(&key)
+}

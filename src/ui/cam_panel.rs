@@ -16,7 +16,7 @@ use crate::session::cam_edit::CamEdit;
 use crate::session::words::length;
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
-use crate::ui::number_field::{NumberSpec, boxed};
+use crate::ui::number_field::{NumberSpec, boxed, cell};
 
 /// Red, for a figure past its limit.
 const PAST: egui::Color32 = egui::Color32::from_rgb(220, 70, 60);
@@ -67,7 +67,7 @@ fn segments(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJointSpe
                 let room = deg + spec.segments[(segment + 1) % n].angle_deg();
                 let label = format!("segment {} angle (deg)", segment + 1);
                 let spec = NumberSpec::new(&label, "°", 0.0..=room);
-                let (r, typed) = boxed(ui, ("cam segment", cam, segment), &spec, deg);
+                let (r, typed) = cell(ui, ("cam segment", cam, segment), &spec, deg);
                 let r = r.on_hover_text("the next segment gives or takes the difference");
                 st.controls.note(ui, ControlKind::Cam, &label, &r);
                 if let Some(deg) = typed.value() {

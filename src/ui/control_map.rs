@@ -59,6 +59,9 @@ pub enum ControlKind {
     PlotTab,
     /// "Reset layout": the panes back to their default sizes.
     ResetLayout,
+    /// A section of a pane that opens and closes (the polygons' vector equations,
+    /// the construction).
+    Section,
     /// A pane of the desktop arrangement (controls, polygons, plots) or the
     /// sheet of the compact ones, by its rectangle: its edge is what a user drags.
     Pane,

@@ -361,19 +361,44 @@ fn refusal_line(ui: &mut egui::Ui, row: egui::Id, spec: &NumberSpec<'_>, value: 
     }
 }
 
-/// A box alone, with no slider (the cam panel's angles, the drawing's values): the
-/// same typing, refusal and stable id as a row's. Returns the box's response.
+/// A box alone, with no slider (the cam panel's lift and roller): the same typing,
+/// refusal and stable id as a row's. Returns the box's response.
 pub fn boxed(
     ui: &mut egui::Ui,
     key: impl std::hash::Hash + std::fmt::Debug,
     spec: &NumberSpec<'_>,
     value: f64,
 ) -> (egui::Response, NumberInput) {
+    boxed_labelled(ui, key, spec, value, true)
+}
+
+/// A box in a table's cell, its row naming it (the cam's segments): the label is
+/// the box's accessible name only.
+pub fn cell(
+    ui: &mut egui::Ui,
+    key: impl std::hash::Hash + std::fmt::Debug,
+    spec: &NumberSpec<'_>,
+    value: f64,
+) -> (egui::Response, NumberInput) {
+    boxed_labelled(ui, key, spec, value, false)
+}
+
+fn boxed_labelled(
+    ui: &mut egui::Ui,
+    key: impl std::hash::Hash + std::fmt::Debug,
+    spec: &NumberSpec<'_>,
+    value: f64,
+    labelled: bool,
+) -> (egui::Response, NumberInput) {
     ui.push_id(key, |ui| {
         let row = ui.scope_id();
         let inner = ui.horizontal(|ui| {
             let typed = number_box(ui, row, spec, value);
-            ui.label(spec.label);
+            if labelled {
+                ui.label(spec.label);
+            } else if !spec.unit.is_empty() {
+                ui.label(spec.unit);
+            }
             typed
         });
         refusal_line(ui, row, spec, value);

@@ -140,7 +140,7 @@ impl PlotsPanel {
         self.tab_row(ui, st);
         // The plots scroll inside the pane below the tab row, which stays in view:
         // however many plots a tab holds, the pane keeps its size.
-        egui::ScrollArea::vertical()
+        egui::ScrollArea::both()
             .id_salt("plots")
             .auto_shrink(false)
             .show(ui, |ui| self.tab_body(ui, &st.session));

@@ -17,6 +17,23 @@ use crate::ui::construction::ConstructionView;
 use crate::ui::control_map::ControlKind;
 use crate::ui::polygon_paint::{INK, Paper, draw, pos};
 
+/// A section header of the pane, where it was drawn.
+struct Section {
+    name: String,
+    rect: egui::Rect,
+    visible: bool,
+}
+
+impl Section {
+    fn of(ui: &egui::Ui, name: String, header: &egui::Response) -> Self {
+        Self {
+            name,
+            rect: header.rect,
+            visible: ui.clip_rect().contains_rect(header.rect),
+        }
+    }
+}
+
 /// An arrow this close to the pointer (points) is the hovered one.
 const HOVER_PX: f32 = 6.0;
 
@@ -59,13 +76,22 @@ impl PolygonPane {
         } else {
             ui.available_height() - 2.0 * ui.spacing().interact_size.y - 8.0
         };
-        egui::ScrollArea::vertical()
+        // Both ways: what is wider than the pane (a long section title at its least
+        // width) scrolls inside it rather than widening it off the window.
+        let sections = egui::ScrollArea::both()
             .auto_shrink([false, true])
-            .show(ui, |ui| self.figures(ui, st, figure_height));
+            .show(ui, |ui| self.figures(ui, st, figure_height))
+            .inner;
+        for s in sections {
+            st.controls
+                .note_rect(ControlKind::Section, &s.name, s.rect, s.visible);
+        }
     }
 
-    /// The figures, their tables, the construction and the force polygons.
-    fn figures(&mut self, ui: &mut egui::Ui, st: &AppState, figure_height: f32) {
+    /// The figures, their tables, the construction and the force polygons; returns
+    /// where each section's header is (for the control map).
+    fn figures(&mut self, ui: &mut egui::Ui, st: &AppState, figure_height: f32) -> Vec<Section> {
+        let mut sections = Vec::new();
         let before = self.hover.take();
         let mut hovered = None;
         let s = &st.session;
@@ -74,23 +100,27 @@ impl PolygonPane {
             let fig = PolygonFigure::of_position(q, s.mechanism(), s.pose(), s.polygons());
             let over_figure = figure(ui, &fig, before.as_ref(), figure_height);
             // A table wider than the pane scrolls sideways instead of widening it.
-            let over_table = egui::CollapsingHeader::new(format!("{}: vector equations", title(q)))
+            let name = format!("{}: vector equations", title(q));
+            let shown = egui::CollapsingHeader::new(&name)
                 .default_open(false)
                 .show(ui, |ui| {
                     egui::ScrollArea::horizontal()
                         .id_salt(("equations", q))
                         .show(ui, |ui| table(ui, s.polygons(), q, before.as_ref()))
                         .inner
-                })
-                .body_returned
-                .flatten();
+                });
+            sections.push(Section::of(ui, name, &shown.header_response));
+            let over_table = shown.body_returned.flatten();
             hovered = hovered.or(over_figure).or(over_table);
         }
         self.hover = hovered;
-        egui::CollapsingHeader::new("Construct an equation step by step")
+        let name = "Construct an equation step by step";
+        let shown = egui::CollapsingHeader::new(name)
             .default_open(false)
             .show(ui, |ui| self.construction.ui(ui, st, figure_height));
+        sections.push(Section::of(ui, name.to_owned(), &shown.header_response));
         crate::ui::force_polygons::section(ui, &st.session, figure_height);
+        sections
     }
 }
 

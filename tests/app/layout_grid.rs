@@ -91,6 +91,21 @@ fn check(h: &Harness<'static, LinkageApp>, size: (f32, f32), scene: &str, action
         window.expand(0.5).contains_rect(view),
         "{at}: {view:?} off screen"
     );
+    // Every pane on screen, and none under the view (a pane whose contents are wider
+    // than it ran off the window's edge and under the view).
+    for pane in entries(h, ControlKind::Pane) {
+        let r = rect(pane.rect);
+        assert!(
+            window.expand(0.5).contains_rect(r),
+            "{at}: the {} pane runs off the window: {r:?}",
+            pane.label
+        );
+        assert!(
+            !r.shrink(1.0).intersects(view),
+            "{at}: the {} pane {r:?} lies under the view {view:?}",
+            pane.label
+        );
+    }
     for kind in [ControlKind::PlotTab, ControlKind::SheetTab] {
         for tab in entries(h, kind) {
             let r = rect(tab.rect);

@@ -24,14 +24,16 @@ pub struct Extreme {
 const GOLDEN: f64 = 0.618_033_988_749_894_8;
 
 /// The largest `f` on `[a, b]` for an `f` with one maximum there, by golden-section
-/// search until the bracket is a few ulps wide; the better end if `f` is largest
-/// there. `None` where `f` has no value.
+/// search until the bracket is √ε of the angle wide: at a smooth maximum `f` moves
+/// by the square of the step, so its value is then found to its rounding (the angle
+/// to about 1e-8 rad). The better end if `f` is largest there; `None` where `f` has no
+/// value.
 pub fn golden_max(mut f: impl FnMut(f64) -> Option<f64>, a: f64, b: f64) -> Option<Extreme> {
     let (mut lo, mut hi) = (a.min(b), a.max(b));
     let (mut x1, mut x2) = (hi - GOLDEN * (hi - lo), lo + GOLDEN * (hi - lo));
     let (mut f1, mut f2) = (f(x1)?, f(x2)?);
     for _ in 0..200 {
-        if hi - lo <= 4.0 * f64::EPSILON * (1.0 + lo.abs().max(hi.abs())) {
+        if hi - lo <= 2.0 * f64::EPSILON.sqrt() * (1.0 + lo.abs().max(hi.abs())) {
             break;
         }
         if f1 < f2 {

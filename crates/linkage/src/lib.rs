@@ -34,7 +34,7 @@ pub mod motion;
 pub mod overflow;
 pub mod polygon;
 pub mod real;
-mod roots_util;
+pub mod roots_util;
 pub mod scene;
 mod scene_cam;
 mod scene_drive;

@@ -6,7 +6,7 @@
 
 /// A root of `f` in `[a, b]` where `f(a)` and `f(b)` differ in sign, to about
 /// 4 ulp of the root; `None` without a sign change or with non-finite values.
-pub(crate) fn refine(a: f64, b: f64, mut f: impl FnMut(f64) -> f64) -> Option<f64> {
+pub fn refine(a: f64, b: f64, mut f: impl FnMut(f64) -> f64) -> Option<f64> {
     let (mut a, mut b) = (a, b);
     let (mut fa, mut fb) = (f(a), f(b));
     if !(fa.is_finite() && fb.is_finite()) || fa * fb > 0.0 {

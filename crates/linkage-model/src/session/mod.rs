@@ -14,6 +14,7 @@ pub mod derived;
 pub mod document;
 pub mod dynamic_run;
 mod edit;
+pub mod edit_cost;
 mod exports;
 pub mod history;
 pub mod limit;

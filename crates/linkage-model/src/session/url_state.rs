@@ -165,6 +165,12 @@ pub fn open(st: &UrlState) -> Result<Session, OpenError> {
         (None, Some(key)) => Session::open_builtin(key)?,
         (None, None) => return Err(OpenError::NoScene),
     };
+    // The edits are made at the address's input: a length taken there may not
+    // assemble at the scene's start (the die cutter as printed's AD at 70 mm at
+    // 40°). The input is set again last, for one the edits first make reachable.
+    if let Some(x) = st.input_deg {
+        s.apply(SceneEdit::Input { deg: x });
+    }
     for point in &st.flips {
         s.apply(SceneEdit::FlipBranch {
             point: point.clone(),
@@ -300,6 +306,38 @@ mod tests {
             (back.input_rad() - s.input_rad()).abs() < 1e-4,
             "{fragment}"
         );
+    }
+
+    /// A length taken at the crank angle in the address, but not at the scene's
+    /// start, reopens: the edits are made at the address's input (the browser test
+    /// found the die cutter as printed's AD at 70 mm at 40° lost).
+    #[test]
+    fn a_length_taken_away_from_the_start_reopens() {
+        let mut s = Session::open_builtin("die_cutter_as_printed").expect("opens");
+        s.apply(SceneEdit::Input { deg: 40.0 });
+        let ad = s
+            .lengths()
+            .iter()
+            .position(|p| p.label == "AD")
+            .expect("AD");
+        let top = 70.0;
+        s.apply(SceneEdit::Length {
+            index: ad,
+            value: top,
+        });
+        assert_eq!(s.message(), None, "taken at 40°");
+        let mut at_start = Session::open_builtin("die_cutter_as_printed").expect("opens");
+        at_start.apply(SceneEdit::Length {
+            index: ad,
+            value: top,
+        });
+        assert!(
+            at_start.message().is_some(),
+            "refused at the start: the case"
+        );
+        let back = open(&decode(&encode(&s))).expect("reopens");
+        assert_eq!(back.scene(), s.scene());
+        assert!((back.input_rad() - s.input_rad()).abs() < 1e-4);
     }
 
     #[test]

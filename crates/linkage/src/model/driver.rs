@@ -78,7 +78,7 @@ pub(super) fn guesses(
     for (name, &(x, y, a)) in &scene.guess {
         let li = names.link("guess", name)?;
         guess[li] = Some((
-            units.point(&format!("guess.{name}"), (x, y))?,
+            units.point(|| format!("guess.{name}"), (x, y))?,
             scene_angle("guess angle", a, units.ang)?,
         ));
     }

@@ -1,7 +1,7 @@
 //! The force elements (springs, dampers, forces, torques, gravity) in SI, each naming
 //! points and links the scene has.
 
-use super::units::{finite, invalid, positive, scene_angle};
+use super::units::{finite, invalid, positive, positive_named, scene_angle};
 use crate::error::{LinkageError, Result};
 use crate::model::problem::SceneProblem;
 use crate::model::{Link, Point};
@@ -38,7 +38,7 @@ pub(super) fn convert_forces(
     for s in &mut out.springs {
         has_point(&s.a, "spring")?;
         has_point(&s.b, "spring")?;
-        positive(&format!("spring {}-{} k_n_per_m", s.a, s.b), s.k_n_per_m)?;
+        positive_named(s.k_n_per_m, || format!("spring {}-{} k_n_per_m", s.a, s.b))?;
         if let FreeLength::Length(l) = &mut s.free_length {
             *l = finite("spring free_length", *l)? * len;
             if *l < 0.0 {

@@ -1,7 +1,7 @@
 //! The links and their points, in SI, before the joints are made: one ground, names
 //! unique and not empty, each link with a point, no two joints of a link at one place.
 
-use super::units::{Units, invalid, positive};
+use super::units::{Units, invalid, positive_named};
 use crate::error::Result;
 use crate::model::problem::SceneProblem;
 use crate::model::{Link, LinkId, Point, PointId};
@@ -50,7 +50,7 @@ pub(super) fn bodies(scene: &SceneFile, units: Units) -> Result<Bodies> {
         }
         let mut link_points = Vec::with_capacity(spec.points.len());
         for (pname, &xy) in &spec.points {
-            let local = units.point(&format!("{}.{}", spec.name, pname), xy)?;
+            let local = units.point(|| format!("{}.{}", spec.name, pname), xy)?;
             // hypot: a coordinate of 1e300 squared would overflow to infinity.
             let reach = local.x.hypot(local.y);
             if reach > b.size_m {
@@ -74,10 +74,10 @@ pub(super) fn bodies(scene: &SceneFile, units: Units) -> Result<Bodies> {
             link_points.push((pi, local));
         }
         if let Some(m) = spec.mass {
-            positive(&format!("{}.mass", spec.name), m)?;
+            positive_named(m, || format!("{}.mass", spec.name))?;
         }
         if let Some(j) = spec.inertia {
-            positive(&format!("{}.inertia", spec.name), j)?;
+            positive_named(j, || format!("{}.inertia", spec.name))?;
         }
         b.links.push(Link {
             name: spec.name.clone(),
@@ -86,7 +86,7 @@ pub(super) fn bodies(scene: &SceneFile, units: Units) -> Result<Bodies> {
             mass_kg: spec.mass,
             centroid_m: spec
                 .centroid
-                .map(|c| units.point(&format!("{}.centroid", spec.name), c))
+                .map(|c| units.point(|| format!("{}.centroid", spec.name), c))
                 .transpose()?,
             inertia_kg_m2: spec.inertia,
         });

@@ -16,11 +16,13 @@ pub(super) struct Units {
 }
 
 impl Units {
-    /// A scene point named `ctx`, in metres.
-    pub(super) fn point(self, ctx: &str, (x, y): (f64, f64)) -> Result<Vec2> {
+    /// A scene point, in metres; `ctx` names it where it is not finite (made only
+    /// then: a scene is built for every edit and a length's limit search builds it
+    /// dozens of times, and its names were a fifth of a build).
+    pub(super) fn point(self, ctx: impl Fn() -> String, (x, y): (f64, f64)) -> Result<Vec2> {
         Ok(Vec2::new(
-            finite(&format!("{ctx}.x"), x)? * self.len,
-            finite(&format!("{ctx}.y"), y)? * self.len,
+            finite_named(x, || format!("{}.x", ctx()))? * self.len,
+            finite_named(y, || format!("{}.y", ctx()))? * self.len,
         ))
     }
 }
@@ -55,6 +57,24 @@ pub(super) fn scene_angle(name: &str, v: f64, rad_per_unit: f64) -> Result<f64> 
                 "must lie within ±{limit:.6} (the scene's angle unit; about 3200 turns), beyond which a double cannot hold the angle to 1e-11 rad: give it within one turn"
             ),
         })
+    }
+}
+
+/// `v` if finite and positive, else the refusal naming it (`name` made only then).
+pub(super) fn positive_named(v: f64, name: impl FnOnce() -> String) -> Result<f64> {
+    if v.is_finite() && v > 0.0 {
+        Ok(v)
+    } else {
+        positive(&name(), v)
+    }
+}
+
+/// `v` if finite, else the refusal naming it (`name` made only then).
+pub(super) fn finite_named(v: f64, name: impl FnOnce() -> String) -> Result<f64> {
+    if v.is_finite() {
+        Ok(v)
+    } else {
+        finite(&name(), v)
     }
 }
 

@@ -7,7 +7,7 @@
 use std::f64::consts::PI;
 
 use super::geometry::{CouplerFourBar, PARAMS};
-use super::shape::{RATIO, SHAPE};
+use super::shape::{POINT_RATIO, RATIO, SHAPE};
 use crate::motion::Vec2;
 
 /// Constraints in normalised units.
@@ -78,8 +78,9 @@ impl Problem {
         match self.encoding {
             Encoding::AnyOrder => self.world_bounds(),
             Encoding::Timed | Encoding::InOrder => {
-                let ratio = RATIO.ln();
-                let mut b = vec![(-ratio, ratio); SHAPE - 1];
+                let (ratio, point) = (RATIO.ln(), POINT_RATIO.ln());
+                let mut b = vec![(-ratio, ratio); SHAPE - 2];
+                b.push((-point, point));
                 b.push((-PI, PI));
                 b.push((-1.0, 1.0));
                 // Where the travel lies in the closing arcs, and (in order) its share

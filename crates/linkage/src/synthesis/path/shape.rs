@@ -18,22 +18,28 @@ use super::geometry::CouplerFourBar;
 use crate::motion::Vec2;
 
 /// Numbers of a shape: ln(ground/crank), ln(coupler/crank), ln(rocker/crank),
-/// ln(|BP|/crank) and the angle of P from B→C.
+/// ln(|BP|/coupler) and the angle of P from B→C. The coupler point is measured
+/// against its own link: a small crank with a point far out on a long coupler (|BP|
+/// fifty cranks long) is then an ordinary shape, not one past the bounds.
 pub const SHAPE: usize = 5;
 
-/// The widest ratio of a link (or of |BP|) to the crank either way: four-bar-rs
-/// searches 1/6 to 6; this is wider.
-pub const RATIO: f64 = 8.0;
+/// The widest ratio of a link to the crank either way: four-bar-rs searches 1/6 to
+/// 6; this is wider, to cranks of a twelfth of the ground.
+pub const RATIO: f64 = 12.0;
+
+/// The widest ratio of |BP| to the coupler either way.
+pub const POINT_RATIO: f64 = 8.0;
 
 /// The unit four-bar of shape `v` (its first [`SHAPE`] numbers) on branch `left`.
 pub fn unit_linkage(v: &[f64], left: bool) -> CouplerFourBar {
     let crank = (-v[0]).exp();
-    let reach = crank * v[3].exp();
+    let coupler = crank * v[1].exp();
+    let reach = coupler * v[3].exp();
     CouplerFourBar {
         a: Vec2::zeros(),
         d: Vec2::new(1.0, 0.0),
         crank,
-        coupler: crank * v[1].exp(),
+        coupler,
         rocker: crank * v[2].exp(),
         point: Vec2::new(reach * v[4].cos(), reach * v[4].sin()),
         c_left_of_bd: left,
