@@ -235,9 +235,10 @@ impl LinkageApp {
                 .size_range(limits.range)
         };
         let shown = pane.show(ui, |ui| {
-            // Both ways: a row wider than the pane (a cam's table) scrolls inside it
-            // rather than widening it past its limit, off the window and under the view.
-            egui::ScrollArea::both().show(ui, |ui| contents(ui, &mut self.state));
+            // Vertically: a row wider than the pane widens it up to its limit, past
+            // which egui clips the left pane at its right edge (a right pane would
+            // run off the window: the polygons scroll both ways).
+            egui::ScrollArea::vertical().show(ui, |ui| contents(ui, &mut self.state));
         });
         self.state
             .controls

@@ -46,8 +46,10 @@ fn kind_name(s: &SegmentSpec) -> &'static str {
     }
 }
 
-/// The table: a row per segment with its law and its angle.
+/// The table: a row per segment with its law and its angle; a refused angle's reason
+/// under it.
 fn segments(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJointSpec) {
+    let mut refusals = Vec::new();
     egui::Grid::new(("cam segments", cam))
         .num_columns(3)
         .striped(true)
@@ -67,7 +69,8 @@ fn segments(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJointSpe
                 let room = deg + spec.segments[(segment + 1) % n].angle_deg();
                 let label = format!("segment {} angle (deg)", segment + 1);
                 let spec = NumberSpec::new(&label, "°", 0.0..=room);
-                let (r, typed) = cell(ui, ("cam segment", cam, segment), &spec, deg);
+                let (r, typed, refused) = cell(ui, ("cam segment", cam, segment), &spec, deg);
+                refusals.extend(refused);
                 let r = r.on_hover_text("the next segment gives or takes the difference");
                 st.controls.note(ui, ControlKind::Cam, &label, &r);
                 if let Some(deg) = typed.value() {
@@ -79,6 +82,9 @@ fn segments(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJointSpe
                 ui.end_row();
             }
         });
+    for words in refusals {
+        ui.colored_label(ui.visuals().warn_fg_color, words);
+    }
 }
 
 /// The law of a rise or return, chosen from every law.

@@ -35,8 +35,8 @@ pub fn motion_plots(ui: &mut egui::Ui, s: &Session) {
     let Some(c) = s.curves().cams.first() else {
         return;
     };
-    // An arm's swing in degrees; a translating follower's lift in the scene's
-    // unit, its velocity, acceleration and jerk in SI with their prefix.
+    // An arm's swing in degrees; a translating follower's lift, velocity,
+    // acceleration and jerk in the scene's length unit.
     let length = s.scene().length_unit;
     let (scale, units) = if c.is_arm {
         (
@@ -49,15 +49,11 @@ pub fn motion_plots(ui: &mut egui::Ui, s: &Session) {
             ],
         )
     } else {
-        (
-            [1.0 / length.to_metres(), 1.0, 1.0, 1.0],
-            [
-                Unit::Fixed(crate::session::unit_label_of(length)),
-                Unit::Si("m/s"),
-                Unit::Si("m/s²"),
-                Unit::Si("m/s³"),
-            ],
-        )
+        let units = match length {
+            linkage::scene::LengthUnit::Millimetre => ["mm", "mm/s", "mm/s²", "mm/s³"],
+            linkage::scene::LengthUnit::Metre => ["m", "m/s", "m/s²", "m/s³"],
+        };
+        ([1.0 / length.to_metres(); 4], units.map(Unit::Fixed))
     };
     let names = ["lift", "velocity", "acceleration", "jerk"];
     let w = c.speed_rad_s;

@@ -197,8 +197,12 @@ fn trim_zeros(text: &str) -> &str {
     }
 }
 
-/// Width of the number box, points.
-const BOX_WIDTH: f32 = 64.0;
+/// Width of the number box: room for a value of [`format_value`]'s longest common
+/// form (`-1234.56`) in the body font, so that no digit is cut (the touch style's
+/// larger font cut "552.41" to "552.4" in a fixed 64 points).
+fn box_width(ui: &egui::Ui) -> f32 {
+    text_width(ui, "-00000.00") + 2.0 * ui.spacing().button_padding.x
+}
 /// Shift-drag moves the value this much slower than a plain drag.
 const FINE: f64 = 0.1;
 
@@ -222,7 +226,8 @@ pub fn slider_row(
         let label_width = text_width(ui, spec.label);
         let room = ui.available_width();
         let spacing = 2.0 * ui.spacing().item_spacing.x;
-        let beside = room >= 90.0 + BOX_WIDTH + label_width + spacing;
+        let number = box_width(ui);
+        let beside = room >= 90.0 + number + label_width + spacing;
         if !beside {
             ui.label(spec.label);
         }
@@ -230,7 +235,7 @@ pub fn slider_row(
         let inner = ui.horizontal(|ui| {
             let label_room = if beside { label_width } else { 0.0 };
             ui.spacing_mut().slider_width =
-                (ui.available_width() - BOX_WIDTH - label_room - spacing).max(60.0);
+                (ui.available_width() - number - label_room - spacing).max(60.0);
             let (slider, dragged) = slider(ui, row, spec, value);
             let (_, typed) = number_box(ui, row, spec, value);
             if beside {
@@ -328,7 +333,7 @@ fn number_box(
         .add(
             egui::TextEdit::singleline(&mut text)
                 .id(id)
-                .desired_width(BOX_WIDTH),
+                .desired_width(box_width(ui)),
         )
         .accessible_name(spec.label);
     if r.gained_focus() {
@@ -356,9 +361,20 @@ fn number_box(
 
 /// The row's last refusal, until the user types into the box again.
 fn refusal_line(ui: &mut egui::Ui, row: egui::Id, spec: &NumberSpec<'_>, value: f64) {
-    if let Some(refusal) = ui.data(|d| d.get_temp::<Refusal>(row)) {
-        ui.colored_label(ui.visuals().warn_fg_color, refusal.words(spec, value));
+    if let Some(words) = refusal_words(ui, row, spec, value) {
+        ui.colored_label(ui.visuals().warn_fg_color, words);
     }
+}
+
+/// The row's last refusal in words, if it has one.
+fn refusal_words(
+    ui: &egui::Ui,
+    row: egui::Id,
+    spec: &NumberSpec<'_>,
+    value: f64,
+) -> Option<String> {
+    ui.data(|d| d.get_temp::<Refusal>(row))
+        .map(|refusal| refusal.words(spec, value))
 }
 
 /// A box alone, with no slider (the cam panel's lift and roller): the same typing,
@@ -369,41 +385,42 @@ pub fn boxed(
     spec: &NumberSpec<'_>,
     value: f64,
 ) -> (egui::Response, NumberInput) {
-    boxed_labelled(ui, key, spec, value, true)
-}
-
-/// A box in a table's cell, its row naming it (the cam's segments): the label is
-/// the box's accessible name only.
-pub fn cell(
-    ui: &mut egui::Ui,
-    key: impl std::hash::Hash + std::fmt::Debug,
-    spec: &NumberSpec<'_>,
-    value: f64,
-) -> (egui::Response, NumberInput) {
-    boxed_labelled(ui, key, spec, value, false)
-}
-
-fn boxed_labelled(
-    ui: &mut egui::Ui,
-    key: impl std::hash::Hash + std::fmt::Debug,
-    spec: &NumberSpec<'_>,
-    value: f64,
-    labelled: bool,
-) -> (egui::Response, NumberInput) {
     ui.push_id(key, |ui| {
         let row = ui.scope_id();
         let inner = ui.horizontal(|ui| {
             let typed = number_box(ui, row, spec, value);
-            if labelled {
-                ui.label(spec.label);
-            } else if !spec.unit.is_empty() {
-                ui.label(spec.unit);
-            }
+            ui.label(spec.label);
             typed
         });
         refusal_line(ui, row, spec, value);
         let (field, typed) = inner.inner;
         (field, typed.unwrap_or(NumberInput::None))
+    })
+    .inner
+}
+
+/// A box in a table's cell, its row naming it (the cam's segments): the label is
+/// the box's accessible name only, and a refusal is returned in words for the
+/// table to show under it (in the cell it would widen the column and run out of
+/// the pane unread).
+pub fn cell(
+    ui: &mut egui::Ui,
+    key: impl std::hash::Hash + std::fmt::Debug,
+    spec: &NumberSpec<'_>,
+    value: f64,
+) -> (egui::Response, NumberInput, Option<String>) {
+    ui.push_id(key, |ui| {
+        let row = ui.scope_id();
+        let inner = ui.horizontal(|ui| {
+            let typed = number_box(ui, row, spec, value);
+            if !spec.unit.is_empty() {
+                ui.label(spec.unit);
+            }
+            typed
+        });
+        let (field, typed) = inner.inner;
+        let refusal = refusal_words(ui, row, spec, value);
+        (field, typed.unwrap_or(NumberInput::None), refusal)
     })
     .inner
 }

@@ -233,7 +233,7 @@ mod tests {
     #[test]
     fn a_turn_is_ticked_in_divisors_of_the_turn() {
         let steps: Vec<f64> = ticks(0.0, 360.0, true).iter().map(|m| m.value).collect();
-        assert_eq!(steps, [0.0, 90.0, 180.0, 270.0, 360.0]);
+        assert_eq!(steps, [0.0, 60.0, 120.0, 180.0, 240.0, 300.0, 360.0]);
         let marks = ticks(34.3, 117.7, true);
         assert_eq!(marks[0].step_size, 15.0);
     }

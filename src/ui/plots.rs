@@ -211,40 +211,55 @@ fn output_plots(ui: &mut egui::Ui, s: &Session) {
     else {
         return;
     };
-    // An angle in degrees; a slider's travel in the scene's own unit (mm scenes
-    // plot in mm), its speed and acceleration in m/s and m/s² with their prefix.
+    // An angle in degrees; a slider's travel, speed and acceleration in the scene's
+    // own length unit (a mm scene plots mm, mm/s and mm/s²), as its lengths are.
+    // Short titles, the textbook's symbols: a low plot holds them whole.
     let unit = s.scene().length_unit;
-    let travel: Vec<[f64; 2]>;
-    let (value, units) = if out.is_angle {
+    let per_m = 1.0 / unit.to_metres();
+    let scaled: Vec<Vec<[f64; 2]>>;
+    let (data, units, symbols) = if out.is_angle {
         (
-            out.value.as_slice(),
             [
-                Unit::Fixed("deg"),
-                Unit::Fixed("deg/s"),
-                Unit::Fixed("deg/s²"),
+                out.value.as_slice(),
+                out.rate.as_slice(),
+                out.acceleration.as_slice(),
             ],
+            ["deg", "deg/s", "deg/s²"],
+            ["θ", "ω", "α"],
         )
     } else {
-        let per_m = 1.0 / unit.to_metres();
-        travel = out.value.iter().map(|&[x, y]| [x, y * per_m]).collect();
+        scaled = [&out.value, &out.rate, &out.acceleration]
+            .iter()
+            .map(|d| d.iter().map(|&[x, y]| [x, y * per_m]).collect())
+            .collect();
+        let units = match unit {
+            linkage::scene::LengthUnit::Millimetre => ["mm", "mm/s", "mm/s²"],
+            linkage::scene::LengthUnit::Metre => ["m", "m/s", "m/s²"],
+        };
         (
-            travel.as_slice(),
             [
-                Unit::Fixed(crate::session::unit_label_of(unit)),
-                Unit::Si("m/s"),
-                Unit::Si("m/s²"),
+                scaled[0].as_slice(),
+                scaled[1].as_slice(),
+                scaled[2].as_slice(),
             ],
+            units,
+            ["s", "v", "a"],
         )
     };
-    let names = [
-        out.name.clone(),
-        format!("{} rate", out.name),
-        format!("{} acceleration", out.name),
-    ];
-    let data = [value, out.rate.as_slice(), out.acceleration.as_slice()];
+    let names: Vec<String> = symbols
+        .iter()
+        .map(|q| format!("{} {q}", out.name))
+        .collect();
     let x = cursor_deg(s);
     let specs: Vec<PlotSpec<'_>> = (0..3)
-        .map(|i| (Axis::new(&names[i], units[i]), CRANK, data[i], Some(x)))
+        .map(|i| {
+            (
+                Axis::new(&names[i], Unit::Fixed(units[i])),
+                CRANK,
+                data[i],
+                Some(x),
+            )
+        })
         .collect();
     row(ui, "output", plot_key(s), &specs);
 }

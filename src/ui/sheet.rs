@@ -73,7 +73,7 @@ fn tabs(ui: &mut egui::Ui, st: &mut AppState, drawing: bool) {
 /// figures fit what the sheet shows of them), the others in the sheet's scroll.
 fn page(ui: &mut egui::Ui, st: &mut AppState, panels: &mut Panels, drawing: bool) {
     let scrolled = |ui: &mut egui::Ui, page: &mut dyn FnMut(&mut egui::Ui)| {
-        egui::ScrollArea::both()
+        egui::ScrollArea::vertical()
             .auto_shrink(false)
             .show(ui, |ui| page(ui));
     };

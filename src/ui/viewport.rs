@@ -8,6 +8,7 @@ use crate::render::Renderer;
 use crate::render::build::{VectorScales, build};
 use crate::render::shape::SharedShapes;
 use crate::render::view::Camera;
+use crate::session::words::length;
 use crate::state::AppState;
 use crate::ui::label_place::{Obstacles, place};
 use crate::ui::point_drag::PointDrag;
@@ -195,6 +196,7 @@ fn point_labels(
             }
         }
     }
+    ground_obstacles(&mut obstacles, st, camera, rect);
     // The arrows at the joints, as the view draws them.
     let layers = st.view.layers;
     for &p in &topology.joint_points {
@@ -229,6 +231,55 @@ fn point_labels(
     placed
 }
 
+/// The frame's symbols as the view draws them (`render::build`): each ground
+/// pivot's support triangle and hatched base below its pin, and each ground guide's
+/// two rails over the slider's travel; a joint's name keeps off them.
+fn ground_obstacles(obstacles: &mut Obstacles, st: &AppState, camera: &Camera, rect: egui::Rect) {
+    let m = st.session.mechanism();
+    let pose = st.session.pose();
+    let pin = 0.024 * m.size_m.max(1e-12);
+    let at = |p: linkage::Vec2| camera.to_screen([p.x, p.y], rect);
+    for r in m
+        .revolutes
+        .iter()
+        .filter(|r| r.a == m.ground || r.b == m.ground)
+    {
+        let c = pose.points[r.point].position;
+        let corner = |dx: f64, dy: f64| at(c + linkage::Vec2::new(dx * pin, dy * pin));
+        let (l, r) = (corner(-2.0, -2.6), corner(2.0, -2.6));
+        // The hatching, half the base's depth below it.
+        let down = corner(0.0, -3.3) - corner(0.0, -2.6);
+        obstacles
+            .segments
+            .extend([[at(c), l], [at(c), r], [l, r], [l + down, r + down]]);
+    }
+    for (i, sl) in m
+        .sliders
+        .iter()
+        .enumerate()
+        .filter(|(_, sl)| sl.guide == m.ground)
+    {
+        let dir = sl.direction(&pose.links);
+        let through = pose.links[sl.guide].world(&sl.through_local);
+        let travel = st
+            .session
+            .curves()
+            .slide_travel_m
+            .get(i)
+            .copied()
+            .flatten()
+            .unwrap_or([pose.slides[i].displacement_m; 2]);
+        let (a, b) = (
+            through + dir * (travel[0] - 4.0 * pin),
+            through + dir * (travel[1] + 4.0 * pin),
+        );
+        let off = linkage::Vec2::new(-dir.y, dir.x) * 1.7 * pin;
+        obstacles
+            .segments
+            .extend([[at(a + off), at(b + off)], [at(a - off), at(b - off)]]);
+    }
+}
+
 /// The legend at the top left (the crank, the time, the vectors' scales, what a drag
 /// does) and a refused edit's message at the bottom left (on a phone or tablet, the
 /// last file action's line too); returns the heights they take at the top and the
@@ -245,10 +296,13 @@ fn legend(
         legend += &format!(", t = {:.3} s", st.session.time_s());
     }
     if st.view.layers.velocities && scales.velocity > 0.0 {
-        legend += &format!("\nv: 1 m/s drawn {:.4} m", scales.velocity);
+        // The arrows' scale in the scene's length unit, as its lengths are written.
+        let drawn = length(scales.velocity, st.session.scene().length_unit);
+        legend += &format!("\nv: 1 m/s drawn as {drawn}");
     }
     if st.view.layers.accelerations && scales.acceleration > 0.0 {
-        legend += &format!("\na: 1 m/s² drawn {:.4} m", scales.acceleration);
+        let drawn = length(scales.acceleration, st.session.scene().length_unit);
+        legend += &format!("\na: 1 m/s² drawn as {drawn}");
     }
     legend += match (st.view.edit_points, st.layout.compact()) {
         (true, _) => "\ndrag a joint to move it (Alt: off the grid), elsewhere to pan",

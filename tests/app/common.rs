@@ -73,14 +73,16 @@ pub fn pointer(h: &mut Harness<'static, LinkageApp>, at: egui::Pos2, pressed: Op
 
 /// A press and a release at `at`, each in its own frame (the pointer moved there
 /// once: a second move between them, even to the same place, loses egui's click on
-/// a menu button).
+/// a menu button), then frames until the app settles: a dynamic run the click
+/// started is waited for by its end (on a busy machine its thread spans more frames
+/// than `run` allows).
 pub fn click(h: &mut Harness<'static, LinkageApp>, at: egui::Pos2) {
     h.event(egui::Event::PointerMoved(at));
     for pressed in [true, false] {
         button(h, at, pressed);
-        h.run();
+        h.step();
     }
-    h.run();
+    settle(h);
 }
 
 /// A click on the widget named `label`, then frames until the app settles.

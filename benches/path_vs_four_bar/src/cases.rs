@@ -100,6 +100,8 @@ pub struct Case {
     pub truth_angles: Vec<f64>,
     /// Whether the targets go once round the whole curve (else over an arc).
     pub whole_turn: bool,
+    /// How well the targets determine the linkage ([`determination`]).
+    pub determination: f64,
 }
 
 /// The lengths (ground 1) and coupler point of a four-bar of `kind`.
@@ -227,11 +229,52 @@ fn travel(m: &CouplerFourBar, n: usize, rng: &mut Rng) -> (Vec<f64>, bool) {
     (angles_over(start, span, n, rng), false)
 }
 
+/// The least [`determination`] of a hard case's targets: below, the targets lie on a
+/// piece of curve so nearly straight that four-bars other than the truth pass within
+/// 1e-6 of them.
+pub const MIN_DETERMINATION: f64 = 0.0;
+
 /// The least crank travel through the targets, rad: over a shorter arc of a rocking
 /// crank the targets lie on a nearly straight piece of curve that many four-bars
 /// pass within 1e-6 of (the fit's Jacobian has singular values down to 1e-8 at the
 /// true linkage): the targets do not determine a linkage.
 pub const MIN_TRAVEL: f64 = 60.0 * PI / 180.0;
+
+/// How well the targets determine their linkage: the smallest singular value of the
+/// fit's Jacobian at the truth over the largest (the nine numbers of the unit
+/// four-bar and each target's crank angle against the targets' coordinates; central
+/// differences). Targets on a nearly straight piece of curve leave a direction in
+/// which many four-bars pass within 1e-6 of them: there the ratio falls to 1e-8.
+pub fn determination(unit: &CouplerFourBar, angles: &[f64]) -> f64 {
+    let n = angles.len();
+    let params = unit.params();
+    let residuals = |x: &[f64]| -> Option<Vec<f64>> {
+        let m = CouplerFourBar::from_params(&x[..9], unit.c_left_of_bd);
+        let mut r = Vec::with_capacity(2 * n);
+        for &theta in &x[9..] {
+            let p = m.point_at(theta)?;
+            r.extend([p.x, p.y]);
+        }
+        Some(r)
+    };
+    let x0: Vec<f64> = params.iter().copied().chain(angles.iter().copied()).collect();
+    let h = 1e-6;
+    let mut jac = nalgebra::DMatrix::<f64>::zeros(2 * n, x0.len());
+    for j in 0..x0.len() {
+        let (mut plus, mut minus) = (x0.clone(), x0.clone());
+        plus[j] += h;
+        minus[j] -= h;
+        let (Some(rp), Some(rm)) = (residuals(&plus), residuals(&minus)) else {
+            return 0.0;
+        };
+        for i in 0..2 * n {
+            jac[(i, j)] = (rp[i] - rm[i]) / (2.0 * h);
+        }
+    }
+    let s = jac.singular_values();
+    let (lo, hi) = s.iter().fold((f64::INFINITY, 0.0f64), |(a, b), &v| (a.min(v), b.max(v)));
+    if hi > 0.0 { lo / hi } else { 0.0 }
+}
 
 /// The targets' size: the diagonal of their bounding box.
 pub fn size(points: &[[f64; 2]]) -> f64 {
@@ -285,6 +328,12 @@ fn draw_case(
         if unit.least_transmission_over(arc.0, arc.1) < 20f64.to_radians() {
             continue;
         }
+        // Targets that do not determine a linkage (a nearly straight piece of
+        // curve): no search can tell the truth from its neighbours there.
+        let determined = determination(&unit, &angles);
+        if kind == Kind::SmallCrankFarPoint && determined < MIN_DETERMINATION {
+            continue;
+        }
         // Place it: a scale from 1 mm to 10 m, any turn, anywhere near the origin.
         let scale = 10f64.powf(rng.uniform(-3.0, 1.0));
         let turn = rng.uniform(-PI, PI);
@@ -327,6 +376,7 @@ fn draw_case(
             truth,
             truth_angles,
             whole_turn,
+            determination: determined,
         };
     }
 }

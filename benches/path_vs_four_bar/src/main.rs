@@ -151,14 +151,20 @@ fn main() {
         if a.dump {
             println!(
                 "{}",
-                serde_json::json!({"targets": c.targets.points_m, "crank_deg": c.targets.crank_deg, "truth": c.truth.params(), "left": c.truth.c_left_of_bd, "angles": c.truth_angles})
+                serde_json::json!({"targets": c.targets.points_m, "crank_deg": c.targets.crank_deg, "truth": c.truth.params(), "left": c.truth.c_left_of_bd, "angles": c.truth_angles, "determination": c.determination})
             );
             continue;
         }
         let o = ours(c, 1);
         if a.seeds > 1 {
             // Other seeds: whether the outcome is the seed's or the targets'.
-            let others = (2..=a.seeds).filter(|&seed| ours(c, seed).met).count();
+            let others = (2..=a.seeds)
+                .filter(|&seed| {
+                    let o = ours(c, seed);
+                    eprintln!("case {i} seed {seed}: met {} in {:.2} s", o.met, o.seconds);
+                    o.met
+                })
+                .count();
             let met_by = others + usize::from(o.met);
             seed_runs.push(met_by);
             println!("case {i}: {met_by}/{} seeds met", a.seeds);

@@ -14,7 +14,7 @@ fn settings(tolerance: f64) -> Settings {
     Settings {
         iterations: 2000,
         cost_floor: (1e-3 * tolerance).powi(2),
-        step: 1e-7,
+        step: 6e-6,
         stall: 0.9,
     }
 }
