@@ -82,6 +82,17 @@ pub(super) fn ground_pivot(push: &mut impl FnMut(Option<Shape>), c: Vec2, pin: f
     }
 }
 
+/// A pin's radius, as a share of the mechanism's size.
+const PIN_SHARE: f64 = 0.024;
+/// A slider block's half length and half width, in pin radii.
+const BLOCK_HALF: [f32; 2] = [2.4, 1.5];
+
+/// How far a slider block reaches from its pin, m (its half diagonal), for a
+/// mechanism `size_m` across: names placed beside a slider go outside it.
+pub fn block_reach_m(size_m: f64) -> f64 {
+    PIN_SHARE * size_m.max(1e-12) * f64::from(BLOCK_HALF[0].hypot(BLOCK_HALF[1]))
+}
+
 /// Fills `out` with the shapes of the session's current pose.
 pub fn build(
     out: &mut Vec<Shape>,
@@ -97,7 +108,7 @@ pub fn build(
         s,
         cam,
         bar: (0.016 * size) as f32,
-        pin: (0.024 * size) as f32,
+        pin: (PIN_SHARE * size) as f32,
     };
     let mut push = |shape: Option<Shape>| out.extend(shape);
     // Ground pivots: a support triangle on a hatched base.
@@ -221,7 +232,7 @@ fn sliders_springs_and_pins(push: &mut impl FnMut(Option<Shape>), d: &Drawn<'_>)
             [c, axis, c],
             0.2 * d.bar,
             colour::BLOCK,
-            [2.4 * pin, 1.5 * pin],
+            BLOCK_HALF.map(|k| k * pin),
         ));
     }
     // Springs: a coil with a fixed number of turns, so it visibly stretches.

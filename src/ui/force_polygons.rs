@@ -40,8 +40,8 @@ fn stages(ui: &mut egui::Ui, session: &Session, fp: &ForcePolygons, figure_heigh
     let m = session.mechanism();
     ui.label(format!(
         "At the scene's crank speed, from the output back to the crank. \
-         Balancing torque M_b = {:.4} N·m.",
-        fp.balancing_torque
+         Balancing torque M_b = {}.",
+        linkage_diagram::numbers::si(fp.balancing_torque, "N·m")
     ));
     for (i, stage) in fp.stages.iter().enumerate() {
         let title = stage_title(stage, m);

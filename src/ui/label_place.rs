@@ -42,7 +42,16 @@ const PLACES: [(f32, f32); 8] = [
 /// The rectangle for a name of `size` beside the pin at `pin`, where it covers the
 /// least of `obstacles` (the pin itself excluded).
 pub fn place(pin: Pos2, size: Vec2, obstacles: &Obstacles) -> Rect {
-    let candidates = PLACES.iter().map(|&(dx, dy)| candidate(pin, size, dx, dy));
+    place_clear_of(pin, PIN_CLEARANCE, size, obstacles)
+}
+
+/// As [`place`], for a pin drawn inside a shape `radius` points around it (a slider's
+/// block): the name goes outside that shape.
+pub fn place_clear_of(pin: Pos2, radius: f32, size: Vec2, obstacles: &Obstacles) -> Rect {
+    let reach = radius.max(PIN_CLEARANCE) + GAP;
+    let candidates = PLACES
+        .iter()
+        .map(|&(dx, dy)| candidate(pin, reach, size, dx, dy));
     let mut best = None;
     for (order, rect) in candidates.enumerate() {
         let cost = cost(rect, pin, obstacles) + order as f32 * 0.01;
@@ -50,12 +59,11 @@ pub fn place(pin: Pos2, size: Vec2, obstacles: &Obstacles) -> Rect {
             best = Some((cost, rect));
         }
     }
-    best.map_or_else(|| candidate(pin, size, 1.0, -1.0), |(_, r)| r)
+    best.map_or_else(|| candidate(pin, reach, size, 1.0, -1.0), |(_, r)| r)
 }
 
-/// The name's rectangle in direction (`dx`, `dy`) from the pin, clear of its disc.
-fn candidate(pin: Pos2, size: Vec2, dx: f32, dy: f32) -> Rect {
-    let reach = PIN_CLEARANCE + GAP;
+/// The name's rectangle in direction (`dx`, `dy`) from the pin, `reach` from it.
+fn candidate(pin: Pos2, reach: f32, size: Vec2, dx: f32, dy: f32) -> Rect {
     // The corner (or edge midpoint) nearest the pin sits `reach` away from it.
     let anchor = pin + vec2(dx, dy) * reach;
     let min = pos2(

@@ -175,7 +175,7 @@ pub fn plot<'a>(
         .x_grid_spacer(move |i| grid(i, x_angle))
         .y_grid_spacer(move |i| grid(i, y_angle))
         .custom_x_axes(vec![
-            axis(AxisHints::new_x(), x_title).label_spacing(28.0..=40.0),
+            axis(AxisHints::new_x(), x_title).label_spacing(24.0..=30.0),
         ])
         .custom_y_axes(vec![
             axis(AxisHints::new_y(), y_title).label_spacing(12.0..=18.0),

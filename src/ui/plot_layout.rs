@@ -13,12 +13,24 @@ pub const LEAST_HEIGHT: f32 = 150.0;
 /// The highest a plot in a stack is drawn, points (a phone's sheet shows the next
 /// one's top below it).
 const STACKED_HEIGHT: f32 = 260.0;
+/// Room right of a plot, points, for half its last tick's label ("360").
+const TICK_ROOM: f32 = 12.0;
+/// How far beyond the middle 90 % of a curve's values, in that range's spreads, its
+/// extremes may lie and still be shown: further, they are a dead point's spike.
+const SPIKE: f64 = 1.0;
 
 /// Lays out `n` plots side by side where the pane is wide enough, else one under
 /// another; `draw(ui, i, height)` draws the `i`-th, `height` high: the room left in
 /// the pane's view (inside its scroll area, `ui`'s available height), never less than
 /// [`LEAST_HEIGHT`].
 pub fn side_by_side(ui: &mut egui::Ui, n: usize, mut draw: impl FnMut(&mut egui::Ui, usize, f32)) {
+    // The last tick's label is centred on the plot's right edge: room for its half.
+    let mut draw = |ui: &mut egui::Ui, i: usize, height: f32| {
+        ui.scope(|ui| {
+            ui.set_max_width(ui.available_width() - TICK_ROOM);
+            draw(ui, i, height);
+        });
+    };
     let room = ui.available_height() - ui.spacing().item_spacing.y;
     if ui.available_width() >= LEAST_WIDTH * n as f32 {
         let height = room.max(LEAST_HEIGHT);
@@ -35,9 +47,11 @@ pub fn side_by_side(ui: &mut egui::Ui, n: usize, mut draw: impl FnMut(&mut egui:
     }
 }
 
-/// The y range that holds the middle 90 % of the values, padded by a tenth: near a
-/// dead point velocities and accelerations grow without bound, and fitting the plot
-/// to those spikes would flatten the rest of the cycle into a line (the flipper's
+/// The y range a plot shows, padded by a tenth: every value where the extremes lie
+/// within [`SPIKE`] times the middle 90 %'s spread of it (a quick-return's peak
+/// acceleration is shown, not cut), else the middle 90 % alone: near a dead point
+/// velocities and accelerations grow without bound, and fitting the plot to those
+/// spikes would flatten the rest of the cycle into a line (the flipper's
 /// acceleration rises over its last 3 % of samples to 7000 deg/s², beside 100 for
 /// the rest).
 pub fn robust_range(data: &[[f64; 2]]) -> [f64; 2] {
@@ -51,7 +65,12 @@ pub fn robust_range(data: &[[f64; 2]]) -> [f64; 2] {
     }
     ys.sort_by(f64::total_cmp);
     let at = |q: f64| ys[((ys.len() - 1) as f64 * q).round() as usize];
-    let (lo, hi) = (at(0.05), at(0.95));
+    let (mut lo, mut hi) = (at(0.05), at(0.95));
+    let (least, most) = (ys[0], ys[ys.len() - 1]);
+    let spread = hi - lo;
+    if least >= lo - SPIKE * spread && most <= hi + SPIKE * spread {
+        (lo, hi) = (least, most);
+    }
     let pad = 0.1
         * (hi - lo)
             .max(1e-9 * hi.abs().max(lo.abs()))
@@ -75,5 +94,13 @@ mod tests {
         assert_eq!(robust_range(&[]), [-1.0, 1.0]);
         let [lo, hi] = robust_range(&[[0.0, 5.0]]);
         assert!(lo < 5.0 && hi > 5.0);
+        // A peak beyond the middle 90 % but not a spike (a quick-return's
+        // acceleration) is shown whole.
+        let mut data: Vec<[f64; 2]> = (0..100)
+            .map(|i| [f64::from(i), f64::from(i % 10)])
+            .collect();
+        data.push([100.0, -8.0]);
+        let [lo, hi] = robust_range(&data);
+        assert!(lo < -8.0 && hi > 9.0, "{lo} {hi}");
     }
 }

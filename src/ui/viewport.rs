@@ -10,7 +10,7 @@ use crate::render::shape::SharedShapes;
 use crate::render::view::Camera;
 use crate::session::words::length;
 use crate::state::AppState;
-use crate::ui::label_place::{Obstacles, place};
+use crate::ui::label_place::{Obstacles, place_clear_of};
 use crate::ui::point_drag::PointDrag;
 
 /// Room a pin's and a ground pivot's symbols take around the pin, points: a fit
@@ -216,6 +216,7 @@ fn point_labels(
     }
     let font = FontId::proportional(13.0);
     let ink = egui::Color32::from_gray(30);
+    let block = (crate::render::build::block_reach_m(m.size_m) * camera.points_per_m) as f32;
     let mut placed = Vec::new();
     for &p in &topology.joint_points {
         let Some(at) = screen(p) else {
@@ -223,7 +224,9 @@ fn point_labels(
         };
         let name = &m.points[p].name;
         let galley = painter.layout_no_wrap(name.clone(), font.clone(), ink);
-        let spot = place(at, galley.size(), &obstacles);
+        let on_block = m.sliders.iter().any(|sl| sl.point == p);
+        let radius = if on_block { block } else { 0.0 };
+        let spot = place_clear_of(at, radius, galley.size(), &obstacles);
         painter.galley(spot.min, galley, ink);
         obstacles.names.push(spot);
         placed.push((name.clone(), spot));
@@ -284,6 +287,14 @@ fn ground_obstacles(obstacles: &mut Obstacles, st: &AppState, camera: &Camera, r
 /// does) and a refused edit's message at the bottom left (on a phone or tablet, the
 /// last file action's line too); returns the heights they take at the top and the
 /// bottom, points.
+/// The view's colour, nearly opaque, behind the legend's and the message's text: a
+/// mechanism the user zoomed or panned under them stays visible around the text and
+/// the text stays readable over it.
+fn backdrop(painter: &egui::Painter, text: egui::Rect) {
+    let veil = egui::Color32::from_rgba_unmultiplied(246, 246, 242, 220);
+    painter.rect_filled(text.expand(3.0), 3.0, veil);
+}
+
 fn legend(
     painter: &egui::Painter,
     rect: egui::Rect,
@@ -312,11 +323,9 @@ fn legend(
     let wrap = (rect.width() - 16.0).max(40.0);
     let top = painter.layout(legend, small, egui::Color32::from_gray(60), wrap);
     let top_height = top.size().y + 12.0;
-    painter.galley(
-        rect.left_top() + egui::vec2(8.0, 8.0),
-        top,
-        egui::Color32::from_gray(60),
-    );
+    let at = rect.left_top() + egui::vec2(8.0, 8.0);
+    backdrop(painter, egui::Rect::from_min_size(at, top.size()));
+    painter.galley(at, top, egui::Color32::from_gray(60));
     let status = st
         .layout
         .compact()
@@ -333,11 +342,9 @@ fn legend(
     let red = egui::Color32::from_rgb(170, 40, 20);
     let bottom = painter.layout(message, FontId::proportional(13.0), red, wrap);
     let bottom_height = bottom.size().y + 12.0;
-    painter.galley(
-        rect.left_bottom() + egui::vec2(8.0, -8.0 - bottom.size().y),
-        bottom,
-        red,
-    );
+    let at = rect.left_bottom() + egui::vec2(8.0, -8.0 - bottom.size().y);
+    backdrop(painter, egui::Rect::from_min_size(at, bottom.size()));
+    painter.galley(at, bottom, red);
     [top_height, bottom_height]
 }
 

@@ -116,7 +116,8 @@ impl Figure for ForceFigure {
     }
 }
 
-/// The stage's title: "RRR dyad (coupler, rocker) at C: links 3, 4", "Crank 2".
+/// The stage's title in the words of the drawing: "coupler and rocker, joined at C
+/// (links 3, 4)", "crank (link 2)"; the group's kind (RRR, RRP) is the solver's.
 pub fn stage_title(stage: &StagePolygon, m: &Mechanism) -> String {
     let numbers: Vec<String> = stage
         .links
@@ -124,7 +125,18 @@ pub fn stage_title(stage: &StagePolygon, m: &Mechanism) -> String {
         .map(|&l| linkage::force_polygon::link_number(m, l).to_string())
         .collect();
     match &stage.stage {
-        Stage::Group { dyad, .. } => format!("{dyad}: links {}", numbers.join(", ")),
+        Stage::Group { dyad, .. } => {
+            let [a, b] = &dyad.links;
+            let links = numbers.join(", ");
+            if dyad.kind == linkage::dyad::DyadKind::CamFollower {
+                format!("{a}, on the cam at {} (link {links})", dyad.inner_point)
+            } else {
+                format!(
+                    "{a} and {b}, joined at {} (links {links})",
+                    dyad.inner_point
+                )
+            }
+        }
         Stage::Crank { link } => format!("{} (link {})", m.links[*link].name, numbers.join("")),
     }
 }

@@ -88,8 +88,8 @@ fn tables(out: &mut String, m: &Mechanism, fp: &ForcePolygons, mut y: f64) -> f6
     }
     y += row;
     let torque = format!(
-        "Balancing torque on the crank M_b = {:.4} N·m",
-        fp.balancing_torque
+        "Balancing torque on the crank M_b = {}",
+        crate::numbers::si(fp.balancing_torque, "N·m")
     );
     text_at(out, [MARGIN, y], &torque, FONT, "bold");
     y
