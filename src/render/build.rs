@@ -83,7 +83,7 @@ pub(super) fn ground_pivot(push: &mut impl FnMut(Option<Shape>), c: Vec2, pin: f
 }
 
 /// A pin's radius, as a share of the mechanism's size.
-const PIN_SHARE: f64 = 0.024;
+pub const PIN_SHARE: f64 = 0.024;
 /// A slider block's half length and half width, in pin radii.
 const BLOCK_HALF: [f32; 2] = [2.4, 1.5];
 
@@ -130,30 +130,53 @@ pub fn build(
     arrows(&mut push, &d, layers, m_per_px)
 }
 
-/// Guides fixed to ground: two rails over the slider's travel, hatched outside.
-fn ground_guides(push: &mut impl FnMut(Option<Shape>), d: &Drawn<'_>) {
-    let (m, pose) = (d.s.mechanism(), d.s.pose());
-    for (i, sl) in m
-        .sliders
+/// Where a guide fixed to ground is drawn, m: its centre line from `a` to `b` over
+/// the slider's travel and a margin, its two rails `off` to either side of it.
+pub struct GuideRails {
+    /// The centre line's start.
+    pub a: linkage::Vec2,
+    /// The centre line's end.
+    pub b: linkage::Vec2,
+    /// From the centre line to one rail (the other is the opposite).
+    pub off: linkage::Vec2,
+}
+
+/// Every ground guide's rails, as the view draws them and as the joints' names keep
+/// off them.
+pub fn ground_guide_rails(s: &Session) -> Vec<GuideRails> {
+    let (m, pose) = (s.mechanism(), s.pose());
+    let pin = PIN_SHARE * m.size_m.max(1e-12);
+    m.sliders
         .iter()
         .enumerate()
         .filter(|(_, sl)| sl.guide == m.ground)
-    {
-        let dir = sl.direction(&pose.links);
-        let through = pose.links[sl.guide].world(&sl.through_local);
-        let travel =
-            d.s.curves()
+        .map(|(i, sl)| {
+            let dir = sl.direction(&pose.links);
+            let through = pose.links[sl.guide].world(&sl.through_local);
+            let travel = s
+                .curves()
                 .slide_travel_m
                 .get(i)
                 .copied()
                 .flatten()
                 .unwrap_or([pose.slides[i].displacement_m; 2]);
-        let margin = 4.0 * f64::from(d.pin);
-        let a = through + dir * (travel[0] - margin);
-        let b = through + dir * (travel[1] + margin);
-        let n = Vec2::new(-dir.y as f32, dir.x as f32);
-        let (a, b) = (d.cam.local([a.x, a.y]), d.cam.local([b.x, b.y]));
-        let off = n * 1.7 * d.pin;
+            GuideRails {
+                a: through + dir * (travel[0] - 4.0 * pin),
+                b: through + dir * (travel[1] + 4.0 * pin),
+                off: linkage::Vec2::new(-dir.y, dir.x) * 1.7 * pin,
+            }
+        })
+        .collect()
+}
+
+/// Guides fixed to ground: two rails over the slider's travel, hatched outside.
+fn ground_guides(push: &mut impl FnMut(Option<Shape>), d: &Drawn<'_>) {
+    for rails in ground_guide_rails(d.s) {
+        let (a, b) = (
+            d.cam.local([rails.a.x, rails.a.y]),
+            d.cam.local([rails.b.x, rails.b.y]),
+        );
+        let off = Vec2::new(rails.off.x as f32, rails.off.y as f32);
         for rail in [off, -off] {
             push(Shape::new(
                 Kind::Line,

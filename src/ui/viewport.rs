@@ -240,7 +240,7 @@ fn point_labels(
 fn ground_obstacles(obstacles: &mut Obstacles, st: &AppState, camera: &Camera, rect: egui::Rect) {
     let m = st.session.mechanism();
     let pose = st.session.pose();
-    let pin = 0.024 * m.size_m.max(1e-12);
+    let pin = crate::render::build::PIN_SHARE * m.size_m.max(1e-12);
     let at = |p: linkage::Vec2| camera.to_screen([p.x, p.y], rect);
     for r in m
         .revolutes
@@ -256,27 +256,8 @@ fn ground_obstacles(obstacles: &mut Obstacles, st: &AppState, camera: &Camera, r
             .segments
             .extend([[at(c), l], [at(c), r], [l, r], [l + down, r + down]]);
     }
-    for (i, sl) in m
-        .sliders
-        .iter()
-        .enumerate()
-        .filter(|(_, sl)| sl.guide == m.ground)
-    {
-        let dir = sl.direction(&pose.links);
-        let through = pose.links[sl.guide].world(&sl.through_local);
-        let travel = st
-            .session
-            .curves()
-            .slide_travel_m
-            .get(i)
-            .copied()
-            .flatten()
-            .unwrap_or([pose.slides[i].displacement_m; 2]);
-        let (a, b) = (
-            through + dir * (travel[0] - 4.0 * pin),
-            through + dir * (travel[1] + 4.0 * pin),
-        );
-        let off = linkage::Vec2::new(-dir.y, dir.x) * 1.7 * pin;
+    for rails in crate::render::build::ground_guide_rails(&st.session) {
+        let (a, b, off) = (rails.a, rails.b, rails.off);
         obstacles
             .segments
             .extend([[at(a + off), at(b + off)], [at(a - off), at(b - off)]]);
