@@ -19,9 +19,12 @@ const REPEATS: usize = 15;
 pub struct EditCpu {
     /// A valid length edit, median.
     pub valid_ms: f64,
-    /// A refused one (the chain cannot take it), median; `None` where every length
-    /// the slider reaches is taken.
-    pub refused_ms: Option<f64>,
+    /// The length set to its slider's upper end where the chain cannot take it
+    /// (refused, with its limit found), median; `None` where it is taken.
+    pub refused_long_ms: Option<f64>,
+    /// The same at the slider's lower end: a link too short to reach is found by
+    /// another search than one too long (the scene may not build at all there).
+    pub refused_short_ms: Option<f64>,
 }
 
 fn median(mut ms: Vec<f64>) -> f64 {
@@ -34,6 +37,30 @@ fn timed(s: &mut Session, edit: SceneEdit) -> f64 {
     let started = web_time::Instant::now();
     s.apply(edit);
     started.elapsed().as_secs_f64() * 1e3
+}
+
+/// The median time of setting the first length to `bad`, from its value `good`
+/// each time (as a slider dragged to its end does), where the chain refuses it.
+fn refused_at(s: &mut Session, good: f64, bad: f64) -> Option<f64> {
+    let set = |s: &mut Session, value| s.apply(SceneEdit::Length { index: 0, value });
+    set(s, bad);
+    let refused = s.message().is_some();
+    set(s, good);
+    refused.then(|| {
+        median(
+            (0..REPEATS)
+                .map(|_| {
+                    timed(
+                        s,
+                        SceneEdit::Length {
+                            index: 0,
+                            value: bad,
+                        },
+                    )
+                })
+                .collect(),
+        )
+    })
 }
 
 /// The CPU of a length edit of `scene` (what the edit's frame computes before it
@@ -49,30 +76,11 @@ pub fn edit_cpu(scene: &linkage::SceneFile) -> Option<EditCpu> {
             timed(&mut s, SceneEdit::Length { index: 0, value })
         })
         .collect();
-    // The slider's ends: the first the chain cannot take is a refused edit.
     let range = param.range();
-    let refused = [*range.end(), *range.start()].into_iter().find_map(|bad| {
-        s.apply(SceneEdit::Length {
-            index: 0,
-            value: bad,
-        });
-        s.message().is_some().then(|| {
-            (0..REPEATS)
-                .map(|_| {
-                    timed(
-                        &mut s,
-                        SceneEdit::Length {
-                            index: 0,
-                            value: bad,
-                        },
-                    )
-                })
-                .collect::<Vec<_>>()
-        })
-    });
     Some(EditCpu {
         valid_ms: median(valid),
-        refused_ms: refused.map(median),
+        refused_long_ms: refused_at(&mut s, v, *range.end()),
+        refused_short_ms: refused_at(&mut s, v, *range.start()),
     })
 }
 
@@ -89,9 +97,12 @@ mod tests {
             let scene = linkage::SceneFile::parse(b.text).expect("parses");
             let cpu = edit_cpu(&scene).expect("measured");
             assert!(cpu.valid_ms.is_finite() && cpu.valid_ms >= 0.0, "{}", b.key);
+            if std::env::var_os("LINKAGE_PRINT_EDIT_CPU").is_some() {
+                println!("{}: {cpu:?}", b.key);
+            }
             if b.key == "die_cutter" {
                 assert!(
-                    cpu.refused_ms.is_some(),
+                    cpu.refused_long_ms.is_some(),
                     "the die cutter's AD is refused at 4x"
                 );
             }
