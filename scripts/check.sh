@@ -37,6 +37,11 @@ section "tests"
 # winit and wgpu warn without a runtime dir; the UI tests need none, give them one.
 mkdir -m700 -p /tmp/xdg && export XDG_RUNTIME_DIR=/tmp/xdg
 cargo test --workspace
+# The CLI's and the app's binaries, built by the tests (their integration tests run
+# them), with the tests' features: the sections below run these. Built again alone
+# (`cargo build -p linkage-lab`), eframe compiles anew without the accessibility
+# feature the UI tests' harness turns on, and the CLI's dependencies likewise.
+export LINKAGE_BINS_FROM_TESTS=1
 
 section "fuzzing and properties at scale (release mode)"
 # 10^5 mutated scene files, and 34,000 each of random four-bars, slider-cranks and
@@ -45,7 +50,6 @@ LINKAGE_FUZZ_CASES=100000 LINKAGE_PROPERTY_CASES=34000 \
     cargo test --release -p linkage --test fuzz_scenes --test properties -- --nocapture
 
 section "CLI over every scene"
-cargo build -q -p linkage-cli
 bin="${CARGO_TARGET_DIR:-target}/debug"
 for scene in assets/scenes/*.ron; do
     "$bin/linkage" report "$scene" > /dev/null

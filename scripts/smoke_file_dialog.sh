@@ -46,7 +46,8 @@ if [ "${1:-}" = --inside-xvfb ]; then
     drive
     exit
 fi
-cargo build -q -p linkage-lab
+# In CI the build the tests made (scripts/check.sh).
+[ -n "${LINKAGE_BINS_FROM_TESTS:-}" ] || cargo build -q -p linkage-lab
 log=$(mktemp)
 # xvfb-run is a POSIX sh script, which drops exported bash functions: run this
 # script again inside it instead.

@@ -5,8 +5,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mkdir -m700 -p /tmp/xdg && export XDG_RUNTIME_DIR=/tmp/xdg
-# Debug build: the tests already built it, so CI pays no extra compile.
-cargo build -q -p linkage-lab
+# Debug build; in CI the one the tests built (scripts/check.sh).
+[ -n "${LINKAGE_BINS_FROM_TESTS:-}" ] || cargo build -q -p linkage-lab
 timeout 300 xvfb-run -a -s "-screen 0 1500x950x24" \
     "${CARGO_TARGET_DIR:-target}/debug/linkage-lab" --exit-after-frames 120 --play
 echo "native smoke run: ok"

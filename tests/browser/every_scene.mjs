@@ -9,6 +9,10 @@
 // (performance.now()); under SwiftShader it is set by the rasteriser's few frames a
 // second, not by the edit.
 // The app says where its controls are: window.wasmBindings.linkage_lab_controls().
+// With LINKAGE_SCENE_CHECKS=drawn only what the renderer decides: each scene opened,
+// drawn, played and its crank moved, and the edit's CPU measured (the WebGPU build's
+// pass: its controls and layout are the WebGL2 build's code, and SwiftShader's Vulkan
+// draws it at a fifth of the speed; every control took 418 s there, 2026-11-26).
 // Usage: node every_scene.mjs http://127.0.0.1:PORT/
 import { appState as state, build, decode, differing, launchChromium, nonBackground, openApp, shippedScenes, until } from './common.mjs';
 
@@ -105,7 +109,20 @@ async function settle(page, before, picture) {
   return st;
 }
 
-const SLIDERS = ['Crank', 'Length', 'Spring', 'Mass', 'Tolerance'];
+const drawnOnly = process.env.LINKAGE_SCENE_CHECKS === 'drawn';
+/** Opens `page`'s URL in a new page: it must show the same state (the fragment's
+ * numbers and the crank angle); its console errors join `errors`. */
+async function reopens(page, what, errors) {
+  const here = await state(page);
+  const again = await openPage(page.url());
+  const there = await state(again.page);
+  if (!sameFragment(await hash(again.page), await hash(page))) fail(`${what}: reopened as ${await hash(again.page)}, not ${await hash(page)}`);
+  if (Math.abs(there.input_deg - here.input_deg) > 1e-3) fail(`${what}: reopened at ${there.input_deg} deg, not ${here.input_deg}`);
+  errors.push(...again.errors);
+  await again.page.close();
+}
+
+const SLIDERS = drawnOnly ? ['Crank'] : ['Crank', 'Length', 'Spring', 'Mass', 'Tolerance'];
 const results = [];
 // Each scene opens through both routes over the two builds (and each build opens
 // scenes through both): the picker on one build, the fragment on the other, in turn.
@@ -154,7 +171,7 @@ for (const [i, scene] of scenes.entries()) {
     // A slider's rail spans its rectangle: 23 points in, and 2 points short of its
     // far end.
     const moves = SLIDERS.filter((k) => kinds.has(k)).map((k) => [k, k, (r) => r[0] + 23]);
-    if (kinds.has('Length')) moves.push(['Length', 'Length at max', (r) => r[2] - 2]);
+    if (kinds.has('Length') && !drawnOnly) moves.push(['Length', 'Length at max', (r) => r[2] - 2]);
     for (const [kind, name, at] of moves) {
       const c = await find(page, kind);
       const urlBefore = await hash(page);
@@ -173,7 +190,7 @@ for (const [i, scene] of scenes.entries()) {
         refused: Boolean(after.message),
       };
     }
-    if (kinds.has('Branch')) {
+    if (kinds.has('Branch') && !drawnOnly) {
       const c = await find(page, 'Branch');
       const urlBefore = await hash(page);
       const ms = await timedClick(page, centre(c, 0.1));
@@ -181,7 +198,7 @@ for (const [i, scene] of scenes.entries()) {
       if ((await hash(page)) === urlBefore && !after.message) fail(`${what}: the branch flip "${c.label}" at ${c.rect} changed nothing (${urlBefore})`);
       moved.Branch = { edit_frame_ms: Number(after.edit_timing.last_ms.toFixed(2)), edit_ms: Number(after.edit_timing.last_edit_ms.toFixed(2)), click_to_frame_ms: Number(ms.toFixed(1)), refused: Boolean(after.message) };
     }
-    if (kinds.has('Integrator')) {
+    if (kinds.has('Integrator') && !drawnOnly) {
       const picBefore = await shot(page);
       await page.mouse.click(...centre(await find(page, 'Integrator')));
       const rk4 = await find(page, 'IntegratorItem', 'rk4');
@@ -197,7 +214,7 @@ for (const [i, scene] of scenes.entries()) {
     }
     // The instant centres shown and hidden, the polygon pane enlarged and narrowed:
     // each changes the picture (waited for: SwiftShader draws a few frames a second).
-    for (const [kind, label] of [['Layer', 'instant centres'], ['PolygonLayout', undefined]]) {
+    for (const [kind, label] of drawnOnly ? [] : [['Layer', 'instant centres'], ['PolygonLayout', undefined]]) {
       const name = label ?? kind;
       for (const turn of ['on', 'off']) {
         const c = await find(page, kind, label);
@@ -210,17 +227,10 @@ for (const [i, scene] of scenes.entries()) {
         moved[`${name} ${turn}`] = { click_to_frame_ms: Number(ms.toFixed(1)), pixels_changed: px };
       }
     }
-    for (const k of ['Crank', 'Length']) if (!moved[k]) fail(`${what}: no ${k} control`);
+    for (const k of drawnOnly ? ['Crank'] : ['Crank', 'Length']) if (!moved[k]) fail(`${what}: no ${k} control`);
 
     // The URL after the edits reopens the same state.
-    const url = page.url();
-    const here = await state(page);
-    const again = await openPage(url);
-    const there = await state(again.page);
-    if (!sameFragment(await hash(again.page), await hash(page))) fail(`${what}: reopened as ${await hash(again.page)}, not ${await hash(page)}`);
-    if (Math.abs(there.input_deg - here.input_deg) > 1e-3) fail(`${what}: reopened at ${there.input_deg} deg, not ${here.input_deg}`);
-    errors.push(...again.errors);
-    await again.page.close();
+    if (!drawnOnly) await reopens(page, what, errors);
 
     // The edit's own CPU, measured in the page: the median of repeated length
     // edits of the scene, valid and refused (session::edit_cost).
