@@ -59,17 +59,15 @@ pub(super) fn coil(a: Vec2, b: Vec2, bar: f32, pin: f32) -> Option<Shape> {
 
 /// A ground pivot at `c` (view-local m): a support triangle on a hatched base.
 pub(super) fn ground_pivot(push: &mut impl FnMut(Option<Shape>), c: Vec2, pin: f32, bar: f32) {
-    let base_y = c.y - 2.6 * pin;
-    let (l, rgt) = (
-        Vec2::new(c.x - 2.0 * pin, base_y),
-        Vec2::new(c.x + 2.0 * pin, base_y),
-    );
+    let (half, height) = (PIVOT_HALF_BASE as f32 * pin, PIVOT_HEIGHT as f32 * pin);
+    let base_y = c.y - height;
+    let (l, rgt) = (Vec2::new(c.x - half, base_y), Vec2::new(c.x + half, base_y));
     push(Shape::new(
         Kind::Ground,
         [c, l, rgt],
         0.25 * bar,
         colour::GROUND,
-        [1.4 * pin, 0.0],
+        [2.0 * PIVOT_HATCH as f32 * pin, 0.0],
     ));
     for side in [l, rgt] {
         push(Shape::new(
@@ -84,6 +82,14 @@ pub(super) fn ground_pivot(push: &mut impl FnMut(Option<Shape>), c: Vec2, pin: f
 
 /// A pin's radius, as a share of the mechanism's size.
 pub const PIN_SHARE: f64 = 0.024;
+/// A ground pivot's support triangle, in pin radii: half its base, and the base's
+/// depth below the pin's centre (the apex).
+pub const PIVOT_HALF_BASE: f64 = 2.0;
+/// See [`PIVOT_HALF_BASE`].
+pub const PIVOT_HEIGHT: f64 = 2.6;
+/// Half the depth of the hatching under a ground pivot's base, pin radii: joint names
+/// keep clear of its upper half and may cover its lower, fainter half.
+pub const PIVOT_HATCH: f64 = 0.7;
 /// A slider block's half length and half width, in pin radii.
 const BLOCK_HALF: [f32; 2] = [2.4, 1.5];
 

@@ -247,11 +247,15 @@ fn ground_obstacles(obstacles: &mut Obstacles, st: &AppState, camera: &Camera, r
         .iter()
         .filter(|r| r.a == m.ground || r.b == m.ground)
     {
+        use crate::render::build::{PIVOT_HALF_BASE, PIVOT_HATCH, PIVOT_HEIGHT};
         let c = pose.points[r.point].position;
         let corner = |dx: f64, dy: f64| at(c + linkage::Vec2::new(dx * pin, dy * pin));
-        let (l, r) = (corner(-2.0, -2.6), corner(2.0, -2.6));
-        // The hatching, half the base's depth below it.
-        let down = corner(0.0, -3.3) - corner(0.0, -2.6);
+        let (l, r) = (
+            corner(-PIVOT_HALF_BASE, -PIVOT_HEIGHT),
+            corner(PIVOT_HALF_BASE, -PIVOT_HEIGHT),
+        );
+        // The hatching below the base.
+        let down = corner(0.0, -PIVOT_HEIGHT - PIVOT_HATCH) - corner(0.0, -PIVOT_HEIGHT);
         obstacles
             .segments
             .extend([[at(c), l], [at(c), r], [l, r], [l + down, r + down]]);
