@@ -42,11 +42,13 @@ pub type Start = ([f64; PARAMS], bool, Vec<f64>);
 /// Which unknowns are being refined.
 #[derive(Clone, Debug)]
 enum Stage {
-    /// The nine numbers, each target's angle its foot point from `start`.
+    /// The nine numbers, each target's angle its foot point from `start`;
+    /// `patient` for the last refinement of a near miss.
     Projected {
         lm: Minimiser,
         start: Vec<f64>,
         feet: Vec<f64>,
+        patient: bool,
     },
     /// The nine numbers and the angles (every target's, or the first's when timed);
     /// `patient` for the last refinement of a near miss.
@@ -89,20 +91,9 @@ impl Polish {
         after_stall: bool,
     ) -> Option<Self> {
         let stage = if problem.timing.is_none() {
-            let mut feet = angles.clone();
-            let lm = Minimiser::new(
-                &params,
-                problem.residual_count(),
-                settings(tolerance),
-                &mut |p, r| problem.projected_residuals(p, left, &angles, &mut feet, r),
-            )?;
-            Stage::Projected {
-                lm,
-                start: angles,
-                feet,
-            }
+            projected(problem, &params, left, angles, settings(tolerance), false)?
         } else {
-            joint(problem, &params, left, &angles, settings(tolerance))?
+            joint(problem, &params, left, &angles, settings(tolerance), false)?
         };
         Some(Self {
             left,
@@ -123,7 +114,12 @@ impl Polish {
     pub fn advance(&mut self, problem: &Problem) -> (u64, Option<Outcome>) {
         let left = self.left;
         match &mut self.stage {
-            Stage::Projected { lm, start, feet } => {
+            Stage::Projected {
+                lm,
+                start,
+                feet,
+                patient,
+            } => {
                 let mut residuals =
                     |p: &[f64], r: &mut [f64]| problem.projected_residuals(p, left, start, feet, r);
                 let used = lm.iterate(&mut residuals);
@@ -137,7 +133,15 @@ impl Polish {
                 }
                 let params: [f64; PARAMS] = std::array::from_fn(|k| fitted.x[k]);
                 let angles = feet.clone();
-                match joint(problem, &params, left, &angles, settings(self.tolerance)) {
+                let patient = *patient;
+                match joint(
+                    problem,
+                    &params,
+                    left,
+                    &angles,
+                    settings(self.tolerance),
+                    patient,
+                ) {
                     Some(stage) => {
                         self.stage = stage;
                         (used, None)
@@ -153,14 +157,25 @@ impl Polish {
                 let x = lm.fitted().x;
                 let miss = largest_miss(lm.residuals(), problem.targets.len());
                 if !*patient && miss > self.tolerance && miss <= NEAR_MISS * self.tolerance {
-                    let lm = Minimiser::new(
-                        &x,
-                        problem.residual_count(),
-                        patient_settings(self.tolerance),
-                        &mut |u, r| problem.residuals(u, left, r),
-                    );
-                    if let Some(lm) = lm {
-                        self.stage = Stage::Joint { lm, patient: true };
+                    // Untimed, the patient refinement projects the angles out again:
+                    // jointly, an ill-determined linkage's last digits crawl.
+                    let params: [f64; PARAMS] = std::array::from_fn(|k| x[k]);
+                    let patient_settings = patient_settings(self.tolerance);
+                    let stage = if problem.timing.is_none() {
+                        let angles = problem.angles_of(&x);
+                        projected(problem, &params, left, angles, patient_settings, true)
+                    } else {
+                        joint(
+                            problem,
+                            &params,
+                            left,
+                            &problem.angles_of(&x),
+                            patient_settings,
+                            true,
+                        )
+                    };
+                    if let Some(stage) = stage {
+                        self.stage = stage;
                         return (used, None);
                     }
                 }
@@ -174,6 +189,28 @@ impl Polish {
     }
 }
 
+/// The projected refinement of `params`, each target's angle its foot point from
+/// `angles`.
+fn projected(
+    problem: &Problem,
+    params: &[f64; PARAMS],
+    left: bool,
+    angles: Vec<f64>,
+    settings: Settings,
+    patient: bool,
+) -> Option<Stage> {
+    let mut feet = angles.clone();
+    let lm = Minimiser::new(params, problem.residual_count(), settings, &mut |p, r| {
+        problem.projected_residuals(p, left, &angles, &mut feet, r)
+    })?;
+    Some(Stage::Projected {
+        lm,
+        start: angles,
+        feet,
+        patient,
+    })
+}
+
 /// The joint refinement of `params` and `angles`.
 fn joint(
     problem: &Problem,
@@ -181,12 +218,13 @@ fn joint(
     left: bool,
     angles: &[f64],
     settings: Settings,
+    patient: bool,
 ) -> Option<Stage> {
     let u0 = problem.unknowns(params, angles);
     let lm = Minimiser::new(&u0, problem.residual_count(), settings, &mut |u, r| {
         problem.residuals(u, left, r)
     })?;
-    Some(Stage::Joint { lm, patient: false })
+    Some(Stage::Joint { lm, patient })
 }
 
 /// The largest distance of the coupler point from a target, in the targets'
