@@ -127,18 +127,26 @@ def crate_graph(src):
             return None
         return base + path
 
-    def target(mod, path, seen=0):
+    def target(user, mod, path, seen=0):
+        """The files a use of `path` in module `mod` makes module `user` depend on:
+        the file that defines the name and every facade passed on the way (a `pub
+        use` in another module is an edge too: `use crate::model::SceneProblem` leans
+        on model/mod.rs whatever file defines the name). Two facades are no edge: the
+        crate root (every `crate::X` would run through it) and a module `user` is
+        inside (a child naming a sibling through its folder's mod.rs)."""
         full = absolute(mod, path)
         if full is None or seen > 8:
-            return None
+            return []
         for n in range(len(full), -1, -1):
             if tuple(full[:n]) in mods:
                 owner = tuple(full[:n])
                 if n < len(full) and (owner, full[n]) in reexports:
                     # Followed to where it is defined; none when another crate's.
-                    return target(owner, reexports[(owner, full[n])], seen + 1)
-                return mods[owner]
-        return None
+                    inside = owner == () or user[: len(owner)] == owner
+                    facade = [] if inside else [mods[owner]]
+                    return facade + target(user, owner, reexports[(owner, full[n])], seen + 1)
+                return [mods[owner]]
+        return []
 
     edges = {f: set() for f in files}
     for f in files:
@@ -164,9 +172,7 @@ def crate_graph(src):
             for m in re.finditer(rf"(?<![\w:]){alias}((?:::\w+)+)", body):
                 paths.append(["crate"] + full + m.group(1).split("::")[1:])
         for p in paths:
-            t = target(mod, p)
-            if t and t != f:
-                edges[f].add(t)
+            edges[f].update(t for t in target(mod, mod, p) if t != f)
     return edges
 
 
@@ -202,19 +208,39 @@ def cycles(edges):
     return out
 
 
+def body_start(lines, i, column):
+    """Where the body of the `fn` whose signature starts at line `i`, column
+    `column`, opens: (line, column) of its `{`, or None for a declaration without a
+    body. A `;` ends the signature only outside brackets: `-> [f64; 2]` is a type."""
+    nest = 0
+    for j in range(i, len(lines)):
+        for k, ch in enumerate(lines[j][column if j == i else 0:], column if j == i else 0):
+            if ch in "([":
+                nest += 1
+            elif ch in ")]":
+                nest -= 1
+            elif nest == 0 and ch == "{":
+                return j, k
+            elif nest == 0 and ch == ";":
+                return None
+    return None
+
+
 def functions(text):
+    """Each function with a body: its name, first line and length in lines."""
     lines = text.split("\n")
     for i, line in enumerate(lines):
         m = re.match(r"\s*(?:pub(?:\([\w:]+\))?\s+)?(?:const\s+)?(?:async\s+)?fn\s+(\w+)", line)
         if not m:
             continue
-        depth, opened = 0, False
-        for j in range(i, len(lines)):
-            if not opened and ";" in lines[j] and "{" not in lines[j]:
-                break
-            depth += lines[j].count("{") - lines[j].count("}")
-            opened = opened or "{" in lines[j]
-            if opened and depth <= 0:
+        start = body_start(lines, i, m.end())
+        if start is None:
+            continue
+        j0, k0 = start
+        depth = 0
+        for j in range(j0, len(lines)):
+            depth += lines[j][k0 if j == j0 else 0:].count("{") - lines[j][k0 if j == j0 else 0:].count("}")
+            if depth <= 0:
                 yield m.group(1), i + 1, j - i + 1
                 break
 
