@@ -12,8 +12,8 @@ use serde::{Deserialize, Serialize};
 pub use crate::scene_cam::CamJointSpec;
 pub use crate::scene_drive::{DriveSpec, MotorSpec, Shaft};
 
+use crate::error::SceneProblem;
 use crate::error::{LinkageError, Result};
-use crate::model::SceneProblem;
 
 /// What a scene asks the program to compute.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]

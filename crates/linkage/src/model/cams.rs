@@ -7,9 +7,9 @@ use std::f64::consts::TAU;
 use super::joints::Names;
 use super::units::{Units, finite_named, invalid, positive_named, scene_angle};
 use crate::cam::{Program, segments_of};
+use crate::error::CamProblem;
 use crate::error::Result;
-use crate::model::cam_problem::CamProblem;
-use crate::model::problem::SceneProblem;
+use crate::error::SceneProblem;
 use crate::model::{CamJoint, FollowerGuide, LinkId, Prismatic, Revolute};
 use crate::scene::{CamJointSpec, SceneFile};
 

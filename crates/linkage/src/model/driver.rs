@@ -4,7 +4,7 @@
 use super::joints::Names;
 use super::units::{Units, finite, invalid, scene_angle};
 use crate::error::Result;
-use crate::model::problem::SceneProblem;
+use crate::error::SceneProblem;
 use crate::model::{Driver, LinkId, Point, PointId, Revolute};
 use crate::motion::Vec2;
 use crate::scene::{Branch, SceneFile, Speed};

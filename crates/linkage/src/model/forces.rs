@@ -2,8 +2,8 @@
 //! points and links the scene has.
 
 use super::units::{finite, invalid, positive, positive_named, scene_angle};
+use crate::error::SceneProblem;
 use crate::error::{LinkageError, Result};
-use crate::model::problem::SceneProblem;
 use crate::model::{Link, Point};
 use crate::scene::{ForcesSpec, FreeLength};
 

@@ -9,8 +9,8 @@ use super::forces::convert_forces;
 use super::joints::{Names, check_mobility, revolutes, sliders};
 use super::links::{bodies, check_joint_gaps};
 use super::units::{Units, invalid};
+use crate::error::SceneProblem;
 use crate::error::{LinkageError, Result};
-use crate::model::problem::SceneProblem;
 use crate::model::{Drive, LinkId, Mechanism};
 use crate::scene::SceneFile;
 

@@ -6,7 +6,7 @@ use nalgebra::UnitComplex;
 use super::links::Bodies;
 use super::units::{Units, invalid, scene_angle};
 use crate::error::Result;
-use crate::model::problem::{LonePoint, MadeJoint, SceneProblem};
+use crate::error::{LonePoint, MadeJoint, SceneProblem};
 use crate::model::{Link, LinkId, Point, PointId, Prismatic, Revolute};
 use crate::motion::Vec2;
 use crate::scene::SceneFile;

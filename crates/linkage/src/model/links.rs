@@ -3,7 +3,7 @@
 
 use super::units::{Units, invalid, positive_named};
 use crate::error::Result;
-use crate::model::problem::SceneProblem;
+use crate::error::SceneProblem;
 use crate::model::{Link, LinkId, Point, PointId};
 use crate::motion::Vec2;
 use crate::scene::SceneFile;

@@ -9,7 +9,6 @@ use crate::real::{Real, splat, splat_vec};
 use crate::scene::{Branch, ForcesSpec, Models, SceneFile, SolverSpec};
 
 mod cam_joint;
-mod cam_problem;
 mod cams;
 mod drive;
 mod driver;
@@ -17,13 +16,12 @@ mod forces;
 mod from_scene;
 mod joints;
 mod links;
-mod problem;
 mod units;
 
+pub use crate::error::CamProblem;
+pub use crate::error::{LonePoint, MadeJoint, SceneProblem};
 pub use cam_joint::{CamContact, CamJoint, FollowerGuide};
-pub use cam_problem::CamProblem;
 pub use drive::{Drive, Motor};
-pub use problem::{LonePoint, MadeJoint, SceneProblem};
 
 /// A rigid link.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,9 +1,9 @@
 //! The scene's lengths and angles in SI, and the checks every number passes: finite,
 //! positive, an angle a double holds to 1e-11 rad.
 
+use crate::error::SceneProblem;
 use crate::error::{LinkageError, Result};
 use crate::model::MAX_ANGLE_RAD;
-use crate::model::problem::SceneProblem;
 use crate::motion::Vec2;
 
 /// The scene's lengths and angles in SI.

@@ -16,9 +16,9 @@
 use serde::Serialize;
 
 use super::motion::{BodyPose, MotionFourBar, poles_of};
+use crate::error::DesignRefusal;
 use crate::error::{LinkageError, Result};
 use crate::motion::Vec2;
-use crate::synthesis::refusal::DesignRefusal;
 
 /// One row of the linear equations in a: the coefficients and the right-hand side.
 fn row(first: &BodyPose, other: &BodyPose, m: Vec2) -> ([f64; 2], f64) {

@@ -14,9 +14,9 @@
 use nalgebra::{DMatrix, DVector, Matrix3, Vector3};
 use serde::Serialize;
 
+use crate::error::DesignRefusal;
 use crate::error::{LinkageError, Result};
 use crate::scene::SceneFile;
-use crate::synthesis::refusal::DesignRefusal;
 
 /// A prescribed input and output angle pair, rad.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]

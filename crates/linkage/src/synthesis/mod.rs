@@ -13,8 +13,10 @@ pub mod function;
 pub mod motion;
 pub mod path;
 pub mod positions;
-pub mod refusal;
 pub mod rows;
+
+/// Why a synthesis gives no linkage (defined with the other leaf error types).
+pub use crate::error::DesignRefusal;
 
 use indexmap::IndexMap;
 use serde::Serialize;

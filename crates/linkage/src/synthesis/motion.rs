@@ -10,10 +10,10 @@ use serde::Serialize;
 
 use crate::Kinematics;
 use crate::drawing::{Drawing, DrawingLink, DrawingPoint};
+use crate::error::DesignRefusal;
 use crate::error::{LinkageError, Result};
 use crate::model::Mechanism;
 use crate::motion::{Vec2, cross};
-use crate::synthesis::refusal::DesignRefusal;
 
 /// A position of the body: where its reference point is and how it is turned.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]

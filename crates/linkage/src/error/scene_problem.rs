@@ -130,7 +130,7 @@ pub enum SceneProblem {
         /// The joint, `cam/follower`.
         joint: String,
         /// Why.
-        problem: crate::model::cam_problem::CamProblem,
+        problem: crate::error::CamProblem,
     },
     /// The driver is the frame.
     #[error("the driver cannot be the ground link")]

@@ -5,8 +5,13 @@ use thiserror::Error;
 
 use crate::assembly::AssemblyRanges;
 use crate::dyad::{DyadLabel, Shortfall};
-pub use crate::model::SceneProblem;
-pub use crate::synthesis::refusal::DesignRefusal;
+mod cam_problem;
+mod design_refusal;
+mod scene_problem;
+
+pub use cam_problem::CamProblem;
+pub use design_refusal::DesignRefusal;
+pub use scene_problem::{LonePoint, MadeJoint, SceneProblem};
 
 /// Why a chain does not close at an input, as data ([`LinkageError::CannotAssemble`]).
 #[derive(Debug, Error, Clone, PartialEq)]
