@@ -16,6 +16,7 @@
 #![forbid(unsafe_code)]
 
 pub mod analysis;
+mod angles;
 pub mod assembly;
 pub mod branch_points;
 pub mod cam;
@@ -33,6 +34,7 @@ pub mod model;
 pub mod motion;
 pub mod overflow;
 pub mod polygon;
+mod ranges;
 pub mod real;
 pub mod roots_util;
 pub mod scene;

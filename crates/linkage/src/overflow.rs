@@ -49,7 +49,7 @@ fn finite(s: &Solution) -> bool {
 /// looked at): from the rates at unit speed, velocities scaling with the speed and
 /// accelerations (at a constant input speed) with its square.
 pub fn speed_limit(k: &mut Kinematics) -> Result<f64> {
-    let ([a, b], _) = crate::analysis::sweep_range(k)?;
+    let ([a, b], _) = crate::ranges::sweep_range(k)?;
     let mut s = k.empty_solution();
     let (mut v1, mut a1): (f64, f64) = (0.0, 0.0);
     for i in 0..360 {

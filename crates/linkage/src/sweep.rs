@@ -2,10 +2,11 @@
 //! CSV contract of `linkage sweep`: `input_rad`, then `P_x,P_y,P_vx,P_vy,P_ax,P_ay`
 //! per named point, then `L_theta,L_omega,L_alpha` per moving link, SI units.
 
-pub use crate::analysis::sweep_range;
+pub use crate::angles::unwrap_near;
 use crate::error::{LinkageError, Result};
 use crate::model::Mechanism;
 use crate::motion::Solution;
+pub use crate::ranges::sweep_range;
 use crate::real::LANES;
 use crate::solve::Kinematics;
 
@@ -144,11 +145,6 @@ fn solve_stepping_past_branch_points(
         lanes.set_lane(lane, &one);
     }
     Ok(())
-}
-
-/// `angle` shifted by whole turns to be within π of `reference`.
-pub fn unwrap_near(angle: f64, reference: f64) -> f64 {
-    angle + ((reference - angle) / std::f64::consts::TAU).round() * std::f64::consts::TAU
 }
 
 /// The CSV header of `sweep` and `at`.

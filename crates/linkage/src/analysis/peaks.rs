@@ -7,9 +7,9 @@
 use serde::Serialize;
 
 use super::outputs::{Output, outputs};
-use super::ranges::{assembly_ranges_of, sweep_range};
 use crate::error::Result;
 use crate::extremum::{Extreme, locate_max};
+use crate::ranges::{assembly_ranges_of, sweep_range};
 use crate::solve::Kinematics;
 
 /// Rows the peaks are bracketed on.

@@ -9,12 +9,12 @@ use super::grashof::{Grashof, grashof};
 use super::limits::LimitPosition;
 use super::limits::{FoundLimit, align_flat_limits, found_limits, span};
 use super::outputs::{Output, outputs};
-use super::ranges::assembly_ranges_of;
 use super::time_ratio::{TimeRatioNote, time_ratio};
 use super::toggles::Toggle;
 use super::toggles::toggles;
 use super::transmission::{TransmissionAngle, transmission_angle};
 use crate::assembly::AssemblyRanges;
+use crate::ranges::assembly_ranges_of;
 
 /// Everything `linkage report` prints.
 #[derive(Clone, Debug, PartialEq, Serialize)]

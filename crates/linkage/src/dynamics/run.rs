@@ -12,13 +12,13 @@ use super::implicit;
 use super::output::{RunStats, Sample, SimEvent, Simulation};
 use super::rhs::{Point, Rhs, State};
 use super::settings::{Method, Settings};
+use crate::angles::unwrap_near;
 use crate::error::{LinkageError, Result};
 use crate::ids::LinkId;
 use crate::model::SceneProblem;
 use crate::roots_util::refine;
 use crate::scene::StopAction;
 use crate::solve::Kinematics;
-use crate::sweep::unwrap_near;
 
 /// An end stop resolved to the link it watches.
 struct Stop {

@@ -6,9 +6,9 @@
 //! the coordinates' second derivatives zero.
 
 use super::Newton;
+use crate::angles::unwrap_near;
 use crate::model::{CamJoint, FollowerGuide};
 use crate::motion::{LinkMotion, Vec2};
-use crate::sweep::unwrap_near;
 
 /// The follower's coordinate: an arm's angle (rad), a slider's travel along its ground
 /// guide from the guide's point (m).
