@@ -19,6 +19,7 @@ section "cargo fmt --check"
 cargo fmt --all -- --check
 
 section "architecture: no import cycle, docs/architecture.md's module graphs true"
+python3 scripts/test_code_measures.py
 python3 scripts/code_measures.py --check
 
 section "clippy (native, all targets)"
