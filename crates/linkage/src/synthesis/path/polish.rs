@@ -90,11 +90,7 @@ impl Polish {
         tolerance: f64,
         after_stall: bool,
     ) -> Option<Self> {
-        let stage = if problem.timing.is_none() {
-            projected(problem, &params, left, angles, settings(tolerance), false)?
-        } else {
-            joint(problem, &params, left, &angles, settings(tolerance), false)?
-        };
+        let stage = first_stage(problem, &params, left, angles, settings(tolerance), false)?;
         Some(Self {
             left,
             tolerance,
@@ -160,21 +156,10 @@ impl Polish {
                     // Untimed, the patient refinement projects the angles out again:
                     // jointly, an ill-determined linkage's last digits crawl.
                     let params: [f64; PARAMS] = std::array::from_fn(|k| x[k]);
-                    let patient_settings = patient_settings(self.tolerance);
-                    let stage = if problem.timing.is_none() {
-                        let angles = problem.angles_of(&x);
-                        projected(problem, &params, left, angles, patient_settings, true)
-                    } else {
-                        joint(
-                            problem,
-                            &params,
-                            left,
-                            &problem.angles_of(&x),
-                            patient_settings,
-                            true,
-                        )
-                    };
-                    if let Some(stage) = stage {
+                    let settings = patient_settings(self.tolerance);
+                    let angles = problem.angles_of(&x);
+                    if let Some(stage) = first_stage(problem, &params, left, angles, settings, true)
+                    {
                         self.stage = stage;
                         return (used, None);
                     }
@@ -186,6 +171,23 @@ impl Polish {
                 (used, Some(outcome))
             }
         }
+    }
+}
+
+/// The first stage of a refinement of `params` on branch `left` meeting the targets
+/// at `angles`: untimed, with the angles projected out; timed, every unknown at once.
+fn first_stage(
+    problem: &Problem,
+    params: &[f64; PARAMS],
+    left: bool,
+    angles: Vec<f64>,
+    settings: Settings,
+    patient: bool,
+) -> Option<Stage> {
+    if problem.timing.is_none() {
+        projected(problem, params, left, angles, settings, patient)
+    } else {
+        joint(problem, params, left, &angles, settings, patient)
     }
 }
 
