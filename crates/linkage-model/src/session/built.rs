@@ -4,6 +4,7 @@
 
 use linkage::{Kinematics, Mechanism, SceneFile, Solution};
 
+use super::cam_curves::CamCurves;
 use super::curves::Curves;
 use super::topology::Topology;
 
@@ -16,11 +17,16 @@ pub(crate) struct Built {
 }
 
 impl Built {
-    /// Builds at `input` (or the scene's start angle).
-    pub(crate) fn new(scene: &SceneFile, input: Option<f64>) -> linkage::Result<Self> {
+    /// Builds at `input` (or the scene's start angle); `earlier_cams` are the cam
+    /// curves before the edit, kept where a cam joint is unchanged.
+    pub(crate) fn new(
+        scene: &SceneFile,
+        input: Option<f64>,
+        earlier_cams: &[CamCurves],
+    ) -> linkage::Result<Self> {
         let kin = Kinematics::new(Mechanism::from_scene(scene)?)?;
         let start = kin.mechanism().driver.start_rad;
-        Self::at(kin, input.unwrap_or(start))
+        Self::at(kin, input.unwrap_or(start), earlier_cams)
     }
 
     /// Where point `name` is in the built pose, m.
@@ -29,12 +35,16 @@ impl Built {
         Some(self.pose.points[p].position)
     }
 
-    /// Solves `kin` at `input` and sweeps it.
-    pub(crate) fn at(mut kin: Kinematics, input: f64) -> linkage::Result<Self> {
+    /// Solves `kin` at `input` and sweeps it (`earlier_cams` as in [`Self::new`]).
+    pub(crate) fn at(
+        mut kin: Kinematics,
+        input: f64,
+        earlier_cams: &[CamCurves],
+    ) -> linkage::Result<Self> {
         let pose = kin.solve(input)?;
-        let curves = Curves::compute(&mut kin)?;
+        let curves = Curves::compute(&mut kin, earlier_cams)?;
         Ok(Self {
-            topology: Topology::of(kin.mechanism()),
+            topology: Topology::of(kin.mechanism(), &curves.cams),
             kin,
             pose,
             curves,

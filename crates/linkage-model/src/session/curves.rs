@@ -15,6 +15,8 @@ use linkage::scene::Models;
 use linkage::sweep::{Sweep, sweep};
 use linkage::{Kinematics, LinkId, LinkageError, PointId, Solution};
 
+use super::cam_curves::CamCurves;
+
 /// The coefficient of speed fluctuation the app sizes flywheels for (a common design
 /// value for presses and punches; `linkage flywheel --delta` takes any).
 pub const FLYWHEEL_DELTA: f64 = 0.05;
@@ -69,15 +71,16 @@ pub struct Curves {
     /// The timing diagram: every output against the main shaft, with its dwells.
     pub timing: TimingDiagram,
     /// Every cam joint over its turn.
-    pub cams: Vec<super::cam_curves::CamCurves>,
+    pub cams: Vec<CamCurves>,
 }
 
 impl Curves {
-    /// Sweeps `k` and derives the kinematic curves.
+    /// Sweeps `k` and derives the kinematic curves; a cam joint's curves are taken
+    /// from `earlier_cams` where the joint is unchanged ([`CamCurves::of`]).
     ///
     /// # Errors
     /// The sweep's own error (e.g. the start angle does not assemble).
-    pub fn compute(k: &mut Kinematics) -> linkage::Result<Self> {
+    pub fn compute(k: &mut Kinematics, earlier_cams: &[CamCurves]) -> linkage::Result<Self> {
         let sw = sweep(k, CURVE_STEPS)?;
         let full_rotation = {
             let [a, b] = sw.range;
@@ -112,7 +115,7 @@ impl Curves {
             full_rotation,
             input_deg,
             timing: timing_of_sweep(k, &sw),
-            cams: super::cam_curves::CamCurves::of(k.mechanism()),
+            cams: CamCurves::of(k.mechanism(), earlier_cams),
         })
     }
 }

@@ -110,7 +110,7 @@ impl Session {
             return;
         }
         let input = self.edit_input();
-        let why = match limit::try_assemble(&scene, input) {
+        let why = match limit::try_assemble(&scene, input, &self.curves().cams) {
             Ok(built) => return self.commit(EditTarget::Length(index), scene, built),
             Err(why) => why,
         };
@@ -192,7 +192,7 @@ impl Session {
     }
 
     fn replace(&mut self, scene: SceneFile) {
-        match super::Built::new(&scene, None) {
+        match super::Built::new(&scene, None, &self.curves().cams) {
             Ok(built) => self.commit(EditTarget::Replaced, scene, built),
             Err(why) => {
                 self.message = Some(Notice::EditRefused {
@@ -223,8 +223,9 @@ impl Session {
             return;
         };
         // At the current input, or where it stood if it does not assemble here.
-        let built = super::Built::new(&to.scene, Some(self.input_rad()))
-            .or_else(|_| super::Built::new(&to.scene, Some(to.input_rad)));
+        let cams = &self.curves().cams;
+        let built = super::Built::new(&to.scene, Some(self.input_rad()), cams)
+            .or_else(|_| super::Built::new(&to.scene, Some(to.input_rad), cams));
         match built {
             Ok(built) => {
                 self.doc.travel(back, self.input_rad());
@@ -237,7 +238,7 @@ impl Session {
     /// Rebuilds everything from `scene` at the current input; on failure nothing
     /// changes and the notice says `what` failed and why.
     pub(super) fn rebuild(&mut self, target: EditTarget, scene: SceneFile, what: String) {
-        match super::Built::new(&scene, Some(self.edit_input())) {
+        match super::Built::new(&scene, Some(self.edit_input()), &self.curves().cams) {
             Ok(built) => self.commit(target, scene, built),
             Err(why) => self.message = Some(Notice::EditRefused { what, why }),
         }

@@ -10,6 +10,7 @@ use linkage::scene::LengthUnit;
 use linkage::{Kinematics, LinkageError, Mechanism, SceneFile};
 
 use super::Built;
+use super::cam_curves::CamCurves;
 use super::params::LengthParam;
 
 /// Most margin evaluations (or bisections, for chains solved by Newton only) per limit:
@@ -55,11 +56,16 @@ impl fmt::Display for NotAssembled {
 }
 
 /// Builds `scene` at `input` with what an edit shows at once, or says why not: for a
-/// closed-form chain that does not close, which group, without solving.
+/// closed-form chain that does not close, which group, without solving. The cam
+/// curves before the edit, `earlier_cams`, are kept where a cam joint is unchanged.
 ///
 /// # Errors
 /// Why the scene does not build or assemble at `input`.
-pub(crate) fn try_assemble(scene: &SceneFile, input: f64) -> Result<Built, NotAssembled> {
+pub(crate) fn try_assemble(
+    scene: &SceneFile,
+    input: f64,
+    earlier_cams: &[CamCurves],
+) -> Result<Built, NotAssembled> {
     let mech = Mechanism::from_scene(scene).map_err(NotAssembled::Solver)?;
     let mut kin = Kinematics::new(mech).map_err(NotAssembled::Solver)?;
     if let Some(c) = kin.closure(input)
@@ -72,7 +78,7 @@ pub(crate) fn try_assemble(scene: &SceneFile, input: f64) -> Result<Built, NotAs
             shortfall: kin.shortfall(input, c.group).map(Box::new),
         });
     }
-    Built::at(kin, input).map_err(NotAssembled::Solver)
+    Built::at(kin, input, earlier_cams).map_err(NotAssembled::Solver)
 }
 
 /// The value of `param` nearest `bad`, between `good` (where `scene` assembles at

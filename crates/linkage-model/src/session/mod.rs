@@ -119,7 +119,7 @@ impl Session {
     /// # Errors
     /// Why the mechanism does not assemble.
     pub fn open_scene(source: SceneSource, scene: SceneFile) -> Result<Self, LinkageError> {
-        let built = Built::new(&scene, None)?;
+        let built = Built::new(&scene, None, &[])?;
         let mut session = Self {
             lengths: length_params(&scene),
             doc: Document::new(source, scene),

@@ -50,8 +50,8 @@ impl Session {
         if !carried {
             return Err(PointRefusal::NoSuchPoint);
         }
-        let built =
-            limit::try_assemble(&scene, self.input_rad()).map_err(PointRefusal::NotAssembled)?;
+        let built = limit::try_assemble(&scene, self.input_rad(), &self.curves().cams)
+            .map_err(PointRefusal::NotAssembled)?;
         let landed = built.point_position(name);
         let tolerance = 1e-9 * self.mechanism().size_m.max(1e-3);
         if landed.is_none_or(|p| (p - target).norm() > tolerance) {

@@ -4,6 +4,8 @@
 use linkage::motion::Vec2;
 use linkage::{Mechanism, PointId};
 
+use super::cam_curves::{CAM_SAMPLES, CamCurves};
+
 /// The joint structure of one mechanism, by point and link index.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Topology {
@@ -28,9 +30,15 @@ pub struct Topology {
 /// Points of a cam's drawn outline: a segment every 2 degrees of cam.
 pub const CAM_OUTLINE: usize = 180;
 
+/// The outline takes every this many of the cam curves' samples (the same angles:
+/// `TAU * 2i / 360` is `TAU * i / 180` to the last bit, a power of two apart).
+const OUTLINE_STRIDE: usize = CAM_SAMPLES / CAM_OUTLINE;
+const _: () = assert!(OUTLINE_STRIDE * CAM_OUTLINE == CAM_SAMPLES);
+
 impl Topology {
-    /// The topology of `m`.
-    pub fn of(m: &Mechanism) -> Self {
+    /// The topology of `m`; its cams' outlines from `cams`, the curves of `m`'s cam
+    /// joints (in `Mechanism::cams` order), so that the cam is evaluated once.
+    pub fn of(m: &Mechanism, cams: &[CamCurves]) -> Self {
         let joint_points = m.joint_points();
         let link_joints: Vec<Vec<PointId>> = m
             .link_ids()
@@ -63,13 +71,16 @@ impl Topology {
         let (cam_profiles, cam_past_limit) = m
             .cams
             .iter()
-            .map(|c| {
-                (0..CAM_OUTLINE)
-                    .map(|i| c.point_at(std::f64::consts::TAU * i as f64 / CAM_OUTLINE as f64))
+            .zip(cams)
+            .map(|(c, curves)| {
+                curves
+                    .points
+                    .iter()
+                    .step_by(OUTLINE_STRIDE)
                     .map(|p| {
                         let [x, y] = p.profile_m;
                         let on_link = c.centre_on_cam + Vec2::new(x, y);
-                        (on_link, p.past_limit(c.pressure_limit_rad()))
+                        (on_link, p.past_limit(curves.pressure_limit_rad))
                     })
                     .unzip()
             })

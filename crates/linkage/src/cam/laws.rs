@@ -8,6 +8,8 @@
 //! here in closed form piece by piece, their amplitude set so that s(1) = 1: so each
 //! value is exact, not a quadrature.
 
+use std::sync::LazyLock;
+
 use serde::{Deserialize, Serialize};
 
 /// A motion law for a rise (a return is a rise run backwards).
@@ -93,9 +95,9 @@ impl Law {
             }
             Self::Polynomial345 => polynomial(&[0.0, 0.0, 0.0, 10.0, -15.0, 6.0], u),
             Self::Polynomial4567 => polynomial(&[0.0, 0.0, 0.0, 0.0, 35.0, -84.0, 70.0, -20.0], u),
-            Self::ModifiedTrapezoid => Pieces::modified_trapezoid().at(u),
-            Self::ModifiedSine => Pieces::modified_sine().at(u),
-            Self::ModifiedConstantVelocity => Pieces::modified_constant_velocity().at(u),
+            Self::ModifiedTrapezoid => MODIFIED_TRAPEZOID.at(u),
+            Self::ModifiedSine => MODIFIED_SINE.at(u),
+            Self::ModifiedConstantVelocity => MODIFIED_CONSTANT_VELOCITY.at(u),
         }
     }
 
@@ -134,6 +136,14 @@ fn polynomial(c: &[f64], u: f64) -> Motion {
     m
 }
 
+// The piecewise laws, joined once: joining evaluates every piece's end (two sines
+// each), which per call made a modified-sine point cost eight sines instead of two,
+// and the cam feed's cam evaluates its law some thousands of times per edit.
+static MODIFIED_TRAPEZOID: LazyLock<Pieces> = LazyLock::new(Pieces::modified_trapezoid);
+static MODIFIED_SINE: LazyLock<Pieces> = LazyLock::new(Pieces::modified_sine);
+static MODIFIED_CONSTANT_VELOCITY: LazyLock<Pieces> =
+    LazyLock::new(Pieces::modified_constant_velocity);
+
 /// One piece of a piecewise acceleration: a(u) = c0 + c1 sin(ω (u − u0) + φ) on
 /// [u0, u1], with the velocity and displacement it starts from.
 #[derive(Clone, Copy, Debug)]
@@ -144,6 +154,8 @@ struct Piece {
     c1: f64,
     omega: f64,
     phi: f64,
+    /// sin φ and cos φ, made once with the piece.
+    sin_cos_phi: (f64, f64),
     v0: f64,
     s0: f64,
 }
@@ -162,7 +174,7 @@ impl Piece {
             };
         }
         let (sn, cs) = (w * x + f).sin_cos();
-        let (sn0, cs0) = f.sin_cos();
+        let (sn0, cs0) = self.sin_cos_phi;
         Motion {
             s: self.s0 + self.v0 * x + 0.5 * c0 * x * x - c1 / w * ((sn - sn0) / w - cs0 * x),
             v: self.v0 + c0 * x - c1 / w * (cs - cs0),
@@ -189,6 +201,7 @@ impl Pieces {
                 c1,
                 omega,
                 phi,
+                sin_cos_phi: phi.sin_cos(),
                 v0,
                 s0,
             };

@@ -169,7 +169,11 @@ impl CamJoint {
 
     /// Where the roller touches the cam at the cam link's angle `cam_angle` (rad).
     pub fn contact(&self, cam_angle: f64) -> CamContact {
-        let m = self.follower_at(cam_angle);
+        self.contact_of(self.follower_at(cam_angle))
+    }
+
+    /// Where the roller touches the cam with the follower at `m`.
+    fn contact_of(&self, m: FollowerMotion) -> CamContact {
         let ([w, dw, ddw], travel) = self.roller_by_coordinate(m.s);
         // The roller centre's path by the cam's angle (chain rule through q).
         let c = [w - self.centre, dw * m.v, ddw * (m.v * m.v) + dw * m.a];
@@ -190,14 +194,21 @@ impl CamJoint {
     /// and its rates per radian of cam, and the pitch and profile points in the cam's
     /// own frame about its centre (the cam link's axes).
     pub fn point_at(&self, cam_angle: f64) -> CamPoint {
-        let contact = self.contact(cam_angle);
+        // The program and the turn back to the cam's frame each once (the panel and
+        // the drawn outline take some thousands of points per edit of the cam).
+        let motion = self.program.at(cam_angle - self.phase_rad);
+        let contact = self.contact_of(FollowerMotion {
+            s: self.rest + motion.s,
+            ..motion
+        });
+        let (sin, cos) = (-cam_angle).sin_cos();
         let on_cam = |p: Vec2| {
-            let q = turn(p - self.centre, -cam_angle);
-            [q.x, q.y]
+            let q = p - self.centre;
+            [cos * q.x - sin * q.y, sin * q.x + cos * q.y]
         };
         CamPoint {
             angle_rad: cam_angle,
-            motion: self.program.at(cam_angle - self.phase_rad),
+            motion,
             pitch_m: on_cam(contact.roller),
             profile_m: on_cam(contact.point),
             pressure_angle_rad: contact.pressure_angle_rad,
