@@ -99,13 +99,15 @@ pub fn block_reach_m(size_m: f64) -> f64 {
     PIN_SHARE * size_m.max(1e-12) * f64::from(BLOCK_HALF[0].hypot(BLOCK_HALF[1]))
 }
 
-/// Fills `out` with the shapes of the session's current pose.
+/// Fills `out` with the shapes of the session's current pose, seen by `cam` over
+/// `visible_m` ([min x, min y, max x, max y], m: the view's rectangle in the world).
 pub fn build(
     out: &mut Vec<Shape>,
     s: &Session,
     cam: &Camera,
     layers: Layers,
     m_per_px: f64,
+    visible_m: [f64; 4],
 ) -> VectorScales {
     out.clear();
     let m = s.mechanism();
@@ -133,7 +135,29 @@ pub fn build(
     links(&mut push, &d);
     rollers(&mut push, &d);
     sliders_springs_and_pins(&mut push, &d);
-    arrows(&mut push, &d, layers, m_per_px)
+    arrows(&mut push, &d, layers, m_per_px, visible_m)
+}
+
+/// The box `b` ([min x, min y, max x, max y]) shrunk by `margin` on every side.
+fn visible_m_shrunk(b: [f64; 4], margin: f64) -> [f64; 4] {
+    [b[0] + margin, b[1] + margin, b[2] - margin, b[3] - margin]
+}
+
+/// The largest scale up to `full` at which the arrow `v` from `at` ends inside
+/// `inside`; `full` for a pin outside it (off screen, its arrow is no concern) or a
+/// vector that is not finite.
+fn scale_keeping_inside(at: linkage::Vec2, v: linkage::Vec2, full: f64, inside: [f64; 4]) -> f64 {
+    let within = |x: f64, lo: f64, hi: f64| (lo..=hi).contains(&x);
+    if !(within(at.x, inside[0], inside[2]) && within(at.y, inside[1], inside[3])) {
+        return full;
+    }
+    let room = |x: f64, dx: f64, lo: f64, hi: f64| match dx {
+        d if d > 0.0 => (hi - x) / d,
+        d if d < 0.0 => (lo - x) / d,
+        _ => f64::INFINITY,
+    };
+    let s = room(at.x, v.x, inside[0], inside[2]).min(room(at.y, v.y, inside[1], inside[3]));
+    if s.is_nan() { full } else { full.min(s) }
 }
 
 /// Where a guide fixed to ground is drawn, m: its centre line from `a` to `b` over
@@ -286,13 +310,21 @@ fn sliders_springs_and_pins(push: &mut impl FnMut(Option<Shape>), d: &Drawn<'_>)
     }
 }
 
+/// The least share of an arrow's full scale that keeping its tip in the view may
+/// leave (a pin at the view's edge moving outwards is drawn clipped, not as a dot).
+const LEAST_ARROW_SHARE: f64 = 0.1;
+
 /// The velocity and acceleration arrows at the joints, where `layers` shows them:
-/// the largest a third of the mechanism long. Returns the scales they are drawn at.
+/// the largest a third of the mechanism long, and shorter where that would carry a
+/// tip past the view's edge (the fit frames the links, not the arrows: a slider at
+/// the end of its travel moving outwards ran off the view). Returns the scales they
+/// are drawn at.
 fn arrows(
     push: &mut impl FnMut(Option<Shape>),
     d: &Drawn<'_>,
     layers: Layers,
     m_per_px: f64,
+    visible_m: [f64; 4],
 ) -> VectorScales {
     let (pose, size) = (d.s.pose(), d.s.mechanism().size_m.max(1e-12));
     let mut scales = VectorScales::default();
@@ -324,7 +356,13 @@ fn arrows(
         if !on || largest <= 0.0 {
             continue;
         }
-        *scale = 0.33 * size / largest;
+        let full = 0.33 * size / largest;
+        let inside = visible_m_shrunk(visible_m, 12.0 * m_per_px);
+        *scale = joint_points
+            .iter()
+            .map(|&p| scale_keeping_inside(pose.points[p].position, vec_of(p), full, inside))
+            .fold(full, f64::min)
+            .max(LEAST_ARROW_SHARE * full);
         for &p in joint_points {
             let v = vec_of(p) * *scale;
             if v.norm() < 2.0 * m_per_px {

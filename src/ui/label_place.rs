@@ -1,9 +1,11 @@
 //! Where a joint's name goes in the mechanism view: beside its pin, on the side
 //! where it covers nothing. Each of eight places around the pin is scored by what
-//! it would cover (another joint's pin, a link, a velocity or acceleration arrow, a
-//! name already placed) and the clearest is taken; ties keep the textbook's place,
-//! above and to the right. Before, every name sat above and to the right, and at
-//! 60° on the die cutter "A" covered B's pin.
+//! it would cover (another joint's pin, a link, a velocity or acceleration arrow or
+//! its tip, a name already placed) and the clearest is taken; ties keep the
+//! textbook's place, above and to the right. Before, every name sat above and to the
+//! right, and at 60° on the die cutter "A" covered B's pin; on a phone "A" sat at the
+//! tip of C's velocity arrow (read as "the velocity of A"), and zoomed in, names hid
+//! under pins drawn larger than the fixed clearance.
 
 use eframe::egui::{Pos2, Rect, Vec2, pos2, vec2};
 
@@ -16,6 +18,18 @@ pub struct Obstacles {
     pub segments: Vec<[Pos2; 2]>,
     /// Names already placed.
     pub names: Vec<Rect>,
+    /// The tips of the arrows: a name at one reads as the arrow's point.
+    pub tips: Vec<Pos2>,
+    /// The pins' drawn radius, points (they grow as the view zooms in); a name keeps
+    /// this far from a pin's centre, and at least [`PIN_CLEARANCE`].
+    pub pin_radius: f32,
+}
+
+impl Obstacles {
+    /// How far a name keeps from a pin's centre, points.
+    fn pin_clearance(&self) -> f32 {
+        (self.pin_radius + 3.0).max(PIN_CLEARANCE)
+    }
 }
 
 /// A pin's drawn radius with a margin, points: a name keeps this far from any pin's
@@ -26,6 +40,9 @@ pub const PIN_CLEARANCE: f32 = 9.0;
 const LINK_HALF_WIDTH: f32 = 6.0;
 /// The gap between a pin and its own name, points.
 const GAP: f32 = 4.0;
+/// How far a name keeps from an arrow's tip, points: the head (9 points long) and a
+/// margin.
+pub const TIP_CLEARANCE: f32 = 10.0;
 
 /// The eight places around a pin, the textbook's first (above right).
 const PLACES: [(f32, f32); 8] = [
@@ -42,13 +59,13 @@ const PLACES: [(f32, f32); 8] = [
 /// The rectangle for a name of `size` beside the pin at `pin`, where it covers the
 /// least of `obstacles` (the pin itself excluded).
 pub fn place(pin: Pos2, size: Vec2, obstacles: &Obstacles) -> Rect {
-    place_clear_of(pin, PIN_CLEARANCE, size, obstacles)
+    place_clear_of(pin, 0.0, size, obstacles)
 }
 
 /// As [`place`], for a pin drawn inside a shape `radius` points around it (a slider's
 /// block): the name goes outside that shape.
 pub fn place_clear_of(pin: Pos2, radius: f32, size: Vec2, obstacles: &Obstacles) -> Rect {
-    let reach = radius.max(PIN_CLEARANCE) + GAP;
+    let reach = radius.max(obstacles.pin_clearance()) + GAP;
     let candidates = PLACES
         .iter()
         .map(|&(dx, dy)| candidate(pin, reach, size, dx, dy));
@@ -81,13 +98,19 @@ fn candidate(pin: Pos2, reach: f32, size: Vec2, dx: f32, dy: f32) -> Rect {
     Rect::from_min_size(min, size)
 }
 
-/// What a name at `rect` would cover: a pin or a name counts most, a segment less.
+/// What a name at `rect` would cover: a pin, a name or an arrow's tip counts most, a
+/// segment less.
 fn cost(rect: Rect, own: Pos2, obstacles: &Obstacles) -> f32 {
-    let near = rect.expand(PIN_CLEARANCE);
+    let near = rect.expand(obstacles.pin_clearance());
     let pins = obstacles
         .pins
         .iter()
         .filter(|p| p.distance(own) > 0.5 && near.contains(**p))
+        .count();
+    let tips = obstacles
+        .tips
+        .iter()
+        .filter(|t| rect.expand(TIP_CLEARANCE).contains(**t))
         .count();
     let names = obstacles
         .names
@@ -99,7 +122,7 @@ fn cost(rect: Rect, own: Pos2, obstacles: &Obstacles) -> f32 {
         .iter()
         .filter(|&&[a, b]| crosses(rect.expand(LINK_HALF_WIDTH), a, b))
         .count();
-    100.0 * (pins + names) as f32 + 10.0 * segments as f32
+    100.0 * (pins + names + tips) as f32 + 10.0 * segments as f32
 }
 
 /// Whether the segment from `a` to `b` passes through `rect` (sampled finely
@@ -121,7 +144,7 @@ mod tests {
         let obstacles = Obstacles {
             pins: vec![a, b],
             segments: vec![[a, b]],
-            names: Vec::new(),
+            ..Obstacles::default()
         };
         let rect = place(a, vec2(10.0, 14.0), &obstacles);
         assert!(!rect.expand(PIN_CLEARANCE).contains(b), "{rect:?}");
@@ -143,9 +166,41 @@ mod tests {
         let obstacles = Obstacles {
             pins: vec![a],
             segments: vec![[a, pos2(150.0, -50.0)]],
-            names: Vec::new(),
+            ..Obstacles::default()
         };
         let rect = place(a, vec2(10.0, 14.0), &obstacles);
         assert!(!crosses(rect, a, pos2(150.0, -50.0)), "{rect:?}");
+    }
+
+    /// Another arrow's tip just above and to the right: the name goes elsewhere.
+    #[test]
+    fn a_name_keeps_off_an_arrows_tip() {
+        let a = pos2(50.0, 50.0);
+        let tip = pos2(66.0, 36.0);
+        let obstacles = Obstacles {
+            pins: vec![a],
+            segments: vec![[pos2(66.0, 96.0), tip]],
+            tips: vec![tip],
+            ..Obstacles::default()
+        };
+        let rect = place(a, vec2(10.0, 14.0), &obstacles);
+        assert!(!rect.expand(TIP_CLEARANCE).contains(tip), "{rect:?}");
+    }
+
+    /// Pins drawn larger (zoomed in): the name goes outside the drawn pin.
+    #[test]
+    fn a_name_clears_a_large_pin() {
+        let a = pos2(200.0, 200.0);
+        let obstacles = Obstacles {
+            pins: vec![a],
+            pin_radius: 30.0,
+            ..Obstacles::default()
+        };
+        let rect = place(a, vec2(10.0, 14.0), &obstacles);
+        let nearest = pos2(
+            a.x.clamp(rect.min.x, rect.max.x),
+            a.y.clamp(rect.min.y, rect.max.y),
+        );
+        assert!(nearest.distance(a) > 30.0, "{rect:?}");
     }
 }

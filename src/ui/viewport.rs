@@ -107,12 +107,17 @@ impl Viewport {
         let view = self.camera.uniform(rect, ppp);
         let started = web_time::Instant::now();
         if let Ok(mut list) = shapes.lock() {
+            let ([x0, y1], [x1, y0]) = (
+                self.camera.to_world(rect.left_top(), rect),
+                self.camera.to_world(rect.right_bottom(), rect),
+            );
             self.scales = build(
                 &mut list,
                 &st.session,
                 &self.camera,
                 st.view.layers,
                 f64::from(view.m_per_px),
+                [x0, y0, x1, y1],
             );
         }
         let build_us = started.elapsed().as_secs_f64() * 1e6;
@@ -185,6 +190,7 @@ fn point_labels(
             .iter()
             .filter_map(|&p| screen(p))
             .collect(),
+        pin_radius: (crate::render::build::PIN_SHARE * m.size_m * camera.points_per_m) as f32,
         ..Obstacles::default()
     };
     for joints in &topology.link_joints {
@@ -208,9 +214,12 @@ fn point_labels(
             let tip = pm.position + v * scale;
             if on && scale > 0.0 && tip.x.is_finite() && tip.y.is_finite() {
                 let from = camera.to_screen([pm.position.x, pm.position.y], rect);
-                obstacles
-                    .segments
-                    .push([from, camera.to_screen([tip.x, tip.y], rect)]);
+                let tip = camera.to_screen([tip.x, tip.y], rect);
+                // A still joint's arrow is no arrow: its tip is its pin.
+                if from.distance(tip) > 2.0 {
+                    obstacles.segments.push([from, tip]);
+                    obstacles.tips.push(tip);
+                }
             }
         }
     }
