@@ -67,6 +67,8 @@ pub enum ControlKind {
     Pane,
     /// The top bar's menu on a phone or tablet (the file actions, New…, views).
     Menu,
+    /// A polygon figure by its box; in view where at least half of it shows.
+    Figure,
 }
 
 /// One control as drawn this frame.

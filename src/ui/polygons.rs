@@ -17,8 +17,9 @@ use crate::ui::construction::ConstructionView;
 use crate::ui::control_map::ControlKind;
 use crate::ui::polygon_paint::{INK, Paper, draw, pos};
 
-/// A section header of the pane, where it was drawn.
+/// A section header of the pane or a figure, where it was drawn.
 struct Section {
+    kind: ControlKind,
     name: String,
     rect: egui::Rect,
     visible: bool,
@@ -27,15 +28,31 @@ struct Section {
 impl Section {
     fn of(ui: &egui::Ui, name: String, header: &egui::Response) -> Self {
         Self {
+            kind: ControlKind::Section,
             name,
             rect: header.rect,
             visible: ui.clip_rect().contains_rect(header.rect),
+        }
+    }
+
+    /// A figure, in view where at least half of it shows.
+    fn figure(ui: &egui::Ui, name: String, rect: egui::Rect) -> Self {
+        let shown = ui.clip_rect().intersect(rect);
+        Self {
+            kind: ControlKind::Figure,
+            name,
+            rect,
+            visible: shown.is_positive() && shown.area() >= 0.5 * rect.area(),
         }
     }
 }
 
 /// An arrow this close to the pointer (points) is the hovered one.
 const HOVER_PX: f32 = 6.0;
+
+/// On a phone or tablet, the figures stand side by side where the pane is this many
+/// times wider than a figure may be high.
+const SIDE_BY_SIDE: f32 = 1.4;
 
 /// The polygon pane's own state.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -83,22 +100,51 @@ impl PolygonPane {
             .show(ui, |ui| self.figures(ui, st, figure_height))
             .inner;
         for s in sections {
-            st.controls
-                .note_rect(ControlKind::Section, &s.name, s.rect, s.visible);
+            st.controls.note_rect(s.kind, &s.name, s.rect, s.visible);
         }
     }
 
     /// The figures, their tables, the construction and the force polygons; returns
-    /// where each section's header is (for the control map).
+    /// where each section's header and figure is (for the control map). On a phone
+    /// or tablet both figures are in view: side by side where the pane is wider than
+    /// a figure is high, else stacked at half the height each (before, each took the
+    /// pane's height: on a phone the figure was a third of its box's width and the
+    /// acceleration polygon below the fold).
     fn figures(&mut self, ui: &mut egui::Ui, st: &AppState, figure_height: f32) -> Vec<Section> {
         let mut sections = Vec::new();
         let before = self.hover.take();
         let mut hovered = None;
         let s = &st.session;
-        for q in [Quantity::Velocity, Quantity::Acceleration] {
+        let quantities = [Quantity::Velocity, Quantity::Acceleration];
+        // On a phone or tablet both figures are in view: side by side where the pane
+        // is wide, else one above the other at half the height each.
+        let both = st.layout.compact() && !st.layout.polygons_wide;
+        let side_by_side = both && ui.available_width() > SIDE_BY_SIDE * figure_height;
+        let figure_height = if both && !side_by_side {
+            0.5 * (figure_height - ui.spacing().interact_size.y)
+        } else {
+            figure_height
+        };
+        let show_figure = |ui: &mut egui::Ui, q: Quantity, sections: &mut Vec<Section>| {
             ui.strong(title(q));
             let fig = PolygonFigure::of_position(q, s.mechanism(), s.pose(), s.polygons());
-            let over_figure = figure(ui, &fig, before.as_ref(), figure_height);
+            let (over, rect) = figure(ui, &fig, before.as_ref(), figure_height);
+            sections.push(Section::figure(ui, title(q).to_owned(), rect));
+            over
+        };
+        if side_by_side {
+            hovered = ui.columns(2, |columns| {
+                let mut over = None;
+                for (column, q) in columns.iter_mut().zip(quantities) {
+                    over = over.or(show_figure(column, q, &mut sections));
+                }
+                over
+            });
+        }
+        for q in quantities {
+            if !side_by_side {
+                hovered = hovered.or(show_figure(ui, q, &mut sections));
+            }
             // A table wider than the pane scrolls sideways instead of widening it.
             let name = format!("{}: vector equations", title(q));
             let shown = egui::CollapsingHeader::new(&name)
@@ -110,8 +156,7 @@ impl PolygonPane {
                         .inner
                 });
             sections.push(Section::of(ui, name, &shown.header_response));
-            let over_table = shown.body_returned.flatten();
-            hovered = hovered.or(over_figure).or(over_table);
+            hovered = hovered.or(shown.body_returned.flatten());
         }
         self.hover = hovered;
         let name = "Construct an equation step by step";
@@ -124,12 +169,14 @@ impl PolygonPane {
     }
 }
 
+/// Draws `fig` at most `height` high; returns the arrow under the pointer and the
+/// figure's box.
 fn figure(
     ui: &mut egui::Ui,
     fig: &PolygonFigure,
     marked: Option<&Symbol>,
     height: f32,
-) -> Option<Symbol> {
+) -> (Option<Symbol>, egui::Rect) {
     let paper = Paper::new(ui, height);
     let laid = paper.lay_out(fig, None);
     let Paper {
@@ -146,12 +193,15 @@ fn figure(
             egui::FontId::proportional(12.0),
             ink,
         );
-        return None;
+        return (None, rect);
     }
     let near = response.hover_pos().and_then(|p| nearest_arrow(&laid, p));
     let lit = near.or_else(|| marked.and_then(|m| fig.arrows.iter().position(|a| &a.symbol == m)));
     draw(&painter, fig.unit(), &laid, lit, ink);
-    let arrow = &fig.arrows[near?];
+    let Some(near) = near else {
+        return (None, rect);
+    };
+    let arrow = &fig.arrows[near];
     let symbol = arrow.symbol.clone();
     let v = [arrow.to[0] - arrow.from[0], arrow.to[1] - arrow.from[1]];
     response.on_hover_ui_at_pointer(|ui| {
@@ -168,7 +218,7 @@ fn figure(
             v[1].atan2(v[0]).to_degrees()
         ));
     });
-    Some(symbol)
+    (Some(symbol), rect)
 }
 
 /// The arrow within [`HOVER_PX`] of `p`, the nearest.

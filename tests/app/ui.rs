@@ -295,6 +295,24 @@ fn a_dragged_slider_moves_the_pose_each_frame_and_the_report_follows_when_it_sto
 
 /// Phones held upright, a tablet either way, a small desktop window: the screens the
 /// issue names (390×844, 430×932, 768×1024, 1024×768) and 800×600.
+/// Both polygon figures show at least half of their box on the sheet's Polygons
+/// tab (before, on a phone the acceleration polygon was below the fold).
+fn both_polygons_in_view(h: &Harness<'static, LinkageApp>, device: &str) {
+    use linkage_lab::ui::control_map::ControlKind;
+    let figures: Vec<_> = h
+        .state()
+        .state
+        .controls
+        .of_kind(ControlKind::Figure)
+        .map(|e| (e.label.clone(), e.visible))
+        .collect();
+    assert_eq!(figures.len(), 2, "{device}: {figures:?}");
+    assert!(
+        figures.iter().all(|(_, shown)| *shown),
+        "{device}: a polygon is out of view: {figures:?}"
+    );
+}
+
 const DEVICES: [(&str, f32, f32); 5] = [
     ("phone_390x844", 390.0, 844.0),
     ("phone_430x932", 430.0, 932.0),
@@ -362,6 +380,9 @@ fn phones_and_tablets_give_the_view_half_the_screen_and_reach_every_panel() {
             common::click(&mut h, egui::pos2(0.5 * (a + c), 0.5 * (b + d)));
             h.run();
             assert_eq!(h.state().state.layout.tab, tab, "{name}");
+            if tab == SheetTab::Polygons {
+                both_polygons_in_view(&h, name);
+            }
             if name == "phone_390x844" && tab != SheetTab::Controls {
                 h.snapshot(format!("{name}_{}", tab.label().to_lowercase()));
             }
