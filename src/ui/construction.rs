@@ -54,11 +54,12 @@ impl ConstructionView {
                     }
                 }
             });
-        let pole = if eq.kind == Quantity::Velocity {
-            "p"
-        } else {
-            "p'"
-        };
+        let m = st.session.mechanism();
+        let joint_names = m
+            .joint_points()
+            .into_iter()
+            .map(|p| m.points[p].name.as_str());
+        let pole = linkage_diagram::polygon_figure::pole_name(eq.kind, joint_names);
         let crossing = eq.lhs.first().map_or("x".to_string(), |t| {
             let prime = if eq.kind == Quantity::Velocity {
                 ""
@@ -67,7 +68,7 @@ impl ConstructionView {
             };
             format!("{}{prime}", t.symbol.point.to_lowercase())
         });
-        let steps = match construct(eq, pole, &crossing) {
+        let steps = match construct(eq, &pole, &crossing) {
             Ok(steps) => steps,
             Err(e) => {
                 ui.colored_label(ui.visuals().warn_fg_color, e.to_string());

@@ -25,6 +25,24 @@ pub struct Arrow {
     pub symbol: Symbol,
 }
 
+/// The pole's name in a polygon of `quantity` whose joints are `joints`: p (p' for
+/// accelerations) as the textbooks write it, or π (π') where a joint is named P and
+/// its point in the polygon is p (the quick-return shaper's pin: two points named p
+/// in one figure), as Artobolevsky's textbooks write the pole.
+pub fn pole_name<'a>(quantity: Quantity, mut joints: impl Iterator<Item = &'a str>) -> String {
+    let prime = if quantity == Quantity::Acceleration {
+        "'"
+    } else {
+        ""
+    };
+    let letter = if joints.any(|n| n.eq_ignore_ascii_case("p")) {
+        "π"
+    } else {
+        "p"
+    };
+    format!("{letter}{prime}")
+}
+
 /// A polygon ready to lay out.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PolygonFigure {
@@ -54,7 +72,7 @@ impl PolygonFigure {
         let joints: Vec<&(String, Pt)> = joints.iter().filter(|(_, v)| finite(v)).collect();
         let mut vertices = vec![Vertex {
             at: [0.0, 0.0],
-            name: format!("p{prime}"),
+            name: pole_name(quantity, joints.iter().map(|(n, _)| n.as_str())),
         }];
         let mut arrows = Vec::new();
         for (name, v) in &joints {

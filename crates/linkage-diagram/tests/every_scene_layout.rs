@@ -2,7 +2,8 @@
 //! its range, both polygons, in a small pane and a large one: every label has a free
 //! place — no two label boxes overlap, none touches an arrow head or a vertex, all
 //! lie inside the pane — and the figure fills at least 60 % of the pane in one
-//! direction. The same for the pose's joint names and instant centres.
+//! direction; no two points share a name. The same for the pose's joint names and
+//! instant centres.
 
 mod common;
 
@@ -76,6 +77,17 @@ fn polygon_labels_have_free_places_and_figures_fill_their_panes() {
             let eqs = polygons(&k, &s);
             for q in [Quantity::Velocity, Quantity::Acceleration] {
                 let fig = PolygonFigure::of_position(q, &m, &s, &eqs);
+                // Each point of the figure has its own name (the quick-return
+                // shaper's pin P was "p" beside the pole p).
+                let mut names: Vec<&str> = fig.vertices.iter().map(|v| v.name.as_str()).collect();
+                names.sort_unstable();
+                let before = names.len();
+                names.dedup();
+                assert_eq!(
+                    names.len(),
+                    before,
+                    "{file} {q:?}: a name twice in {names:?}"
+                );
                 for [w, h] in PANES {
                     let pane = Rect::from_min_size([10.0, 20.0], w, h);
                     let laid = layout_polygon(&fig, pane, Sizes::default(), &measure);
