@@ -310,13 +310,20 @@ fn sliders_springs_and_pins(push: &mut impl FnMut(Option<Shape>), d: &Drawn<'_>)
     }
 }
 
+/// The cycle's typical largest arrow, a share of the mechanism's size.
+const FULL_SHARE: f64 = 0.33;
+/// The longest arrow in any frame, a share of the mechanism's size.
+const MOST_SHARE: f64 = 0.5;
+
 /// The least share of an arrow's full scale that keeping its tip in the view may
 /// leave (a pin at the view's edge moving outwards is drawn clipped, not as a dot).
 const LEAST_ARROW_SHARE: f64 = 0.1;
 
 /// The velocity and acceleration arrows at the joints, where `layers` shows them:
-/// the largest a third of the mechanism long, and shorter where that would carry a
-/// tip past the view's edge (the fit frames the links, not the arrows: a slider at
+/// the cycle's typical largest a third of the mechanism long (one scale through the
+/// cycle, as a drawing's μv: before, the scale followed each frame's largest arrow,
+/// and an arrow's length said nothing from one crank angle to the next), none longer
+/// than half of it, and shorter where that would carry a tip past the view's edge (the fit frames the links, not the arrows: a slider at
 /// the end of its travel moving outwards ran off the view). Returns the scales they
 /// are drawn at.
 fn arrows(
@@ -356,7 +363,11 @@ fn arrows(
         if !on || largest <= 0.0 {
             continue;
         }
-        let full = 0.33 * size / largest;
+        // To the cycle's typical largest vector, so that lengths compare between
+        // crank angles; never longer than half the mechanism (a dynamic run's speeds,
+        // or a position past the cycle's 90th percentile).
+        let typical = d.s.curves().typical_largest[field];
+        let full = FULL_SHARE * size / typical.max(largest * FULL_SHARE / MOST_SHARE);
         let inside = visible_m_shrunk(visible_m, 12.0 * m_per_px);
         *scale = joint_points
             .iter()

@@ -130,3 +130,47 @@ fn names_clear_the_pins_drawn_larger_when_zoomed_in() {
     let checked = check_names(egui::vec2(820.0, 1180.0), 3.0);
     assert!(checked > 100, "{checked} names checked");
 }
+
+/// The arrows keep one scale through the cycle (a drawing's μv): at most angles the
+/// velocity and acceleration scales are the cycle's, a third of the mechanism for
+/// its typical largest vector; only an arrow that would leave the view, or pass
+/// half the mechanism, draws another. Before, each frame scaled its own largest
+/// arrow to a third, and lengths said nothing from one angle to the next.
+#[test]
+fn the_arrows_keep_one_scale_through_the_cycle() {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1500.0, 950.0))
+        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
+    h.run_steps(2);
+    for scene in BUILTIN_SCENES {
+        let session = Session::open_builtin(scene.key).expect("opens");
+        h.state_mut().state.open_now(session);
+        h.state_mut().state.view.layers.accelerations = true;
+        h.run_steps(2);
+        let (size, typical) = {
+            let s = &h.state().state.session;
+            (s.mechanism().size_m, s.curves().typical_largest)
+        };
+        let [lo, hi] = h.state().state.session.input_range_deg();
+        let mut at_cycle_scale = [0; 2];
+        for k in 0..12 {
+            let deg = lo + (hi - lo) * (k as f64 + 0.5) / 12.0;
+            h.state_mut().state.edit(SceneEdit::Input { deg });
+            h.run_steps(2);
+            let scales = h.state().panels.viewport.scales;
+            for (n, (scale, typical)) in [scales.velocity, scales.acceleration]
+                .into_iter()
+                .zip(typical)
+                .enumerate()
+            {
+                let cycle = 0.33 * size / typical;
+                at_cycle_scale[n] += usize::from((scale - cycle).abs() <= 1e-9 * cycle);
+            }
+        }
+        assert!(
+            at_cycle_scale.iter().all(|&n| n >= 8),
+            "{}: of 12 angles, {at_cycle_scale:?} at the cycle's scales",
+            scene.key
+        );
+    }
+}

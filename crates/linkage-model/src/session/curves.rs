@@ -72,6 +72,11 @@ pub struct Curves {
     pub timing: TimingDiagram,
     /// Every cam joint over its turn.
     pub cams: Vec<CamCurves>,
+    /// The joints' largest velocity (m/s) and acceleration (m/s²) at a position,
+    /// the 90th percentile over the cycle: the view's arrows are drawn to it, so
+    /// that an arrow's length compares between crank angles (a velocity scale per
+    /// drawing, as the textbooks' μv), with no spike near a dead point setting it.
+    pub typical_largest: [f64; 2],
 }
 
 impl Curves {
@@ -116,8 +121,32 @@ impl Curves {
             input_deg,
             timing: timing_of_sweep(k, &sw),
             cams: CamCurves::of(k.mechanism(), earlier_cams),
+            typical_largest: typical_largest(k, &sw),
         })
     }
+}
+
+/// The 90th percentile over the sweep's positions of the joints' largest velocity
+/// and acceleration at a position ([`Curves::typical_largest`]); 0 where none is
+/// finite.
+fn typical_largest(k: &Kinematics, sw: &Sweep) -> [f64; 2] {
+    let joints = k.mechanism().joint_points();
+    let percentile = |of: fn(&linkage::PointMotion) -> linkage::Vec2| {
+        let mut largest: Vec<f64> = sw
+            .solutions
+            .iter()
+            .map(|s| {
+                joints
+                    .iter()
+                    .map(|&p| of(&s.points[p]).norm())
+                    .filter(|v| v.is_finite())
+                    .fold(0.0, f64::max)
+            })
+            .collect();
+        largest.sort_by(f64::total_cmp);
+        largest.get(largest.len() * 9 / 10).copied().unwrap_or(0.0)
+    };
+    [percentile(|m| m.velocity), percentile(|m| m.acceleration)]
 }
 
 /// The curves of what a scene models beyond kinematics, over the input angles of its
