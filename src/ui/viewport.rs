@@ -203,6 +203,13 @@ fn point_labels(
         }
     }
     ground_obstacles(&mut obstacles, st, camera, rect);
+    // The springs' coils, along the line between their ends.
+    for sp in &st.session.scene().forces.springs {
+        let end = |name: &str| m.point_index(name).and_then(screen);
+        if let (Some(a), Some(b)) = (end(&sp.a), end(&sp.b)) {
+            obstacles.segments.push([a, b]);
+        }
+    }
     // The arrows at the joints, as the view draws them.
     let layers = st.view.layers;
     for &p in &topology.joint_points {
@@ -227,7 +234,7 @@ fn point_labels(
     let ink = egui::Color32::from_gray(30);
     let block = (crate::render::build::block_reach_m(m.size_m) * camera.points_per_m) as f32;
     let mut placed = Vec::new();
-    for &p in &topology.joint_points {
+    for p in named_points(st) {
         let Some(at) = screen(p) else {
             continue;
         };
@@ -241,6 +248,35 @@ fn point_labels(
         placed.push((name.clone(), spot));
     }
     placed
+}
+
+/// The points the view names: every joint, every mark on a moving link (a coupler
+/// point whose trace is drawn, a centroid, a load's point), and the points the
+/// springs and forces name (a spring's end on the frame), each once. Before, only
+/// the joints: the flipper's coupler points and its spring's ends F and G, named in
+/// its controls, were nowhere on the drawing.
+fn named_points(st: &AppState) -> Vec<linkage::PointId> {
+    let (m, topology) = (st.session.mechanism(), st.session.topology());
+    let forces = &st.session.scene().forces;
+    let by_forces = forces
+        .springs
+        .iter()
+        .flat_map(|sp| [sp.a.as_str(), sp.b.as_str()])
+        .chain(forces.point_forces.iter().map(|f| f.point.as_str()))
+        .filter_map(|name| m.point_index(name));
+    let mut points: Vec<linkage::PointId> = Vec::new();
+    for p in topology
+        .joint_points
+        .iter()
+        .chain(&topology.marks)
+        .copied()
+        .chain(by_forces)
+    {
+        if !points.contains(&p) {
+            points.push(p);
+        }
+    }
+    points
 }
 
 /// The frame's symbols as the view draws them (`render::build`): each ground

@@ -174,3 +174,37 @@ fn the_arrows_keep_one_scale_through_the_cycle() {
         );
     }
 }
+
+/// The points a user reads of in the controls are named on the drawing: a spring's
+/// ends ("k F-G") and the marks on moving links (coupler points with their traces).
+/// Before, only the joints were: the flipper's F and G, S2 and W were nowhere.
+#[test]
+fn the_springs_ends_and_the_marks_are_named_in_the_view() {
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1500.0, 950.0))
+        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
+    h.run_steps(2);
+    let mut named = 0;
+    for scene in BUILTIN_SCENES {
+        let session = Session::open_builtin(scene.key).expect("opens");
+        h.state_mut().state.open_now(session);
+        h.run_steps(2);
+        let st = &h.state().state;
+        let (m, topology) = (st.session.mechanism(), st.session.topology());
+        let springs = st.session.scene().forces.springs.iter();
+        let wanted: Vec<String> = springs
+            .flat_map(|sp| [sp.a.clone(), sp.b.clone()])
+            .chain(topology.marks.iter().map(|&p| m.points[p].name.clone()))
+            .collect();
+        let labels = &h.state().panels.viewport.labels;
+        for name in &wanted {
+            assert!(
+                labels.iter().any(|(n, _)| n == name),
+                "{}: {name} is not named in the view",
+                scene.key
+            );
+            named += 1;
+        }
+    }
+    assert!(named >= 4, "{named} points checked");
+}
