@@ -111,7 +111,7 @@ fn items(r: &Report, unit: LengthUnit) -> Vec<(String, String)> {
                 }
             ),
         ),
-        None => ("Grashof: not a four-bar".into(), String::new()),
+        None => ("Grashof: only for a four-bar".into(), String::new()),
     });
     let note = r
         .time_ratio_note
@@ -119,7 +119,7 @@ fn items(r: &Report, unit: LengthUnit) -> Vec<(String, String)> {
         .map(ToString::to_string)
         .unwrap_or_default();
     out.push(match r.time_ratio {
-        Some(k) => (format!("K = {k:.4}"), note),
+        Some(k) => (format!("K = {k:.3}"), note),
         None => ("K: none".into(), note),
     });
     for (name, stroke) in &r.strokes_m {
