@@ -252,9 +252,10 @@ fn point_labels(
 
 /// The points the view names: every joint, every mark on a moving link (a coupler
 /// point whose trace is drawn, a centroid, a load's point), and the points the
-/// springs and forces name (a spring's end on the frame), each once. Before, only
-/// the joints: the flipper's coupler points and its spring's ends F and G, named in
-/// its controls, were nowhere on the drawing.
+/// springs, forces and length sliders name (a spring's end on the frame, a guide's
+/// point), each once. Before, only the joints: the flipper's coupler points and its
+/// spring's ends F and G, and the guides' points H and Q of the sliders "AH" and
+/// "O4-Q", named in the controls, were nowhere on the drawing.
 fn named_points(st: &AppState) -> Vec<linkage::PointId> {
     let (m, topology) = (st.session.mechanism(), st.session.topology());
     let forces = &st.session.scene().forces;
@@ -263,6 +264,12 @@ fn named_points(st: &AppState) -> Vec<linkage::PointId> {
         .iter()
         .flat_map(|sp| [sp.a.as_str(), sp.b.as_str()])
         .chain(forces.point_forces.iter().map(|f| f.point.as_str()))
+        .chain(
+            st.session
+                .lengths()
+                .iter()
+                .flat_map(|l| [l.from.as_str(), l.to.as_str()]),
+        )
         .filter_map(|name| m.point_index(name));
     let mut points: Vec<linkage::PointId> = Vec::new();
     for p in topology

@@ -176,8 +176,9 @@ fn the_arrows_keep_one_scale_through_the_cycle() {
 }
 
 /// The points a user reads of in the controls are named on the drawing: a spring's
-/// ends ("k F-G") and the marks on moving links (coupler points with their traces).
-/// Before, only the joints were: the flipper's F and G, S2 and W were nowhere.
+/// ends ("k F-G"), a length slider's ends ("AH": H, the guide's point) and the marks
+/// on moving links (coupler points with their traces). Before, only the joints
+/// were: the flipper's F and G, S2 and W, the paper-cup feed's H were nowhere.
 #[test]
 fn the_springs_ends_and_the_marks_are_named_in_the_view() {
     let mut h = Harness::builder()
@@ -195,6 +196,12 @@ fn the_springs_ends_and_the_marks_are_named_in_the_view() {
         let wanted: Vec<String> = springs
             .flat_map(|sp| [sp.a.clone(), sp.b.clone()])
             .chain(topology.marks.iter().map(|&p| m.points[p].name.clone()))
+            .chain(
+                st.session
+                    .lengths()
+                    .iter()
+                    .flat_map(|l| [l.from.clone(), l.to.clone()]),
+            )
             .collect();
         let labels = &h.state().panels.viewport.labels;
         for name in &wanted {
