@@ -340,8 +340,8 @@ fn legend(
 ) -> [f32; 2] {
     let small = FontId::proportional(12.0);
     let mut legend = format!("crank {:.2}°", st.session.input_rad().to_degrees());
-    if let Some(Ok(_)) = st.session.dynamics() {
-        legend += &format!(", t = {:.3} s", st.session.time_s());
+    if let Some(t) = st.session.run_time_shown() {
+        legend += &format!(", t = {t:.3} s");
     }
     if st.view.layers.velocities && scales.velocity > 0.0 {
         // The arrows' scale in the scene's length unit, as its lengths are written.

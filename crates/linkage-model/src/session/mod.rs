@@ -64,6 +64,10 @@ pub struct Session {
     message: Option<Notice>,
     /// Playback time of the dynamic run, s.
     time_s: f64,
+    /// Whether the crank was moved by hand since a pose of the dynamic run was
+    /// shown: the pose is then the chain's at that angle, not the run's at
+    /// `time_s`, and no run time goes with it.
+    moved_by_hand: bool,
     /// How long playback has held the run's last state, s (it starts again after
     /// half a second).
     held_s: f64,
@@ -127,6 +131,7 @@ impl Session {
             analyses: Analyses::new(built.curves),
             message: None,
             time_s: 0.0,
+            moved_by_hand: false,
             held_s: 0.0,
             play_direction: 1.0,
             generation: 0,
@@ -280,6 +285,14 @@ impl Session {
         self.time_s
     }
 
+    /// The dynamic run's time whose pose is shown, s; `None` in a scene without a
+    /// run, or with the crank moved by hand since (the pose is then no state of the
+    /// run: the flipper's legend said "t = 0.000 s" at any angle the slider set).
+    pub fn run_time_shown(&self) -> Option<f64> {
+        let run = matches!(self.analyses.dynamics(), Some(Ok(_)));
+        (run && !self.moved_by_hand).then_some(self.time_s)
+    }
+
     /// How many times the mechanism was rebuilt by edits (0 as opened).
     pub fn generation(&self) -> u64 {
         self.generation
@@ -386,6 +399,9 @@ impl Session {
     /// Makes the mechanism `built` (of the document's scene, just changed) current:
     /// the pose and curves now, the rest when shown, the dynamic run off the frame.
     fn accept(&mut self, built: Built) {
+        // A dynamic scene's edit shows the run's start (undo, where it stood).
+        let start = built.kin.mechanism().driver.start_rad;
+        self.moved_by_hand = (built.pose.input_rad - start).abs() > 1e-12;
         self.pose = Pose::new(built.kin, built.pose, built.topology);
         self.analyses.invalidate(built.curves);
         self.time_s = 0.0;

@@ -37,7 +37,10 @@ impl Session {
         }
         .to_radians();
         match self.pose.solve(x) {
-            Ok(()) => self.message = None,
+            Ok(()) => {
+                self.message = None;
+                self.moved_by_hand = true;
+            }
             Err(e) => self.message = Some(Notice::InputRefused(e)),
         }
     }
@@ -109,5 +112,6 @@ impl Session {
         pose.input_rad = sample.q;
         pose.input_speed_rad_s = sample.q_dot;
         self.pose.show(pose);
+        self.moved_by_hand = false;
     }
 }

@@ -266,3 +266,37 @@ fn refusals_name_links_and_lengths_never_the_solvers_terms() {
     }
     assert!(refused >= 10, "{refused} refusals seen");
 }
+
+/// The flipper's legend gives the run's time only with the run's pose: after the
+/// crank is moved by hand the pose is no state of the run (it said t = 0.000 s at
+/// any angle the slider set); the run's time shown again brings it back, and so
+/// does an edit (which shows the run's start).
+#[test]
+fn the_run_time_goes_with_the_runs_pose_only() {
+    let mut s = Session::open_builtin("gravity_flipper").expect("opens");
+    s.wait_for_run();
+    assert_eq!(s.run_time_shown(), Some(0.0), "opened at the run's start");
+    s.apply(SceneEdit::RunTime { s: 0.1 });
+    assert_eq!(s.run_time_shown(), Some(0.1));
+    s.apply(SceneEdit::Input { deg: 80.0 });
+    assert_eq!(s.run_time_shown(), None, "moved by hand");
+    s.apply(SceneEdit::RunTime { s: 0.05 });
+    assert_eq!(s.run_time_shown(), Some(0.05));
+    s.apply(SceneEdit::Input { deg: 80.0 });
+    s.apply(SceneEdit::SpringK {
+        index: 0,
+        n_per_m: 1400.0,
+    });
+    s.wait_for_run();
+    assert_eq!(
+        s.run_time_shown(),
+        Some(0.0),
+        "an edit shows the run's start"
+    );
+    assert_eq!(
+        Session::open_builtin("die_cutter")
+            .expect("opens")
+            .run_time_shown(),
+        None
+    );
+}
