@@ -40,6 +40,14 @@ pub const PIN_CLEARANCE: f32 = 9.0;
 const LINK_HALF_WIDTH: f32 = 6.0;
 /// The gap between a pin and its own name, points.
 const GAP: f32 = 4.0;
+/// The outer ring of places, as a multiple of the inner one's distance from the pin.
+const FARTHER: f32 = 1.9;
+/// What a place in the outer ring costs beyond what it covers: less than crossing a
+/// link or an arrow (10), more than nothing.
+const FARTHER_COST: f32 = 5.0;
+/// What a place nearer another pin than the name's own costs: as much as crossing
+/// a link or an arrow.
+const AMBIGUOUS_COST: f32 = 10.0;
 /// How far a name keeps from an arrow's tip, points: the head (9 points long) and a
 /// margin.
 pub const TIP_CLEARANCE: f32 = 10.0;
@@ -66,12 +74,20 @@ pub fn place(pin: Pos2, size: Vec2, obstacles: &Obstacles) -> Rect {
 /// block): the name goes outside that shape.
 pub fn place_clear_of(pin: Pos2, radius: f32, size: Vec2, obstacles: &Obstacles) -> Rect {
     let reach = radius.max(obstacles.pin_clearance()) + GAP;
-    let candidates = PLACES
-        .iter()
-        .map(|&(dx, dy)| candidate(pin, reach, size, dx, dy));
+    // The eight places beside the pin, then eight a little farther out: a clear
+    // place there beats one on a link or an arrow (at crank 0 the die cutter's "A",
+    // hemmed in by its pivot, the crank, the coupler and B's arrow, sat on the
+    // arrow), but not a clear place beside the pin.
+    let candidates = [(1.0, 0.0), (FARTHER, FARTHER_COST)]
+        .into_iter()
+        .flat_map(|(ring, extra)| {
+            PLACES
+                .iter()
+                .map(move |&(dx, dy)| (candidate(pin, ring * reach, size, dx, dy), extra))
+        });
     let mut best = None;
-    for (order, rect) in candidates.enumerate() {
-        let cost = cost(rect, pin, obstacles) + order as f32 * 0.01;
+    for (order, (rect, extra)) in candidates.enumerate() {
+        let cost = cost(rect, pin, obstacles) + extra + order as f32 * 0.01;
         if best.is_none_or(|(c, _)| cost < c) {
             best = Some((cost, rect));
         }
@@ -122,7 +138,15 @@ fn cost(rect: Rect, own: Pos2, obstacles: &Obstacles) -> f32 {
         .iter()
         .filter(|&&[a, b]| crosses(rect.expand(LINK_HALF_WIDTH), a, b))
         .count();
-    100.0 * (pins + names + tips) as f32 + 10.0 * segments as f32
+    // A name nearer another pin than its own reads as that pin's.
+    let own_distance = rect.center().distance(own);
+    let nearer_other = obstacles
+        .pins
+        .iter()
+        .any(|p| p.distance(own) > 0.5 && rect.center().distance(*p) < own_distance);
+    100.0 * (pins + names + tips) as f32
+        + 10.0 * segments as f32
+        + if nearer_other { AMBIGUOUS_COST } else { 0.0 }
 }
 
 /// Whether the segment from `a` to `b` passes through `rect` (sampled finely
@@ -202,5 +226,21 @@ mod tests {
             a.y.clamp(rect.min.y, rect.max.y),
         );
         assert!(nearest.distance(a) > 30.0, "{rect:?}");
+    }
+
+    /// Another pin a little to the right: the name goes where it is nearer its own
+    /// pin (above right, it read as the other's).
+    #[test]
+    fn a_name_is_nearer_its_own_pin_than_any_other() {
+        let (a, b) = (pos2(100.0, 100.0), pos2(132.0, 100.0));
+        let obstacles = Obstacles {
+            pins: vec![a, b],
+            ..Obstacles::default()
+        };
+        let rect = place(a, vec2(10.0, 14.0), &obstacles);
+        assert!(
+            rect.center().distance(a) < rect.center().distance(b),
+            "{rect:?}"
+        );
     }
 }
