@@ -14,6 +14,9 @@ use eframe::egui::{Pos2, Rect, Vec2, pos2, vec2};
 pub struct Obstacles {
     /// Pins (their centres): a name never covers one.
     pub pins: Vec<Pos2>,
+    /// Other named points (marks drawn as dots, a spring's end, a guide's point): a
+    /// name does not cover one, nor sit nearer one than its own point.
+    pub points: Vec<Pos2>,
     /// Links and arrows, as segments: a name avoids crossing them.
     pub segments: Vec<[Pos2; 2]>,
     /// Names already placed.
@@ -40,8 +43,11 @@ pub const PIN_CLEARANCE: f32 = 9.0;
 const LINK_HALF_WIDTH: f32 = 6.0;
 /// The gap between a pin and its own name, points.
 const GAP: f32 = 4.0;
-/// The outer ring of places, as a multiple of the inner one's distance from the pin.
-const FARTHER: f32 = 1.9;
+/// How much farther from the pin the outer ring of places is, points (a fixed step:
+/// as a multiple, a slider block's name went 60 points from its pin).
+const FARTHER: f32 = 12.0;
+/// How far a name keeps from another named point's dot, points.
+const POINT_CLEARANCE: f32 = 4.0;
 /// What a place in the outer ring costs beyond what it covers: less than crossing a
 /// link or an arrow (10), more than nothing.
 const FARTHER_COST: f32 = 5.0;
@@ -78,12 +84,12 @@ pub fn place_clear_of(pin: Pos2, radius: f32, size: Vec2, obstacles: &Obstacles)
     // place there beats one on a link or an arrow (at crank 0 the die cutter's "A",
     // hemmed in by its pivot, the crank, the coupler and B's arrow, sat on the
     // arrow), but not a clear place beside the pin.
-    let candidates = [(1.0, 0.0), (FARTHER, FARTHER_COST)]
+    let candidates = [(reach, 0.0), (reach + FARTHER, FARTHER_COST)]
         .into_iter()
         .flat_map(|(ring, extra)| {
             PLACES
                 .iter()
-                .map(move |&(dx, dy)| (candidate(pin, ring * reach, size, dx, dy), extra))
+                .map(move |&(dx, dy)| (candidate(pin, ring, size, dx, dy), extra))
         });
     let mut best = None;
     for (order, (rect, extra)) in candidates.enumerate() {
@@ -138,13 +144,19 @@ fn cost(rect: Rect, own: Pos2, obstacles: &Obstacles) -> f32 {
         .iter()
         .filter(|&&[a, b]| crosses(rect.expand(LINK_HALF_WIDTH), a, b))
         .count();
-    // A name nearer another pin than its own reads as that pin's.
+    let points = obstacles
+        .points
+        .iter()
+        .filter(|p| p.distance(own) > 0.5 && rect.expand(POINT_CLEARANCE).contains(**p))
+        .count();
+    // A name nearer another pin or named point than its own reads as that one's.
     let own_distance = rect.center().distance(own);
     let nearer_other = obstacles
         .pins
         .iter()
+        .chain(&obstacles.points)
         .any(|p| p.distance(own) > 0.5 && rect.center().distance(*p) < own_distance);
-    100.0 * (pins + names + tips) as f32
+    100.0 * (pins + names + tips + points) as f32
         + 10.0 * segments as f32
         + if nearer_other { AMBIGUOUS_COST } else { 0.0 }
 }
@@ -240,6 +252,24 @@ mod tests {
         let rect = place(a, vec2(10.0, 14.0), &obstacles);
         assert!(
             rect.center().distance(a) < rect.center().distance(b),
+            "{rect:?}"
+        );
+    }
+
+    /// A named point (a mark, a spring's end) is kept clear of and not read as the
+    /// name's: the cam feed's "B" had sat nearer the roller R than its own pin.
+    #[test]
+    fn a_name_keeps_off_and_away_from_other_named_points() {
+        let (a, r) = (pos2(100.0, 100.0), pos2(118.0, 84.0));
+        let obstacles = Obstacles {
+            pins: vec![a],
+            points: vec![r],
+            ..Obstacles::default()
+        };
+        let rect = place(a, vec2(10.0, 14.0), &obstacles);
+        assert!(!rect.expand(POINT_CLEARANCE).contains(r), "{rect:?}");
+        assert!(
+            rect.center().distance(a) < rect.center().distance(r),
             "{rect:?}"
         );
     }

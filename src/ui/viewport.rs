@@ -233,8 +233,14 @@ fn point_labels(
     let font = FontId::proportional(13.0);
     let ink = egui::Color32::from_gray(30);
     let block = (crate::render::build::block_reach_m(m.size_m) * camera.points_per_m) as f32;
+    let named = named_points(st);
+    obstacles.points = named
+        .iter()
+        .filter(|p| topology.joint_points.binary_search(p).is_err())
+        .filter_map(|&p| screen(p))
+        .collect();
     let mut placed = Vec::new();
-    for p in named_points(st) {
+    for p in named {
         let Some(at) = screen(p) else {
             continue;
         };
