@@ -323,9 +323,9 @@ const LEAST_ARROW_SHARE: f64 = 0.1;
 /// the cycle's typical largest a third of the mechanism long (one scale through the
 /// cycle, as a drawing's μv: before, the scale followed each frame's largest arrow,
 /// and an arrow's length said nothing from one crank angle to the next), none longer
-/// than half of it, and shorter where that would carry a tip past the view's edge (the fit frames the links, not the arrows: a slider at
-/// the end of its travel moving outwards ran off the view). Returns the scales they
-/// are drawn at.
+/// than half of it, and shorter where that would carry a tip past the view's edge
+/// (the fit frames the links, not the arrows: a slider at the end of its travel
+/// moving outwards ran off the view). Returns the scales they are drawn at.
 fn arrows(
     push: &mut impl FnMut(Option<Shape>),
     d: &Drawn<'_>,

@@ -43,8 +43,13 @@ pub fn settle(h: &mut Harness<'static, LinkageApp>) {
 /// The app at its default scene, 1500×950, with no GPU renderer (the view draws no
 /// mechanism), after two frames: for tests that read state, not pixels.
 pub fn stateful_harness() -> Harness<'static, LinkageApp> {
+    stateful_sized_harness(egui::vec2(1500.0, 950.0))
+}
+
+/// As [`stateful_harness`], on a screen of `size` points.
+pub fn stateful_sized_harness(size: egui::Vec2) -> Harness<'static, LinkageApp> {
     let mut h = Harness::builder()
-        .with_size(egui::vec2(1500.0, 950.0))
+        .with_size(size)
         .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
     h.run();
     h.run();

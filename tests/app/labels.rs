@@ -10,11 +10,13 @@
 
 use eframe::egui;
 use egui_kittest::Harness;
+use linkage_lab::LinkageApp;
 use linkage_lab::catalog::BUILTIN_SCENES;
 use linkage_lab::render::build::PIN_SHARE;
 use linkage_lab::session::{SceneEdit, Session};
 use linkage_lab::ui::label_place::{PIN_CLEARANCE, TIP_CLEARANCE};
-use linkage_lab::{LinkageApp, StartOptions};
+
+use crate::common;
 
 /// The screen points of what the names must keep off: every joint's pin (with its
 /// name) and every arrow's tip, as the view drew them in the last frame.
@@ -60,10 +62,7 @@ fn drawn(h: &Harness<'static, LinkageApp>) -> Drawn {
 /// Checks every name of every shipped scene at twelve crank angles in a window of
 /// `size`, zoomed `zoom` times from the fitted view; returns the names checked.
 fn check_names(size: egui::Vec2, zoom: f64) -> usize {
-    let mut h = Harness::builder()
-        .with_size(size)
-        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
-    h.run_steps(2);
+    let mut h = common::stateful_sized_harness(size);
     let mut checked = 0;
     for scene in BUILTIN_SCENES {
         let session = Session::open_builtin(scene.key).expect("opens");
@@ -138,10 +137,7 @@ fn names_clear_the_pins_drawn_larger_when_zoomed_in() {
 /// arrow to a third, and lengths said nothing from one angle to the next.
 #[test]
 fn the_arrows_keep_one_scale_through_the_cycle() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1500.0, 950.0))
-        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
-    h.run_steps(2);
+    let mut h = common::stateful_harness();
     for scene in BUILTIN_SCENES {
         let session = Session::open_builtin(scene.key).expect("opens");
         h.state_mut().state.open_now(session);
@@ -181,10 +177,7 @@ fn the_arrows_keep_one_scale_through_the_cycle() {
 /// were: the flipper's F and G, S2 and W, the paper-cup feed's H were nowhere.
 #[test]
 fn the_springs_ends_and_the_marks_are_named_in_the_view() {
-    let mut h = Harness::builder()
-        .with_size(egui::vec2(1500.0, 950.0))
-        .build_eframe(|cc| LinkageApp::new(cc, StartOptions::default()));
-    h.run_steps(2);
+    let mut h = common::stateful_harness();
     let mut named = 0;
     for scene in BUILTIN_SCENES {
         let session = Session::open_builtin(scene.key).expect("opens");
