@@ -41,24 +41,31 @@ fi
 # Both builds: Chromium without a WebGPU adapter loads the WebGL2 one, with
 # SwiftShader's Vulkan as adapter the WebGPU-only one (tests/browser/common.mjs).
 status=0
+# Each script's seconds, for where CI's time goes (docs/architecture.md, "CI time").
+timed() {
+    local began=$(date +%s) rc=0
+    "$@" || rc=$?
+    echo "== $(basename "$2") ($LINKAGE_BUILD) took $(( $(date +%s) - began )) s"
+    return $rc
+}
 for build in webgl2 webgpu; do
     echo "== $build build (browser tests from $(( $(date +%s) - started )) s after the web builds began)"
     export LINKAGE_BUILD=$build
-    node tests/browser/browser_test.mjs "http://127.0.0.1:$port/" || status=1
+    timed node tests/browser/browser_test.mjs "http://127.0.0.1:$port/" || status=1
     # Every scene file; the picker and the URL fragment in turn, so that each scene
     # opens both ways over the two builds. Every kind of control in the WebGL2 build;
     # in the WebGPU build what its renderer decides (drawn, played, the crank moved,
     # the edit's CPU): the controls are the same code, drawn five times slower.
     checks=all; [ "$build" = webgpu ] && checks=drawn
-    LINKAGE_SCENE_CHECKS=$checks node tests/browser/every_scene.mjs "http://127.0.0.1:$port/" || status=1
-    node tests/browser/links_and_drops.mjs "http://127.0.0.1:$port/" || status=1
+    LINKAGE_SCENE_CHECKS=$checks timed node tests/browser/every_scene.mjs "http://127.0.0.1:$port/" || status=1
+    timed node tests/browser/links_and_drops.mjs "http://127.0.0.1:$port/" || status=1
 done
 # Layout and touch are the same code in both builds, and the WebGPU build draws
 # through SwiftShader's Vulkan at a fifth of the speed: the devices and the laptop
 # run once. Their screenshots of every scene go to SCREENSHOT_DIR, to be looked at.
 export SCREENSHOT_DIR="${SCREENSHOT_DIR:-$target_dir/browser-screens}"
 mkdir -p "$SCREENSHOT_DIR"
-LINKAGE_BUILD=webgl2 node tests/browser/every_device.mjs "http://127.0.0.1:$port/" || status=1
-LINKAGE_BUILD=webgl2 node tests/browser/laptop.mjs "http://127.0.0.1:$port/" || status=1
+LINKAGE_BUILD=webgl2 timed node tests/browser/every_device.mjs "http://127.0.0.1:$port/" || status=1
+LINKAGE_BUILD=webgl2 timed node tests/browser/laptop.mjs "http://127.0.0.1:$port/" || status=1
 echo "== screenshots in $SCREENSHOT_DIR"
 exit $status

@@ -88,6 +88,24 @@ export async function until(condition, poke) {
   return true;
 }
 
+/** Waits until the app has drawn no frame over `quietMs` (its frame count unchanged
+ * over the looks that long), or for up to [`HANG_MS`]; returns whether it went quiet.
+ * Before a CPU figure is measured in the page: SwiftShader draws the last frames on
+ * the same two cores as the page's WebAssembly (the WebGPU build a frame in 0.75 s),
+ * and a figure taken while it draws counts its work as the page's. */
+export async function quiet(page, quietMs = 1500) {
+  let last = -1;
+  let since = Date.now();
+  return until(async () => {
+    const frame = (await appState(page)).frame;
+    if (frame !== last) {
+      last = frame;
+      since = Date.now();
+    }
+    return Date.now() - since >= quietMs;
+  });
+}
+
 /** Every scene file in assets/scenes (read from the directory, not listed anywhere),
  * sorted: its file name, key, text and the name the app shows. */
 export function shippedScenes() {

@@ -14,12 +14,14 @@
 // pass: its controls and layout are the WebGL2 build's code, and SwiftShader's Vulkan
 // draws it at a fifth of the speed; every control took 418 s there, 2026-11-26).
 // Usage: node every_scene.mjs http://127.0.0.1:PORT/
-import { appState as state, build, decode, differing, launchChromium, nonBackground, openApp, shippedScenes, until } from './common.mjs';
+import { appState as state, build, decode, differing, launchChromium, nonBackground, openApp, quiet, shippedScenes, until } from './common.mjs';
 
 const base = (process.argv[2] ?? 'http://127.0.0.1:8917/').replace(/#.*$/, '');
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
 
-const scenes = shippedScenes();
+// LINKAGE_SCENES=key,key runs those scenes alone (while working on one).
+const only = process.env.LINKAGE_SCENES?.split(',');
+const scenes = shippedScenes().filter((s) => !only || only.includes(s.key));
 if (scenes.length < 6) fail(`only ${scenes.length} scene files found`);
 
 const browser = await launchChromium();
@@ -233,7 +235,9 @@ for (const [i, scene] of scenes.entries()) {
     if (!drawnOnly) await reopens(page, what, errors);
 
     // The edit's own CPU, measured in the page: the median of repeated length
-    // edits of the scene, valid and refused (session::edit_cost).
+    // edits of the scene, valid and refused (session::edit_cost), once the page has
+    // drawn its last frame (SwiftShader's drawing shares the CPUs).
+    if (!(await quiet(page))) fail(`${what}: the app kept drawing frames with nothing to do`);
     const cpu = JSON.parse(await page.evaluate((key) => window.wasmBindings.linkage_lab_edit_cpu(key), scene.key));
     if (!cpu) fail(`${what}: no edit CPU measured`);
     if (errors.length) fail(`${what}: console errors:\n  ${errors.join('\n  ')}`);
