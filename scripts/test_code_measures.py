@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Tests of scripts/code_measures.py on small crates written to a temporary folder:
 each case one of the script's former blind spots (a cycle through a `pub use`
-facade, a `;` inside a signature's brackets) or a facade that is rightly no edge.
+facade, a `;` inside a signature's brackets) or a facade that is rightly no edge,
+and the checks CI runs (the drawn layers, the long functions' allow-list).
 
     python3 scripts/test_code_measures.py
 """
@@ -84,6 +85,62 @@ class Functions(unittest.TestCase):
     def test_a_one_line_function_with_an_array_argument_is_counted(self):
         text = "fn h(a: [u8; 4]) -> u8 { a[0] }\n"
         self.assertEqual(self.lengths(text), {"h": (1, 1)})
+
+
+DOC = """## The solver (`crates/demo`)
+
+In layers, each using only those below it:
+
+1. leaves: `e` (the errors; not `Thing`),
+   `u`;
+2. the model: `hi/` (with its own `e`), `mid`;
+
+The folders keep their files private.
+
+## The next section
+"""
+
+
+class Layers(unittest.TestCase):
+    def test_the_numbered_list_gives_each_module_its_first_layer(self):
+        layers = cm.doc_layers(DOC, "demo", {"e", "u", "hi", "mid", "other"})
+        self.assertEqual(layers, {"e": 1, "u": 1, "hi": 2, "mid": 2})
+        self.assertIsNone(cm.doc_layers(DOC, "another", {"e"}))
+
+    def test_a_leaf_that_uses_a_higher_layer_is_an_upward_edge(self):
+        # The leaf e re-exported hi's type: the doc drew e as a leaf all the same.
+        src = crate({
+            "lib.rs": "mod e;\nmod hi;\nmod u;\nmod mid;\n",
+            "e.rs": "pub use crate::hi::T;\n",
+            "hi/mod.rs": "pub struct T;\n",
+            "u.rs": "",
+            "mid.rs": "use crate::u;\n",
+        })
+        cm.CRATES["demo"] = src
+        try:
+            edges = cm.module_edges("demo")
+        finally:
+            del cm.CRATES["demo"]
+        modules = {"e", "hi", "u", "mid"}
+        faults = cm.layer_faults(edges, modules, cm.doc_layers(DOC, "demo", modules))
+        self.assertEqual(faults, ["upward edge: e (layer 1) uses hi (layer 2)"])
+
+    def test_a_module_in_no_layer_and_a_cycle_in_one_layer_fail(self):
+        faults = cm.layer_faults({("a", "b"), ("b", "a")}, {"a", "b", "c"}, {"a": 1, "b": 1})
+        self.assertEqual(faults, ["c: in no layer of docs/architecture.md", "module cycle: a <-> b"])
+
+
+class LongFunctions(unittest.TestCase):
+    def test_an_unlisted_long_function_and_a_stale_entry_fail(self):
+        found = [(90, "src/a.rs:10 long_one"), (85, "src/b.rs:3 listed")]
+        allowed = {"src/b.rs listed": "why", "src/c.rs gone": "was long once"}
+        self.assertEqual(cm.long_faults(found, allowed), [
+            "function over 80 lines, not allowed: src/a.rs:10 long_one (90 lines)",
+            "allowed long function no longer long (drop it): src/c.rs gone",
+        ])
+
+    def test_a_listed_long_function_passes_wherever_its_line_moves(self):
+        self.assertEqual(cm.long_faults([(99, "src/b.rs:77 listed")], {"src/b.rs listed": "why"}), [])
 
 
 if __name__ == "__main__":

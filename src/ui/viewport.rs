@@ -168,22 +168,29 @@ impl Viewport {
     }
 }
 
-/// The joints' names beside them, each where it covers no other pin, link, arrow
-/// or name ([`label_place`]); returns where each went (tests check them).
-fn point_labels(
-    painter: &egui::Painter,
+/// Where point `p` of the pose shows in the view; `None` when not finite.
+fn on_screen(
+    pose: &linkage::Solution,
+    camera: &Camera,
     rect: egui::Rect,
+    p: linkage::PointId,
+) -> Option<egui::Pos2> {
+    let q = pose.points[p].position;
+    (q.x.is_finite() && q.y.is_finite()).then(|| camera.to_screen([q.x, q.y], rect))
+}
+
+/// What the names keep clear of: the pins, the links (a segment between each two
+/// joints of a link), the ground symbols, the springs' coils and the arrows.
+fn name_obstacles(
     st: &AppState,
     camera: &Camera,
+    rect: egui::Rect,
     scales: VectorScales,
-) -> Vec<(String, egui::Rect)> {
+) -> Obstacles {
     let pose = st.session.pose();
     let m = st.session.mechanism();
     let topology = st.session.topology();
-    let screen = |p: linkage::PointId| {
-        let q = pose.points[p].position;
-        (q.x.is_finite() && q.y.is_finite()).then(|| camera.to_screen([q.x, q.y], rect))
-    };
+    let screen = |p| on_screen(pose, camera, rect, p);
     let mut obstacles = Obstacles {
         pins: topology
             .joint_points
@@ -210,9 +217,21 @@ fn point_labels(
             obstacles.segments.push([a, b]);
         }
     }
-    // The arrows at the joints, as the view draws them.
+    arrow_obstacles(&mut obstacles, st, camera, rect, scales);
+    obstacles
+}
+
+/// The arrows at the joints, as the view draws them: their shafts and tips.
+fn arrow_obstacles(
+    obstacles: &mut Obstacles,
+    st: &AppState,
+    camera: &Camera,
+    rect: egui::Rect,
+    scales: VectorScales,
+) {
+    let pose = st.session.pose();
     let layers = st.view.layers;
-    for &p in &topology.joint_points {
+    for &p in &st.session.topology().joint_points {
         let pm = &pose.points[p];
         for (on, v, scale) in [
             (layers.velocities, pm.velocity, scales.velocity),
@@ -230,6 +249,22 @@ fn point_labels(
             }
         }
     }
+}
+
+/// The joints' names beside them, each where it covers no other pin, link, arrow
+/// or name ([`label_place`]); returns where each went (tests check them).
+fn point_labels(
+    painter: &egui::Painter,
+    rect: egui::Rect,
+    st: &AppState,
+    camera: &Camera,
+    scales: VectorScales,
+) -> Vec<(String, egui::Rect)> {
+    let pose = st.session.pose();
+    let m = st.session.mechanism();
+    let topology = st.session.topology();
+    let screen = |p| on_screen(pose, camera, rect, p);
+    let mut obstacles = name_obstacles(st, camera, rect, scales);
     let font = FontId::proportional(13.0);
     let ink = egui::Color32::from_gray(30);
     let block = (crate::render::build::block_reach_m(m.size_m) * camera.points_per_m) as f32;

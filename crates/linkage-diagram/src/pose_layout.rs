@@ -56,6 +56,63 @@ pub fn pivot_symbol_box(p: Pt) -> Rect {
 /// listed instead of drawn (it would shrink the mechanism to a speck).
 const CENTRE_REACH: f64 = 1.5;
 
+/// The centres listed, not drawn, with where they are.
+type CentresOff = Vec<(Label, Centre)>;
+
+/// The instant centres within [`CENTRE_REACH`] of the mechanism's box (of size
+/// `size`), to draw, and the others, to list.
+fn centres_near(fig: &PoseFigure, mech: Rect, size: f64) -> (Vec<(Label, Pt)>, CentresOff) {
+    let reach = mech.expand(CENTRE_REACH * size);
+    let mut shown = Vec::new();
+    let mut centres_off = Vec::new();
+    for c in &fig.centres {
+        match c.centre {
+            Centre::At(p) if reach.contains_rect(&Rect { min: p, max: p }) => {
+                shown.push((c.label.clone(), p))
+            }
+            other => centres_off.push((c.label.clone(), other)),
+        }
+    }
+    (shown, centres_off)
+}
+
+/// A slider block's four corners at `at` (pixels), 2.8 `half` along its guide's
+/// `direction` (in metres, y up) and 2 `half` across.
+fn slider_block(at: Pt, direction: [f64; 2], half: f64) -> [Pt; 4] {
+    // y flips: the guide's direction in pixels.
+    let d = [direction[0], -direction[1]];
+    let n = [-d[1], d[0]];
+    let corner = |a: f64, b: f64| {
+        [
+            at[0] + a * 1.4 * half * d[0] + b * half * n[0],
+            at[1] + a * 1.4 * half * d[1] + b * half * n[1],
+        ]
+    };
+    [
+        corner(-1.0, -1.0),
+        corner(1.0, -1.0),
+        corner(1.0, 1.0),
+        corner(-1.0, 1.0),
+    ]
+}
+
+/// Each label placed by its point (pixels), in turn, away from the mechanism's
+/// `middle`.
+fn place_labels(
+    named: impl Iterator<Item = (Label, Pt)>,
+    middle: Pt,
+    measure: &dyn Fn(&Label) -> [f64; 2],
+    obstacles: &mut Obstacles,
+) -> Vec<PoseLabel> {
+    named
+        .map(|(label, at)| {
+            let away = [at[0] - middle[0], at[1] - middle[1]];
+            let placed = place_vertex_label(at, away, measure(&label), obstacles);
+            PoseLabel { label, placed }
+        })
+        .collect()
+}
+
 /// Lays the pose out in `pane`.
 pub fn layout_pose(
     fig: &PoseFigure,
@@ -68,17 +125,7 @@ pub fn layout_pose(
         max: [0.0; 2],
     });
     let size = mech.width().max(mech.height()).max(1e-9);
-    let reach = mech.expand(CENTRE_REACH * size);
-    let mut shown = Vec::new();
-    let mut centres_off = Vec::new();
-    for c in &fig.centres {
-        match c.centre {
-            Centre::At(p) if reach.contains_rect(&Rect { min: p, max: p }) => {
-                shown.push((c.label.clone(), p))
-            }
-            other => centres_off.push((c.label.clone(), other)),
-        }
-    }
+    let (shown, centres_off) = centres_near(fig, mech, size);
     let all = Rect::around(
         [mech.min, mech.max]
             .into_iter()
@@ -102,24 +149,7 @@ pub fn layout_pose(
     let sliders: Vec<[Pt; 4]> = fig
         .sliders
         .iter()
-        .map(|sl| {
-            let at = px(sl.at);
-            // y flips: the guide's direction in pixels.
-            let d = [sl.direction[0], -sl.direction[1]];
-            let n = [-d[1], d[0]];
-            let corner = |a: f64, b: f64| {
-                [
-                    at[0] + a * 1.4 * half * d[0] + b * half * n[0],
-                    at[1] + a * 1.4 * half * d[1] + b * half * n[1],
-                ]
-            };
-            [
-                corner(-1.0, -1.0),
-                corner(1.0, -1.0),
-                corner(1.0, 1.0),
-                corner(-1.0, 1.0),
-            ]
-        })
+        .map(|sl| slider_block(px(sl.at), sl.direction, half))
         .collect();
     let ground_pivots: Vec<Pt> = fig.ground_pivots.iter().map(|&p| px(p)).collect();
     let shapes = ground_pivots
@@ -133,23 +163,17 @@ pub fn layout_pose(
         joints.iter().chain(&centres),
         shapes.into_iter(),
     );
-    let mut labels = Vec::new();
-    let middle = mech.centre();
-    let middle = px(middle);
-    for ((name, _), &at) in fig.joints.iter().zip(&joints) {
-        let label = Label::plain(name.clone());
-        let away = [at[0] - middle[0], at[1] - middle[1]];
-        let placed = place_vertex_label(at, away, measure(&label), &mut obstacles);
-        labels.push(PoseLabel { label, placed });
-    }
-    for ((label, _), &at) in shown.iter().zip(&centres) {
-        let away = [at[0] - middle[0], at[1] - middle[1]];
-        let placed = place_vertex_label(at, away, measure(label), &mut obstacles);
-        labels.push(PoseLabel {
-            label: label.clone(),
-            placed,
-        });
-    }
+    let names = fig
+        .joints
+        .iter()
+        .map(|(name, _)| Label::plain(name.clone()));
+    let named = names.zip(joints.iter().copied()).chain(
+        shown
+            .iter()
+            .map(|c| c.0.clone())
+            .zip(centres.iter().copied()),
+    );
+    let labels = place_labels(named, px(mech.centre()), measure, &mut obstacles);
     LaidPose {
         pane,
         px_per_m: s,

@@ -131,97 +131,120 @@ fn missing(link: &str, field: &'static str) -> LinkageError {
     })
 }
 
+/// Every moving link's body. A `Dynamics` scene must give each its mass, centroid
+/// and inertia; other scenes use what they give (absent = massless).
+fn bodies(m: &Mechanism) -> Result<Vec<Body>> {
+    let strict = m.models == Models::Dynamics;
+    let mut bodies = Vec::new();
+    for l in m.moving_links() {
+        let link = &m.links[l];
+        match (link.mass_kg, link.centroid_m, link.inertia_kg_m2) {
+            (Some(mass_kg), Some(centroid), Some(inertia_kg_m2)) => bodies.push(Body {
+                link: l,
+                mass_kg,
+                centroid,
+                inertia_kg_m2,
+            }),
+            (None, _, _) if strict => return Err(missing(&link.name, "mass")),
+            (_, None, _) if strict => return Err(missing(&link.name, "centroid")),
+            (_, _, None) if strict => return Err(missing(&link.name, "inertia")),
+            (Some(mass_kg), centroid, inertia) => bodies.push(Body {
+                link: l,
+                mass_kg,
+                centroid: centroid.unwrap_or_default(),
+                inertia_kg_m2: inertia.unwrap_or(0.0),
+            }),
+            (None, _, _) => {}
+        }
+    }
+    Ok(bodies)
+}
+
+/// The point a force element names.
+fn point_named(m: &Mechanism, name: &str) -> Result<PointId> {
+    m.point_index(name).ok_or_else(|| {
+        LinkageError::from(SceneProblem::ForceNamesUnknownPoint {
+            element: "a force element".into(),
+            name: name.to_string(),
+        })
+    })
+}
+
+/// The link a force element names.
+fn link_named(m: &Mechanism, name: &str) -> Result<LinkId> {
+    m.link_index(name).ok_or_else(|| {
+        LinkageError::from(SceneProblem::ForceNamesUnknownLink {
+            element: "a force element".into(),
+            name: name.to_string(),
+        })
+    })
+}
+
+/// The springs, a free length "unstretched at start" measured in `start`.
+fn springs(m: &Mechanism, start: &Solution) -> Result<Vec<Spring>> {
+    let mut springs = Vec::new();
+    for s in &m.forces.springs {
+        let (a, b) = (point_named(m, &s.a)?, point_named(m, &s.b)?);
+        let free_length_m = match s.free_length {
+            FreeLength::Length(l) => l,
+            FreeLength::UnstretchedAtStart => {
+                (start.points[a].position - start.points[b].position).norm()
+            }
+        };
+        springs.push(Spring {
+            a,
+            b,
+            k: s.k_n_per_m,
+            free_length_m,
+        });
+    }
+    Ok(springs)
+}
+
+/// The dampers, between two points or two links.
+fn dampers(m: &Mechanism) -> Result<Vec<Damper>> {
+    let mut dampers = Vec::new();
+    for d in &m.forces.dampers {
+        dampers.push(match d {
+            DamperSpec::Linear { a, b, c_n_s_per_m } => Damper::Linear {
+                a: point_named(m, a)?,
+                b: point_named(m, b)?,
+                c: *c_n_s_per_m,
+            },
+            DamperSpec::Rotational {
+                link_a,
+                link_b,
+                c_n_m_s,
+            } => Damper::Rotational {
+                a: link_named(m, link_a)?,
+                b: link_named(m, link_b)?,
+                c: *c_n_m_s,
+            },
+        });
+    }
+    Ok(dampers)
+}
+
 impl ForceModel {
     /// Builds the model; `start` is the solution at the start position (for springs
     /// unstretched there). A `Dynamics` scene must give every moving link its mass,
     /// centroid and inertia; other scenes use what they give (absent = massless).
     pub fn new(m: &Mechanism, start: &Solution) -> Result<Self> {
-        let strict = m.models == Models::Dynamics;
-        let mut bodies = Vec::new();
-        for l in m.moving_links() {
-            let link = &m.links[l];
-            match (link.mass_kg, link.centroid_m, link.inertia_kg_m2) {
-                (Some(mass_kg), Some(centroid), Some(inertia_kg_m2)) => bodies.push(Body {
-                    link: l,
-                    mass_kg,
-                    centroid,
-                    inertia_kg_m2,
-                }),
-                (None, _, _) if strict => return Err(missing(&link.name, "mass")),
-                (_, None, _) if strict => return Err(missing(&link.name, "centroid")),
-                (_, _, None) if strict => return Err(missing(&link.name, "inertia")),
-                (Some(mass_kg), centroid, inertia) => bodies.push(Body {
-                    link: l,
-                    mass_kg,
-                    centroid: centroid.unwrap_or_default(),
-                    inertia_kg_m2: inertia.unwrap_or(0.0),
-                }),
-                (None, _, _) => {}
-            }
-        }
-        let point = |name: &str| -> Result<PointId> {
-            m.point_index(name).ok_or_else(|| {
-                LinkageError::from(SceneProblem::ForceNamesUnknownPoint {
-                    element: "a force element".into(),
-                    name: name.to_string(),
-                })
-            })
-        };
-        let link = |name: &str| -> Result<LinkId> {
-            m.link_index(name).ok_or_else(|| {
-                LinkageError::from(SceneProblem::ForceNamesUnknownLink {
-                    element: "a force element".into(),
-                    name: name.to_string(),
-                })
-            })
-        };
+        let bodies = bodies(m)?;
+        let springs = springs(m, start)?;
+        let dampers = dampers(m)?;
         let f = &m.forces;
-        let mut springs = Vec::new();
-        for s in &f.springs {
-            let (a, b) = (point(&s.a)?, point(&s.b)?);
-            let free_length_m = match s.free_length {
-                FreeLength::Length(l) => l,
-                FreeLength::UnstretchedAtStart => {
-                    (start.points[a].position - start.points[b].position).norm()
-                }
-            };
-            springs.push(Spring {
-                a,
-                b,
-                k: s.k_n_per_m,
-                free_length_m,
-            });
-        }
-        let mut dampers = Vec::new();
-        for d in &f.dampers {
-            dampers.push(match d {
-                DamperSpec::Linear { a, b, c_n_s_per_m } => Damper::Linear {
-                    a: point(a)?,
-                    b: point(b)?,
-                    c: *c_n_s_per_m,
-                },
-                DamperSpec::Rotational {
-                    link_a,
-                    link_b,
-                    c_n_m_s,
-                } => Damper::Rotational {
-                    a: link(link_a)?,
-                    b: link(link_b)?,
-                    c: *c_n_m_s,
-                },
-            });
-        }
         let mut point_forces = Vec::new();
         for p in &f.point_forces {
             point_forces.push(PointForce {
-                point: point(&p.point)?,
+                point: point_named(m, &p.point)?,
                 force: Vec2::new(p.force_n.0, p.force_n.1),
                 when: p.when,
             });
         }
         let mut torques = Vec::new();
         for t in &f.torques {
-            torques.push((link(&t.link)?, t.torque_n_m));
+            torques.push((link_named(m, &t.link)?, t.torque_n_m));
         }
         Ok(Self {
             bodies,

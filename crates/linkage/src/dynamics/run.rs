@@ -174,6 +174,54 @@ pub struct Run {
     cpu_s: f64,
 }
 
+/// The chain as the run integrates it and the coordinate's start value and rate:
+/// the driver's angle, or another link's (`settings.coordinate`, the chain driven
+/// from that link), its rate `q_dot0` times the link's own rate per unit of the
+/// driver's.
+fn generalised_coordinate(
+    base: Kinematics,
+    start: &crate::motion::Solution,
+    settings: &Settings,
+) -> Result<(Kinematics, f64, f64)> {
+    let m = base.mechanism();
+    match settings.coordinate {
+        Some(link) if link != m.driver.link => {
+            let redriven = base.redriven(link, start)?;
+            let omega = start.links[link].omega_rad_s;
+            Ok((
+                redriven,
+                start.links[link].angle_rad(),
+                omega * settings.q_dot0,
+            ))
+        }
+        _ => {
+            let x0 = m.driver.start_rad;
+            Ok((base, x0, settings.q_dot0))
+        }
+    }
+}
+
+/// The largest step the settings allow and the first step: an adaptive pair's
+/// estimate from the start (within the largest), or the fixed step.
+fn first_step(
+    rhs: &mut Rhs,
+    settings: &Settings,
+    pair: Option<Pair>,
+    tol: &Tolerance,
+    a: &Point,
+) -> (f64, f64) {
+    let max_step = if settings.step > 0.0 {
+        settings.step
+    } else {
+        f64::INFINITY
+    };
+    let h = match pair {
+        Some(p) => adaptive::initial_step(rhs, p, tol, a, settings.t_end).min(max_step),
+        None => settings.step,
+    };
+    (max_step, h)
+}
+
 impl Run {
     /// Validates `settings` and sets the run up at its start state (the first sample).
     ///
@@ -193,18 +241,7 @@ impl Run {
         if forces.is_massless() {
             return Err(LinkageError::from(SceneProblem::Massless));
         }
-        let (kin, x0, v0) = match settings.coordinate {
-            Some(link) if link != m.driver.link => {
-                let redriven = base.redriven(link, &start)?;
-                let omega = start.links[link].omega_rad_s;
-                (
-                    redriven,
-                    start.links[link].angle_rad(),
-                    omega * settings.q_dot0,
-                )
-            }
-            _ => (base, m.driver.start_rad, settings.q_dot0),
-        };
+        let (kin, x0, v0) = generalised_coordinate(base, &start, settings)?;
         let stops = resolved_stops(k, settings);
         let mut rhs = Rhs::new(kin, forces, settings.switch_coordinates);
         let segments = vec![rhs.k.clone()];
@@ -230,15 +267,7 @@ impl Run {
             atol: settings.atol,
             rate: rate_scale(stats.stiffness_per_s, v0, settings.t_end),
         };
-        let max_step = if settings.step > 0.0 {
-            settings.step
-        } else {
-            f64::INFINITY
-        };
-        let h = match pair {
-            Some(p) => adaptive::initial_step(&mut rhs, p, &tol, &a, settings.t_end).min(max_step),
-            None => settings.step,
-        };
+        let (max_step, h) = first_step(&mut rhs, settings, pair, &tol, &a);
         Ok(Self {
             settings: settings.clone(),
             rhs,

@@ -362,28 +362,6 @@ fn die_cutter_scene(
     description: String,
     notes: Vec<String>,
 ) -> SceneFile {
-    // Full precision: rounding would move the rocker limit off the toggle.
-    let mm = |v: f64| v * 1e3;
-    let pts = |list: &[(&str, f64, f64)]| -> IndexMap<String, (f64, f64)> {
-        list.iter()
-            .map(|(n, x, y)| (n.to_string(), (*x, *y)))
-            .collect()
-    };
-    let link = |name: &str, points: IndexMap<String, (f64, f64)>, mass: Option<f64>| LinkSpec {
-        name: name.into(),
-        ground: false,
-        points,
-        mass,
-        centroid: mass.map(|_| (0.0, 0.0)),
-        inertia: None,
-    };
-    let l = mm(spec.link_m);
-    let mut ground = link(
-        "ground",
-        pts(&[("A", mm(d.pivot_a[0]), mm(d.pivot_a[1])), ("D", 0.0, 0.0)]),
-        None,
-    );
-    ground.ground = true;
     let branch = if d.c_left_of_bd {
         Branch::Left("B".into(), "D".into())
     } else {
@@ -396,22 +374,7 @@ fn die_cutter_scene(
         models: Models::Kinetostatics,
         length_unit: LengthUnit::Millimetre,
         angle_unit: crate::scene::AngleUnit::Degree,
-        links: vec![
-            ground,
-            link(
-                "crank",
-                pts(&[("A", 0.0, 0.0), ("B", mm(d.crank_m), 0.0)]),
-                None,
-            ),
-            link(
-                "coupler",
-                pts(&[("B", 0.0, 0.0), ("C", mm(d.coupler_m), 0.0)]),
-                None,
-            ),
-            link("rocker", pts(&[("D", 0.0, 0.0), ("C", l, 0.0)]), None),
-            link("link_ce", pts(&[("C", 0.0, 0.0), ("E", l, 0.0)]), None),
-            link("die", pts(&[("E", 0.0, 0.0)]), Some(120.0)),
-        ],
+        links: die_cutter_links(d, spec.link_m),
         sliders: vec![SliderSpec {
             slider: "die".into(),
             point: "E".into(),
@@ -442,6 +405,53 @@ fn die_cutter_scene(
         solver: SolverSpec::default(),
         drive: None,
         cams: Vec::new(),
+    }
+}
+
+/// The die cutter's links in millimetres, at full precision (rounding would move the
+/// rocker's limit off the toggle): ground AD, crank AB, coupler BC, rocker DC and
+/// CE of length `link_m`, and the die at E (the paper's 120 kg).
+fn die_cutter_links(d: &CrankRocker, link_m: f64) -> Vec<LinkSpec> {
+    let mm = |v: f64| v * 1e3;
+    let l = mm(link_m);
+    let mut die = plain_link("die", false, points(&[("E", 0.0, 0.0)]));
+    die.mass = Some(120.0);
+    die.centroid = Some((0.0, 0.0));
+    let [ax, ay] = d.pivot_a.map(mm);
+    vec![
+        plain_link("ground", true, points(&[("A", ax, ay), ("D", 0.0, 0.0)])),
+        plain_link(
+            "crank",
+            false,
+            points(&[("A", 0.0, 0.0), ("B", mm(d.crank_m), 0.0)]),
+        ),
+        plain_link(
+            "coupler",
+            false,
+            points(&[("B", 0.0, 0.0), ("C", mm(d.coupler_m), 0.0)]),
+        ),
+        plain_link("rocker", false, points(&[("D", 0.0, 0.0), ("C", l, 0.0)])),
+        plain_link("link_ce", false, points(&[("C", 0.0, 0.0), ("E", l, 0.0)])),
+        die,
+    ]
+}
+
+/// A link's points from (name, x, y), in order.
+fn points(list: &[(&str, f64, f64)]) -> IndexMap<String, (f64, f64)> {
+    list.iter()
+        .map(|(n, x, y)| (n.to_string(), (*x, *y)))
+        .collect()
+}
+
+/// A link with its points and no mass.
+fn plain_link(name: &str, ground: bool, points: IndexMap<String, (f64, f64)>) -> LinkSpec {
+    LinkSpec {
+        name: name.into(),
+        ground,
+        points,
+        mass: None,
+        centroid: None,
+        inertia: None,
     }
 }
 
@@ -483,19 +493,6 @@ pub(crate) struct FourBar {
 /// The scene of `f` (metres, each moving link along its own x-axis, the crank AB
 /// driving at 60 rpm, the rocker the output), unnamed: callers name and describe it.
 pub(crate) fn four_bar(f: &FourBar) -> SceneFile {
-    let pts = |list: &[(&str, f64, f64)]| -> IndexMap<String, (f64, f64)> {
-        list.iter()
-            .map(|(n, x, y)| (n.to_string(), (*x, *y)))
-            .collect()
-    };
-    let link = |name: &str, ground: bool, points| LinkSpec {
-        name: name.into(),
-        ground,
-        points,
-        mass: None,
-        centroid: None,
-        inertia: None,
-    };
     let branch = if f.c_left_of_bd {
         Branch::Left("B".into(), "D".into())
     } else {
@@ -511,16 +508,24 @@ pub(crate) fn four_bar(f: &FourBar) -> SceneFile {
         length_unit: LengthUnit::Metre,
         angle_unit: crate::scene::AngleUnit::Degree,
         links: vec![
-            link("ground", true, pts(&[("A", ax, ay), ("D", dx, dy)])),
-            link("crank", false, pts(&[("A", 0.0, 0.0), ("B", crank, 0.0)])),
-            link("coupler", false, {
-                let mut points = pts(&[("B", 0.0, 0.0), ("C", coupler, 0.0)]);
+            plain_link("ground", true, points(&[("A", ax, ay), ("D", dx, dy)])),
+            plain_link(
+                "crank",
+                false,
+                points(&[("A", 0.0, 0.0), ("B", crank, 0.0)]),
+            ),
+            plain_link("coupler", false, {
+                let mut points = points(&[("B", 0.0, 0.0), ("C", coupler, 0.0)]);
                 if let Some([px, py]) = f.coupler_point {
                     points.insert("P".into(), (px, py));
                 }
                 points
             }),
-            link("rocker", false, pts(&[("D", 0.0, 0.0), ("C", rocker, 0.0)])),
+            plain_link(
+                "rocker",
+                false,
+                points(&[("D", 0.0, 0.0), ("C", rocker, 0.0)]),
+            ),
         ],
         sliders: vec![],
         driver: DriverSpec {

@@ -38,10 +38,12 @@ use cam::CamFollow;
 pub(crate) use group::Group;
 use joints::{JointRef, joint_links};
 pub(crate) use parts::{Failure, TANGENT_SLACK};
+// The dyads' own types, for the polygons that read their parts.
 use prp::prp_group;
 use rpr::rpr_group;
 use rrp::rrp_group;
 use rrr::rrr_group;
+pub(crate) use {prp::Prp, rpr::Rpr, rrp::Rrp, rrr::Rrr};
 
 /// The closed-form solver: a crank and a sequence of dyads.
 #[derive(Clone, Debug, PartialEq)]
