@@ -357,11 +357,25 @@ def long_faults(found, allowed):
     return faults
 
 
+def broken_links(markdown):
+    """The relative links and images of `markdown` files ({path: text}) whose target
+    does not exist, as "file: target" (web links, mail and in-page anchors left
+    out; a target's own #anchor is dropped)."""
+    broken = []
+    for path, text in markdown.items():
+        for target in re.findall(r"\]\(([^)\s]+)\)", text):
+            if re.match(r"[a-z]+:", target) or target.startswith("#"):
+                continue
+            if not (path.parent / target.split("#")[0]).exists():
+                broken.append(f"{path.relative_to(ROOT)}: {target}")
+    return broken
+
+
 def check():
     """Exit status 1 when a file-level import cycle exists, the solver's modules
     break the layers docs/architecture.md draws, a function is over LONG lines
-    without a reason in LONG_ALLOWED, or a module graph in the doc no longer
-    matches the code."""
+    without a reason in LONG_ALLOWED, a relative link in README.md or docs/ leads
+    nowhere, or a module graph in the doc no longer matches the code."""
     faults = []
     for name, src in CRATES.items():
         for comp in cycles(crate_graph(src)):
@@ -374,6 +388,8 @@ def check():
             edges = {(a, b) for a, b in module_edges(name) if "main" not in (a, b)}
             faults += [f"{name}: {x}" for x in layer_faults(edges, modules, layers)]
     faults += long_faults(long_functions(), LONG_ALLOWED)
+    markdown = {p: p.read_text() for p in [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]}
+    faults += [f"broken link: {b}" for b in broken_links(markdown)]
     for m in re.finditer(r"<!-- crate: ([\w-]+) -->\n```mermaid\n(.*?)\n```", doc, re.S):
         if m.group(2).strip() != mermaid(m.group(1)).strip():
             faults.append(f"docs/architecture.md: the graph of {m.group(1)} is out of date "

@@ -143,5 +143,22 @@ class LongFunctions(unittest.TestCase):
         self.assertEqual(cm.long_faults([(99, "src/b.rs:77 listed")], {"src/b.rs listed": "why"}), [])
 
 
+
+class Links(unittest.TestCase):
+    def test_a_link_from_inside_docs_resolves_from_there(self):
+        # docs/journal.md linked tests/snapshots/... as if from the repository's root.
+        root = Path(tempfile.mkdtemp())
+        (root / "docs").mkdir()
+        (root / "tests").mkdir()
+        (root / "tests" / "shot.png").write_text("")
+        doc = root / "docs" / "journal.md"
+        text = "![](tests/shot.png) ![](../tests/shot.png) [web](https://x.org/a) [here](#top)"
+        old_root, cm.ROOT = cm.ROOT, root
+        try:
+            self.assertEqual(cm.broken_links({doc: text}), ["docs/journal.md: tests/shot.png"])
+        finally:
+            cm.ROOT = old_root
+
+
 if __name__ == "__main__":
     unittest.main()

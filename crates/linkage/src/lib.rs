@@ -36,6 +36,7 @@ pub mod overflow;
 pub mod polygon;
 mod ranges;
 pub mod real;
+pub mod rng;
 pub mod roots_util;
 pub mod scene;
 mod scene_cam;

@@ -1,39 +1,11 @@
 //! The global search: differential evolution (current-to-pbest/1 with binomial
 //! crossover, as in JADE) over the problem's search vectors, in generations that
-//! a caller can run a slice at a time. Its random numbers come from SplitMix64,
-//! written here because a search must give the same designs for the same seed on
-//! every platform and release, which `rand`'s generators do not promise.
+//! a caller can run a slice at a time. Its random numbers come from SplitMix64
+//! ([`crate::rng`]): the same designs for the same seed on every platform.
 
 use super::problem::Problem;
 
-/// SplitMix64 (Steele, Lea and Flood 2014): 64 bits of state, passes BigCrush.
-#[derive(Clone, Debug)]
-pub struct SplitMix(u64);
-
-impl SplitMix {
-    /// A generator seeded with `seed`.
-    pub fn new(seed: u64) -> Self {
-        Self(seed)
-    }
-
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in [0, 1).
-    pub fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-
-    /// Uniform in `0..n`.
-    pub fn below(&mut self, n: usize) -> usize {
-        ((self.unit() * n as f64) as usize).min(n - 1)
-    }
-}
+pub use crate::rng::SplitMix;
 
 /// One population of search vectors with their coarse costs and crank angles.
 #[derive(Clone, Debug)]
