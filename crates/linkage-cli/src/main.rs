@@ -6,8 +6,8 @@
 #![forbid(unsafe_code)]
 
 mod args;
+mod at;
 mod cam;
-mod commands;
 mod counts;
 mod course;
 mod diagram;
@@ -16,9 +16,13 @@ mod flywheel;
 mod io;
 mod kinetostatics;
 mod plot;
+mod report;
 mod report_text;
 mod shaking;
+mod share;
 mod simulate;
+mod sweep;
+mod synth;
 mod synth_function;
 mod synth_motion;
 mod synth_path;
@@ -55,14 +59,14 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
             scene,
             steps,
             format,
-        } => return commands::sweep(&scene, steps, format, out),
+        } => return sweep::sweep(&scene, steps, format, out),
         Command::At {
             scene,
             input_deg,
             format,
-        } => commands::at(&scene, input_deg, format),
-        Command::Report { scene, format } => commands::report(&scene, format),
-        Command::Synth { what } => commands::synth(what),
+        } => at::at(&scene, input_deg, format),
+        Command::Report { scene, format } => report::report(&scene, format),
+        Command::Synth { what } => synth::synth(what),
         Command::Diagram { scene, args } => diagram::run(&scene, &args),
         Command::Cam {
             file,
@@ -78,7 +82,7 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
             format,
             out,
         } => timing::run(&scene, samples, format, &out),
-        Command::Share { scene, decode } => commands::share(scene.as_deref(), decode.as_deref()),
+        Command::Share { scene, decode } => share::share(scene.as_deref(), decode.as_deref()),
         Command::Simulate { scene, sim, format } if sim.steady => simulate::steady(&scene, format),
         Command::Simulate { scene, sim, format } => simulate::run(&scene, &sim, format),
         Command::Tradeoff { scene, args } => tradeoff::run(&scene, &args),
