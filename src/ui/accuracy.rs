@@ -156,7 +156,8 @@ fn run_stats(ui: &mut egui::Ui, st: &AppState) {
                 s.max_error_estimate, run.energy_drift_j
             ));
             for w in &s.warnings {
-                ui.colored_label(ui.visuals().warn_fg_color, w);
+                let words = crate::session::words::run_warning(w);
+                ui.colored_label(ui.visuals().warn_fg_color, words);
             }
             for e in run.sim.events.iter().filter(|e| e.stopped) {
                 ui.label(format!(

@@ -43,8 +43,8 @@ pub enum CliError {
         /// What was refused in it.
         source: Box<CliError>,
     },
-    /// The solver refused.
-    #[error(transparent)]
+    /// The solver refused (a dynamic run's settings named by their options).
+    #[error("{}", solver_words(.0))]
     Solver(#[from] LinkageError),
     /// The input speed makes velocities or accelerations overflow: named by where it
     /// came from, the option or the scene's driver.
@@ -107,6 +107,15 @@ impl CliError {
 }
 
 /// An overflowing speed in the words of this command line.
+/// The solver's error as the solver words it, but a dynamic run's refusal, which
+/// names the option to change.
+fn solver_words(e: &LinkageError) -> String {
+    match e {
+        LinkageError::Run(r) => crate::run_words::refusal(r),
+        other => other.to_string(),
+    }
+}
+
 fn overflow_words(from_option: bool, speed_rad_s: f64, most_rad_s: f64) -> String {
     let rpm = |w: f64| w * 60.0 / std::f64::consts::TAU;
     if from_option {

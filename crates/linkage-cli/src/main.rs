@@ -18,6 +18,7 @@ mod kinetostatics;
 mod plot;
 mod report;
 mod report_text;
+mod run_words;
 mod shaking;
 mod share;
 mod simulate;

@@ -155,7 +155,7 @@ pub fn run(args: &SceneArgs, sim_args: &SimArgs, format: Format) -> Result<Strin
                     "estimated_error": sim.stats.max_error_estimate,
                     "stiffness_per_s": sim.stats.stiffness_per_s,
                     "max_energy_balance_error_j": sim.energy_drift(),
-                    "warnings": sim.stats.warnings,
+                    "warnings": sim.stats.warnings.iter().map(crate::run_words::warning).collect::<Vec<_>>(),
                 },
             }))
         }

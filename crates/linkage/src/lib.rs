@@ -28,6 +28,7 @@ pub mod extremum;
 pub mod force_polygon;
 pub mod ids;
 pub mod instant_centres;
+pub mod integrator;
 pub mod kinetostatics;
 pub mod machine;
 pub mod model;

@@ -71,7 +71,13 @@ fn spring_of_1e12_under_an_explicit_method_names_implicit_and_the_stiffness() {
     // either way what it says names the implicit method and the stiffness.
     let msg = match simulate(&k, &s) {
         Err(e) => e.to_string(),
-        Ok(sim) => sim.stats.warnings.join("; "),
+        Ok(sim) => sim
+            .stats
+            .warnings
+            .iter()
+            .map(|w| w.to_string())
+            .collect::<Vec<_>>()
+            .join("; "),
     };
     assert!(msg.contains("implicit"), "{msg}");
     assert!(msg.contains("|λ|"), "names the stiffness: {msg}");

@@ -7,8 +7,9 @@ mod common;
 
 use common::{mechanism, scene_text};
 use linkage::dynamics::{Method, Settings, Simulation, simulate, tradeoff};
+use linkage::error::{RunRefusal, RunWarning};
 use linkage::scene::FreeLength;
-use linkage::{Kinematics, LinkId, Mechanism};
+use linkage::{Kinematics, LinkId, LinkageError, Mechanism};
 
 fn flipper() -> Kinematics {
     Kinematics::new(mechanism("gravity_flipper.ron")).expect("flipper")
@@ -166,9 +167,23 @@ fn a_stiff_spring_is_refused_by_explicit_steps_and_run_by_the_implicit_one() {
     let k = flipper_with_spring(1e7);
     for method in [Method::Rk4, Method::SemiImplicitEuler] {
         let err = simulate(&k, &fixed(method, 5e-3, 0.5)).expect_err("beyond the limit");
+        // As data: the method, the limit and the stiffness, for each edge to word.
+        let LinkageError::Run(refusal) = &err else {
+            panic!("not a run's refusal: {err}")
+        };
+        let RunRefusal::StepBeyondStability { limit, .. } = **refusal else {
+            panic!("not the stability limit: {refusal}")
+        };
+        assert_eq!(limit.method, method);
+        assert!(
+            limit.h_limit_s < 5e-3 && limit.stiffness_per_s > 500.0,
+            "{limit:?}"
+        );
+        // The solver's own words name the limit and the implicit method, and no
+        // command-line option (the CLI and the app name their own).
         let text = err.to_string();
         assert!(
-            text.contains("stability limit") && text.contains("--method implicit"),
+            text.contains("stability limit") && text.contains("implicit") && !text.contains("--"),
             "{text}"
         );
     }
@@ -183,7 +198,9 @@ fn a_stiff_spring_is_refused_by_explicit_steps_and_run_by_the_implicit_one() {
     );
     let loose = simulate(&k, &adaptive(Method::Dop853, 1e-3, 1e-3)).expect("adaptive");
     assert!(
-        loose.stats.warnings.iter().any(|w| w.starts_with("stiff")),
+        loose.stats.warnings.iter().any(
+            |w| matches!(w, RunWarning::Stiff { limit, .. } if limit.method == Method::Dop853)
+        ),
         "{:?}",
         loose.stats.warnings
     );

@@ -26,6 +26,8 @@ pub enum RunError {
 impl std::fmt::Display for RunError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         match self {
+            // A refusal for the run's settings names the app's controls.
+            Self::Solver(LinkageError::Run(r)) => f.write_str(&super::words::run_refusal(r)),
             Self::Solver(e) => write!(f, "{e}"),
             Self::ThreadEnded => f.write_str("the run's thread ended"),
             Self::Finished => f.write_str("the run's result was already taken"),

@@ -7,7 +7,7 @@
 //! ([`Rhs::linearise`]). The work w follows explicitly from the converged midpoint.
 
 use super::rhs::{Point, Rhs, State};
-use crate::error::{LinkageError, Result};
+use crate::error::{ImplicitFailure, LinkageError, Result, RunRefusal};
 
 /// Newton iterations before the step is declared not converged.
 const MAX_ITERATIONS: usize = 25;
@@ -21,7 +21,7 @@ pub(crate) fn midpoint(rhs: &mut Rhs, a: &Point, h: f64) -> Result<Point> {
     let (m11, m12, m21, m22) = (1.0, -g, -g * acc_x, 1.0 - g * acc_v);
     let det = m11 * m22 - m12 * m21;
     if !(det.is_finite() && det.abs() > 1e-300) {
-        return Err(not_converged(a, h, "singular iteration matrix"));
+        return Err(not_converged(a, h, ImplicitFailure::SingularMatrix));
     }
     let mut m: State = std::array::from_fn(|i| a.y[i] + g * a.f[i]);
     // Corrections measured against 1e-12 of the state and of the step's change in v;
@@ -52,16 +52,13 @@ pub(crate) fn midpoint(rhs: &mut Rhs, a: &Point, h: f64) -> Result<Point> {
         }
         previous = size;
     }
-    Err(not_converged(a, h, "the Newton iteration did not converge"))
+    Err(not_converged(a, h, ImplicitFailure::NoConvergence))
 }
 
-fn not_converged(a: &Point, h: f64, why: &str) -> LinkageError {
-    LinkageError::InvalidParameter {
-        name: "step".into(),
-        value: h,
-        valid: format!(
-            "small enough for the implicit midpoint rule to converge at t = {:.6} s ({why}): try a smaller --dt",
-            a.t
-        ),
-    }
+fn not_converged(a: &Point, h: f64, why: ImplicitFailure) -> LinkageError {
+    LinkageError::Run(Box::new(RunRefusal::ImplicitNotConverged {
+        step_s: h,
+        t_s: a.t,
+        why,
+    }))
 }

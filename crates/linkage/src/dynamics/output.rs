@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use super::settings::Method;
-use crate::error::Result;
+use crate::error::{Result, RunWarning};
 use crate::ids::LinkId;
 use crate::motion::Solution;
 use crate::solve::Kinematics;
@@ -75,7 +75,7 @@ pub struct RunStats {
     /// 1/s: explicit steps must stay below about 2.8/this.
     pub stiffness_per_s: f64,
     /// Warnings about the run's accuracy or cost.
-    pub warnings: Vec<String>,
+    pub warnings: Vec<RunWarning>,
 }
 
 /// A finished run.

@@ -13,7 +13,7 @@ use super::output::{RunStats, Sample, SimEvent, Simulation};
 use super::rhs::{Point, Rhs, State};
 use super::settings::{Method, Settings};
 use crate::angles::unwrap_near;
-use crate::error::{LinkageError, Result};
+use crate::error::{LinkageError, Result, RunRefusal, RunWarning, StabilityLimit};
 use crate::ids::LinkId;
 use crate::model::SceneProblem;
 use crate::roots_util::refine;
@@ -105,29 +105,25 @@ fn rate_scale(stiffness_per_s: f64, start_speed: f64, t_end: f64) -> f64 {
     }
 }
 
-/// The error of a run that spent its step budget: where it got to, and what to change.
+/// The error of a run that spent its step budget: where it got to, and whether the
+/// stiffness set its steps (then an implicit method is the change to make).
 fn budget_spent(stats: &RunStats, t: f64, settings: &Settings) -> LinkageError {
     let stiff = settings
         .method
         .stability_limit()
         .map(|limit| limit / stats.stiffness_per_s)
-        .filter(|h_limit| t / (stats.steps.max(1) as f64) < 2.0 * h_limit);
-    let advice = match stiff {
-        Some(h_limit) => format!(
-            "the motion is stiff (|λ| = {:.4e} 1/s; {} is stable only below h = {h_limit:.3e} s): use --method implicit",
-            stats.stiffness_per_s,
-            settings.method.label()
-        ),
-        None => "loosen rtol/atol or take a larger step".to_string(),
-    };
-    LinkageError::InvalidParameter {
-        name: "t_end".into(),
-        value: settings.t_end,
-        valid: format!(
-            "the run took {} steps (the most this run may take) and reached only t = {t:.6e} s: {advice}",
-            settings.max_steps
-        ),
-    }
+        .filter(|h_limit| t / (stats.steps.max(1) as f64) < 2.0 * h_limit)
+        .map(|h_limit_s| StabilityLimit {
+            method: settings.method,
+            stiffness_per_s: stats.stiffness_per_s,
+            h_limit_s,
+        });
+    LinkageError::Run(Box::new(RunRefusal::StepBudgetSpent {
+        t_end_s: settings.t_end,
+        max_steps: settings.max_steps,
+        reached_t_s: t,
+        stiff,
+    }))
 }
 
 /// Integrates the scene of `k` as `settings` say: from its start position (the
@@ -335,11 +331,14 @@ impl Run {
             let t_run = self.samples.last().map_or(0.0, |s| s.t);
             let mean_step = t_run / self.stats.steps.max(1) as f64;
             if mean_step > 0.5 * h_limit {
-                self.stats.warnings.push(format!(
-                    "stiff: the mean step {mean_step:.3e} s of {} is set by its stability limit {h_limit:.3e} s (stiffest mode |λ| = {:.4e} 1/s at the start), not by rtol; --method implicit has no such limit",
-                    method.label(),
-                    self.stats.stiffness_per_s
-                ));
+                self.stats.warnings.push(RunWarning::Stiff {
+                    mean_step_s: mean_step,
+                    limit: StabilityLimit {
+                        method,
+                        stiffness_per_s: self.stats.stiffness_per_s,
+                        h_limit_s: h_limit,
+                    },
+                });
             }
         }
         self.stats.rhs_evaluations = self.rhs.evaluations;
@@ -591,14 +590,17 @@ fn check_stability(settings: &Settings, stiffness_per_s: f64) -> Result<()> {
     if method.is_adaptive() || settings.step <= h_limit {
         return Ok(());
     }
-    Err(LinkageError::InvalidParameter {
-        name: "step".into(),
-        value: settings.step,
-        valid: format!(
-            "below {h_limit:.3e} s, the stability limit of {} for the stiffest mode here (|λ| = {stiffness_per_s:.4e} 1/s, h|λ| < {limit:.3}); or use --method implicit, which has no limit",
-            method.label(),
-        ),
-    })
+    Err(LinkageError::Run(Box::new(
+        RunRefusal::StepBeyondStability {
+            step_s: settings.step,
+            limit: StabilityLimit {
+                method,
+                stiffness_per_s,
+                h_limit_s: h_limit,
+            },
+            h_lambda: limit,
+        },
+    )))
 }
 
 /// The error of an adaptive run whose step size collapsed at `a`.

@@ -7,10 +7,12 @@ use crate::assembly::AssemblyRanges;
 use crate::dyad::{DyadLabel, Shortfall};
 mod cam_problem;
 mod design_refusal;
+mod run_refusal;
 mod scene_problem;
 
 pub use cam_problem::CamProblem;
 pub use design_refusal::DesignRefusal;
+pub use run_refusal::{ImplicitFailure, RunRefusal, RunWarning, StabilityLimit};
 pub use scene_problem::{LonePoint, MadeJoint, SceneProblem};
 
 /// Why a chain does not close at an input, as data ([`LinkageError::CannotAssemble`]).
@@ -64,6 +66,9 @@ pub enum LinkageError {
     /// The synthesis requirements give no linkage.
     #[error("no design: {0}")]
     NoDesign(Box<DesignRefusal>),
+    /// A dynamic run refused, or stopped, for its settings.
+    #[error(transparent)]
+    Run(Box<RunRefusal>),
     /// A numeric parameter is outside its valid range (or not finite).
     #[error("{name} = {value} is invalid: {valid}")]
     InvalidParameter {
