@@ -100,6 +100,9 @@ impl ForceFigure {
 }
 
 impl Figure for ForceFigure {
+    // The same lines as polygon_figure.rs's: the two figures' arrows are of two types (a
+    // force's label is its own, a polygon term's is made from its symbol), and a
+    // shared arrow type for three fields would cost more than these lines.
     fn arrow_ends(&self) -> Vec<(Pt, Pt, ArrowStyle)> {
         self.arrows
             .iter()

@@ -111,6 +111,17 @@ impl<T: Real> Pair<T> {
             cross(&self.c1, rhs) * self.inv_det,
         )
     }
+
+    /// The group's two rates from the velocities' right-hand side `dv`, then their
+    /// derivatives from the accelerations' right-hand side, which `rhs(first,
+    /// second)` makes from the rates (centripetal and Coriolis terms): `[first,
+    /// second, first', second']`. Every dyad ends its solve so.
+    #[inline(always)]
+    pub(super) fn rates(&self, dv: &Vector2<T>, rhs: impl FnOnce(T, T) -> Vector2<T>) -> [T; 4] {
+        let (first, second) = self.solve(dv);
+        let (first_dot, second_dot) = self.solve(&rhs(first, second));
+        [first, second, first_dot, second_dot]
+    }
 }
 
 /// The rotation whose x-axis is the unit vector `unit`.

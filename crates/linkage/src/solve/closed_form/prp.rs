@@ -41,16 +41,16 @@ impl Prp {
         let gj = links[self.slide_j.guide];
         let on_i = gi.material_point_at(&b);
         let on_j = gj.material_point_at(&b);
-        let (mut sd_i, mut sd_j, mut sdd_i, mut sdd_j) =
-            (T::zero(), T::zero(), T::zero(), T::zero());
-        if motion {
-            (sd_i, sd_j) = pair.solve(&(on_j.velocity - on_i.velocity));
-            let two = splat::<T>(2.0);
-            let rhs = on_j.acceleration + perp(&lj.u) * (two * gj.omega_rad_s * sd_j)
-                - on_i.acceleration
-                - perp(&li.u) * (two * gi.omega_rad_s * sd_i);
-            (sdd_i, sdd_j) = pair.solve(&rhs);
-        }
+        let [sd_i, sd_j, sdd_i, sdd_j] = if motion {
+            pair.rates(&(on_j.velocity - on_i.velocity), |sd_i, sd_j| {
+                let two = splat::<T>(2.0);
+                on_j.acceleration + perp(&lj.u) * (two * gj.omega_rad_s * sd_j)
+                    - on_i.acceleration
+                    - perp(&li.u) * (two * gi.omega_rad_s * sd_i)
+            })
+        } else {
+            [T::zero(); 4]
+        };
         let pb_i = riding_point(&on_i, &li.u, gi.omega_rad_s, sd_i, sdd_i);
         let pb_j = riding_point(&on_j, &lj.u, gj.omega_rad_s, sd_j, sdd_j);
         links[self.i] = LinkMotion::from_pin(

@@ -66,15 +66,14 @@ impl Rpr {
         let rot_slider = rot_guide * splat_rotation(&self.relative);
         let r = ps.position - pg.position;
         let conditioning = (r.dot(&u) / dist).simd_abs();
-        let (w, al) = if motion {
-            let c1 = perp(&r);
-            let pair = Pair::new(c1, u, group)?;
-            let (w, sd) = pair.solve(&(ps.velocity - pg.velocity));
-            let rhs = ps.acceleration - pg.acceleration + r * (w * w)
-                - perp(&u) * (splat::<T>(2.0) * w * sd);
-            (w, pair.solve(&rhs).0)
+        // The slide's own rate and its derivative are the riding point's business.
+        let [w, _, al, _] = if motion {
+            Pair::new(perp(&r), u, group)?.rates(&(ps.velocity - pg.velocity), |w, sd| {
+                ps.acceleration - pg.acceleration + r * (w * w)
+                    - perp(&u) * (splat::<T>(2.0) * w * sd)
+            })
         } else {
-            (T::zero(), T::zero())
+            [T::zero(); 4]
         };
         links[self.guide] = LinkMotion::from_pin(rot_guide, w, al, &self.g_on_guide, &pg);
         links[self.slider] = LinkMotion::from_pin(rot_slider, w, al, &self.s_on_slider, &ps);

@@ -58,15 +58,15 @@ impl Rrp {
         let conditioning = (r1.dot(&u) * splat(self.inv_len_i)).simd_abs();
         let guide = links[self.slide.guide];
         let on_guide = guide.material_point_at(&b);
-        let (mut wi, mut ai, mut sd, mut sdd) = (T::zero(), T::zero(), T::zero(), T::zero());
-        if motion {
-            let pair = Pair::new(perp(&r1), -u, group)?;
-            (wi, sd) = pair.solve(&(on_guide.velocity - pa.velocity));
-            let rhs = on_guide.acceleration + perp(&u) * (splat::<T>(2.0) * guide.omega_rad_s * sd)
-                - pa.acceleration
-                + r1 * (wi * wi);
-            (ai, sdd) = pair.solve(&rhs);
-        }
+        let [wi, sd, ai, sdd] = if motion {
+            Pair::new(perp(&r1), -u, group)?.rates(&(on_guide.velocity - pa.velocity), |wi, sd| {
+                on_guide.acceleration + perp(&u) * (splat::<T>(2.0) * guide.omega_rad_s * sd)
+                    - pa.acceleration
+                    + r1 * (wi * wi)
+            })
+        } else {
+            [T::zero(); 4]
+        };
         let pb = riding_point(&on_guide, &u, guide.omega_rad_s, sd, sdd);
         links[self.i] = LinkMotion::from_pin(rot_i, wi, ai, &self.a_on_i, &pa);
         links[self.j] = LinkMotion::from_pin(

@@ -72,13 +72,14 @@ impl Rrr {
         let rot_i = direction(&(r1 * splat::<T>(self.inv_len_i))) * splat_rotation(&self.dir_i_inv);
         let rot_j = direction(&(r2 * splat::<T>(self.inv_len_j))) * splat_rotation(&self.dir_j_inv);
         let conditioning = (cross(&r1, &r2) * splat(self.inv_len_i * self.inv_len_j)).simd_abs();
-        let (mut wi, mut wj, mut ai, mut aj) = (T::zero(), T::zero(), T::zero(), T::zero());
-        if motion {
-            let pair = Pair::new(perp(&r1), -perp(&r2), group)?;
-            (wi, wj) = pair.solve(&(pc.velocity - pa.velocity));
-            let rhs = pc.acceleration - pa.acceleration + r1 * (wi * wi) - r2 * (wj * wj);
-            (ai, aj) = pair.solve(&rhs);
-        }
+        let [wi, wj, ai, aj] = if motion {
+            Pair::new(perp(&r1), -perp(&r2), group)?
+                .rates(&(pc.velocity - pa.velocity), |wi, wj| {
+                    pc.acceleration - pa.acceleration + r1 * (wi * wi) - r2 * (wj * wj)
+                })
+        } else {
+            [T::zero(); 4]
+        };
         links[self.i] = LinkMotion::from_pin(rot_i, wi, ai, &self.a_on_i, &pa);
         links[self.j] = LinkMotion::from_pin(rot_j, wj, aj, &self.c_on_j, &pc);
         Ok(GroupOk {
