@@ -1,6 +1,8 @@
 //! A dynamic run's refusals and warnings in this command line's words: what to
 //! change is named by its option (`--method implicit`, `--dt`, `--rtol`/`--atol`),
-//! which the solver does not know.
+//! which the solver does not know. The app words the same data for its controls
+//! (linkage-model's `session/words.rs`) and the solver's `Display` for neither:
+//! matches of the same shape, by design, one per edge.
 
 use linkage::error::{RunRefusal, RunWarning, StabilityLimit};
 
