@@ -108,10 +108,13 @@ impl CliError {
 
 /// An overflowing speed in the words of this command line.
 /// The solver's error as the solver words it, but a dynamic run's refusal, which
-/// names the option to change.
+/// names the option to change, and a missing motor, which names the file that
+/// documents the scene format.
 fn solver_words(e: &LinkageError) -> String {
     match e {
         LinkageError::Run(r) => crate::run_words::refusal(r),
+        // The scene format's guide is a file of this repository.
+        LinkageError::NeedsMotor => "drive = NaN is invalid: the steady state needs a motor: give the scene a `drive` (see assets/scenes/README.md)".to_string(),
         other => other.to_string(),
     }
 }

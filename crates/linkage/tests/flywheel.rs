@@ -211,7 +211,20 @@ fn a_delta_outside_its_range_and_a_rocking_input_are_refused_with_the_reason() {
     }
     let mut rocker = kinematics("gravity_flipper.ron", SolverPath::Auto);
     let err = size_flywheel(&mut rocker, 0.05).expect_err("not a crank");
-    assert!(matches!(err, LinkageError::NotACrank { .. }), "{err}");
+    assert!(
+        matches!(
+            err,
+            LinkageError::NotACrank {
+                needs: linkage::error::MachineAnalysis::Flywheel,
+                ..
+            }
+        ),
+        "{err}"
+    );
+    assert!(
+        err.to_string().contains("flywheel sizing needs a crank"),
+        "{err}"
+    );
 }
 
 /// Turning clockwise is the same machine seen from behind (the in-line slider's

@@ -66,6 +66,9 @@ pub enum LinkageError {
     /// The synthesis requirements give no linkage.
     #[error("no design: {0}")]
     NoDesign(Box<DesignRefusal>),
+    /// The steady state of a scene with no motor (no `drive` section).
+    #[error("the steady state needs a motor: give the scene a `drive` section")]
+    NeedsMotor,
     /// A dynamic run refused, or stopped, for its settings.
     #[error(transparent)]
     Run(Box<RunRefusal>),
@@ -150,11 +153,32 @@ pub enum LinkageError {
     /// turn a full cycle.
     #[error("the input does not turn a full cycle ({reachable}): {needs} needs a crank")]
     NotACrank {
-        /// What was asked for, in words.
-        needs: &'static str,
+        /// What was asked for.
+        needs: MachineAnalysis,
         /// Where the chain does assemble.
         reachable: AssemblyRanges,
     },
+}
+
+/// A machine analysis over one turn of the crank, named in a refusal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MachineAnalysis {
+    /// Flywheel sizing by the energy method.
+    Flywheel,
+    /// The periodic steady state with a motor.
+    SteadyState,
+    /// The shaking force and moment over a cycle.
+    Shaking,
+}
+
+impl std::fmt::Display for MachineAnalysis {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::Flywheel => "flywheel sizing",
+            Self::SteadyState => "the steady state",
+            Self::Shaking => "the shaking force over a cycle",
+        })
+    }
 }
 
 /// Shorthand for results carrying a [`LinkageError`].

@@ -15,7 +15,7 @@ use serde::Serialize;
 
 use super::gauss;
 use super::torque::{CrankLoad, CrankTorque, full_turn};
-use crate::error::{LinkageError, Result};
+use crate::error::{LinkageError, MachineAnalysis, Result};
 use crate::extremum::{Extreme, locate_max};
 use crate::roots_util::refine;
 use crate::solve::Kinematics;
@@ -166,7 +166,7 @@ fn check_inputs(k: &Kinematics, delta: f64) -> Result<()> {
             valid: "flywheel sizing needs the crank's nominal speed: give the driver a finite speed other than 0".into(),
         });
     }
-    full_turn(k, "flywheel sizing")
+    full_turn(k, MachineAnalysis::Flywheel)
 }
 
 /// One-degree panel ends over the `turn` (±2π) from `start`, with the angles where a

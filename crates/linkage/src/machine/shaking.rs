@@ -13,7 +13,7 @@ use serde::Serialize;
 
 use super::torque::full_turn;
 use crate::dynamics::Load;
-use crate::error::Result;
+use crate::error::{MachineAnalysis, Result};
 use crate::extremum::{Extreme, locate_max};
 use crate::ids::LinkId;
 use crate::kinetostatics::{KinetostaticState, Kinetostatics};
@@ -109,7 +109,7 @@ fn on_frame(
 /// A scene without kinetostatics (masses and a crank speed), an input that does not
 /// turn fully, or a position that does not solve.
 pub fn shaking(k: &mut Kinematics, about: [f64; 2]) -> Result<Shaking> {
-    full_turn(k, "the shaking force over a cycle")?;
+    full_turn(k, MachineAnalysis::Shaking)?;
     let mut ks = Kinetostatics::new(k)?;
     let (start, w) = (
         k.mechanism().driver.start_rad,

@@ -14,7 +14,7 @@ use serde::Serialize;
 use super::flywheel::size_flywheel;
 use super::torque::full_turn;
 use crate::dynamics::{Method, Sample, Settings, Simulation, simulate};
-use crate::error::{LinkageError, Result};
+use crate::error::{LinkageError, MachineAnalysis, Result};
 use crate::model::{Mechanism, Motor};
 use crate::scene::{StopAction, StopSpec};
 use crate::solve::Kinematics;
@@ -113,13 +113,9 @@ pub fn steady_state(k: &Kinematics) -> Result<SteadyState> {
 fn prepared(k: &Kinematics) -> Result<(Mechanism, Aim, Option<f64>)> {
     let mut m = k.mechanism().clone();
     let Some(drive) = m.drive.as_mut() else {
-        return Err(LinkageError::InvalidParameter {
-            name: "drive".into(),
-            value: f64::NAN,
-            valid: "the steady state needs a motor: give the scene a `drive` (see assets/scenes/README.md)".into(),
-        });
+        return Err(LinkageError::NeedsMotor);
     };
-    full_turn(k, "the steady state")?;
+    full_turn(k, MachineAnalysis::SteadyState)?;
     let (aim, constant) = match drive.motor {
         Motor::Constant(_) => {
             let mean = size_flywheel(&mut k.clone(), 0.5)?.mean_torque_n_m;

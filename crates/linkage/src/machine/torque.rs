@@ -4,13 +4,13 @@
 //! forces are in ½ J' ω², the loads in M).
 
 use crate::dynamics::ForceModel;
-use crate::error::{LinkageError, Result};
+use crate::error::{LinkageError, MachineAnalysis, Result};
 use crate::motion::Solution;
 use crate::solve::Kinematics;
 
 /// `Ok` when `k`'s input turns a full cycle; else [`LinkageError::NotACrank`] saying
 /// that `needs` needs a crank, with where the chain does assemble.
-pub(crate) fn full_turn(k: &Kinematics, needs: &'static str) -> Result<()> {
+pub(crate) fn full_turn(k: &Kinematics, needs: MachineAnalysis) -> Result<()> {
     let reachable = k.assembly_ranges();
     if reachable.full_rotation {
         Ok(())
