@@ -62,6 +62,23 @@ fn each_design_opens_as_a_scene_that_meets_its_requirements() {
     );
     let stroke = r.strokes_m.values().next().expect("a slider");
     assert!((stroke - 0.05).abs() < 1e-9, "{stroke}");
+    // The paper's loads come from its scene file; the words are the app's, naming
+    // the inputs typed and no command line.
+    let scene = h.state().state.session.scene().clone();
+    assert_eq!(scene.name, "Die cutter (H = 50 mm, K = 1.3, L = 600 mm)");
+    let die = scene
+        .links
+        .iter()
+        .find(|l| l.name == "die")
+        .expect("the die");
+    assert_eq!(die.mass, Some(120.0));
+    assert_eq!(scene.forces.point_forces.len(), 1);
+    for words in std::iter::once(&scene.description).chain(&scene.notes) {
+        assert!(
+            !words.contains("linkage ") && !words.contains("--"),
+            "{words}"
+        );
+    }
 
     // Function: the rocker's line CD at each precision point's crank angle.
     let mut k = design_and_open(&mut h, "function");

@@ -24,6 +24,7 @@ mod share;
 mod simulate;
 mod sweep;
 mod synth;
+mod synth_die_cutter;
 mod synth_function;
 mod synth_motion;
 mod synth_path;

@@ -1,7 +1,7 @@
-//! `linkage synth`: the crank-rocker and the die cutter here, the other syntheses in
-//! their own files (`synth_function`, `synth_motion`, `synth_path`).
+//! `linkage synth`: the crank-rocker here, the other syntheses in their own files
+//! (`synth_function`, `synth_motion`, `synth_path`, `synth_die_cutter`).
 
-use linkage::synthesis::{DieCutterSpec, crank_rocker, die_cutter, die_cutter_as_printed};
+use linkage::synthesis::{DieCutterSpec, crank_rocker};
 
 use crate::args::SynthCommand;
 use crate::error::{CliError, Result};
@@ -68,11 +68,11 @@ pub(crate) fn synth(what: SynthCommand) -> Result<String> {
                 link_m: link_mm * 1e-3,
                 crank_rpm: rpm,
             };
-            let (scene, _) = match as_printed.as_deref() {
-                Some([ab, bc]) => die_cutter_as_printed(ab * 1e-3, bc * 1e-3, &spec),
-                _ => die_cutter(&spec),
-            }?;
-            Ok(scene.to_ron()? + "\n")
+            let printed = match as_printed.as_deref() {
+                Some(&[ab, bc]) => Some([ab, bc]),
+                _ => None,
+            };
+            crate::synth_die_cutter::run(&spec, printed)
         }
     }
 }

@@ -384,6 +384,21 @@ pub struct SceneFile {
 }
 
 impl SceneFile {
+    /// This scene with `other`'s loads: what it models, its forces, and the mass,
+    /// centroid and inertia of each of its links that `other` has by the same name.
+    /// A linkage designed anew takes a paper's data (the die cutter's pressing
+    /// force and die) from that paper's scene file so.
+    pub fn with_loads_of(mut self, other: &SceneFile) -> Self {
+        self.models = other.models;
+        self.forces = other.forces.clone();
+        for link in &mut self.links {
+            if let Some(o) = other.links.iter().find(|o| o.name == link.name) {
+                (link.mass, link.centroid, link.inertia) = (o.mass, o.centroid, o.inertia);
+            }
+        }
+        self
+    }
+
     /// Parses scene text. Syntax errors, unknown fields (with the fields allowed there)
     /// and keys given twice carry line and column.
     pub fn parse(text: &str) -> Result<Self> {

@@ -7,7 +7,7 @@ mod common;
 use common::{kinematics, mechanism, scene_text};
 use linkage::analysis::{Stroke, TimeRatioNote, report};
 use linkage::scene::{SceneFile, SolverPath};
-use linkage::synthesis::{DieCutterSpec, die_cutter};
+use linkage::synthesis::{DieCutterSpec, die_cutter, toggle_six_bar_scene};
 
 fn spec() -> DieCutterSpec {
     DieCutterSpec {
@@ -66,7 +66,8 @@ fn synthesized_die_cutter_meets_stroke_k_and_toggle_at_top() {
 
 #[test]
 fn committed_die_cutter_scene_matches_the_synthesis() {
-    let (fresh, _) = die_cutter(&spec()).expect("synthesis");
+    let synthesis = die_cutter(&spec()).expect("synthesis");
+    let fresh = toggle_six_bar_scene(&synthesis, spec().crank_rpm);
     let committed = SceneFile::parse(&scene_text("die_cutter.ron")).expect("parse");
     assert_eq!(fresh.links.len(), committed.links.len());
     for (a, b) in fresh.links.iter().zip(&committed.links) {
@@ -79,6 +80,21 @@ fn committed_die_cutter_scene_matches_the_synthesis() {
         }
     }
     assert_eq!(fresh.branches, committed.branches);
+    // The paper's loads are the committed file's, not the synthesis's: the scene
+    // it builds carries geometry only.
+    assert_eq!(fresh.forces, Default::default());
+    assert!(fresh.links.iter().all(|l| l.mass.is_none()));
+    let loaded = fresh.with_loads_of(&committed);
+    assert_eq!(loaded.forces, committed.forces);
+    for (a, b) in loaded.links.iter().zip(&committed.links) {
+        assert_eq!(
+            (a.mass, a.centroid, a.inertia),
+            (b.mass, b.centroid, b.inertia),
+            "{}",
+            a.name
+        );
+    }
+    assert_eq!(loaded.links.last().and_then(|l| l.mass), Some(120.0));
 }
 
 #[test]

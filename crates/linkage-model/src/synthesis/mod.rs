@@ -8,7 +8,10 @@ pub mod motion;
 pub mod path_inputs;
 pub mod path_job;
 
-use linkage::synthesis::{CrankRocker, DieCutterSpec, crank_rocker, die_cutter, four_bar_scene};
+use linkage::synthesis::{
+    CrankRocker, DieCutterSpec, ToggleSixBar, crank_rocker, die_cutter, four_bar_scene,
+    toggle_six_bar_scene,
+};
 
 pub use crate::synthesis::design::{Design, Figure, SynthError};
 use crate::synthesis::design::{deg, mm, row};
@@ -148,10 +151,40 @@ fn die([h_mm, k, l_mm, rpm]: [f64; 4]) -> Result<Design, SynthError> {
         link_m: l_mm * 1e-3,
         crank_rpm: rpm,
     };
-    let (scene, d) = die_cutter(&spec)?;
+    let t = die_cutter(&spec)?;
     Ok(Design {
-        table: crank_rocker_rows(&d, "rocker CD = CE", "least transmission angle (ABCD)"),
-        scene,
+        table: crank_rocker_rows(
+            &t.design,
+            "rocker CD = CE",
+            "least transmission angle (ABCD)",
+        ),
+        scene: die_cutter_scene(&t, [h_mm, k, l_mm, rpm]),
         figure: Figure::None,
     })
+}
+
+/// The synthesized toggle six-bar with the paper's loads (its pressing force and
+/// die, from the shipped scene), named and described from the inputs typed.
+fn die_cutter_scene(t: &ToggleSixBar, [h_mm, k, l_mm, rpm]: [f64; 4]) -> linkage::scene::SceneFile {
+    let mut scene = toggle_six_bar_scene(t, rpm);
+    if let Some(paper) = crate::catalog::builtin("die_cutter")
+        .and_then(|b| linkage::scene::SceneFile::parse(b.text).ok())
+    {
+        scene = scene.with_loads_of(&paper);
+    }
+    let d = &t.design;
+    scene.name = format!("Die cutter (H = {h_mm} mm, K = {k}, L = {l_mm} mm)");
+    scene.description = format!(
+        "Toggle six-bar synthesized from stroke H = {h_mm} mm, time ratio K = {k} and CD = CE = L = {l_mm} mm: AB = {}, BC = {}, AD = {}; the rocker swings from {} to 90°, where C lies on DE (the toggle). The pressing force and the die's mass are the paper's.",
+        mm(d.crank_m),
+        mm(d.coupler_m),
+        mm(d.ground_m),
+        deg(t.far_rad)
+    );
+    scene.notes = vec![format!(
+        "φ30 = asin(1 − H/(2L)) = {}; the crank pivot A is where the least transmission angle is largest ({}).",
+        deg(t.far_rad),
+        deg(d.min_transmission_rad)
+    )];
+    scene
 }

@@ -9,6 +9,7 @@
 //! transmission angle.
 
 pub mod burmester;
+mod die_cutter;
 pub mod function;
 pub mod motion;
 pub mod path;
@@ -17,6 +18,10 @@ pub mod rows;
 
 /// Why a synthesis gives no linkage (defined with the other leaf error types).
 pub use crate::error::DesignRefusal;
+pub use die_cutter::{
+    DieCutterSpec, ToggleSixBar, die_cutter, die_cutter_as_printed, die_cutter_far_angle,
+    toggle_six_bar_scene,
+};
 
 use indexmap::IndexMap;
 use serde::Serialize;
@@ -24,8 +29,7 @@ use serde::Serialize;
 use crate::error::{LinkageError, Result};
 use crate::motion::{Vec2, cross};
 use crate::scene::{
-    Branch, DriverSpec, ForceWhen, ForcesSpec, LengthUnit, LinkSpec, Models, PointForceSpec,
-    SceneFile, SliderSpec, SolverSpec, Speed,
+    Branch, DriverSpec, ForcesSpec, LengthUnit, LinkSpec, Models, SceneFile, SolverSpec, Speed,
 };
 
 /// A synthesized crank-rocker, SI units, D at the origin.
@@ -59,7 +63,7 @@ pub struct CrankRocker {
     pub c_left_of_bd: bool,
 }
 
-fn invalid(name: &str, value: f64, valid: &str) -> LinkageError {
+pub(crate) fn invalid(name: &str, value: f64, valid: &str) -> LinkageError {
     LinkageError::InvalidParameter {
         name: name.into(),
         value,
@@ -221,230 +225,19 @@ fn check_crank_rocker(rocker_m: f64, swing_rad: f64, k: f64, rocker_start_rad: f
     Ok(())
 }
 
-/// The die-cutter requirements of the second paper.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct DieCutterSpec {
-    /// Stroke H, m.
-    pub stroke_m: f64,
-    /// Time ratio K.
-    pub k: f64,
-    /// CD = CE = L, m.
-    pub link_m: f64,
-    /// Crank speed, rpm.
-    pub crank_rpm: f64,
-}
-
-/// Rocker angle at the far limit: S = H = 2L(1 − sin φ30).
-pub fn die_cutter_far_angle(spec: &DieCutterSpec) -> Result<f64> {
-    let s = 1.0 - spec.stroke_m / (2.0 * spec.link_m);
-    if !(spec.stroke_m > 0.0 && spec.link_m > 0.0 && s > 0.0) {
-        return Err(invalid(
-            "stroke H (m)",
-            spec.stroke_m,
-            &format!("must be in (0, 2L) = (0, {}) m", 2.0 * spec.link_m),
-        ));
-    }
-    Ok(s.asin())
-}
-
-/// The written scene must load again: a crank speed that is not a finite number
-/// would give a scene file that no reader accepts.
-fn check_crank_speed(spec: &DieCutterSpec) -> Result<()> {
-    if spec.crank_rpm.is_finite() {
-        Ok(())
-    } else {
-        Err(LinkageError::InvalidParameter {
-            name: "crank speed (rpm)".into(),
-            value: spec.crank_rpm,
-            valid: "must be a finite number".into(),
-        })
-    }
-}
-
-/// Synthesizes the toggle six-bar: rocker CD swings from φ30 to 90° (C on DE at the
-/// top, the toggle), crank-rocker ABCD from the swing and K, CE = CD, slider E on a
-/// vertical guide through D. Returns the scene (mm) and the four-bar design.
-pub fn die_cutter(spec: &DieCutterSpec) -> Result<(SceneFile, CrankRocker)> {
-    check_crank_speed(spec)?;
-    let phi30 = die_cutter_far_angle(spec)?;
-    let design = crank_rocker(
-        spec.link_m,
-        std::f64::consts::FRAC_PI_2 - phi30,
-        spec.k,
-        phi30,
-        None,
-    )?;
-    let scene = die_cutter_scene(
-        &design,
-        spec,
-        "Die cutter (synthesized from the paper's requirements)",
-        format!(
-            "Toggle six-bar force amplifier of the flat-press die cutter (paper 2), synthesized by `linkage synth die-cutter --stroke-mm {} --k {} --link-mm {}` from H, K and CD = CE = L; AB = {:.3} mm, BC = {:.3} mm, AD = {:.3} mm; rocker swings {:.3} deg to {:.0} deg where C lies on DE (toggle).",
-            spec.stroke_m * 1e3,
-            spec.k,
-            spec.link_m * 1e3,
-            design.crank_m * 1e3,
-            design.coupler_m * 1e3,
-            design.ground_m * 1e3,
-            phi30.to_degrees(),
-            90.0
-        ),
-        vec![
-            format!("phi30 = asin(1 - H/(2L)) = {:.4} deg: the paper's bound 'L <= 600 gives phi30 <= 73.4 deg'.", phi30.to_degrees()),
-            "The crank turns at 50 rpm = 5.236 rad/s; the paper's v_B = 44.93 m/s uses the motor's 151.8 rad/s.".into(),
-            "Pressing force 2e6 N acts on the die only on the upward working stroke; die + slider 120 kg.".into(),
-            format!("Crank pivot A chosen on the synthesis circle for the best minimum transmission angle ({:.2} deg).", design.min_transmission_rad.to_degrees()),
-        ],
-    );
-    Ok((scene, design))
-}
-
-/// The die cutter with the printed AB, BC and CD = CE, keeping the printed K and the
-/// toggle at the top: the rocker swing these force, and A where they put it.
-pub fn die_cutter_as_printed(
-    crank_m: f64,
-    coupler_m: f64,
-    spec: &DieCutterSpec,
-) -> Result<(SceneFile, CrankRocker)> {
-    check_crank_speed(spec)?;
-    let theta = std::f64::consts::PI * (spec.k - 1.0) / (spec.k + 1.0);
-    let (near, far) = (coupler_m - crank_m, coupler_m + crank_m);
-    let chord = (near * near + far * far - 2.0 * near * far * theta.cos()).sqrt();
-    let swing = 2.0 * (chord / (2.0 * spec.link_m)).min(1.0).asin();
-    let start = std::f64::consts::FRAC_PI_2 - swing;
-    // A on the circle where the crank is the printed length: a root of crank(t) - AB.
-    let best = crank_rocker(spec.link_m, swing, spec.k, start, None)?;
-    let f = |t: f64| {
-        crate::synthesis::crank_rocker(spec.link_m, swing, spec.k, start, Some((t, best.side)))
-            .map_or(f64::NAN, |d| d.crank_m - crank_m)
-    };
-    let mut found = None;
-    let n = 3600;
-    let mut prev = (best.arc_rad, f(best.arc_rad));
-    for i in 1..=n {
-        let t = best.arc_rad + std::f64::consts::PI * i as f64 / n as f64;
-        let v = f(t);
-        if prev.1.is_finite() && v.is_finite() && prev.1.signum() != v.signum() {
-            found = crate::roots_util::refine(prev.0, t, f);
-            break;
-        }
-        prev = (t, v);
-    }
-    let t = found
-        .ok_or_else(|| invalid("AB (m)", crank_m, "cannot be placed with this BC, CD and K"))?;
-    let design = crank_rocker(spec.link_m, swing, spec.k, start, Some((t, best.side)))?;
-    let scene = die_cutter_scene(
-        &design,
-        spec,
-        "Die cutter (as printed: AB = 296, BC = 892, CD = CE = 600)",
-        format!(
-            "The paper's printed dimensions AB = {:.0} mm, BC = {:.0} mm, CD = CE = {:.0} mm, keeping its K = {} and the toggle at the top (C on DE). These lengths force a rocker swing of {:.2} deg (not the 30 deg of phi30 = 60 deg), so the stroke is far from 50 mm: see `linkage report`.",
-            crank_m * 1e3,
-            coupler_m * 1e3,
-            spec.link_m * 1e3,
-            spec.k,
-            swing.to_degrees()
-        ),
-        vec![
-            "Contradiction shown, not hidden: AB = 295.42, BC = 891.96 with K = 1.3 need a rocker swing of about 69 deg, which no 50 mm stroke allows.".into(),
-            "The paper's v_B = 44.93 m/s is omega x AB with omega = 151.8 rad/s, the MOTOR speed (1450 rpm); the crank turns at 50 rpm = 5.236 rad/s. Reproduce with `linkage at ... --speed-rad-s 151.8`.".into(),
-            "Paper's graphical results for its position 1: v_C = 50.436 m/s, v_E = 49.772 m/s (from its inconsistent geometry).".into(),
-            "Ground pivot A is not printed; it is placed where the printed AB, BC, CD and K are consistent.".into(),
-        ],
-    );
-    Ok((scene, design))
-}
-
-fn die_cutter_scene(
-    d: &CrankRocker,
-    spec: &DieCutterSpec,
-    name: &str,
-    description: String,
-    notes: Vec<String>,
-) -> SceneFile {
-    let branch = if d.c_left_of_bd {
-        Branch::Left("B".into(), "D".into())
-    } else {
-        Branch::Right("B".into(), "D".into())
-    };
-    SceneFile {
-        name: name.into(),
-        description,
-        notes,
-        models: Models::Kinetostatics,
-        length_unit: LengthUnit::Millimetre,
-        angle_unit: crate::scene::AngleUnit::Degree,
-        links: die_cutter_links(d, spec.link_m),
-        sliders: vec![SliderSpec {
-            slider: "die".into(),
-            point: "E".into(),
-            guide: "ground".into(),
-            through: "D".into(),
-            angle: 90.0,
-            relative_angle: 0.0,
-        }],
-        driver: DriverSpec {
-            link: "crank".into(),
-            speed: Speed::Rpm(spec.crank_rpm),
-            start: 0.0,
-        },
-        branches: [("C".to_string(), branch), ("E".to_string(), Branch::Along)]
-            .into_iter()
-            .collect(),
-        output: Some("die".into()),
-        guess: IndexMap::new(),
-        forces: ForcesSpec {
-            gravity: Some((0.0, -9.81)),
-            point_forces: vec![PointForceSpec {
-                point: "E".into(),
-                force_n: (0.0, -2.0e6),
-                when: ForceWhen::WorkingStroke,
-            }],
-            ..Default::default()
-        },
-        solver: SolverSpec::default(),
-        drive: None,
-        cams: Vec::new(),
-    }
-}
-
-/// The die cutter's links in millimetres, at full precision (rounding would move the
-/// rocker's limit off the toggle): ground AD, crank AB, coupler BC, rocker DC and
-/// CE of length `link_m`, and the die at E (the paper's 120 kg).
-fn die_cutter_links(d: &CrankRocker, link_m: f64) -> Vec<LinkSpec> {
-    let mm = |v: f64| v * 1e3;
-    let l = mm(link_m);
-    let mut die = plain_link("die", false, points(&[("E", 0.0, 0.0)]));
-    die.mass = Some(120.0);
-    die.centroid = Some((0.0, 0.0));
-    let [ax, ay] = d.pivot_a.map(mm);
-    vec![
-        plain_link("ground", true, points(&[("A", ax, ay), ("D", 0.0, 0.0)])),
-        plain_link(
-            "crank",
-            false,
-            points(&[("A", 0.0, 0.0), ("B", mm(d.crank_m), 0.0)]),
-        ),
-        plain_link(
-            "coupler",
-            false,
-            points(&[("B", 0.0, 0.0), ("C", mm(d.coupler_m), 0.0)]),
-        ),
-        plain_link("rocker", false, points(&[("D", 0.0, 0.0), ("C", l, 0.0)])),
-        plain_link("link_ce", false, points(&[("C", 0.0, 0.0), ("E", l, 0.0)])),
-        die,
-    ]
-}
-
 /// A link's points from (name, x, y), in order.
-fn points(list: &[(&str, f64, f64)]) -> IndexMap<String, (f64, f64)> {
+pub(crate) fn points(list: &[(&str, f64, f64)]) -> IndexMap<String, (f64, f64)> {
     list.iter()
         .map(|(n, x, y)| (n.to_string(), (*x, *y)))
         .collect()
 }
 
 /// A link with its points and no mass.
-fn plain_link(name: &str, ground: bool, points: IndexMap<String, (f64, f64)>) -> LinkSpec {
+pub(crate) fn plain_link(
+    name: &str,
+    ground: bool,
+    points: IndexMap<String, (f64, f64)>,
+) -> LinkSpec {
     LinkSpec {
         name: name.into(),
         ground,
