@@ -14,6 +14,7 @@ functions returning `Result<_, String>`, and the app state's fields. Reads sourc
     python3 scripts/code_measures.py --list     # and every cycle (with its edges),
                                                 # long function and Result<_, String>
 """
+import functools
 import re
 import sys
 from pathlib import Path
@@ -114,7 +115,10 @@ def use_paths(text):
     return paths
 
 
+@functools.cache
 def crate_graph(src):
+    """Which file of the crate in `src` uses which: {file: {files}}. Cached: --check
+    asks for each crate's graph for its cycles, its layers and its drawn graph."""
     files = sorted(src.rglob("*.rs"))
     is_bin_root = {src / "main.rs"} if (src / "lib.rs").exists() else set()
     mods = {module_of(src, f): f for f in files if f not in is_bin_root}

@@ -143,7 +143,6 @@ class LongFunctions(unittest.TestCase):
         self.assertEqual(cm.long_faults([(99, "src/b.rs:77 listed")], {"src/b.rs listed": "why"}), [])
 
 
-
 class Links(unittest.TestCase):
     def test_a_link_from_inside_docs_resolves_from_there(self):
         # docs/journal.md linked tests/snapshots/... as if from the repository's root.

@@ -106,7 +106,6 @@ impl CliError {
     }
 }
 
-/// An overflowing speed in the words of this command line.
 /// The solver's error as the solver words it, but a dynamic run's refusal, which
 /// names the option to change, and a missing motor, which names the file that
 /// documents the scene format.
@@ -119,6 +118,7 @@ fn solver_words(e: &LinkageError) -> String {
     }
 }
 
+/// An overflowing speed in the words of this command line.
 fn overflow_words(from_option: bool, speed_rad_s: f64, most_rad_s: f64) -> String {
     let rpm = |w: f64| w * 60.0 / std::f64::consts::TAU;
     if from_option {

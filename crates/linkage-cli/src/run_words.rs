@@ -4,17 +4,7 @@
 //! (linkage-model's `session/words.rs`) and the solver's `Display` for neither:
 //! matches of the same shape, by design, one per edge.
 
-use linkage::error::{RunRefusal, RunWarning, StabilityLimit};
-
-/// A stiffness limit: the stiffest mode and the step the method allows.
-fn limit_words(l: &StabilityLimit) -> String {
-    format!(
-        "|λ| = {:.4e} 1/s; {} is stable only below h = {:.3e} s",
-        l.stiffness_per_s,
-        l.method.label(),
-        l.h_limit_s
-    )
-}
+use linkage::error::{RunRefusal, RunWarning};
 
 /// Why the run was refused or stopped, and the option to change.
 pub(crate) fn refusal(r: &RunRefusal) -> String {
@@ -26,10 +16,9 @@ pub(crate) fn refusal(r: &RunRefusal) -> String {
             stiff,
         } => {
             let advice = match stiff {
-                Some(l) => format!(
-                    "the motion is stiff ({}): use --method implicit",
-                    limit_words(l)
-                ),
+                // The limit's own words (the stiffest mode, the step the method
+                // allows) name no option.
+                Some(l) => format!("the motion is stiff ({l}): use --method implicit"),
                 None => "loosen rtol/atol or take a larger step".to_string(),
             };
             format!(
@@ -67,6 +56,7 @@ pub(crate) fn warning(w: &RunWarning) -> String {
 #[cfg(test)]
 mod tests {
     use linkage::dynamics::Method;
+    use linkage::error::StabilityLimit;
 
     use super::*;
 

@@ -108,16 +108,8 @@ fn rate_scale(stiffness_per_s: f64, start_speed: f64, t_end: f64) -> f64 {
 /// The error of a run that spent its step budget: where it got to, and whether the
 /// stiffness set its steps (then an implicit method is the change to make).
 fn budget_spent(stats: &RunStats, t: f64, settings: &Settings) -> LinkageError {
-    let stiff = settings
-        .method
-        .stability_limit()
-        .map(|limit| limit / stats.stiffness_per_s)
-        .filter(|h_limit| t / (stats.steps.max(1) as f64) < 2.0 * h_limit)
-        .map(|h_limit_s| StabilityLimit {
-            method: settings.method,
-            stiffness_per_s: stats.stiffness_per_s,
-            h_limit_s,
-        });
+    let stiff = StabilityLimit::of(settings.method, stats.stiffness_per_s)
+        .filter(|l| t / (stats.steps.max(1) as f64) < 2.0 * l.h_limit_s);
     LinkageError::Run(Box::new(RunRefusal::StepBudgetSpent {
         t_end_s: settings.t_end,
         max_steps: settings.max_steps,
@@ -323,21 +315,17 @@ impl Run {
     /// with its cost and warnings.
     pub fn finish(mut self) -> Simulation {
         let method = self.settings.method;
-        if let Some(limit) = method.stability_limit().filter(|_| method.is_adaptive()) {
+        let limit = StabilityLimit::of(method, self.stats.stiffness_per_s);
+        if let Some(limit) = limit.filter(|_| method.is_adaptive()) {
             // An adaptive method stays stable by itself, but when its mean step sits
             // near the stability limit it is the stiffness, not the accuracy, that
             // sets the cost.
-            let h_limit = limit / self.stats.stiffness_per_s;
             let t_run = self.samples.last().map_or(0.0, |s| s.t);
             let mean_step = t_run / self.stats.steps.max(1) as f64;
-            if mean_step > 0.5 * h_limit {
+            if mean_step > 0.5 * limit.h_limit_s {
                 self.stats.warnings.push(RunWarning::Stiff {
                     mean_step_s: mean_step,
-                    limit: StabilityLimit {
-                        method,
-                        stiffness_per_s: self.stats.stiffness_per_s,
-                        h_limit_s: h_limit,
-                    },
+                    limit,
                 });
             }
         }
@@ -583,22 +571,20 @@ fn resolved_stops(k: &Kinematics, settings: &Settings) -> Vec<Stop> {
 /// Refuses a fixed explicit step beyond the method's stability limit.
 fn check_stability(settings: &Settings, stiffness_per_s: f64) -> Result<()> {
     let method = settings.method;
-    let Some(limit) = method.stability_limit() else {
+    let (Some(h_lambda), Some(limit)) = (
+        method.stability_limit(),
+        StabilityLimit::of(method, stiffness_per_s),
+    ) else {
         return Ok(());
     };
-    let h_limit = limit / stiffness_per_s;
-    if method.is_adaptive() || settings.step <= h_limit {
+    if method.is_adaptive() || settings.step <= limit.h_limit_s {
         return Ok(());
     }
     Err(LinkageError::Run(Box::new(
         RunRefusal::StepBeyondStability {
             step_s: settings.step,
-            limit: StabilityLimit {
-                method,
-                stiffness_per_s,
-                h_limit_s: h_limit,
-            },
-            h_lambda: limit,
+            limit,
+            h_lambda,
         },
     )))
 }

@@ -21,6 +21,18 @@ pub struct StabilityLimit {
     pub h_limit_s: f64,
 }
 
+impl StabilityLimit {
+    /// The limit `method` sets for a stiffest mode of `stiffness_per_s`; `None` for a
+    /// method without one (the implicit rule, the energy method).
+    pub fn of(method: Method, stiffness_per_s: f64) -> Option<Self> {
+        method.stability_limit().map(|h_lambda| Self {
+            method,
+            stiffness_per_s,
+            h_limit_s: h_lambda / stiffness_per_s,
+        })
+    }
+}
+
 impl fmt::Display for StabilityLimit {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
