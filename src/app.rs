@@ -3,6 +3,7 @@
 
 use eframe::egui;
 
+use crate::command::Command;
 use crate::render::Renderer;
 use crate::render::shape::SharedShapes;
 use crate::session::Session;
@@ -63,7 +64,10 @@ impl LinkageApp {
         state.play.playing = start.play;
         #[cfg(target_arch = "wasm32")]
         match crate::web::stored_drawing() {
-            Some(Ok(drawing)) => ui::drawing::resume(&mut state, drawing),
+            Some(Ok(drawing)) => {
+                state.push(Command::ResumeDrawing(Box::new(drawing)));
+                state.apply_commands();
+            }
             Some(Err(why)) => state.status = Some(why),
             None => {}
         }
@@ -123,11 +127,11 @@ fn undo_shortcuts(ctx: &egui::Context, st: &mut AppState) {
         .iter()
         .any(|k| ctx.input_mut(|i| i.consume_shortcut(k)))
     {
-        ui::drawing::redo_any(st);
+        st.push(Command::Redo);
     } else if ctx
         .input_mut(|i| i.consume_shortcut(&KeyboardShortcut::new(Modifiers::COMMAND, Key::Z)))
     {
-        ui::drawing::undo_any(st);
+        st.push(Command::Undo);
     }
 }
 
@@ -207,7 +211,7 @@ impl LinkageApp {
         });
         // The controls' edits land before the polygons, plots and view are laid out,
         // so that all of them show the edit in this frame.
-        self.state.apply_edits();
+        self.state.apply_commands();
         self.polygon_and_plot_panes(ui);
         egui::CentralPanel::default_margins().show(ui, |ui| {
             *solver_us +=
@@ -379,14 +383,15 @@ impl eframe::App for LinkageApp {
         ui::files::drop_hint(ui.ctx());
         // What the panels after the view asked for (the polygons' and plots' own
         // controls, the shortcuts) shows next frame, which `follow_up` asks for.
-        self.state.apply_edits();
+        self.state.apply_commands();
 
         let edited = (self.state.timing.opened, self.state.session.edit_count()) != edits_before;
         if !edited && !ui.input(|i| i.pointer.any_down()) {
             // A slider let go: its drag is one undo step.
             self.state.session.end_gesture();
         }
-        if follow_up(&mut self.state.session, edited, started) {
+        let applied = std::mem::take(&mut self.state.commands.applied);
+        if follow_up(&mut self.state.session, edited, started) || applied {
             ui.ctx().request_repaint();
         }
         let frame_us = started.elapsed().as_secs_f64() * 1e6;

@@ -4,6 +4,8 @@
 //! (wasm32, started by [`start_web`]).
 
 mod app;
+mod apply;
+pub mod command;
 pub mod file_action;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod file_dialog;

@@ -3,11 +3,12 @@
 //! the top bar sets, the status line, the layout and the frame's timings. The panels'
 //! own state (the view's camera, the plot tab, the polygon pane's hover, the file
 //! prompts, the synthesis window) is theirs ([`crate::ui::panels::Panels`]). This
-//! module uses no panel: the panels use it.
+//! module uses no panel: the panels use it. The commands are applied in `apply`.
 
+use crate::command::{Command, Waiting};
 use crate::drawing::DrawingEditor;
 use crate::render::build::Layers;
-use crate::session::{SceneEdit, Session};
+use crate::session::Session;
 use crate::ui::control_map::ControlMap;
 use crate::ui::layout::LayoutState;
 
@@ -66,12 +67,13 @@ impl EditTiming {
 /// What the panels asked of the model and the app, not yet done.
 #[derive(Default)]
 pub struct Commands {
-    /// Edits of the session, applied between panels ([`AppState::apply_edits`]).
-    pub edits: Vec<SceneEdit>,
-    /// A scene waiting to replace one with unsaved edits, until the user says so.
-    pub open: Option<Box<Session>>,
-    /// A new drawing waiting, likewise.
-    pub drawing: bool,
+    /// Changes of the model, applied between panels ([`AppState::apply_commands`]).
+    pub queue: Vec<Command>,
+    /// A change that would drop unsaved edits, until the user says whether it may.
+    pub waiting: Option<Waiting>,
+    /// Commands were applied in this frame: the panels laid out before them show the
+    /// model as it was, so the app draws another frame.
+    pub applied: bool,
     /// Fit the view at the next frame (after opening a scene or on request).
     pub fit: bool,
     /// Open the synthesis window, or close it when open.
@@ -162,47 +164,5 @@ impl AppState {
                 show: true,
             },
         }
-    }
-
-    /// Asks for `edit` to the session: the panels ask while they are laid out, and
-    /// the app applies the edits between panels, so that no panel sees the session
-    /// change under it.
-    pub fn edit(&mut self, edit: SceneEdit) {
-        self.commands.edits.push(edit);
-    }
-
-    /// Applies the edits asked for, in order, and adds their time to the frame's.
-    pub fn apply_edits(&mut self) {
-        if self.commands.edits.is_empty() {
-            return;
-        }
-        let started = web_time::Instant::now();
-        for edit in std::mem::take(&mut self.commands.edits) {
-            self.session.apply(edit);
-        }
-        self.timing.edit_ms += started.elapsed().as_secs_f64() * 1e3;
-    }
-
-    /// Replaces the session (a new scene), keeping the view settings.
-    pub fn open(&mut self, session: Session) {
-        if self.session.is_dirty() {
-            // The user says first whether the unsaved edits may go
-            // (`ui::scene_picker::discard_question`).
-            self.commands.open = Some(Box::new(session));
-            return;
-        }
-        self.open_now(session);
-    }
-
-    /// Opens `session` whatever the current one holds.
-    pub fn open_now(&mut self, session: Session) {
-        self.commands.open = None;
-        self.drawing = None;
-        // Edits asked of the old scene mean nothing to the new one.
-        self.commands.edits.clear();
-        self.session = session;
-        self.timing.opened += 1;
-        self.commands.fit = true;
-        self.play.playing = false;
     }
 }

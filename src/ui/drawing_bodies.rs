@@ -6,9 +6,9 @@ use eframe::egui;
 use linkage::Vec2;
 use linkage::scene::Models;
 
+use crate::command::Command;
 use crate::drawing::edit::DrawingEdit;
 use crate::state::AppState;
-use crate::ui::drawing;
 
 /// One row per link with a mass: "uniform", or its centroid (x, y) and inertia.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
@@ -74,6 +74,6 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             }
         });
     for e in edits {
-        drawing::edit(st, e);
+        st.push(Command::Drawing(e));
     }
 }

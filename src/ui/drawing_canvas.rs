@@ -7,6 +7,7 @@ use eframe::egui::{self, Align2, Color32, FontId, Pos2, Rect, Sense, Stroke};
 use linkage::Vec2;
 use linkage::drawing::Drawing;
 
+use crate::command::Command;
 use crate::drawing::edit::{DrawingEdit, End};
 use crate::drawing::{Pending, Tool};
 use crate::render::Renderer;
@@ -14,7 +15,6 @@ use crate::render::drawing_shapes::build_drawing;
 use crate::render::shape::SharedShapes;
 use crate::render::view::Camera;
 use crate::state::AppState;
-use crate::ui::drawing;
 use crate::ui::viewport::navigate;
 
 /// How near a point (points) a click must be to take it.
@@ -44,6 +44,8 @@ pub fn show(
         b.fit_pending = false;
     }
     let dragging_point = pointer(ui, &response, rect, st, camera);
+    // A drawn point or link shows where the pointer is now.
+    st.apply_commands();
     navigate(ui, &response, rect, camera, !dragging_point);
     draw(ui, rect, st, camera, shapes, renderer);
 }
@@ -91,7 +93,7 @@ fn pointer(
         && let Some(at) = response.interact_pointer_pos()
         && let Some(edit) = click(st, cam, at, rect)
     {
-        drawing::edit(st, edit);
+        st.push(Command::Drawing(edit));
     }
     false
 }
@@ -185,7 +187,7 @@ fn drag_point(
     if let Some(at) = response.interact_pointer_pos() {
         let to = aligned(b.drawing(), point, snapped(cam, at, rect), cam, at, rect);
         if b.drawing().points[point].at != to {
-            drawing::edit(st, DrawingEdit::MovePoint { point, to });
+            st.push(Command::Drawing(DrawingEdit::MovePoint { point, to }));
         }
     }
     true

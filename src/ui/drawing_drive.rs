@@ -6,9 +6,9 @@
 use eframe::egui;
 use linkage::scene::{DriveSpec, Models, MotorSpec, Shaft};
 
+use crate::command::Command;
 use crate::drawing::edit::DrawingEdit;
 use crate::state::AppState;
-use crate::ui::drawing;
 
 /// Which characteristic the motor has, for the chooser.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -92,7 +92,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         gear_and_flywheel(ui, d);
     }
     if drive != before {
-        drawing::edit(st, DrawingEdit::SetDrive(drive));
+        st.push(Command::Drawing(DrawingEdit::SetDrive(drive)));
     }
 }
 

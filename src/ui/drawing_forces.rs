@@ -8,9 +8,9 @@ use linkage::Vec2;
 use linkage::drawing::Drawing;
 use linkage::scene::{ForceWhen, Models};
 
+use crate::command::Command;
 use crate::drawing::edit::{DrawingEdit, Element};
 use crate::state::AppState;
-use crate::ui::drawing;
 
 /// The springs, dampers and point forces, each editable.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
@@ -34,7 +34,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             forces(ui, drawing, &mut edits);
         });
     for e in edits {
-        drawing::edit(st, e);
+        st.push(Command::Drawing(e));
     }
 }
 

@@ -6,11 +6,11 @@
 use eframe::egui;
 use linkage::Vec2;
 
+use crate::command::Command;
 use crate::drawing::edit::{Body, DrawingEdit, Named};
 use crate::drawing::{DrawingEditor, Tool};
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
-use crate::ui::drawing;
 use linkage::scene::{Models, Speed};
 
 /// Draws the panel; its edits go to the drawing.
@@ -49,7 +49,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         b.pending = None;
     }
     if action {
-        drawing::finish(st);
+        st.push(Command::FinishDrawing);
     }
 }
 
@@ -121,7 +121,7 @@ fn points(ui: &mut egui::Ui, st: &mut AppState) {
             }
         });
     for e in edits {
-        drawing::edit(st, e);
+        st.push(Command::Drawing(e));
     }
 }
 
@@ -176,7 +176,7 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
         }
     });
     for e in edits {
-        drawing::edit(st, e);
+        st.push(Command::Drawing(e));
     }
 }
 
@@ -208,7 +208,7 @@ fn model(ui: &mut egui::Ui, st: &mut AppState) {
         edits.push(DrawingEdit::SetGravity(gravity));
     }
     for e in edits {
-        drawing::edit(st, e);
+        st.push(Command::Drawing(e));
     }
 }
 
@@ -278,7 +278,7 @@ fn sliders(ui: &mut egui::Ui, st: &mut AppState) {
             }
         });
     for e in edits {
-        drawing::edit(st, e);
+        st.push(Command::Drawing(e));
     }
 }
 

@@ -7,7 +7,6 @@ pub mod centres;
 pub mod construction;
 pub mod control_map;
 pub mod controls;
-pub mod drawing;
 pub mod drawing_bodies;
 pub mod drawing_canvas;
 pub mod drawing_drive;

@@ -5,6 +5,7 @@ use std::sync::OnceLock;
 use eframe::egui;
 
 use crate::catalog::{BUILTIN_SCENES, BuiltinScene};
+use crate::command::Command;
 use crate::session::{SceneSource, Session};
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
@@ -266,10 +267,10 @@ fn history_buttons(ui: &mut egui::Ui, st: &mut AppState) {
         .on_hover_text("Ctrl+Shift+Z or Ctrl+Y");
     st.controls.note(ui, ControlKind::History, "Redo", &redo);
     if undo.clicked() {
-        crate::ui::drawing::undo_any(st);
+        st.push(Command::Undo);
     }
     if redo.clicked() {
-        crate::ui::drawing::redo_any(st);
+        st.push(Command::Redo);
     }
 }
 
@@ -296,10 +297,10 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
     st.controls
         .note(ui, ControlKind::FileButton, "New…", &menu.response);
     if empty {
-        crate::ui::drawing::start(st);
+        st.push(Command::StartDrawing);
     }
     if as_drawing {
-        crate::ui::drawing::draw_current(st);
+        st.push(Command::DrawCurrent);
     }
     if let Some(t) = chosen {
         match Session::open_text(SceneSource::File(format!("{}.ron", t.key)), t.text) {
@@ -326,10 +327,8 @@ fn menu_item(ui: &mut egui::Ui, st: &mut AppState, label: &str) -> bool {
 
 /// Asks before a scene with unsaved edits is replaced by the one waiting.
 fn discard_question(ctx: &egui::Context, st: &mut AppState) {
-    let next = match (&st.commands.open, st.commands.drawing) {
-        (Some(waiting), _) => format!("Open \"{}\"", waiting.scene().name),
-        (None, true) => "Start a new drawing".to_owned(),
-        (None, false) => return,
+    let Some(next) = st.commands.waiting.as_ref().map(|w| w.describe()) else {
+        return;
     };
     let current = st.session.scene().name.clone();
     let mut answer = None;
@@ -351,18 +350,7 @@ fn discard_question(ctx: &egui::Context, st: &mut AppState) {
                 }
             });
         });
-    match answer {
-        Some(true) => {
-            if let Some(s) = st.commands.open.take() {
-                st.open_now(*s);
-            } else if std::mem::take(&mut st.commands.drawing) {
-                crate::ui::drawing::start_now(st);
-            }
-        }
-        Some(false) => {
-            st.commands.open = None;
-            st.commands.drawing = false;
-        }
-        None => {}
+    if let Some(drop_edits) = answer {
+        st.push(Command::Answer(drop_edits));
     }
 }

@@ -32,7 +32,7 @@ pub fn show(
     tabs(&mut ui, st, drawing);
     ui.separator();
     page(&mut ui, st, panels, drawing);
-    st.apply_edits();
+    st.apply_commands();
     view
 }
 

@@ -97,7 +97,7 @@ impl Viewport {
         let moving_point =
             crate::ui::point_drag::handle(ui, &response, rect, st, &self.camera, &mut self.drag);
         // A dragged point or a crank turned by hand shows where the pointer is now.
-        st.apply_edits();
+        st.apply_commands();
         navigate(ui, &response, rect, &mut self.camera, !moving_point);
         if response.double_clicked() {
             st.commands.fit = true;

@@ -115,3 +115,15 @@ pub fn synthesis_inputs<'h>(
         .expect("the synthesis window is open")
         .inputs
 }
+
+/// Opens `session` as a user would who answers "drop the edits" when asked: the
+/// open and the answer go through the app's one command queue (applied in the next
+/// frame); the answer is ignored when nothing was asked.
+pub fn open_dropping_edits(
+    state: &mut linkage_lab::AppState,
+    session: linkage_lab::session::Session,
+) {
+    use linkage_lab::command::Command;
+    state.push(Command::Open(Box::new(session)));
+    state.push(Command::Answer(true));
+}

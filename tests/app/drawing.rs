@@ -522,7 +522,7 @@ fn a_template_becomes_a_drawing_and_takes_structural_edits() {
         .map(|e| e.label.clone());
     if let Some(label) = flipper {
         click_control(&mut h, ControlKind::SceneItem, &label);
-        if h.state().state.commands.open.is_some() {
+        if h.state().state.commands.waiting.is_some() {
             click_control(&mut h, ControlKind::FileButton, "Drop the edits and open");
         }
         click_control(&mut h, ControlKind::FileButton, "New…");
@@ -555,10 +555,12 @@ fn a_drawn_four_bar_with_a_spring_and_a_force_runs_as_its_scene_file() {
     h.get_by_label("dynamics").click();
     h.run();
     for (link, kg) in [(0, 0.5), (1, 1.5), (2, 2.0)] {
-        linkage_lab::ui::drawing::edit(
-            &mut h.state_mut().state,
-            Draw::SetMass(Body::Link(link), Some(kg)),
-        );
+        h.state_mut()
+            .state
+            .push(linkage_lab::command::Command::Drawing(Draw::SetMass(
+                Body::Link(link),
+                Some(kg),
+            )));
     }
     h.run();
     tool(&mut h, "Spring");
@@ -689,10 +691,11 @@ fn a_drawn_mechanism_gets_its_drive_from_the_panel() {
     assert_eq!(drive.flywheel_on, Shaft::Motor);
     let mut bad = drive.clone();
     bad.gear_ratio = 0.0;
-    linkage_lab::ui::drawing::edit(
-        &mut h.state_mut().state,
-        linkage_lab::drawing::edit::DrawingEdit::SetDrive(Some(bad)),
-    );
+    h.state_mut()
+        .state
+        .push(linkage_lab::command::Command::Drawing(
+            linkage_lab::drawing::edit::DrawingEdit::SetDrive(Some(bad)),
+        ));
     h.run();
     let st = &h.state().state;
     assert_eq!(st.session.scene().drive.as_ref(), Some(&drive), "kept");

@@ -56,7 +56,7 @@ fn open_by_picker(h: &mut Harness<'static, LinkageApp>, name: &str) {
             .click();
         settle(h);
     }
-    assert!(h.state().state.commands.open.is_none());
+    assert!(h.state().state.commands.waiting.is_none());
 }
 
 /// Everything the user sees is finite: pose, polygon tables, plotted curves.
@@ -202,7 +202,7 @@ fn open_template(h: &mut Harness<'static, LinkageApp>, name: &str) {
     settle(h);
     h.get_by_role_and_label(Role::Button, name).click();
     settle(h);
-    if h.state().state.commands.open.is_some() {
+    if h.state().state.commands.waiting.is_some() {
         h.get_by_role_and_label(Role::Button, "Drop the edits and open")
             .click();
         settle(h);

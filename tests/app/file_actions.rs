@@ -358,7 +358,7 @@ fn a_scene_file_dropped_on_the_window_opens() {
     h.run();
     drop(&mut h, "quick_return.ron");
     assert!(
-        h.state().state.commands.open.is_some(),
+        h.state().state.commands.waiting.is_some(),
         "asks over unsaved edits"
     );
 }

@@ -38,7 +38,7 @@ fn settle(h: &mut Harness<'static, LinkageApp>) {
 
 fn open_fresh(h: &mut Harness<'static, LinkageApp>, key: &str) {
     let session = Session::open_builtin(key).expect("a shipped scene opens");
-    h.state_mut().state.open_now(session);
+    crate::common::open_dropping_edits(&mut h.state_mut().state, session);
     settle(h);
     assert!(!h.state().state.session.is_dirty(), "{key} opens edited");
 }

@@ -66,7 +66,7 @@ fn check_names(size: egui::Vec2, zoom: f64) -> usize {
     let mut checked = 0;
     for scene in BUILTIN_SCENES {
         let session = Session::open_builtin(scene.key).expect("opens");
-        h.state_mut().state.open_now(session);
+        common::open_dropping_edits(&mut h.state_mut().state, session);
         h.state_mut().state.view.layers.accelerations = true;
         h.run_steps(2);
         if zoom != 1.0 {
@@ -140,7 +140,7 @@ fn the_arrows_keep_one_scale_through_the_cycle() {
     let mut h = common::stateful_harness();
     for scene in BUILTIN_SCENES {
         let session = Session::open_builtin(scene.key).expect("opens");
-        h.state_mut().state.open_now(session);
+        common::open_dropping_edits(&mut h.state_mut().state, session);
         h.state_mut().state.view.layers.accelerations = true;
         h.run_steps(2);
         let (size, typical) = {
@@ -181,7 +181,7 @@ fn the_springs_ends_and_the_marks_are_named_in_the_view() {
     let mut named = 0;
     for scene in BUILTIN_SCENES {
         let session = Session::open_builtin(scene.key).expect("opens");
-        h.state_mut().state.open_now(session);
+        common::open_dropping_edits(&mut h.state_mut().state, session);
         h.run_steps(2);
         let st = &h.state().state;
         let (m, topology) = (st.session.mechanism(), st.session.topology());

@@ -4,6 +4,7 @@
 
 mod common;
 
+mod commands;
 mod drawing;
 mod every_control;
 mod file_actions;

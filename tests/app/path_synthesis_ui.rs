@@ -169,7 +169,7 @@ fn targets_clicked_on_the_canvas_are_searched_to_a_design_that_opens() {
     h.get_by_label("Open as scene").scroll_to_me();
     h.run();
     click(&mut h, "Open as scene");
-    if h.state().state.commands.open.is_some() {
+    if h.state().state.commands.waiting.is_some() {
         click(&mut h, "Drop the edits and open");
     }
     assert_eq!(h.state().state.session.scene().name, "Path generator");

@@ -17,7 +17,7 @@ fn design_and_open(h: &mut Harness<'static, LinkageApp>, tab: &str) -> Kinematic
     click(h, tab);
     click(h, "Design");
     click(h, "Open as scene");
-    if h.state().state.commands.open.is_some() {
+    if h.state().state.commands.waiting.is_some() {
         click(h, "Drop the edits and open");
     }
     let session = &h.state().state.session;

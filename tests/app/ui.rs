@@ -36,7 +36,7 @@ pub(crate) fn open_scene(h: &mut Harness<'static, LinkageApp>, key: &str) {
     h.run();
     h.get_by_label(&name).click();
     common::settle(h);
-    if h.state().state.commands.open.is_some() {
+    if h.state().state.commands.waiting.is_some() {
         h.get_by_role_and_label(Role::Button, "Drop the edits and open")
             .click();
         common::settle(h);
@@ -255,7 +255,7 @@ fn an_edit_shows_in_the_view_in_the_frame_that_makes_it() {
             "{key}: a length, in the same frame"
         );
         assert!(
-            st.commands.edits.is_empty(),
+            st.commands.queue.is_empty(),
             "{key}: every edit asked for is applied"
         );
     }

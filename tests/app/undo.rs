@@ -126,7 +126,7 @@ fn opening_another_scene_over_unsaved_edits_asks_first() {
         .click();
     h.run();
     assert_eq!(h.state().state.session.scene(), &edited, "kept");
-    assert!(h.state().state.commands.open.is_none());
+    assert!(h.state().state.commands.waiting.is_none());
 
     h.state_mut()
         .state
