@@ -57,5 +57,6 @@ pub use motion::{LinkMotion, PointMotion, SlideMotion, Solution, Vec2};
 pub use real::{LANES, Lanes};
 pub use scene::SceneFile;
 pub use solve::{
-    ClosedForm, Closure, Kinematics, LaneSolution, Newton, PathKind, link_lane, point_lane,
+    ClosedForm, Closure, Continuation, Kinematics, LaneSolution, Newton, NewtonModel,
+    NewtonWorkspace, PathKind, link_lane, point_lane,
 };

@@ -13,4 +13,4 @@ pub use closed_form::ClosedForm;
 pub(crate) use closed_form::{Failure, Group, Prp, Rpr, Rrp, Rrr, TANGENT_SLACK, finish_solution};
 pub use kinematics::{Closure, Kinematics, PathKind};
 pub use lanes::{LaneSolution, link_lane, point_lane};
-pub use newton::Newton;
+pub use newton::{Continuation, Newton, NewtonModel, NewtonWorkspace};

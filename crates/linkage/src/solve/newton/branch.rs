@@ -11,7 +11,7 @@
 
 use std::f64::consts::{PI, TAU};
 
-use super::{CONTINUATION_STEP, FOLD_STEP, MAX_PREDICTED_CHANGE, Newton};
+use super::{CONTINUATION_STEP, FOLD_STEP, MAX_PREDICTED_CHANGE, Solver};
 use crate::assembly::AssemblyRanges;
 use crate::error::{AssemblyFailure, LinkageError, Result};
 use crate::motion::LinkMotion;
@@ -29,14 +29,14 @@ pub(super) struct Stop {
     pub error: LinkageError,
 }
 
-impl Newton {
+impl Solver<'_> {
     /// The input (unwrapped, on this branch) that `input_rad` means: on a traced
     /// limited branch the one turn of it inside the range (else an error naming the
     /// range), otherwise the shortest turn from the last input, so that a full cycle
     /// is continuous.
     pub(super) fn target(&self, input_rad: f64) -> Result<f64> {
-        let last = self.last_input.unwrap_or(input_rad);
-        let Some([lo, hi]) = self.range else {
+        let last = self.s.last_input.unwrap_or(input_rad);
+        let Some([lo, hi]) = self.s.range else {
             let delta = (input_rad - last + PI).rem_euclid(TAU) - PI;
             return Ok(last + delta);
         };
@@ -59,38 +59,46 @@ impl Newton {
         })
     }
 
-    /// The traced assembly range of this branch, unwrapped (holding the start input),
-    /// when it is limited.
-    pub fn range(&self) -> Option<[f64; 2]> {
-        self.range
-    }
-
     /// Traces the branch of the current pose both ways from its input, and from then
     /// on solves only inside the range found (an input outside it is refused with the
     /// range named). Returns the range, or `None` when the input turns fully.
     ///
     /// # Errors
     /// The start pose itself does not solve.
-    pub fn trace_range(&mut self, links: &mut [LinkMotion]) -> Result<Option<[f64; 2]>> {
-        let start = self.last_input.unwrap_or(0.0);
+    pub(super) fn trace_range(&mut self, links: &mut [LinkMotion]) -> Result<Option<[f64; 2]>> {
+        let start = self.s.last_input.unwrap_or(0.0);
         self.correct(start, links)?;
         self.update_derivatives(links)?;
-        let mut forward = self.clone();
-        let hi = match forward.continue_to(start + TAU, links, FOLD_STEP) {
+        // Each way from a copy of the start state; the workspace carries nothing.
+        let mut forward = self.s.clone();
+        let hi = match self
+            .from(&mut forward)
+            .continue_to(start + TAU, links, FOLD_STEP)
+        {
             Ok(()) => {
-                self.range = None;
+                self.s.range = None;
                 return Ok(None);
             }
             Err(stop) => stop.reached,
         };
-        let mut backward = self.clone();
-        let lo = backward
+        let mut backward = self.s.clone();
+        let lo = self
+            .from(&mut backward)
             .continue_to(start - TAU, links, FOLD_STEP)
             .map_or_else(|stop| stop.reached, |()| start - TAU)
             // A branch that does not come back to itself after a turn: one turn of it.
             .max(hi - TAU);
-        self.range = Some([lo, hi]);
-        Ok(self.range)
+        self.s.range = Some([lo, hi]);
+        Ok(self.s.range)
+    }
+
+    /// The same model and workspace over another continuation state.
+    pub(super) fn from<'b>(&'b mut self, state: &'b mut super::Continuation) -> Solver<'b> {
+        Solver {
+            m: self.m,
+            s: state,
+            w: &mut *self.w,
+        }
     }
 
     /// Continuation from the last input to `target` in steps of at most
@@ -103,7 +111,7 @@ impl Newton {
         links: &mut [LinkMotion],
         min_step: f64,
     ) -> std::result::Result<(), Stop> {
-        let mut at = self.last_input.unwrap_or(target);
+        let mut at = self.s.last_input.unwrap_or(target);
         let mut h = (target - at).signum() * CONTINUATION_STEP.min((target - at).abs());
         while at != target {
             let remaining = target - at;
@@ -113,7 +121,7 @@ impl Newton {
             match self.step(at, h, links) {
                 Ok(true) => {
                     at += h;
-                    if self.steady_steps >= STEPS_BEFORE_GROWTH
+                    if self.s.steady_steps >= STEPS_BEFORE_GROWTH
                         && 2.0 * h.abs() <= CONTINUATION_STEP
                     {
                         h *= 2.0;
@@ -124,7 +132,7 @@ impl Newton {
                 Err(error) => {
                     h *= 0.5;
                     if h.abs() < min_step {
-                        self.last_input = Some(at);
+                        self.s.last_input = Some(at);
                         return Err(Stop { reached: at, error });
                     }
                 }
@@ -133,47 +141,47 @@ impl Newton {
                 at = target;
             }
         }
-        self.last_input = Some(target);
+        self.s.last_input = Some(target);
         Ok(())
     }
 
     /// One continuation step from `at` by `h`: `Ok(true)` when taken, `Ok(false)` when
     /// the predictor says it is too long, an error when the correction fails or lands
     /// on the other assembly mode (the state is then restored to `at`).
-    fn step(&mut self, at: f64, h: f64, links: &mut [LinkMotion]) -> Result<bool> {
-        let saved_sign = self.det_sign;
-        self.saved.0.copy_from(&self.q);
-        self.saved.1.copy_from(&self.dq);
-        self.saved.2.copy_from(&self.ddq);
+    pub(super) fn step(&mut self, at: f64, h: f64, links: &mut [LinkMotion]) -> Result<bool> {
+        let saved_sign = self.s.det_sign;
+        self.w.saved.0.copy_from(&self.s.q);
+        self.w.saved.1.copy_from(&self.s.dq);
+        self.w.saved.2.copy_from(&self.s.ddq);
         // Third-order predictor q + q' h + q'' h²/2 + q''' h³/6, built in place: its
         // error of order h⁴ lets one chord step usually reach the tolerance (with the
         // h² term alone it took two).
-        self.increment.copy_from(&self.dq);
-        self.increment *= h;
-        self.increment.axpy(0.5 * h * h, &self.ddq, 1.0);
-        self.increment.axpy(h * h * h / 6.0, &self.jerk, 1.0);
+        self.w.increment.copy_from(&self.s.dq);
+        self.w.increment *= h;
+        self.w.increment.axpy(0.5 * h * h, &self.s.ddq, 1.0);
+        self.w.increment.axpy(h * h * h / 6.0, &self.s.jerk, 1.0);
         // Near a dead point the derivatives blow up: a large predicted change means the
         // step is too long for the branch to be followed safely.
         if self.relative_increment() > MAX_PREDICTED_CHANGE && h.abs() >= 2e-7 {
             return Ok(false);
         }
-        self.q += &self.increment;
+        self.s.q += &self.w.increment;
         let ok = self
             .correct(at + h, links)
             .and_then(|_| self.update_derivatives(links));
         // The sign of det J flips exactly where the solution passes to the other
         // assembly mode: refuse that step.
-        let jumped = saved_sign != 0.0 && self.det_sign != saved_sign;
+        let jumped = saved_sign != 0.0 && self.s.det_sign != saved_sign;
         if ok.is_err() || jumped {
-            self.q.copy_from(&self.saved.0);
-            self.dq.copy_from(&self.saved.1);
-            self.ddq.copy_from(&self.saved.2);
-            self.det_sign = saved_sign;
+            self.s.q.copy_from(&self.w.saved.0);
+            self.s.dq.copy_from(&self.w.saved.1);
+            self.s.ddq.copy_from(&self.w.saved.2);
+            self.s.det_sign = saved_sign;
             // The factorization belongs to the failed pose: start the retry fresh.
-            self.lu.invalidate();
+            self.s.lu.invalidate();
             // Near a dead point q''' is not worth extrapolating.
-            self.jerk.fill(0.0);
-            self.steady_steps = 0;
+            self.s.jerk.fill(0.0);
+            self.s.steady_steps = 0;
             return Err(match ok {
                 Err(e) => e,
                 Ok(()) => LinkageError::BranchJump {
@@ -182,29 +190,30 @@ impl Newton {
                 },
             });
         }
-        if self.steady_steps > 0 {
+        if self.s.steady_steps > 0 {
             // q''' ≈ (q''(at + h) - q''(at)) / h.
-            self.jerk.copy_from(&self.ddq);
-            self.jerk.axpy(-1.0 / h, &self.saved.2, 1.0 / h);
+            self.s.jerk.copy_from(&self.s.ddq);
+            self.s.jerk.axpy(-1.0 / h, &self.w.saved.2, 1.0 / h);
         }
-        self.steady_steps = self.steady_steps.saturating_add(1);
+        self.s.steady_steps = self.s.steady_steps.saturating_add(1);
         self.wrap_angles();
         Ok(true)
     }
 }
 
-impl Newton {
+impl Solver<'_> {
     /// The largest predicted change of a coordinate: rad for a turning joint, and for
     /// a sliding one metres over the mechanism's size, so that steps are cut alike at
     /// every scale.
-    fn relative_increment(&self) -> f64 {
-        self.tree
+    pub(super) fn relative_increment(&self) -> f64 {
+        self.m
+            .tree
             .iter()
             .skip(1)
-            .zip(self.increment.iter())
+            .zip(self.w.increment.iter())
             .map(|(t, dq)| match t.kind {
                 super::TreeKind::Revolute { .. } => dq.abs(),
-                super::TreeKind::Prismatic { .. } => dq.abs() / self.size_m,
+                super::TreeKind::Prismatic { .. } => dq.abs() / self.m.size_m,
             })
             .fold(0.0, f64::max)
     }

@@ -11,42 +11,42 @@
 
 use nalgebra::DMatrix;
 
-use super::{Newton, TreeKind};
+use super::{Solver, TreeKind};
 use crate::motion::LinkMotion;
 
 /// Singular values below this fraction of the largest count as zero.
 const RANK_TOLERANCE: f64 = 1e-9;
 
-impl Newton {
+impl Solver<'_> {
     /// Degrees of freedom of the chain (1 for a mechanism with one input), from the
     /// constraint Jacobian's rank at the current coordinates and at a shaken copy of
     /// them (the poses need not close: the rank is generic).
-    pub fn mobility(&mut self, input: f64, links: &mut [LinkMotion]) -> usize {
-        let saved = self.q.clone();
+    pub(super) fn mobility(&mut self, input: f64, links: &mut [LinkMotion]) -> usize {
+        let saved = self.s.q.clone();
         let mut least = usize::MAX;
         for shake in [0.0, 0.37] {
-            for (k, t) in self.tree.iter().enumerate().skip(1) {
+            for (k, t) in self.m.tree.iter().enumerate().skip(1) {
                 if matches!(t.kind, TreeKind::Revolute { .. }) {
-                    self.q[k - 1] = saved[k - 1] + shake * (k as f64).sin();
+                    self.s.q[k - 1] = saved[k - 1] + shake * (k as f64).sin();
                 }
             }
             self.position_pass(input + shake, links);
             self.build_jacobian(links);
             least = least.min(self.null_space_dimension());
         }
-        self.q.copy_from(&saved);
-        self.lu.invalidate();
+        self.s.q.copy_from(&saved);
+        self.s.lu.invalidate();
         least
     }
 
     /// Dimension of the null space of [driver column | J] as last built.
-    fn null_space_dimension(&self) -> usize {
-        let (rows, n) = (self.jac.nrows(), self.jac.ncols());
+    pub(super) fn null_space_dimension(&self) -> usize {
+        let (rows, n) = (self.w.jac.nrows(), self.w.jac.ncols());
         let full = DMatrix::from_fn(rows, n + 1, |r, c| {
             if c == 0 {
-                self.rates[r]
+                self.w.rates[r]
             } else {
-                self.jac[(r, c - 1)]
+                self.w.jac[(r, c - 1)]
             }
         });
         let values = full.singular_values();
