@@ -130,10 +130,12 @@ impl Kinetostatics {
         let row_of = |link: LinkId| moving.iter().position(|&l| l == link).map(|i| 3 * i);
         let n = unknown_count(m);
         if 3 * moving.len() != n {
-            return Err(LinkageError::NotDecomposable(format!(
-                "kinetostatics needs a 1-DOF chain: {} equations for {n} unknowns",
-                3 * moving.len()
-            )));
+            return Err(LinkageError::NotDecomposable(
+                crate::error::Undecomposable::KinetostaticsDof {
+                    equations: 3 * moving.len(),
+                    unknowns: n,
+                },
+            ));
         }
         // Each cam's contact, once for the matrix and the reactions.
         let contacts: Vec<CamContact> = m
@@ -151,7 +153,7 @@ impl Kinetostatics {
         }
         let x = a.lu().solve(&b).ok_or_else(|| LinkageError::Singular {
             input_deg: input_rad.to_degrees(),
-            reason: "the joint reactions are indeterminate here (a dead point of the input)".into(),
+            reason: crate::error::Singularity::JointReactions,
         })?;
         let joints = reactions(m, sol, &x, &contacts);
         Ok(KinetostaticState {

@@ -113,10 +113,7 @@ impl Rhs {
         if !(r.j > 0.0 && r.j.is_finite()) {
             return Err(LinkageError::Singular {
                 input_deg: y[0].to_degrees(),
-                reason: format!(
-                    "equivalent inertia J = {:e}: the coordinate is singular here",
-                    r.j
-                ),
+                reason: crate::error::Singularity::NoInertia { j_kg_m2: r.j },
             });
         }
         Ok(r)
@@ -163,12 +160,11 @@ impl Rhs {
                 let m = self.k.mechanism();
                 return Err(LinkageError::Singular {
                     input_deg: p.y[0].to_degrees(),
-                    reason: format!(
-                        "`{}` is at a dead point of the coordinate `{}` ({}, turning {ratio:.0} times faster, is regular here); let the run switch coordinates",
-                        m.links[self.coordinate_link()].name,
-                        m.links[self.coordinate_link()].name,
-                        m.links[link].name
-                    ),
+                    reason: crate::error::Singularity::CoordinateDeadPoint {
+                        coordinate: m.links[self.coordinate_link()].name.clone(),
+                        regular: m.links[link].name.clone(),
+                        ratio,
+                    },
                 });
             }
             return Ok(None);

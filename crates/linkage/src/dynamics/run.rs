@@ -593,9 +593,10 @@ fn check_stability(settings: &Settings, stiffness_per_s: f64) -> Result<()> {
 fn step_collapsed(a: &Point, settings: &Settings) -> LinkageError {
     LinkageError::Singular {
         input_deg: a.y[0].to_degrees(),
-        reason: format!(
-            "the step size collapsed at t = {:.9} s (rtol {}, atol {}): the motion is not smooth or not assemblable here",
-            a.t, settings.rtol, settings.atol
-        ),
+        reason: crate::error::Singularity::StepCollapsed {
+            t_s: a.t,
+            rtol: settings.rtol,
+            atol: settings.atol,
+        },
     }
 }

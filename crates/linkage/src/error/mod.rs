@@ -9,11 +9,13 @@ mod cam_problem;
 mod design_refusal;
 mod run_refusal;
 mod scene_problem;
+mod singularity;
 
 pub use cam_problem::CamProblem;
 pub use design_refusal::DesignRefusal;
 pub use run_refusal::{ImplicitFailure, RunRefusal, RunWarning, StabilityLimit};
 pub use scene_problem::{LonePoint, MadeJoint, SceneProblem};
+pub use singularity::{Singularity, Undecomposable};
 
 /// Why a chain does not close at an input, as data ([`LinkageError::CannotAssemble`]).
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -97,8 +99,8 @@ pub enum LinkageError {
     Singular {
         /// Input angle, in degrees.
         input_deg: f64,
-        /// Which links are collinear.
-        reason: String,
+        /// Why: which links are in line, or which equations are indeterminate.
+        reason: Singularity,
     },
     /// Newton–Raphson did not reach the tolerance.
     #[error(
@@ -116,16 +118,16 @@ pub enum LinkageError {
         tolerance: f64,
     },
     /// The Newton solution moved to a different assembly branch between two steps.
-    #[error("branch jump at input {input_deg:.4} deg: {reason}")]
+    #[error(
+        "branch jump at input {input_deg:.4} deg: Newton would pass to the other assembly mode (det J changes sign): a dead point"
+    )]
     BranchJump {
         /// Input angle, in degrees.
         input_deg: f64,
-        /// What jumped.
-        reason: String,
     },
     /// The chain has no closed-form decomposition into dyads.
     #[error("no closed-form dyad decomposition: {0}")]
-    NotDecomposable(String),
+    NotDecomposable(Undecomposable),
     /// The input speed is so high that velocities or accelerations overflow (are no
     /// longer finite numbers) somewhere on the cycle.
     #[error(

@@ -35,9 +35,7 @@ pub fn force_polygons(
 ) -> Result<ForcePolygons> {
     let Some(cf) = k.closed_form() else {
         return Err(LinkageError::NotDecomposable(
-            "force polygons need the chain as a crank and dyads; this one is solved by \
-             Newton alone"
-                .into(),
+            crate::error::Undecomposable::ForcePolygonsNeedDyads,
         ));
     };
     let groups: Vec<(LinkId, LinkId)> = cf.groups.iter().map(|g| g.links()).collect();

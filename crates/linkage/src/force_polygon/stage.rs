@@ -115,10 +115,12 @@ impl<'a> Stages<'a> {
         let (first_column, joint_columns) = self.columns(&unknown);
         let columns = joint_columns + usize::from(crank);
         if columns != 3 * links.len() {
-            return Err(LinkageError::NotDecomposable(format!(
-                "a force polygon stage of {} links has {columns} unknowns",
-                links.len()
-            )));
+            return Err(LinkageError::NotDecomposable(
+                crate::error::Undecomposable::ForceStage {
+                    links: links.len(),
+                    unknowns: columns,
+                },
+            ));
         }
         let origin = unknown.first().map_or_else(
             || self.sol.links[links[0]].origin.position,
@@ -127,7 +129,7 @@ impl<'a> Stages<'a> {
         let (a, b) = self.system(links, &unknown, &first_column, crank, origin);
         let x = a.lu().solve(&b).ok_or_else(|| LinkageError::Singular {
             input_deg: input_rad.to_degrees(),
-            reason: "a group's reactions are indeterminate here (a dead point)".into(),
+            reason: crate::error::Singularity::GroupReactions,
         })?;
         for (c, &n) in unknown.iter().enumerate() {
             let units = self.unit_loads(self.joints[n]);

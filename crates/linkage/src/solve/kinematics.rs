@@ -98,10 +98,9 @@ impl Kinematics {
         } else {
             for l in self.mech.moving_links() {
                 let (origin, angle) = self.mech.guess[l].ok_or_else(|| {
-                    LinkageError::NotDecomposable(format!(
-                        "link `{}` needs a starting `guess: (x, y, angle)` for the Newton solver",
-                        self.mech.links[l].name
-                    ))
+                    LinkageError::NotDecomposable(crate::error::Undecomposable::NeedsGuess {
+                        link: self.mech.links[l].name.clone(),
+                    })
                 })?;
                 pose[l].origin.position = origin;
                 pose[l].rotation = nalgebra::UnitComplex::new(angle);
@@ -262,10 +261,11 @@ impl Kinematics {
             // Not reachable through `new`/`with_path`, which always build the solver of
             // the path they pick; an error rather than a panic all the same.
             _ => {
-                return Err(LinkageError::NotDecomposable(format!(
-                    "no solver was built for the {} path",
-                    self.path.label()
-                )));
+                return Err(LinkageError::NotDecomposable(
+                    crate::error::Undecomposable::NoSolver {
+                        newton: self.path == PathKind::Newton,
+                    },
+                ));
             }
         };
         out.input_rad = input_rad;
@@ -438,11 +438,11 @@ impl Kinematics {
             Failure::Singular { group } => LinkageError::Singular {
                 input_deg: input_rad.to_degrees(),
                 reason: match self.dyad(group) {
-                    Some(d) => format!(
-                        "{} and {} are in line at {} (a dead point): velocities are undefined",
-                        d.links[0], d.links[1], d.inner_point
-                    ),
-                    None => "the chain is at a dead point: velocities are undefined".into(),
+                    Some(d) => crate::error::Singularity::DyadInLine {
+                        links: d.links,
+                        point: d.inner_point,
+                    },
+                    None => crate::error::Singularity::DeadPoint,
                 },
             },
         }

@@ -142,10 +142,11 @@ impl ClosedForm {
                     .filter(|&l| !known[l])
                     .map(|l| m.links[l].name.as_str())
                     .collect();
-                return Err(LinkageError::NotDecomposable(format!(
-                    "links {} form no RRR, RRP, RPR or PRP dyad on known links",
-                    unknown.join(", ")
-                )));
+                return Err(LinkageError::NotDecomposable(
+                    crate::error::Undecomposable::NoDyad {
+                        links: unknown.into_iter().map(str::to_owned).collect(),
+                    },
+                ));
             };
             for k in used_now {
                 used[k] = true;
@@ -157,10 +158,11 @@ impl ClosedForm {
         }
         if let Some(k) = used.iter().position(|u| !u) {
             let (a, b) = joint_links(m, joints[k]);
-            return Err(LinkageError::NotDecomposable(format!(
-                "the joint between `{}` and `{}` is redundant for a dyad chain",
-                m.links[a].name, m.links[b].name
-            )));
+            return Err(LinkageError::NotDecomposable(
+                crate::error::Undecomposable::RedundantJoint {
+                    links: [m.links[a].name.clone(), m.links[b].name.clone()],
+                },
+            ));
         }
         let pivot = &m.revolutes[m.driver.pivot];
         let (ground_local, driver_on_link) = if pivot.a == m.ground {

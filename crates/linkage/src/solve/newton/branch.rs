@@ -186,7 +186,6 @@ impl Solver<'_> {
                 Err(e) => e,
                 Ok(()) => LinkageError::BranchJump {
                     input_deg: (at + h).to_degrees(),
-                    reason: "Newton would pass to the other assembly mode (det J changes sign): a dead point".into(),
                 },
             });
         }

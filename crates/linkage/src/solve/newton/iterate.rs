@@ -3,7 +3,7 @@
 //! input's speed.
 
 use super::{FOLD_STEP, MIN_STEP, Solver};
-use crate::error::{LinkageError, Result};
+use crate::error::{LinkageError, Result, Singularity};
 use crate::motion::LinkMotion;
 
 impl Solver<'_> {
@@ -115,8 +115,7 @@ impl Solver<'_> {
             if !solved {
                 return Err(LinkageError::Singular {
                     input_deg: input.to_degrees(),
-                    reason: "the loop-closure Jacobian is singular (dead point or unassemblable)"
-                        .into(),
+                    reason: Singularity::LoopJacobian,
                 });
             }
             self.s.q += &self.w.rhs;
@@ -178,7 +177,7 @@ impl Solver<'_> {
         if !self.s.lu.solve_mut(&mut self.w.rhs) {
             return Err(LinkageError::Singular {
                 input_deg: self.s.last_input.unwrap_or(0.0).to_degrees(),
-                reason: "the loop-closure Jacobian is singular: a dead point of this input".into(),
+                reason: Singularity::InputDeadPoint,
             });
         }
         self.s.dq.copy_from(&self.w.rhs);
