@@ -7,6 +7,7 @@
 //! [`crate::svg_course`] draws it.
 
 use linkage::analysis::{Output, outputs};
+use linkage::error::{Param, Valid};
 use linkage::force_polygon::{ForcePolygons, force_polygons};
 use linkage::kinetostatics::Kinetostatics;
 use linkage::polygon::{VectorEquation, polygons};
@@ -79,13 +80,16 @@ impl CourseSheet {
     /// that does not solve.
     pub fn compute(k: &mut Kinematics, count: usize, chosen: &[usize]) -> Result<Self> {
         if count < 2 {
-            return Err(invalid("positions", count, "at least 2"));
+            return Err(invalid(Param::CoursePositions, count, Valid::AtLeast(2)));
         }
         if let Some(&bad) = chosen.iter().find(|&&c| c >= count) {
             return Err(invalid(
-                "chosen position",
+                Param::ChosenPosition,
                 bad,
-                &format!("0 to {}", count - 1),
+                Valid::Count {
+                    lo: 0,
+                    hi: count - 1,
+                },
             ));
         }
         // The sweep's own positions: evenly over the range, a full turn without its
@@ -113,12 +117,8 @@ impl CourseSheet {
     }
 }
 
-fn invalid(name: &str, value: usize, valid: &str) -> LinkageError {
-    LinkageError::InvalidParameter {
-        name: name.into(),
-        value: value as f64,
-        valid: valid.into(),
-    }
+fn invalid(param: Param, value: usize, valid: Valid) -> LinkageError {
+    LinkageError::invalid(param, value as f64, valid)
 }
 
 /// The main output's s, v and a over the range (rocker angles unwrapped).

@@ -4,6 +4,7 @@
 
 pub use crate::angles::unwrap_near;
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 use crate::model::Mechanism;
 use crate::motion::Solution;
 pub use crate::ranges::sweep_range;
@@ -45,11 +46,11 @@ pub struct SweepInfo {
 /// Fewer than 2 or more than [`MAX_SWEEP_STEPS`] steps, or the solver's error.
 pub fn sweep(k: &mut Kinematics, steps: usize) -> Result<Sweep> {
     if steps > MAX_SWEEP_STEPS {
-        return Err(LinkageError::InvalidParameter {
-            name: "steps".into(),
-            value: steps as f64,
-            valid: format!("must be at most {MAX_SWEEP_STEPS} (held in memory)"),
-        });
+        return Err(LinkageError::invalid(
+            Param::SweepSteps,
+            steps as f64,
+            Valid::AtMostSteps(MAX_SWEEP_STEPS),
+        ));
     }
     let mut solutions = Vec::with_capacity(steps);
     let mut angles: Vec<Vec<f64>> = Vec::with_capacity(steps);
@@ -79,11 +80,11 @@ pub fn sweep_each<E: From<LinkageError>>(
     mut visit: impl FnMut(&Mechanism, &Solution, &[f64]) -> std::result::Result<(), E>,
 ) -> std::result::Result<SweepInfo, E> {
     if steps < 2 {
-        return Err(LinkageError::InvalidParameter {
-            name: "steps".into(),
-            value: steps as f64,
-            valid: "must be at least 2".into(),
-        }
+        return Err(LinkageError::invalid(
+            Param::SweepSteps,
+            steps as f64,
+            Valid::MustBeAtLeast(2),
+        )
         .into());
     }
     let ([a, b], full) = sweep_range(k)?;

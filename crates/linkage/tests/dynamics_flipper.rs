@@ -175,8 +175,8 @@ fn missing_or_invalid_mass_data_is_named() {
     let k = kinematics("gravity_flipper.ron", SolverPath::Auto);
     let err = simulate(&k, &fixed(Method::Rk4, f64::NAN, 0.1)).expect_err("NaN step");
     assert!(
-        matches!(&err, LinkageError::InvalidParameter { name, value, .. }
-            if name == "step" && value.is_nan()),
+        matches!(&err, LinkageError::InvalidParameter { param: linkage::error::Param::Step, value, .. }
+            if value.is_nan()),
         "{err}"
     );
 }

@@ -160,8 +160,8 @@ fn crank_rocker_synthesis_meets_swing_and_k() {
     }
     let err = crank_rocker(0.5, 0.5, 1.0, 0.0, None).expect_err("K = 1");
     assert!(
-        matches!(&err, LinkageError::InvalidParameter { name, value, .. }
-            if name == "time ratio K" && *value == 1.0),
+        matches!(&err, LinkageError::InvalidParameter { param: linkage::error::Param::TimeRatio, value, .. }
+            if *value == 1.0),
         "{err}"
     );
 }

@@ -205,7 +205,13 @@ fn a_delta_outside_its_range_and_a_rocking_input_are_refused_with_the_reason() {
     for delta in [0.0, -0.1, 1.0, f64::NAN] {
         let err = size_flywheel(&mut press(), delta).expect_err("refused");
         assert!(
-            matches!(&err, LinkageError::InvalidParameter { name, .. } if name == "delta"),
+            matches!(
+                &err,
+                LinkageError::InvalidParameter {
+                    param: linkage::error::Param::Delta,
+                    ..
+                }
+            ),
             "{err}"
         );
     }

@@ -16,6 +16,7 @@ use serde::Serialize;
 
 use super::program::{FollowerMotion, Program};
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 use crate::motion::Vec2;
 
 /// What touches the cam.
@@ -141,20 +142,20 @@ impl DiscCam {
     /// # Errors
     /// A base circle, roller, offset or arm that cannot fit (named with its range).
     pub fn new(program: Program, base_radius_m: f64, follower: Follower) -> Result<Self> {
-        let invalid = |name: &str, value: f64, valid: &str| LinkageError::InvalidParameter {
-            name: name.into(),
-            value,
-            valid: valid.into(),
-        };
+        let invalid = LinkageError::invalid;
         if !(base_radius_m.is_finite() && base_radius_m > 0.0) {
-            return Err(invalid("base radius (m)", base_radius_m, "finite and > 0"));
+            return Err(invalid(
+                Param::BaseRadius,
+                base_radius_m,
+                Valid::PositiveShort,
+            ));
         }
         let face = match follower {
             Follower::Translating { offset_m, face } => {
                 let prime = base_radius_m + roller(face);
                 if !(offset_m.is_finite() && offset_m.abs() < prime) {
-                    let valid = format!("|offset| below the prime circle's radius, {prime} m");
-                    return Err(invalid("follower offset (m)", offset_m, &valid));
+                    let valid = Valid::BelowPrimeCircle { prime_m: prime };
+                    return Err(invalid(Param::FollowerOffset, offset_m, valid));
                 }
                 face
             }
@@ -166,9 +167,9 @@ impl DiscCam {
                 let prime = base_radius_m + roller(face);
                 if matches!(face, Face::Flat) {
                     return Err(invalid(
-                        "oscillating flat face",
+                        Param::OscillatingFlatFace,
                         0.0,
-                        "a knife edge or a roller",
+                        Valid::KnifeOrRoller,
                     ));
                 }
                 if !(arm_m.is_finite()
@@ -176,9 +177,8 @@ impl DiscCam {
                     && (pivot_m - arm_m).abs() < prime
                     && prime < pivot_m + arm_m)
                 {
-                    let valid =
-                        format!("the arm must reach the prime circle ({prime} m) from the pivot");
-                    return Err(invalid("follower arm (m)", arm_m, &valid));
+                    let valid = Valid::ArmReachesPrime { prime_m: prime };
+                    return Err(invalid(Param::FollowerArm, arm_m, valid));
                 }
                 face
             }
@@ -186,7 +186,7 @@ impl DiscCam {
         if let Face::Roller { radius_m } = face
             && !(radius_m.is_finite() && radius_m > 0.0)
         {
-            return Err(invalid("roller radius (m)", radius_m, "finite and > 0"));
+            return Err(invalid(Param::RollerRadius, radius_m, Valid::PositiveShort));
         }
         Ok(Self {
             program,

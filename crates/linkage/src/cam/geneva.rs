@@ -13,6 +13,7 @@
 use serde::Serialize;
 
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 
 const PI: f64 = std::f64::consts::PI;
 
@@ -46,18 +47,18 @@ impl Geneva {
     /// Fewer than 3 slots, or a radius that is not finite and positive.
     pub fn new(slots: u32, crank_radius_m: f64) -> Result<Self> {
         if slots < 3 {
-            return Err(LinkageError::InvalidParameter {
-                name: "Geneva slots".into(),
-                value: f64::from(slots),
-                valid: "at least 3".into(),
-            });
+            return Err(LinkageError::invalid(
+                Param::GenevaSlots,
+                f64::from(slots),
+                Valid::AtLeast(3),
+            ));
         }
         if !(crank_radius_m.is_finite() && crank_radius_m > 0.0) {
-            return Err(LinkageError::InvalidParameter {
-                name: "Geneva crank radius (m)".into(),
-                value: crank_radius_m,
-                valid: "finite and > 0".into(),
-            });
+            return Err(LinkageError::invalid(
+                Param::GenevaCrankRadius,
+                crank_radius_m,
+                Valid::PositiveShort,
+            ));
         }
         Ok(Self {
             slots,

@@ -7,6 +7,7 @@ use serde::Serialize;
 
 use super::laws::{Law, Motion};
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 
 const TAU: f64 = std::f64::consts::TAU;
 
@@ -103,26 +104,22 @@ impl Program {
     /// An empty program, an angle or lift out of range, or angles that do not add up
     /// to a turn (named with the sum).
     pub fn new(segments: Vec<Segment>) -> Result<Self> {
-        let invalid = |name: String, value: f64, valid: &str| LinkageError::InvalidParameter {
-            name,
-            value,
-            valid: valid.into(),
-        };
+        let invalid = LinkageError::invalid;
         if segments.is_empty() {
-            return Err(invalid("segments".into(), 0.0, "at least one"));
+            return Err(invalid(Param::Segments, 0.0, Valid::AtLeastOne));
         }
         let mut starts = Vec::with_capacity(segments.len());
         let mut bases = Vec::with_capacity(segments.len());
         let (mut at, mut base) = (0.0, 0.0);
         for (i, seg) in segments.iter().enumerate() {
             if !(seg.angle_rad.is_finite() && seg.angle_rad > 0.0) {
-                let name = format!("segment {i} angle (rad)");
-                return Err(invalid(name, seg.angle_rad, "finite and > 0"));
+                let param = Param::SegmentAngle(i);
+                return Err(invalid(param, seg.angle_rad, Valid::PositiveShort));
             }
             if let SegmentKind::Rise { lift, .. } | SegmentKind::Return { lift, .. } = seg.kind
                 && !(lift.is_finite() && lift > 0.0)
             {
-                return Err(invalid(format!("segment {i} lift"), lift, "finite and > 0"));
+                return Err(invalid(Param::SegmentLift(i), lift, Valid::PositiveShort));
             }
             starts.push(at);
             bases.push(base);
@@ -134,8 +131,7 @@ impl Program {
             };
         }
         if (at - TAU).abs() > 1e-9 * TAU {
-            let valid = "the segments' angles must add up to one turn, 2π rad (360°)";
-            return Err(invalid("sum of the segment angles (rad)".into(), at, valid));
+            return Err(invalid(Param::SegmentAngleSum, at, Valid::OneTurn));
         }
         Ok(Self {
             segments,

@@ -17,6 +17,7 @@ use serde::Serialize;
 
 use super::disc::{DiscCam, Follower};
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 
 /// What presses the follower onto the cam.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -91,11 +92,11 @@ impl DiscCam {
     /// reaches.
     pub fn smallest_base_radius(&self, limit_rad: f64) -> Result<f64> {
         if !(limit_rad > 0.0 && limit_rad < 0.5 * std::f64::consts::PI) {
-            return Err(LinkageError::InvalidParameter {
-                name: "pressure angle limit (deg)".into(),
-                value: limit_rad.to_degrees(),
-                valid: "between 0 and 90".into(),
-            });
+            return Err(LinkageError::invalid(
+                Param::PressureAngleLimit,
+                limit_rad.to_degrees(),
+                Valid::Between0And90,
+            ));
         }
         let worst = |r: f64| -> Option<f64> {
             let cam = DiscCam::new(self.program.clone(), r, self.follower).ok()?;
@@ -113,11 +114,13 @@ impl DiscCam {
         while !fits(hi) {
             hi *= 2.0;
             if hi > 1e4 * scale {
-                return Err(LinkageError::InvalidParameter {
-                    name: "pressure angle limit (deg)".into(),
-                    value: limit_rad.to_degrees(),
-                    valid: format!("one a base circle up to {:.3e} m reaches", 1e4 * scale),
-                });
+                return Err(LinkageError::invalid(
+                    Param::PressureAngleLimit,
+                    limit_rad.to_degrees(),
+                    Valid::BaseCircleUpTo {
+                        most_m: 1e4 * scale,
+                    },
+                ));
             }
         }
         // A roller can keep the pressure angle within the limit on its own, down to

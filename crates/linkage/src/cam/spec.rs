@@ -26,6 +26,7 @@ use super::disc::{DiscCam, Face, Follower};
 use super::laws::Law;
 use super::program::{Program, Segment, SegmentKind};
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 
 /// What touches the cam, in millimetres.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -213,11 +214,11 @@ impl CamSpec {
             },
         };
         if !(self.rpm.is_finite() && self.rpm != 0.0) {
-            return Err(LinkageError::InvalidParameter {
-                name: "rpm".into(),
-                value: self.rpm,
-                valid: "finite and not 0".into(),
-            });
+            return Err(LinkageError::invalid(
+                Param::CamRpm,
+                self.rpm,
+                Valid::NotZeroShort,
+            ));
         }
         let cam = DiscCam::new(Program::new(segments)?, self.base_radius_mm * mm, follower)?;
         Ok(CamDesign {

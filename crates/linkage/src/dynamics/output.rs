@@ -101,11 +101,11 @@ impl Simulation {
     /// Only if the sample does not come from this run.
     pub fn pose(&mut self, s: &Sample) -> Result<Solution> {
         let k = self.segments.get_mut(s.segment).ok_or_else(|| {
-            crate::error::LinkageError::InvalidParameter {
-                name: "sample segment".into(),
-                value: s.segment as f64,
-                valid: "a sample of this run".into(),
-            }
+            crate::error::LinkageError::invalid(
+                crate::error::Param::SampleSegment,
+                s.segment as f64,
+                crate::error::Valid::SampleOfRun,
+            )
         })?;
         let mut sol = k.empty_solution();
         k.solve_into(s.x, s.x_dot, &mut sol)?;

@@ -1,5 +1,6 @@
 //! The integrator choice and the run's settings, validated before anything runs.
 
+use crate::error::{Param, Valid};
 use crate::ids::LinkId;
 
 use crate::error::{LinkageError, Result};
@@ -69,54 +70,43 @@ impl Settings {
 
     /// Refuses non-finite or out-of-range values, naming the valid range.
     pub fn validate(&self) -> Result<()> {
-        let invalid = |name: &str, value: f64, valid: &str| {
-            Err(LinkageError::InvalidParameter {
-                name: name.into(),
-                value,
-                valid: valid.into(),
-            })
+        let invalid = |param: Param, value: f64, valid: Valid| {
+            Err(LinkageError::invalid(param, value, valid))
         };
         if self.method.is_adaptive() {
             if !(self.rtol.is_finite() && self.rtol >= 1e-15 && self.rtol < 1.0) {
-                return invalid("rtol", self.rtol, "must be in [1e-15, 1)");
+                return invalid(Param::Rtol, self.rtol, Valid::Rtol);
             }
             if !(self.atol.is_finite() && self.atol > 0.0) {
-                return invalid("atol", self.atol, "must be finite and > 0");
+                return invalid(Param::Atol, self.atol, Valid::Positive);
             }
             if !(self.step.is_finite() && self.step >= 0.0) {
-                return invalid(
-                    "max step",
-                    self.step,
-                    "must be finite and >= 0 s (0: no limit)",
-                );
+                return invalid(Param::MaxStep, self.step, Valid::MaxStep);
             }
         } else if !(self.step > 0.0 && self.step.is_finite()) {
-            return invalid(
-                "step",
-                self.step,
-                "must be finite and > 0 (s, or rad for the energy method)",
-            );
+            return invalid(Param::Step, self.step, Valid::Step);
         }
         if !(self.t_end > 0.0 && self.t_end.is_finite()) {
-            return invalid("t_end", self.t_end, "must be finite and > 0 s");
+            return invalid(Param::TEnd, self.t_end, Valid::PositiveSeconds);
         }
         if !self.q_dot0.is_finite() {
-            return invalid("initial speed", self.q_dot0, "must be finite");
+            return invalid(Param::InitialSpeed, self.q_dot0, Valid::FiniteShort);
         }
         if let Some(dt) = self.output_dt {
             if !(dt > 0.0 && dt.is_finite()) {
-                return invalid("output dt", dt, "must be finite and > 0 s");
+                return invalid(Param::OutputDt, dt, Valid::PositiveSeconds);
             }
             if self.t_end / dt > MAX_OUTPUT_SAMPLES {
                 let least = self.t_end / MAX_OUTPUT_SAMPLES;
                 return invalid(
-                    "output dt",
+                    Param::OutputDt,
                     dt,
-                    &format!(
-                        "gives {:.3e} samples over t_end = {} s; at most {MAX_OUTPUT_SAMPLES:.0e}: make it at least {least:.3e} s",
-                        self.t_end / dt,
-                        self.t_end
-                    ),
+                    Valid::OutputSamples {
+                        samples: self.t_end / dt,
+                        t_end_s: self.t_end,
+                        max: MAX_OUTPUT_SAMPLES,
+                        least_s: least,
+                    },
                 );
             }
         }
@@ -124,14 +114,14 @@ impl Settings {
         if fixed_time_step && self.t_end / self.step > self.max_steps as f64 {
             let least = self.t_end / self.max_steps as f64;
             return invalid(
-                "step",
+                Param::Step,
                 self.step,
-                &format!(
-                    "takes {:.3e} steps to t_end = {} s; at most {}: make it at least {least:.3e} s or shorten the run",
-                    self.t_end / self.step,
-                    self.t_end,
-                    self.max_steps
-                ),
+                Valid::StepCount {
+                    steps: self.t_end / self.step,
+                    t_end_s: self.t_end,
+                    max: self.max_steps,
+                    least_s: least,
+                },
             );
         }
         Ok(())

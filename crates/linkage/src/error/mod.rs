@@ -7,15 +7,19 @@ use crate::assembly::AssemblyRanges;
 use crate::dyad::{DyadLabel, Shortfall};
 mod cam_problem;
 mod design_refusal;
+mod param;
 mod run_refusal;
 mod scene_problem;
 mod singularity;
+mod valid;
 
 pub use cam_problem::CamProblem;
 pub use design_refusal::DesignRefusal;
+pub use param::Param;
 pub use run_refusal::{ImplicitFailure, RunRefusal, RunWarning, StabilityLimit};
 pub use scene_problem::{LonePoint, MadeJoint, SceneProblem};
 pub use singularity::{Singularity, Undecomposable};
+pub use valid::Valid;
 
 /// Why a chain does not close at an input, as data ([`LinkageError::CannotAssemble`]).
 #[derive(Debug, Error, Clone, PartialEq)]
@@ -75,14 +79,14 @@ pub enum LinkageError {
     #[error(transparent)]
     Run(Box<RunRefusal>),
     /// A numeric parameter is outside its valid range (or not finite).
-    #[error("{name} = {value} is invalid: {valid}")]
+    #[error("{param} = {value} is invalid: {valid}")]
     InvalidParameter {
-        /// The parameter's name as the user knows it.
-        name: String,
+        /// The parameter.
+        param: Param,
         /// The value given.
         value: f64,
-        /// The valid range in words.
-        valid: String,
+        /// What it must be.
+        valid: Valid,
     },
     /// The chain cannot be assembled at this input.
     #[error("cannot assemble at input {input_deg:.4} deg: {reason}; {reachable}")]
@@ -180,6 +184,17 @@ impl std::fmt::Display for MachineAnalysis {
             Self::SteadyState => "the steady state",
             Self::Shaking => "the shaking force over a cycle",
         })
+    }
+}
+
+impl LinkageError {
+    /// `param` = `value` refused: it must be `valid`.
+    pub fn invalid(param: Param, value: f64, valid: Valid) -> Self {
+        Self::InvalidParameter {
+            param,
+            value,
+            valid,
+        }
     }
 }
 

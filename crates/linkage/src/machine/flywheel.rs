@@ -16,6 +16,7 @@ use serde::Serialize;
 use super::gauss;
 use super::torque::{CrankLoad, CrankTorque, full_turn};
 use crate::error::{LinkageError, MachineAnalysis, Result};
+use crate::error::{Param, Valid};
 use crate::extremum::{Extreme, locate_max};
 use crate::roots_util::refine;
 use crate::solve::Kinematics;
@@ -152,19 +153,19 @@ pub fn size_flywheel(k: &mut Kinematics, delta: f64) -> Result<FlywheelSizing> {
 /// δ in (0, 1), a crank turning (either way) over a full cycle.
 fn check_inputs(k: &Kinematics, delta: f64) -> Result<()> {
     if !(delta.is_finite() && delta > 0.0 && delta < 1.0) {
-        return Err(LinkageError::InvalidParameter {
-            name: "delta".into(),
-            value: delta,
-            valid: "the coefficient of speed fluctuation (ω_max − ω_min)/ω_mean must lie in (0, 1); machines use 0.002 to 0.2".into(),
-        });
+        return Err(LinkageError::invalid(
+            Param::Delta,
+            delta,
+            Valid::SpeedFluctuation,
+        ));
     }
     let speed = k.mechanism().driver.speed_rad_s;
     if !(speed.is_finite() && speed != 0.0) {
-        return Err(LinkageError::InvalidParameter {
-            name: "driver speed".into(),
-            value: speed,
-            valid: "flywheel sizing needs the crank's nominal speed: give the driver a finite speed other than 0".into(),
-        });
+        return Err(LinkageError::invalid(
+            Param::DriverSpeed,
+            speed,
+            Valid::NominalSpeed,
+        ));
     }
     full_turn(k, MachineAnalysis::Flywheel)
 }

@@ -15,6 +15,7 @@ use super::flywheel::size_flywheel;
 use super::torque::full_turn;
 use crate::dynamics::{Method, Sample, Settings, Simulation, simulate};
 use crate::error::{LinkageError, MachineAnalysis, Result};
+use crate::error::{Param, Valid};
 use crate::model::{Mechanism, Motor};
 use crate::scene::{StopAction, StopSpec};
 use crate::solve::Kinematics;
@@ -161,20 +162,23 @@ fn one_turn(k: &Kinematics, w0: f64, output_dt: Option<f64>) -> Result<Simulatio
 fn turn_end(run: &Simulation, w0: f64) -> Result<Sample> {
     match run.events.iter().find(|e| e.stopped) {
         Some(e) => Ok(e.state),
-        None => Err(LinkageError::InvalidParameter {
-            name: "crank speed at the start".into(),
-            value: w0,
-            valid: "the crank did not complete a turn in four nominal periods: the motor cannot drive this load (it stalls or turns back)".into(),
-        }),
+        None => Err(LinkageError::invalid(
+            Param::CrankSpeedAtStart,
+            w0,
+            Valid::MotorDrives,
+        )),
     }
 }
 
 fn no_closure(miss: f64, nominal: f64) -> LinkageError {
-    LinkageError::InvalidParameter {
-        name: "steady-state miss after a turn".into(),
-        value: miss,
-        valid: format!("shooting did not close to {CLOSURE:e} of the speed {nominal} rad/s"),
-    }
+    LinkageError::invalid(
+        Param::SteadyMiss,
+        miss,
+        Valid::ShootingCloses {
+            closure: CLOSURE,
+            nominal_rad_s: nominal,
+        },
+    )
 }
 
 /// The converged state from `w0`, whose turn ended at `end`: that turn once more,

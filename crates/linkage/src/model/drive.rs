@@ -2,6 +2,7 @@
 //! the crank through the gear, and the inertia the gear, rotor and flywheel add there.
 
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 use crate::scene::{DriveSpec, MotorSpec, Shaft};
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
@@ -76,25 +77,19 @@ impl Drive {
     /// A gear ratio that is not finite and > 0, an inertia < 0, a linear motor whose
     /// rated speed is not below its no-load speed, a table not in rising speed.
     pub fn from_spec(spec: &DriveSpec) -> Result<Self> {
-        let invalid = |name: &str, value: f64, valid: &str| LinkageError::InvalidParameter {
-            name: format!("drive.{name}"),
-            value,
-            valid: valid.into(),
+        let invalid = |name: &str, value: f64, valid: Valid| {
+            LinkageError::invalid(Param::Scene(format!("drive.{name}")), value, valid)
         };
         let n = spec.gear_ratio;
         if !(n.is_finite() && n > 0.0) {
-            return Err(invalid(
-                "gear_ratio",
-                n,
-                "must be finite and > 0 (motor turns per crank turn)",
-            ));
+            return Err(invalid("gear_ratio", n, Valid::GearRatio));
         }
         for (name, j) in [
             ("motor_inertia_kg_m2", spec.motor_inertia_kg_m2),
             ("flywheel_kg_m2", spec.flywheel_kg_m2),
         ] {
             if !(j.is_finite() && j >= 0.0) {
-                return Err(invalid(name, j, "must be finite and >= 0"));
+                return Err(invalid(name, j, Valid::NonNegative));
             }
         }
         let flywheel = match spec.flywheel_on {
@@ -110,12 +105,12 @@ impl Drive {
 }
 
 /// The motor in SI, each number checked.
-fn motor(spec: &MotorSpec, invalid: &dyn Fn(&str, f64, &str) -> LinkageError) -> Result<Motor> {
+fn motor(spec: &MotorSpec, invalid: &dyn Fn(&str, f64, Valid) -> LinkageError) -> Result<Motor> {
     let finite = |name: &str, v: f64| {
         if v.is_finite() {
             Ok(v)
         } else {
-            Err(invalid(name, v, "must be a finite number"))
+            Err(invalid(name, v, Valid::Finite))
         }
     };
     match spec {
@@ -136,9 +131,7 @@ fn motor(spec: &MotorSpec, invalid: &dyn Fn(&str, f64, &str) -> LinkageError) ->
                 return Err(invalid(
                     "rated_rpm",
                     w,
-                    &format!(
-                        "must be below the no-load speed {w0} rpm (the torque falls to zero there)"
-                    ),
+                    Valid::BelowNoLoad { no_load_rpm: w0 },
                 ));
             }
             Ok(Motor::Linear {
@@ -149,18 +142,14 @@ fn motor(spec: &MotorSpec, invalid: &dyn Fn(&str, f64, &str) -> LinkageError) ->
         }
         MotorSpec::Table { points } => {
             if points.len() < 2 {
-                return Err(invalid(
-                    "points",
-                    points.len() as f64,
-                    "a table needs at least 2 points",
-                ));
+                return Err(invalid("points", points.len() as f64, Valid::TableOfTwo));
             }
             for (i, pair) in points.windows(2).enumerate() {
                 if pair[1].0.partial_cmp(&pair[0].0) != Some(std::cmp::Ordering::Greater) {
                     return Err(invalid(
                         &format!("points[{}] speed", i + 1),
                         pair[1].0,
-                        "speeds must rise from point to point",
+                        Valid::RisingSpeeds,
                     ));
                 }
             }
@@ -227,7 +216,10 @@ mod tests {
     fn a_bad_drive_is_refused_naming_the_field_and_its_range() {
         let constant = || MotorSpec::Constant { torque_n_m: 1.0 };
         let name_of = |r: Result<Drive>| match r {
-            Err(LinkageError::InvalidParameter { name, .. }) => name,
+            Err(LinkageError::InvalidParameter {
+                param: Param::Scene(name),
+                ..
+            }) => name,
             other => panic!("expected a refusal, got {other:?}"),
         };
         assert_eq!(

@@ -4,6 +4,7 @@
 use super::units::{finite, invalid, positive, positive_named, scene_angle};
 use crate::error::SceneProblem;
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 use crate::model::{Link, Point};
 use crate::scene::{ForcesSpec, FreeLength};
 
@@ -42,11 +43,11 @@ pub(super) fn convert_forces(
         if let FreeLength::Length(l) = &mut s.free_length {
             *l = finite("spring free_length", *l)? * len;
             if *l < 0.0 {
-                return Err(LinkageError::InvalidParameter {
-                    name: format!("spring {}-{} free_length", s.a, s.b),
-                    value: *l,
-                    valid: "must be >= 0".into(),
-                });
+                return Err(LinkageError::invalid(
+                    Param::Scene(format!("spring {}-{} free_length", s.a, s.b)),
+                    *l,
+                    Valid::NonNegativeOnly,
+                ));
             }
         }
     }

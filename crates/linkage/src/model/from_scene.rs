@@ -11,6 +11,7 @@ use super::links::{bodies, check_joint_gaps};
 use super::units::{Units, invalid};
 use crate::error::SceneProblem;
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 use crate::model::{Drive, LinkId, Mechanism};
 use crate::scene::SceneFile;
 
@@ -52,11 +53,11 @@ impl Mechanism {
             &bodies.points,
         )?;
         if !(scene.solver.tolerance > 0.0 && scene.solver.tolerance.is_finite()) {
-            return Err(LinkageError::InvalidParameter {
-                name: "solver.tolerance".into(),
-                value: scene.solver.tolerance,
-                valid: "must be finite and > 0 (typical 1e-13)".into(),
-            });
+            return Err(LinkageError::invalid(
+                Param::Scene("solver.tolerance".into()),
+                scene.solver.tolerance,
+                Valid::SolverTolerance { typical: 1e-13 },
+            ));
         }
         if bodies.size_m <= 0.0 {
             return Err(invalid(SceneProblem::NoSize));

@@ -3,6 +3,7 @@
 
 use crate::error::SceneProblem;
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 use crate::model::MAX_ANGLE_RAD;
 use crate::motion::Vec2;
 
@@ -35,11 +36,11 @@ pub(super) fn finite(name: &str, v: f64) -> Result<f64> {
     if v.is_finite() {
         Ok(v)
     } else {
-        Err(LinkageError::InvalidParameter {
-            name: name.to_string(),
-            value: v,
-            valid: "must be a finite number".into(),
-        })
+        Err(LinkageError::invalid(
+            Param::Scene(name.to_string()),
+            v,
+            Valid::Finite,
+        ))
     }
 }
 
@@ -50,13 +51,11 @@ pub(super) fn scene_angle(name: &str, v: f64, rad_per_unit: f64) -> Result<f64> 
         Ok(rad)
     } else {
         let limit = MAX_ANGLE_RAD / rad_per_unit;
-        Err(LinkageError::InvalidParameter {
-            name: name.to_string(),
-            value: v,
-            valid: format!(
-                "must lie within ±{limit:.6} (the scene's angle unit; about 3200 turns), beyond which a double cannot hold the angle to 1e-11 rad: give it within one turn"
-            ),
-        })
+        Err(LinkageError::invalid(
+            Param::Scene(name.to_string()),
+            v,
+            Valid::AngleWithin { limit },
+        ))
     }
 }
 
@@ -82,10 +81,10 @@ pub(super) fn positive(name: &str, v: f64) -> Result<f64> {
     if v.is_finite() && v > 0.0 {
         Ok(v)
     } else {
-        Err(LinkageError::InvalidParameter {
-            name: name.to_string(),
-            value: v,
-            valid: "must be finite and > 0".into(),
-        })
+        Err(LinkageError::invalid(
+            Param::Scene(name.to_string()),
+            v,
+            Valid::Positive,
+        ))
     }
 }

@@ -219,20 +219,16 @@ impl Kinematics {
         out: &mut Solution,
     ) -> Result<()> {
         if !input_rad.is_finite() || !speed_rad_s.is_finite() {
-            return Err(LinkageError::InvalidParameter {
-                name: if input_rad.is_finite() {
-                    "input speed"
-                } else {
-                    "input angle"
-                }
-                .into(),
-                value: if input_rad.is_finite() {
-                    speed_rad_s
-                } else {
-                    input_rad
-                },
-                valid: "must be a finite number".into(),
-            });
+            let (param, value) = if input_rad.is_finite() {
+                (crate::error::Param::InputSpeed, speed_rad_s)
+            } else {
+                (crate::error::Param::InputAngle, input_rad)
+            };
+            return Err(LinkageError::invalid(
+                param,
+                value,
+                crate::error::Valid::Finite,
+            ));
         }
         if out.links.len() != self.mech.links.len() {
             *out = self.empty_solution();

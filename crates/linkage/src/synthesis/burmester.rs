@@ -18,6 +18,7 @@ use serde::Serialize;
 use super::motion::{BodyPose, MotionFourBar, poles_of};
 use crate::error::DesignRefusal;
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 use crate::motion::Vec2;
 
 /// One row of the linear equations in a: the coefficients and the right-hand side.
@@ -261,19 +262,15 @@ fn newton2(f: &impl Fn(Vec2) -> [f64; 2], mut m: Vec2, scale: f64) -> Option<Vec
 
 fn check_poses(poses: &[BodyPose], n: usize) -> Result<()> {
     if poses.len() != n {
-        return Err(LinkageError::InvalidParameter {
-            name: "number of positions".into(),
-            value: poses.len() as f64,
-            valid: format!("{n}"),
-        });
+        return Err(LinkageError::invalid(
+            Param::Positions,
+            poses.len() as f64,
+            Valid::Exactly(n),
+        ));
     }
     let values = poses.iter().flat_map(|p| [p.at[0], p.at[1], p.angle_rad]);
     if let Some(v) = values.into_iter().find(|v| !v.is_finite()) {
-        return Err(LinkageError::InvalidParameter {
-            name: "pose".into(),
-            value: v,
-            valid: "finite numbers".into(),
-        });
+        return Err(LinkageError::invalid(Param::Pose, v, Valid::FiniteNumbers));
     }
     Ok(())
 }

@@ -8,8 +8,9 @@
 
 use serde::Serialize;
 
-use super::{CrankRocker, crank_rocker, invalid, plain_link, points};
+use super::{CrankRocker, crank_rocker, plain_link, points};
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 use crate::scene::{
     Branch, DriverSpec, ForcesSpec, LengthUnit, LinkSpec, Models, SceneFile, SliderSpec,
     SolverSpec, Speed,
@@ -51,10 +52,12 @@ impl ToggleSixBar {
 pub fn die_cutter_far_angle(spec: &DieCutterSpec) -> Result<f64> {
     let s = 1.0 - spec.stroke_m / (2.0 * spec.link_m);
     if !(spec.stroke_m > 0.0 && spec.link_m > 0.0 && s > 0.0) {
-        return Err(invalid(
-            "stroke H (m)",
+        return Err(LinkageError::invalid(
+            Param::Stroke,
             spec.stroke_m,
-            &format!("must be in (0, 2L) = (0, {}) m", 2.0 * spec.link_m),
+            Valid::StrokeBelow {
+                two_l_m: 2.0 * spec.link_m,
+            },
         ));
     }
     Ok(s.asin())
@@ -66,11 +69,11 @@ fn check_crank_speed(spec: &DieCutterSpec) -> Result<()> {
     if spec.crank_rpm.is_finite() {
         Ok(())
     } else {
-        Err(LinkageError::InvalidParameter {
-            name: "crank speed (rpm)".into(),
-            value: spec.crank_rpm,
-            valid: "must be a finite number".into(),
-        })
+        Err(LinkageError::invalid(
+            Param::CrankRpm,
+            spec.crank_rpm,
+            Valid::Finite,
+        ))
     }
 }
 
@@ -126,7 +129,7 @@ pub fn die_cutter_as_printed(
         prev = (t, v);
     }
     let t = found
-        .ok_or_else(|| invalid("AB (m)", crank_m, "cannot be placed with this BC, CD and K"))?;
+        .ok_or_else(|| LinkageError::invalid(Param::CrankAb, crank_m, Valid::CrankPlaceable))?;
     let design = crank_rocker(spec.link_m, swing, spec.k, start, Some((t, best.side)))?;
     Ok(ToggleSixBar {
         design,

@@ -16,6 +16,7 @@ use serde::Serialize;
 
 use crate::error::DesignRefusal;
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 use crate::scene::SceneFile;
 
 /// A prescribed input and output angle pair, rad.
@@ -94,39 +95,41 @@ pub fn freudenstein(points: &[PrecisionPoint], ground_m: f64) -> Result<Function
     };
     let k = k
         .filter(|k| k.iter().all(|v| v.is_finite()))
-        .ok_or_else(|| LinkageError::InvalidParameter {
-            name: "precision points".into(),
-            value: points.len() as f64,
-            valid: "points whose angles fix K1, K2 and K3 (no two alike)".into(),
+        .ok_or_else(|| {
+            LinkageError::invalid(
+                Param::PrecisionPoints,
+                points.len() as f64,
+                Valid::DistinctPoints,
+            )
         })?;
     lengths(k, ground_m)
 }
 
 fn check(points: &[PrecisionPoint], ground_m: f64) -> Result<()> {
     if points.len() < 3 {
-        return Err(LinkageError::InvalidParameter {
-            name: "precision points".into(),
-            value: points.len() as f64,
-            valid: "at least 3".into(),
-        });
+        return Err(LinkageError::invalid(
+            Param::PrecisionPoints,
+            points.len() as f64,
+            Valid::AtLeast(3),
+        ));
     }
     if !(ground_m.is_finite() && ground_m > 0.0) {
-        return Err(LinkageError::InvalidParameter {
-            name: "ground length".into(),
-            value: ground_m,
-            valid: "a positive length".into(),
-        });
+        return Err(LinkageError::invalid(
+            Param::GroundLength,
+            ground_m,
+            Valid::PositiveLength,
+        ));
     }
     match points
         .iter()
         .flat_map(|p| [p.input_rad, p.output_rad])
         .find(|v| !v.is_finite())
     {
-        Some(v) => Err(LinkageError::InvalidParameter {
-            name: "precision point angle".into(),
-            value: v,
-            valid: "a finite angle".into(),
-        }),
+        Some(v) => Err(LinkageError::invalid(
+            Param::PrecisionPointAngle,
+            v,
+            Valid::FiniteAngle,
+        )),
         None => Ok(()),
     }
 }

@@ -27,6 +27,7 @@ use indexmap::IndexMap;
 use serde::Serialize;
 
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 use crate::motion::{Vec2, cross};
 use crate::scene::{
     Branch, DriverSpec, ForcesSpec, LengthUnit, LinkSpec, Models, SceneFile, SolverSpec, Speed,
@@ -61,14 +62,6 @@ pub struct CrankRocker {
     pub side: i8,
     /// True when C is left of the line B→D on the assembly branch.
     pub c_left_of_bd: bool,
-}
-
-pub(crate) fn invalid(name: &str, value: f64, valid: &str) -> LinkageError {
-    LinkageError::InvalidParameter {
-        name: name.into(),
-        value,
-        valid: valid.into(),
-    }
 }
 
 /// Design at A on the circle of `side` at angle `t`; `None` where no crank-rocker results.
@@ -150,11 +143,7 @@ pub fn crank_rocker(
     let (c1, c2) = (at(rocker_start_rad), at(rocker_start_rad + swing_rad));
     if let Some((t, side)) = choice {
         return design_at(c1, c2, rocker_m, theta, side, t).ok_or_else(|| {
-            invalid(
-                "arc (deg)",
-                t.to_degrees(),
-                "gives no crank-rocker here; omit it to get the best design",
-            )
+            LinkageError::invalid(Param::Arc, t.to_degrees(), Valid::ArcGivesDesign)
         });
     }
     const SAMPLES: usize = 3600;
@@ -172,10 +161,10 @@ pub fn crank_rocker(
         }
     }
     let coarse = best.ok_or_else(|| {
-        invalid(
-            "swing (deg)",
+        LinkageError::invalid(
+            Param::Swing,
             swing_rad.to_degrees(),
-            "admits no crank-rocker with this K",
+            Valid::SwingAdmitsDesign,
         )
     })?;
     // Golden-section refinement within one grid step either side.
@@ -199,27 +188,27 @@ pub fn crank_rocker(
 /// The crank-rocker's requirements, each within its valid range.
 fn check_crank_rocker(rocker_m: f64, swing_rad: f64, k: f64, rocker_start_rad: f64) -> Result<()> {
     if !(rocker_m.is_finite() && rocker_m > 0.0) {
-        return Err(invalid("rocker length", rocker_m, "must be > 0"));
+        return Err(LinkageError::invalid(
+            Param::RockerLength,
+            rocker_m,
+            Valid::PositiveOnly,
+        ));
     }
     if !(swing_rad > 0.0 && swing_rad < std::f64::consts::PI) {
-        return Err(invalid(
-            "swing (deg)",
+        return Err(LinkageError::invalid(
+            Param::Swing,
             swing_rad.to_degrees(),
-            "must be in (0, 180) deg",
+            Valid::SwingRange,
         ));
     }
     if !(k.is_finite() && k > 1.0 && k < 1e3) {
-        return Err(invalid(
-            "time ratio K",
-            k,
-            "must be in (1, 1000): K = 1 puts A at infinity on this circle (use a centred design)",
-        ));
+        return Err(LinkageError::invalid(Param::TimeRatio, k, Valid::TimeRatio));
     }
     if !rocker_start_rad.is_finite() {
-        return Err(invalid(
-            "rocker start angle",
+        return Err(LinkageError::invalid(
+            Param::RockerStartAngle,
             rocker_start_rad,
-            "must be finite",
+            Valid::FiniteShort,
         ));
     }
     Ok(())

@@ -12,6 +12,7 @@ use crate::Kinematics;
 use crate::drawing::{Drawing, DrawingLink, DrawingPoint};
 use crate::error::DesignRefusal;
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 use crate::model::Mechanism;
 use crate::motion::{Vec2, cross};
 
@@ -113,11 +114,11 @@ pub fn three_positions(poses: [BodyPose; 3], moving: [[f64; 2]; 2]) -> Result<Mo
         .flat_map(|p| [p.at[0], p.at[1], p.angle_rad])
         .chain(moving.iter().flatten().copied());
     if let Some(v) = values.into_iter().find(|v| !v.is_finite()) {
-        return Err(LinkageError::InvalidParameter {
-            name: "pose or moving pivot".into(),
-            value: v,
-            valid: "finite numbers".into(),
-        });
+        return Err(LinkageError::invalid(
+            Param::PoseOrMovingPivot,
+            v,
+            Valid::FiniteNumbers,
+        ));
     }
     let local = moving.map(|m| Vec2::new(m[0], m[1]));
     if (local[0] - local[1]).norm() < 1e-12 {

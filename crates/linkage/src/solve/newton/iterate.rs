@@ -16,15 +16,16 @@ impl Solver<'_> {
         links: &mut [LinkMotion],
     ) -> Result<f64> {
         if !input_rad.is_finite() || !speed_rad_s.is_finite() {
-            return Err(LinkageError::InvalidParameter {
-                name: "input".into(),
-                value: if input_rad.is_finite() {
-                    speed_rad_s
-                } else {
-                    input_rad
-                },
-                valid: "input angle and speed must be finite".into(),
-            });
+            let value = if input_rad.is_finite() {
+                speed_rad_s
+            } else {
+                input_rad
+            };
+            return Err(LinkageError::invalid(
+                crate::error::Param::NewtonInput,
+                value,
+                crate::error::Valid::InputFinite,
+            ));
         }
         let target = self.target(input_rad)?;
         if self.s.last_input == Some(target) {

@@ -44,11 +44,11 @@ impl NewtonModel {
     /// with as many equations as unknowns missing.
     pub fn new(m: &Mechanism, tolerance: f64, max_iterations: usize) -> Result<Self> {
         if !(tolerance.is_finite() && tolerance > 0.0) {
-            return Err(LinkageError::InvalidParameter {
-                name: "Newton tolerance".into(),
-                value: tolerance,
-                valid: "must be finite and > 0".into(),
-            });
+            return Err(LinkageError::invalid(
+                crate::error::Param::NewtonTolerance,
+                tolerance,
+                crate::error::Valid::Positive,
+            ));
         }
         let (tree, cuts) = spanning_tree(m)?;
         let unknowns = tree.len() - 1;

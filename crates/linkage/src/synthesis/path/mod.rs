@@ -37,6 +37,7 @@ pub use search::{PathSearch, Progress};
 use serde::Serialize;
 
 use crate::error::{LinkageError, Result};
+use crate::error::{Param, Valid};
 use crate::motion::Vec2;
 use problem::{Encoding, Limits, Problem};
 
@@ -131,12 +132,8 @@ impl Default for SearchOptions {
     }
 }
 
-fn invalid(name: &str, value: f64, valid: &str) -> LinkageError {
-    LinkageError::InvalidParameter {
-        name: name.into(),
-        value,
-        valid: valid.into(),
-    }
+fn invalid(param: Param, value: f64, valid: Valid) -> LinkageError {
+    LinkageError::invalid(param, value, valid)
 }
 
 impl PathSearch {
@@ -161,16 +158,20 @@ impl PathSearch {
 fn check_options(o: &SearchOptions) -> Result<()> {
     if !(o.tolerance > 0.0 && o.tolerance < 1.0) {
         return Err(invalid(
-            "tolerance",
+            Param::SearchTolerance,
             o.tolerance,
-            "between 0 and 1, exclusive",
+            Valid::OpenUnit,
         ));
     }
     if o.solutions == 0 {
-        return Err(invalid("solutions", 0.0, "at least 1"));
+        return Err(invalid(Param::Solutions, 0.0, Valid::AtLeast(1)));
     }
     if o.population < 8 {
-        return Err(invalid("population", o.population as f64, "at least 8"));
+        return Err(invalid(
+            Param::Population,
+            o.population as f64,
+            Valid::AtLeast(8),
+        ));
     }
     Ok(())
 }
@@ -179,10 +180,17 @@ fn check_options(o: &SearchOptions) -> Result<()> {
 fn frame(points: &[[f64; 2]]) -> Result<(Vec2, f64)> {
     let n = points.len();
     if !(MIN_TARGETS..=MAX_TARGETS).contains(&n) {
-        return Err(invalid("number of targets", n as f64, "3 to 20"));
+        return Err(invalid(
+            Param::Targets,
+            n as f64,
+            Valid::Count {
+                lo: MIN_TARGETS,
+                hi: MAX_TARGETS,
+            },
+        ));
     }
     if let Some(bad) = points.iter().flatten().find(|v| !v.is_finite()) {
-        return Err(invalid("target coordinate", *bad, "a finite number"));
+        return Err(invalid(Param::TargetCoordinate, *bad, Valid::AFiniteNumber));
     }
     let (mut lo, mut hi) = (Vec2::repeat(f64::INFINITY), Vec2::repeat(f64::NEG_INFINITY));
     let mut centre = Vec2::zeros();
@@ -194,11 +202,7 @@ fn frame(points: &[[f64; 2]]) -> Result<(Vec2, f64)> {
     }
     let size = (hi - lo).norm();
     if size <= 1e-12 * hi.abs().max().max(lo.abs().max()) || size == 0.0 {
-        return Err(invalid(
-            "size of the targets' spread",
-            size,
-            "more than 0: the targets coincide",
-        ));
+        return Err(invalid(Param::TargetSpread, size, Valid::TargetsApart));
     }
     Ok((centre, size))
 }
@@ -209,37 +213,37 @@ fn normalise(targets: &PathTargets, constraints: &PathConstraints) -> Result<Pro
         None => None,
         Some(deg) if deg.len() != targets.points_m.len() => {
             return Err(invalid(
-                "number of crank angles",
+                Param::CrankAngles,
                 deg.len() as f64,
-                "one per target",
+                Valid::OnePerTarget,
             ));
         }
         Some(deg) => {
             if let Some(bad) = deg.iter().find(|v| !v.is_finite()) {
-                return Err(invalid("crank angle", *bad, "a finite number of degrees"));
+                return Err(invalid(Param::CrankAngle, *bad, Valid::FiniteDegrees));
             }
             Some(deg.iter().map(|d| (d - deg[0]).to_radians()).collect())
         }
     };
     let mu = constraints.min_transmission_deg;
     if !(0.0..90.0).contains(&mu) {
-        return Err(invalid(
-            "least transmission angle (deg)",
-            mu,
-            "0 to 90, exclusive of 90",
-        ));
+        return Err(invalid(Param::LeastTransmission, mu, Valid::Below90));
     }
     let region = match constraints.ground_region_m {
         None => [Vec2::repeat(-DEFAULT_REGION), Vec2::repeat(DEFAULT_REGION)],
         Some([lo, hi]) => {
             if let Some(bad) = lo.iter().chain(&hi).find(|v| !v.is_finite()) {
-                return Err(invalid("ground region corner", *bad, "a finite number"));
+                return Err(invalid(
+                    Param::GroundRegionCorner,
+                    *bad,
+                    Valid::AFiniteNumber,
+                ));
             }
             if lo[0] >= hi[0] || lo[1] >= hi[1] {
                 return Err(invalid(
-                    "ground region width",
+                    Param::GroundRegionWidth,
                     (hi[0] - lo[0]).min(hi[1] - lo[1]),
-                    "more than 0",
+                    Valid::MoreThanZero,
                 ));
             }
             [
