@@ -155,7 +155,7 @@ fn items(r: &Report, unit: LengthUnit) -> Vec<(String, String)> {
                     "crank {:.2}°: {} ({})",
                     t.input_rad.to_degrees(),
                     t.ratio,
-                    t.collinear_joints.join(", ")
+                    joined(&t.collinear_joints)
                 )
             })
             .collect();
@@ -201,4 +201,13 @@ fn limits_of(r: &linkage::analysis::Report, output: &str) -> String {
     } else {
         lines.join("\n")
     }
+}
+
+/// Items in their report words, separated by commas.
+fn joined(items: &[impl std::fmt::Display]) -> String {
+    items
+        .iter()
+        .map(ToString::to_string)
+        .collect::<Vec<_>>()
+        .join(", ")
 }

@@ -96,18 +96,17 @@ pub(crate) fn text(r: &Report, peaks: &[OutputPeaks], unit: LengthUnit) -> Strin
 /// A toggle in words: an output at rest (a limit position) or the input at a dead
 /// point, with the joints whose links lie in line there.
 fn toggle(line: &mut String, t: &linkage::analysis::Toggle) {
-    // Each joint as "B (link1-table, 0.0000 deg)": its name is the first word.
     let joints: Vec<&str> = t
         .collinear_joints
         .iter()
-        .filter_map(|j| j.split_whitespace().next())
+        .map(|j| j.point.as_str())
         .collect();
     let in_line = if joints.is_empty() {
         String::new()
     } else {
         format!("; links in line at {}", joints.join(", "))
     };
-    let _ = if t.ratio == "infinite" {
+    let _ = if t.ratio == linkage::analysis::ToggleRatio::Infinite {
         writeln!(
             line,
             "dead point of the input at crank {}{in_line}",

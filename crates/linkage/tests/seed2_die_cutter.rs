@@ -39,7 +39,7 @@ fn synthesized_die_cutter_meets_stroke_k_and_toggle_at_top() {
     let top = r
         .toggles
         .iter()
-        .find(|t| t.output == "die" && t.ratio == "zero")
+        .find(|t| t.output == "die" && t.ratio == linkage::analysis::ToggleRatio::Zero)
         .expect("die toggle");
     let top_limit = r
         .limit_positions
@@ -55,7 +55,7 @@ fn synthesized_die_cutter_meets_stroke_k_and_toggle_at_top() {
     assert!(
         top.collinear_joints
             .iter()
-            .any(|j| j.starts_with("C (rocker-link_ce")),
+            .any(|j| j.point == "C" && j.links == ["rocker", "link_ce"]),
         "{:?}",
         top.collinear_joints
     );

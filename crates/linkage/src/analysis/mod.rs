@@ -22,9 +22,9 @@ pub use peaks::{OutputPeaks, Peak, output_peaks};
 pub use report::{Report, report};
 pub use time_ratio::{Stroke, TimeRatioNote, time_ratio};
 pub use timing::{TimingDiagram, TimingLane, timing, timing_lane, timing_of_sweep};
-pub use toggles::{Tangency, Toggle};
+pub use toggles::{Tangency, Toggle, ToggleRatio};
 pub use transmission::{
-    TransmissionAngle, collinear_joints, transmission_angle, transmission_angle_at,
+    CollinearJoint, TransmissionAngle, collinear_joints, transmission_angle, transmission_angle_at,
 };
 
 const TAU: f64 = std::f64::consts::TAU;

@@ -5,7 +5,7 @@ use serde::Serialize;
 
 use super::TAU;
 use super::limits::LimitPosition;
-use super::transmission::collinear_joints;
+use super::transmission::{CollinearJoint, collinear_joints};
 use crate::assembly::AssemblyRanges;
 use crate::solve::Kinematics;
 
@@ -14,12 +14,31 @@ use crate::solve::Kinematics;
 pub struct Toggle {
     /// Input angle, rad.
     pub input_rad: f64,
-    /// "zero" (a limit of `output`) or "infinite" (a dead point of the input).
-    pub ratio: &'static str,
+    /// Which ratio: zero (a limit of `output`) or infinite (a dead point of the input).
+    pub ratio: ToggleRatio,
     /// The output, or the group that locks.
     pub output: String,
     /// Revolute joints whose two links are collinear there (within 0.1 deg).
-    pub collinear_joints: Vec<String>,
+    pub collinear_joints: Vec<CollinearJoint>,
+}
+
+/// The output/input velocity ratio at a toggle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ToggleRatio {
+    /// The output at rest: a limit position of it.
+    Zero,
+    /// The input at a dead point.
+    Infinite,
+}
+
+impl std::fmt::Display for ToggleRatio {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Self::Zero => "zero",
+            Self::Infinite => "infinite",
+        })
+    }
 }
 
 /// A near-singular position met during a sweep.
@@ -44,7 +63,7 @@ pub(super) fn toggles(
         if k.solve_into(lp.input_rad, 1.0, &mut sol).is_ok() {
             toggles.push(Toggle {
                 input_rad: lp.input_rad,
-                ratio: "zero",
+                ratio: ToggleRatio::Zero,
                 output: lp.output.clone(),
                 collinear_joints: collinear_joints(k, &sol, 0.1_f64.to_radians()),
             });
@@ -69,7 +88,7 @@ pub(super) fn toggles(
             };
             toggles.push(Toggle {
                 input_rad: x.rem_euclid(TAU),
-                ratio: "infinite",
+                ratio: ToggleRatio::Infinite,
                 output: group,
                 collinear_joints: collinear,
             });

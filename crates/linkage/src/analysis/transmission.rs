@@ -137,9 +137,41 @@ pub fn transmission_angle(
     })
 }
 
+/// A joint whose two moving links lie on one line: a toggle's or a dead point's
+/// witness. It is written in a report as "C (crank-coupler, 0.0000 deg)".
+#[derive(Clone, Debug, PartialEq)]
+pub struct CollinearJoint {
+    /// The joint's point.
+    pub point: String,
+    /// The two links.
+    pub links: [String; 2],
+    /// The acute angle between them there, rad.
+    pub angle_rad: f64,
+}
+
+impl std::fmt::Display for CollinearJoint {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let [a, b] = &self.links;
+        write!(
+            f,
+            "{} ({a}-{b}, {:.4} deg)",
+            self.point,
+            self.angle_rad.to_degrees()
+        )
+    }
+}
+
+// The report's JSON has carried each joint as its label since it was first written:
+// programs that read it keep reading it.
+impl serde::Serialize for CollinearJoint {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_str(self)
+    }
+}
+
 /// Points where two moving links meet and lie on one line (within `tol_rad`): each
 /// link's direction is taken from the point to its next joint point.
-pub fn collinear_joints(k: &Kinematics, s: &Solution, tol_rad: f64) -> Vec<String> {
+pub fn collinear_joints(k: &Kinematics, s: &Solution, tol_rad: f64) -> Vec<CollinearJoint> {
     let m = k.mechanism();
     let other_joint = |link: LinkId, not: PointId| -> Option<Vec2> {
         m.links[link]
@@ -162,13 +194,11 @@ pub fn collinear_joints(k: &Kinematics, s: &Solution, tol_rad: f64) -> Vec<Strin
                 };
                 let angle = acute(&(pa - j), &(pb - j));
                 if angle <= tol_rad {
-                    found.push(format!(
-                        "{} ({}-{}, {:.4} deg)",
-                        point.name,
-                        m.links[a].name,
-                        m.links[b].name,
-                        angle.to_degrees()
-                    ));
+                    found.push(CollinearJoint {
+                        point: point.name.clone(),
+                        links: [m.links[a].name.clone(), m.links[b].name.clone()],
+                        angle_rad: angle,
+                    });
                 }
             }
         }
