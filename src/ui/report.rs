@@ -5,7 +5,7 @@ use eframe::egui;
 
 use linkage::analysis::Report;
 use linkage::scene::LengthUnit;
-use linkage_model::session::words::length;
+use linkage_model::session::words::{self, length};
 
 use crate::session::derived::Shown;
 use crate::state::AppState;
@@ -138,9 +138,9 @@ fn items(r: &Report, unit: LengthUnit) -> Vec<(String, String)> {
         out.push((
             format!("μ min = {:.2}°", t.min.to_degrees()),
             format!(
-                "at crank {:.2}° (group {}); max {:.2}° at crank {:.2}°",
+                "at crank {:.2}° ({}); max {:.2}° at crank {:.2}°",
                 t.at.to_degrees(),
-                t.group,
+                words::group(&t.group),
                 t.max.to_degrees(),
                 t.at_max.to_degrees()
             ),
@@ -174,7 +174,7 @@ fn items(r: &Report, unit: LengthUnit) -> Vec<(String, String)> {
     out
 }
 
-/// "crank 180.00°: RRR dyad (coupler, rocker) at C, B on D".
+/// "crank 180.00°: coupler and rocker, joined at C, B on D".
 fn branch_point_line(b: &linkage::branch_points::BranchPoint) -> String {
     let pairs: Vec<String> = b
         .coincident_joints
@@ -184,7 +184,7 @@ fn branch_point_line(b: &linkage::branch_points::BranchPoint) -> String {
     format!(
         "crank {:.2}°: {}{} (the chain may go on in either mode)",
         b.input_rad.to_degrees(),
-        b.group,
+        words::group(&b.group),
         pairs.concat()
     )
 }

@@ -472,3 +472,22 @@ fn phone_menu_and_synthesis(h: &mut Harness<'static, LinkageApp>) {
     assert!(h.state().panels.synthesis.is_open());
     h.snapshot("phone_390x844_synthesis");
 }
+
+/// The equation tables name each group as the user knows it, by its links and
+/// joint ("link_ce and die, joined at E"), not by the solver's dyad kind ("RRP dyad
+/// (link_ce, die) at E", as they did before issue 32).
+#[test]
+fn the_equation_tables_name_groups_by_their_links_not_dyad_kinds() {
+    let mut h = common::stateful_harness();
+    h.get_by_label("Velocity polygon: vector equations").click();
+    common::settle(&mut h);
+    assert!(
+        h.query_all_by_label_contains("joined at").next().is_some(),
+        "no group named by its joint"
+    );
+    let dyads: Vec<String> = h
+        .query_all_by_label_contains(" dyad (")
+        .map(|n| format!("{n:?}"))
+        .collect();
+    assert!(dyads.is_empty(), "a dyad kind in the tables: {dyads:?}");
+}

@@ -8,6 +8,7 @@
 use serde::Serialize;
 
 use crate::assembly::AssemblyRanges;
+use crate::dyad::GroupLabel;
 use crate::solve::Kinematics;
 
 /// Conditioning below which a grid minimum is refined.
@@ -21,7 +22,7 @@ pub struct BranchPoint {
     /// Input angle, rad (in [0, 2π)).
     pub input_rad: f64,
     /// The group whose modes meet, as [`Kinematics::group_name`] names it.
-    pub group: String,
+    pub group: GroupLabel,
     /// Pairs of joints that coincide there (empty when the links are stretched or
     /// folded straight instead).
     pub coincident_joints: Vec<[String; 2]>,

@@ -51,6 +51,33 @@ impl std::fmt::Display for DyadLabel {
     }
 }
 
+/// A group of the chain as a report names it: a dyad by its links and inner point,
+/// or, in a chain solved by Newton alone, its number. Written in a report as
+/// "RRR dyad (coupler, rocker) at C" or "group 2"; each edge words it its own way.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum GroupLabel {
+    /// A dyad of the closed-form decomposition.
+    Dyad(DyadLabel),
+    /// A group with no dyad to name, by its number.
+    Numbered(usize),
+}
+
+impl std::fmt::Display for GroupLabel {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Dyad(d) => d.fmt(f),
+            Self::Numbered(g) => write!(f, "group {g}"),
+        }
+    }
+}
+
+// Reports written as JSON have carried the label since they were first written.
+impl serde::Serialize for GroupLabel {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_str(self)
+    }
+}
+
 /// How a dyad that does not close falls short, in the mechanism's own terms: the
 /// points its user named and lengths in metres. What a refusal tells the user
 /// instead of an assembly margin.

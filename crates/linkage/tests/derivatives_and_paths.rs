@@ -4,6 +4,7 @@
 mod common;
 
 use common::{SCENES, cycle, kinematics, motion_scales, wrap};
+use linkage::dyad::{DyadKind, GroupLabel};
 use linkage::polygon::{Component, Quantity};
 use linkage::scene::SolverPath;
 use linkage::{Kinematics, Solution};
@@ -162,7 +163,10 @@ fn polygon_equations_close_and_show_coriolis() {
     let eqs = linkage::polygon::polygons(&k, &s);
     let acc = eqs
         .iter()
-        .find(|e| e.kind == Quantity::Acceleration && e.group.starts_with("RPR"))
+        .find(|e| {
+            e.kind == Quantity::Acceleration
+                && matches!(&e.group, GroupLabel::Dyad(d) if d.kind == DyadKind::Rpr)
+        })
         .expect("RPR accel");
     let cor = acc
         .rhs

@@ -5,6 +5,7 @@ use serde::Serialize;
 
 use super::TAU;
 use crate::assembly::AssemblyRanges;
+use crate::dyad::GroupLabel;
 use crate::ids::{LinkId, PointId};
 use crate::motion::{Solution, Vec2, cross, perp};
 use crate::roots_util::{refine, sign_changes};
@@ -23,7 +24,7 @@ pub struct TransmissionAngle {
     /// Input angle where the maximum occurs, rad.
     pub at_max: f64,
     /// The group where the minimum occurs.
-    pub group: String,
+    pub group: GroupLabel,
 }
 
 /// The two lines whose acute angle is a group's transmission angle, with their
@@ -80,7 +81,7 @@ pub fn transmission_angle(
 ) -> Option<TransmissionAngle> {
     let groups = k.group_count();
     let start = k.mechanism().driver.start_rad;
-    let names: Vec<String> = (0..groups).map(|g| k.group_name(g)).collect();
+    let names: Vec<GroupLabel> = (0..groups).map(|g| k.group_name(g)).collect();
     // (input, angle, group) over all groups: the extremes are taken over all of them.
     let mut all: Vec<(f64, f64, usize)> = Vec::new();
     let mut sol = k.empty_solution();

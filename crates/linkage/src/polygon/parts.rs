@@ -5,6 +5,7 @@ use std::fmt;
 
 use serde::{Serialize, Serializer};
 
+use crate::dyad::GroupLabel;
 use crate::motion::Vec2;
 
 /// Velocity or acceleration.
@@ -136,7 +137,7 @@ pub struct VectorEquation {
     /// Velocity or acceleration (in JSON `velocity`, `acceleration`).
     pub kind: Quantity,
     /// The group it solves.
-    pub group: String,
+    pub group: GroupLabel,
     /// The equation in symbols.
     pub equation: String,
     /// Left side terms.

@@ -2,6 +2,7 @@
 //! link's pivot, a point relative to another of its link, a point riding a guide.
 
 use super::parts::{Component, Quantity, Symbol, Term, VectorEquation};
+use crate::dyad::GroupLabel;
 use crate::ids::LinkId;
 use crate::model::Mechanism;
 use crate::motion::{PointMotion, Solution, Vec2, perp};
@@ -216,7 +217,7 @@ pub(super) fn riding(
 
 pub(super) fn equation(
     kind: Quantity,
-    group: String,
+    group: GroupLabel,
     lhs: Vec<Term>,
     rhs: Vec<Term>,
 ) -> VectorEquation {

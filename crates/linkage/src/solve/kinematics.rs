@@ -2,7 +2,7 @@
 //! named errors (the reachable input range included when a chain cannot assemble).
 
 use crate::assembly::AssemblyRanges;
-use crate::dyad::{DyadLabel, Shortfall};
+use crate::dyad::{DyadLabel, GroupLabel, Shortfall};
 use crate::error::{AssemblyFailure, LinkageError, Result};
 use crate::ids::LinkId;
 use crate::model::Mechanism;
@@ -345,7 +345,7 @@ impl Kinematics {
     pub fn group_conditioning(&mut self, input_rad: f64) -> Vec<(String, f64)> {
         let values = self.group_conditioning_values(input_rad);
         (0..values.len())
-            .map(|g| (self.group_name(g), values[g]))
+            .map(|g| (self.group_name(g).to_string(), values[g]))
             .collect()
     }
 
@@ -376,10 +376,11 @@ impl Kinematics {
         self.closed.as_ref()
     }
 
-    /// "RRR dyad (coupler, rocker) at C"; "group 2" in a chain without a closed form.
-    pub fn group_name(&self, g: usize) -> String {
+    /// Group `g` as a report names it: its dyad, or its number in a chain without a
+    /// closed form.
+    pub fn group_name(&self, g: usize) -> GroupLabel {
         self.dyad(g)
-            .map_or_else(|| format!("group {g}"), |d| d.to_string())
+            .map_or(GroupLabel::Numbered(g), GroupLabel::Dyad)
     }
 
     /// Group `g` of the closed-form decomposition as its user knows it; `None` in a
