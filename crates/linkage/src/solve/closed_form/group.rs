@@ -28,6 +28,10 @@ pub(crate) enum Group {
 impl Group {
     /// Solves the group from the already-known links. With `motion == false` only
     /// positions are computed (used for the assembly margin, also at singular points).
+    // Each kind's `solve` (rrr.rs, rrp.rs, rpr.rs, prp.rs, the cam follower) has this
+    // same signature, and the repeated lines are only that: a trait would add a
+    // dynamic or generic layer to the solver's innermost call for no shared body
+    // (the shared part of their endings is `Pair::rates`).
     #[inline(always)]
     pub(super) fn solve<T: Real>(
         &self,
