@@ -302,6 +302,9 @@ impl LinkageApp {
             ui::report::strip(ui, &self.state);
         }
         self.controls_pane(ui, ui::drawing_panel::panel);
+        // The tools' edits land before the canvas and the panes are laid out, as the
+        // controls' do in the viewer.
+        self.state.apply_commands();
         if complete {
             self.polygon_and_plot_panes(ui);
         }

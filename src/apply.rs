@@ -14,6 +14,8 @@ use crate::state::AppState;
 
 /// The file name a drawing is saved and shared under until the user names one.
 const DRAWING_FILE: &str = "my_mechanism.ron";
+/// The name of a drawing started from nothing.
+const NEW_DRAWING: &str = "My mechanism";
 
 impl AppState {
     /// Asks for `command`: the panels ask while they are laid out, and the app applies
@@ -42,7 +44,9 @@ impl AppState {
         let mut queue = std::mem::take(&mut self.commands.queue).into_iter();
         while let Some(command) = queue.next() {
             if self.apply(command) == Replaced::Yes {
-                // Scene edits asked of the old session mean nothing to the new one.
+                // Scene edits asked of the old session mean nothing to the new one. An
+                // undo or redo left in the queue finds the new session's history (empty
+                // after an open) or, while drawing, the drawing's.
                 let rest = queue.filter(|c| !matches!(c, Command::Edit(_)));
                 queue = rest.collect::<Vec<_>>().into_iter();
             }
@@ -59,7 +63,7 @@ impl AppState {
             Command::Open(session) if self.session.is_dirty() => self.ask(Waiting::Open(session)),
             Command::Open(session) => self.open_scene(*session),
             Command::StartDrawing if self.session.is_dirty() => self.ask(Waiting::Drawing),
-            Command::StartDrawing => self.resume_drawing(Drawing::new("My mechanism")),
+            Command::StartDrawing => self.resume_drawing(Drawing::new(NEW_DRAWING)),
             Command::DrawCurrent => self.draw_current(),
             Command::ResumeDrawing(drawing) => self.resume_drawing(*drawing),
             Command::Drawing(edit) => self.edit_drawing(edit),
@@ -84,7 +88,7 @@ impl AppState {
     fn answer(&mut self, drop_edits: bool) -> Replaced {
         match (drop_edits, self.commands.waiting.take()) {
             (true, Some(Waiting::Open(session))) => self.open_scene(*session),
-            (true, Some(Waiting::Drawing)) => self.resume_drawing(Drawing::new("My mechanism")),
+            (true, Some(Waiting::Drawing)) => self.resume_drawing(Drawing::new(NEW_DRAWING)),
             _ => Replaced::No,
         }
     }
@@ -118,7 +122,6 @@ impl AppState {
     }
 
     fn resume_drawing(&mut self, drawing: Drawing) -> Replaced {
-        self.commands.waiting = None;
         self.drawing = Some(DrawingEditor::new(drawing));
         self.play.playing = false;
         self.view.edit_points = false;

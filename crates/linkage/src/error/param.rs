@@ -1,6 +1,7 @@
 //! The parameter a refusal names ([`super::LinkageError::InvalidParameter`]), as
 //! data: a number of the scene file by its key, or one of the solver's arguments.
-//! `Display` gives the command line's words; the app's catalogue matches the variant.
+//! `Display` gives the command line's words; a catalogue (the app's, in another
+//! language) matches the variant instead.
 
 /// A parameter of a scene, an analysis or a design, named in a refusal.
 #[derive(Clone, Debug, PartialEq)]

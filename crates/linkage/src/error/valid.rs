@@ -1,6 +1,6 @@
 //! What a refused parameter must be ([`super::LinkageError::InvalidParameter`]), as
 //! data: the condition with its numbers. `Display` gives the command line's words;
-//! the app's catalogue matches the variant.
+//! a catalogue (the app's, in another language) matches the variant instead.
 
 /// The valid range or condition of a refused parameter.
 #[derive(Clone, Debug, PartialEq)]
@@ -167,7 +167,9 @@ pub enum Valid {
 }
 
 impl Valid {
-    /// The words of a condition with no number in it.
+    /// The words of a condition with no number in it; `None` for one that has
+    /// numbers (written by `fmt`). Every variant is named here, so that a new one
+    /// cannot go without words.
     fn plain_words(&self) -> Option<&'static str> {
         Some(match self {
             Self::Finite => "must be a finite number",
@@ -218,7 +220,21 @@ impl Valid {
             Self::FiniteDegrees => "a finite number of degrees",
             Self::Below90 => "0 to 90, exclusive of 90",
             Self::MoreThanZero => "more than 0",
-            _ => return None,
+            Self::AngleWithin { .. }
+            | Self::ArmReachesPrime { .. }
+            | Self::AtLeast(_)
+            | Self::AtMostSteps(_)
+            | Self::BaseCircleUpTo { .. }
+            | Self::BelowNoLoad { .. }
+            | Self::BelowPrimeCircle { .. }
+            | Self::Count { .. }
+            | Self::Exactly(_)
+            | Self::MustBeAtLeast(_)
+            | Self::OutputSamples { .. }
+            | Self::ShootingCloses { .. }
+            | Self::SolverTolerance { .. }
+            | Self::StepCount { .. }
+            | Self::StrokeBelow { .. } => return None,
         })
     }
 }
@@ -295,7 +311,7 @@ impl std::fmt::Display for Valid {
             Self::StrokeBelow { two_l_m } => {
                 write!(f, "must be in (0, 2L) = (0, {two_l_m}) m")
             }
-            // Every other condition has plain words, written above.
+            // Every other condition has plain words (`plain_words` names each).
             _ => Ok(()),
         }
     }

@@ -35,8 +35,8 @@ impl Solver<'_> {
     /// range), otherwise the shortest turn from the last input, so that a full cycle
     /// is continuous.
     pub(super) fn target(&self, input_rad: f64) -> Result<f64> {
-        let last = self.s.last_input.unwrap_or(input_rad);
-        let Some([lo, hi]) = self.s.range else {
+        let last = self.state.last_input.unwrap_or(input_rad);
+        let Some([lo, hi]) = self.state.range else {
             let delta = (input_rad - last + PI).rem_euclid(TAU) - PI;
             return Ok(last + delta);
         };
@@ -66,38 +66,38 @@ impl Solver<'_> {
     /// # Errors
     /// The start pose itself does not solve.
     pub(super) fn trace_range(&mut self, links: &mut [LinkMotion]) -> Result<Option<[f64; 2]>> {
-        let start = self.s.last_input.unwrap_or(0.0);
+        let start = self.state.last_input.unwrap_or(0.0);
         self.correct(start, links)?;
         self.update_derivatives(links)?;
         // Each way from a copy of the start state; the workspace carries nothing.
-        let mut forward = self.s.clone();
+        let mut forward = self.state.clone();
         let hi = match self
-            .from(&mut forward)
+            .over(&mut forward)
             .continue_to(start + TAU, links, FOLD_STEP)
         {
             Ok(()) => {
-                self.s.range = None;
+                self.state.range = None;
                 return Ok(None);
             }
             Err(stop) => stop.reached,
         };
-        let mut backward = self.s.clone();
+        let mut backward = self.state.clone();
         let lo = self
-            .from(&mut backward)
+            .over(&mut backward)
             .continue_to(start - TAU, links, FOLD_STEP)
             .map_or_else(|stop| stop.reached, |()| start - TAU)
             // A branch that does not come back to itself after a turn: one turn of it.
             .max(hi - TAU);
-        self.s.range = Some([lo, hi]);
-        Ok(self.s.range)
+        self.state.range = Some([lo, hi]);
+        Ok(self.state.range)
     }
 
     /// The same model and workspace over another continuation state.
-    pub(super) fn from<'b>(&'b mut self, state: &'b mut super::Continuation) -> Solver<'b> {
+    pub(super) fn over<'b>(&'b mut self, state: &'b mut super::Continuation) -> Solver<'b> {
         Solver {
-            m: self.m,
-            s: state,
-            w: &mut *self.w,
+            model: self.model,
+            state,
+            work: &mut *self.work,
         }
     }
 
@@ -111,7 +111,7 @@ impl Solver<'_> {
         links: &mut [LinkMotion],
         min_step: f64,
     ) -> std::result::Result<(), Stop> {
-        let mut at = self.s.last_input.unwrap_or(target);
+        let mut at = self.state.last_input.unwrap_or(target);
         let mut h = (target - at).signum() * CONTINUATION_STEP.min((target - at).abs());
         while at != target {
             let remaining = target - at;
@@ -121,7 +121,7 @@ impl Solver<'_> {
             match self.step(at, h, links) {
                 Ok(true) => {
                     at += h;
-                    if self.s.steady_steps >= STEPS_BEFORE_GROWTH
+                    if self.state.steady_steps >= STEPS_BEFORE_GROWTH
                         && 2.0 * h.abs() <= CONTINUATION_STEP
                     {
                         h *= 2.0;
@@ -132,7 +132,7 @@ impl Solver<'_> {
                 Err(error) => {
                     h *= 0.5;
                     if h.abs() < min_step {
-                        self.s.last_input = Some(at);
+                        self.state.last_input = Some(at);
                         return Err(Stop { reached: at, error });
                     }
                 }
@@ -141,7 +141,7 @@ impl Solver<'_> {
                 at = target;
             }
         }
-        self.s.last_input = Some(target);
+        self.state.last_input = Some(target);
         Ok(())
     }
 
@@ -149,39 +149,41 @@ impl Solver<'_> {
     /// the predictor says it is too long, an error when the correction fails or lands
     /// on the other assembly mode (the state is then restored to `at`).
     pub(super) fn step(&mut self, at: f64, h: f64, links: &mut [LinkMotion]) -> Result<bool> {
-        let saved_sign = self.s.det_sign;
-        self.w.saved.0.copy_from(&self.s.q);
-        self.w.saved.1.copy_from(&self.s.dq);
-        self.w.saved.2.copy_from(&self.s.ddq);
+        let saved_sign = self.state.det_sign;
+        self.work.saved.0.copy_from(&self.state.q);
+        self.work.saved.1.copy_from(&self.state.dq);
+        self.work.saved.2.copy_from(&self.state.ddq);
         // Third-order predictor q + q' h + q'' h²/2 + q''' h³/6, built in place: its
         // error of order h⁴ lets one chord step usually reach the tolerance (with the
         // h² term alone it took two).
-        self.w.increment.copy_from(&self.s.dq);
-        self.w.increment *= h;
-        self.w.increment.axpy(0.5 * h * h, &self.s.ddq, 1.0);
-        self.w.increment.axpy(h * h * h / 6.0, &self.s.jerk, 1.0);
+        self.work.increment.copy_from(&self.state.dq);
+        self.work.increment *= h;
+        self.work.increment.axpy(0.5 * h * h, &self.state.ddq, 1.0);
+        self.work
+            .increment
+            .axpy(h * h * h / 6.0, &self.state.jerk, 1.0);
         // Near a dead point the derivatives blow up: a large predicted change means the
         // step is too long for the branch to be followed safely.
         if self.relative_increment() > MAX_PREDICTED_CHANGE && h.abs() >= 2e-7 {
             return Ok(false);
         }
-        self.s.q += &self.w.increment;
+        self.state.q += &self.work.increment;
         let ok = self
             .correct(at + h, links)
             .and_then(|_| self.update_derivatives(links));
         // The sign of det J flips exactly where the solution passes to the other
         // assembly mode: refuse that step.
-        let jumped = saved_sign != 0.0 && self.s.det_sign != saved_sign;
+        let jumped = saved_sign != 0.0 && self.state.det_sign != saved_sign;
         if ok.is_err() || jumped {
-            self.s.q.copy_from(&self.w.saved.0);
-            self.s.dq.copy_from(&self.w.saved.1);
-            self.s.ddq.copy_from(&self.w.saved.2);
-            self.s.det_sign = saved_sign;
+            self.state.q.copy_from(&self.work.saved.0);
+            self.state.dq.copy_from(&self.work.saved.1);
+            self.state.ddq.copy_from(&self.work.saved.2);
+            self.state.det_sign = saved_sign;
             // The factorization belongs to the failed pose: start the retry fresh.
-            self.s.lu.invalidate();
+            self.state.lu.invalidate();
             // Near a dead point q''' is not worth extrapolating.
-            self.s.jerk.fill(0.0);
-            self.s.steady_steps = 0;
+            self.state.jerk.fill(0.0);
+            self.state.steady_steps = 0;
             return Err(match ok {
                 Err(e) => e,
                 Ok(()) => LinkageError::BranchJump {
@@ -189,30 +191,28 @@ impl Solver<'_> {
                 },
             });
         }
-        if self.s.steady_steps > 0 {
+        if self.state.steady_steps > 0 {
             // q''' ≈ (q''(at + h) - q''(at)) / h.
-            self.s.jerk.copy_from(&self.s.ddq);
-            self.s.jerk.axpy(-1.0 / h, &self.w.saved.2, 1.0 / h);
+            self.state.jerk.copy_from(&self.state.ddq);
+            self.state.jerk.axpy(-1.0 / h, &self.work.saved.2, 1.0 / h);
         }
-        self.s.steady_steps = self.s.steady_steps.saturating_add(1);
+        self.state.steady_steps = self.state.steady_steps.saturating_add(1);
         self.wrap_angles();
         Ok(true)
     }
-}
 
-impl Solver<'_> {
     /// The largest predicted change of a coordinate: rad for a turning joint, and for
     /// a sliding one metres over the mechanism's size, so that steps are cut alike at
     /// every scale.
     pub(super) fn relative_increment(&self) -> f64 {
-        self.m
+        self.model
             .tree
             .iter()
             .skip(1)
-            .zip(self.w.increment.iter())
+            .zip(self.work.increment.iter())
             .map(|(t, dq)| match t.kind {
                 super::TreeKind::Revolute { .. } => dq.abs(),
-                super::TreeKind::Prismatic { .. } => dq.abs() / self.m.size_m,
+                super::TreeKind::Prismatic { .. } => dq.abs() / self.model.size_m,
             })
             .fold(0.0, f64::max)
     }

@@ -30,7 +30,7 @@ impl Solver<'_> {
     /// (rad, or metres per metre of the mechanism's size).
     pub(super) fn cam_residuals(&self, links: &[LinkMotion], out: &mut [f64], first: usize) -> f64 {
         let mut worst: f64 = 0.0;
-        for (j, cam) in self.m.cams.iter().enumerate() {
+        for (j, cam) in self.model.cams.iter().enumerate() {
             let lift = cam.follower_at(links[cam.cam].angle_rad()).s;
             let gap = coordinate(cam, links) - lift;
             let (r, relative) = match cam.guide {
@@ -39,7 +39,7 @@ impl Solver<'_> {
                     let gap = unwrap_near(gap, 0.0);
                     (gap, gap)
                 }
-                FollowerGuide::Slide { .. } => (gap, gap / self.m.size_m),
+                FollowerGuide::Slide { .. } => (gap, gap / self.model.size_m),
             };
             out[first + j] = r;
             worst = worst.max(relative.abs());
@@ -49,8 +49,8 @@ impl Solver<'_> {
 
     /// The cam rows of the Jacobian (from row `first`), and of the driver's column.
     pub(super) fn cam_jacobian_rows(&mut self, links: &[LinkMotion], first: usize) {
-        for j in 0..self.m.cams.len() {
-            let cam = &self.m.cams[j];
+        for j in 0..self.model.cams.len() {
+            let cam = &self.model.cams[j];
             let slope = cam.follower_at(links[cam.cam].angle_rad()).v;
             let on_follower = match &cam.guide {
                 FollowerGuide::Slide { slider_local, .. } => {
@@ -60,7 +60,7 @@ impl Solver<'_> {
             };
             let centre = cam.centre;
             let (follower, cam_link, guide) = (cam.follower, cam.cam, cam.guide.clone());
-            for k in 0..self.m.tree.len() {
+            for k in 0..self.model.tree.len() {
                 let (v, w) = self.unit_rate(k, follower, &on_follower);
                 let rate = match &guide {
                     FollowerGuide::Arm { .. } => w,
@@ -69,9 +69,9 @@ impl Solver<'_> {
                 let cam_rate = self.unit_rate(k, cam_link, &centre).1;
                 let entry = rate - slope * cam_rate;
                 if k == 0 {
-                    self.w.rates[first + j] = entry;
+                    self.work.rates[first + j] = entry;
                 } else {
-                    self.w.jac[(first + j, k - 1)] = entry;
+                    self.work.jac[(first + j, k - 1)] = entry;
                 }
             }
         }
@@ -80,7 +80,7 @@ impl Solver<'_> {
     /// The cam rows' acceleration bias (from row `first` of `out`), after a motion
     /// pass with the coordinates' second derivatives zero.
     pub(super) fn cam_accelerations(&self, links: &[LinkMotion], out: &mut [f64], first: usize) {
-        for (j, cam) in self.m.cams.iter().enumerate() {
+        for (j, cam) in self.model.cams.iter().enumerate() {
             let c = &links[cam.cam];
             let m = cam.follower_at(c.angle_rad());
             let f = &links[cam.follower];

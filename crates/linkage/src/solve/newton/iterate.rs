@@ -28,14 +28,14 @@ impl Solver<'_> {
             ));
         }
         let target = self.target(input_rad)?;
-        if self.s.last_input == Some(target) {
+        if self.state.last_input == Some(target) {
             // The same input again (or the pose was just set): correct in place.
             self.correct(target, links)?;
             self.update_derivatives(links)?;
         } else {
             // Inside a traced range the branch is known to reach its folds: follow it
             // as close to them as the trace did.
-            let min_step = if self.s.range.is_some() {
+            let min_step = if self.state.range.is_some() {
                 FOLD_STEP
             } else {
                 MIN_STEP
@@ -47,23 +47,23 @@ impl Solver<'_> {
         let w = speed_rad_s;
         self.motion_pass(
             links,
-            |k| if k == 0 { w } else { w * self.s.dq[k - 1] },
+            |k| if k == 0 { w } else { w * self.state.dq[k - 1] },
             |k| {
                 if k == 0 {
                     0.0
                 } else {
-                    w * w * self.s.ddq[k - 1]
+                    w * w * self.state.ddq[k - 1]
                 }
             },
         );
-        Ok(self.s.conditioning)
+        Ok(self.state.conditioning)
     }
 
     /// Newton iterations at fixed input from the current `q`.
     pub(super) fn correct(&mut self, input: f64, links: &mut [LinkMotion]) -> Result<()> {
-        let mut res = std::mem::take(&mut self.w.res_buf);
+        let mut res = std::mem::take(&mut self.work.res_buf);
         let outcome = self.iterate(input, links, &mut res);
-        self.w.res_buf = res;
+        self.work.res_buf = res;
         outcome
     }
 
@@ -80,8 +80,8 @@ impl Solver<'_> {
         res: &mut [f64],
     ) -> Result<()> {
         let mut previous = f64::INFINITY;
-        let mut fresh = !self.s.lu.is_valid();
-        for iter in 0..=self.m.max_iterations {
+        let mut fresh = !self.state.lu.is_valid();
+        for iter in 0..=self.model.max_iterations {
             self.position_pass(input, links);
             let worst = self.residual(links, res);
             // Growing residual after a few steps: diverging (no solution near here).
@@ -90,19 +90,19 @@ impl Solver<'_> {
             }
             let slow = worst > 0.1 * previous;
             previous = worst;
-            if worst <= self.m.tolerance {
-                self.s.last_iterations = iter;
+            if worst <= self.model.tolerance {
+                self.state.last_iterations = iter;
                 return Ok(());
             }
-            if iter == self.m.max_iterations {
+            if iter == self.model.max_iterations {
                 return Err(self.diverged(input, iter, worst));
             }
             if !fresh && (slow || iter >= 3) {
-                self.s.lu.invalidate();
+                self.state.lu.invalidate();
                 // Judge divergence from here on by true Newton steps only.
                 previous = f64::INFINITY;
             }
-            if !self.s.lu.is_valid() {
+            if !self.state.lu.is_valid() {
                 self.refactor(links);
                 fresh = true;
             }
@@ -119,22 +119,22 @@ impl Solver<'_> {
                     reason: Singularity::LoopJacobian,
                 });
             }
-            self.s.q += &self.w.rhs;
+            self.state.q += &self.work.rhs;
             // Near a dead point J is ill-conditioned and the residual floor can sit above
             // the tolerance; a step at round-off level means Newton has converged anyway.
-            if fresh && self.w.rhs.amax() <= 4.0 * f64::EPSILON * (1.0 + self.s.q.amax()) {
+            if fresh && self.work.rhs.amax() <= 4.0 * f64::EPSILON * (1.0 + self.state.q.amax()) {
                 self.position_pass(input, links);
                 // ...but only at a solution: outside the assembly range Newton also
                 // stalls, at a least-residual pose that closes nothing.
                 let worst = self.residual(links, res);
-                if worst <= self.m.stall_residual {
-                    self.s.last_iterations = iter + 1;
+                if worst <= self.model.stall_residual {
+                    self.state.last_iterations = iter + 1;
                     return Ok(());
                 }
                 return Err(self.diverged(input, iter + 1, worst));
             }
         }
-        Err(self.diverged(input, self.m.max_iterations, f64::NAN))
+        Err(self.diverged(input, self.model.max_iterations, f64::NAN))
     }
 
     /// Newton did not reach the tolerance at `input`.
@@ -143,56 +143,60 @@ impl Solver<'_> {
             input_deg: input.to_degrees(),
             iterations,
             residual,
-            tolerance: self.m.tolerance,
+            tolerance: self.model.tolerance,
         }
     }
 
     /// Builds and factors the Jacobian at the current positions.
     pub(super) fn refactor(&mut self, links: &mut [LinkMotion]) {
         self.build_jacobian(links);
-        self.s.lu.factor(&self.w.jac);
+        self.state.lu.factor(&self.work.jac);
     }
 
-    /// Solves `J Δ = −res` into `self.w.rhs` with the held factorization; false if singular.
+    /// Solves `J Δ = −res` into `self.work.rhs` with the held factorization; false if singular.
     pub(super) fn newton_step(&mut self, res: &[f64]) -> bool {
-        self.w.rhs.iter_mut().zip(res).for_each(|(r, v)| *r = -v);
-        self.s.lu.solve_mut(&mut self.w.rhs)
+        self.work.rhs.iter_mut().zip(res).for_each(|(r, v)| *r = -v);
+        self.state.lu.solve_mut(&mut self.work.rhs)
     }
 
     /// Computes dq/d(input) and d²q/d(input)² at the converged pose.
     pub(super) fn update_derivatives(&mut self, links: &mut [LinkMotion]) -> Result<()> {
-        let n = self.s.q.len();
+        let n = self.state.q.len();
         self.build_jacobian(links);
-        self.s.lu.factor(&self.w.jac);
-        let det = self.s.lu.determinant();
-        self.s.det_sign = det.signum();
-        let norms: f64 = self.w.jac.column_iter().map(|c| c.norm()).product();
-        self.s.conditioning = if norms > 0.0 {
+        self.state.lu.factor(&self.work.jac);
+        let det = self.state.lu.determinant();
+        self.state.det_sign = det.signum();
+        let norms: f64 = self.work.jac.column_iter().map(|c| c.norm()).product();
+        self.state.conditioning = if norms > 0.0 {
             (det.abs() / norms).min(1.0)
         } else {
             1.0
         };
         for r in 0..n {
-            self.w.rhs[r] = -self.w.rates[r];
+            self.work.rhs[r] = -self.work.rates[r];
         }
-        if !self.s.lu.solve_mut(&mut self.w.rhs) {
+        if !self.state.lu.solve_mut(&mut self.work.rhs) {
             return Err(LinkageError::Singular {
-                input_deg: self.s.last_input.unwrap_or(0.0).to_degrees(),
+                input_deg: self.state.last_input.unwrap_or(0.0).to_degrees(),
                 reason: Singularity::InputDeadPoint,
             });
         }
-        self.s.dq.copy_from(&self.w.rhs);
+        self.state.dq.copy_from(&self.work.rhs);
         self.motion_pass(
             links,
-            |k| if k == 0 { 1.0 } else { self.s.dq[k - 1] },
+            |k| if k == 0 { 1.0 } else { self.state.dq[k - 1] },
             |_| 0.0,
         );
-        let mut bias = std::mem::take(&mut self.w.col_buf);
+        let mut bias = std::mem::take(&mut self.work.col_buf);
         self.cut_accelerations(links, &mut bias);
-        self.w.rhs.iter_mut().zip(&bias).for_each(|(r, b)| *r = -b);
-        self.w.col_buf = bias;
-        self.s.lu.solve_mut(&mut self.w.rhs);
-        self.s.ddq.copy_from(&self.w.rhs);
+        self.work
+            .rhs
+            .iter_mut()
+            .zip(&bias)
+            .for_each(|(r, b)| *r = -b);
+        self.work.col_buf = bias;
+        self.state.lu.solve_mut(&mut self.work.rhs);
+        self.state.ddq.copy_from(&self.work.rhs);
         Ok(())
     }
 }

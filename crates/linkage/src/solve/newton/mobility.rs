@@ -22,31 +22,31 @@ impl Solver<'_> {
     /// constraint Jacobian's rank at the current coordinates and at a shaken copy of
     /// them (the poses need not close: the rank is generic).
     pub(super) fn mobility(&mut self, input: f64, links: &mut [LinkMotion]) -> usize {
-        let saved = self.s.q.clone();
+        let saved = self.state.q.clone();
         let mut least = usize::MAX;
         for shake in [0.0, 0.37] {
-            for (k, t) in self.m.tree.iter().enumerate().skip(1) {
+            for (k, t) in self.model.tree.iter().enumerate().skip(1) {
                 if matches!(t.kind, TreeKind::Revolute { .. }) {
-                    self.s.q[k - 1] = saved[k - 1] + shake * (k as f64).sin();
+                    self.state.q[k - 1] = saved[k - 1] + shake * (k as f64).sin();
                 }
             }
             self.position_pass(input + shake, links);
             self.build_jacobian(links);
             least = least.min(self.null_space_dimension());
         }
-        self.s.q.copy_from(&saved);
-        self.s.lu.invalidate();
+        self.state.q.copy_from(&saved);
+        self.state.lu.invalidate();
         least
     }
 
     /// Dimension of the null space of [driver column | J] as last built.
     pub(super) fn null_space_dimension(&self) -> usize {
-        let (rows, n) = (self.w.jac.nrows(), self.w.jac.ncols());
+        let (rows, n) = (self.work.jac.nrows(), self.work.jac.ncols());
         let full = DMatrix::from_fn(rows, n + 1, |r, c| {
             if c == 0 {
-                self.w.rates[r]
+                self.work.rates[r]
             } else {
-                self.w.jac[(r, c - 1)]
+                self.work.jac[(r, c - 1)]
             }
         });
         let values = full.singular_values();

@@ -84,9 +84,9 @@ const FOLD_STEP: f64 = 1e-10;
 /// One solve's view of the three parts: the model read, the continuation advanced,
 /// the workspace written over.
 struct Solver<'a> {
-    m: &'a NewtonModel,
-    s: &'a mut Continuation,
-    w: &'a mut NewtonWorkspace,
+    model: &'a NewtonModel,
+    state: &'a mut Continuation,
+    work: &'a mut NewtonWorkspace,
 }
 
 /// Newton–Raphson position solver with velocity and acceleration from the Jacobian:

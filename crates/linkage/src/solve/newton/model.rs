@@ -164,8 +164,16 @@ impl NewtonModel {
         self.solver(state, work).mobility(input, links)
     }
 
-    fn solver<'a>(&'a self, s: &'a mut Continuation, w: &'a mut NewtonWorkspace) -> Solver<'a> {
-        Solver { m: self, s, w }
+    fn solver<'a>(
+        &'a self,
+        state: &'a mut Continuation,
+        work: &'a mut NewtonWorkspace,
+    ) -> Solver<'a> {
+        Solver {
+            model: self,
+            state,
+            work,
+        }
     }
 }
 

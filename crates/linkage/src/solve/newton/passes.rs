@@ -10,9 +10,9 @@ impl Solver<'_> {
     /// Keeps joint angles in (-π, π]: they only enter through sin/cos, and a large
     /// angle would cost digits there.
     pub(super) fn wrap_angles(&mut self) {
-        for (k, t) in self.m.tree.iter().enumerate().skip(1) {
+        for (k, t) in self.model.tree.iter().enumerate().skip(1) {
             if matches!(t.kind, TreeKind::Revolute { .. }) {
-                let q = &mut self.s.q[k - 1];
+                let q = &mut self.state.q[k - 1];
                 *q -= (*q / std::f64::consts::TAU).round() * std::f64::consts::TAU;
             }
         }
@@ -20,10 +20,10 @@ impl Solver<'_> {
 
     /// Places every link for coordinates `q` (driver angle `input`); velocities untouched.
     pub(super) fn position_pass(&mut self, input: f64, links: &mut [LinkMotion]) {
-        links[self.m.ground] = LinkMotion::default();
-        for k in 0..self.m.tree.len() {
-            let q = if k == 0 { input } else { self.s.q[k - 1] };
-            let t = &self.m.tree[k];
+        links[self.model.ground] = LinkMotion::default();
+        for k in 0..self.model.tree.len() {
+            let q = if k == 0 { input } else { self.state.q[k - 1] };
+            let t = &self.model.tree[k];
             let parent = links[t.parent];
             let child = &mut links[t.child];
             match &t.kind {
@@ -32,9 +32,9 @@ impl Solver<'_> {
                     on_child,
                 } => {
                     let j = parent.world(on_parent);
-                    child.rotation = parent.rotation * self.s.turns[k].to(q, k == 0);
+                    child.rotation = parent.rotation * self.state.turns[k].to(q, k == 0);
                     child.origin.position = j - child.rotation * on_child;
-                    self.w.contacts[k] = j;
+                    self.work.contacts[k] = j;
                 }
                 TreeKind::Prismatic {
                     slide,
@@ -44,7 +44,7 @@ impl Solver<'_> {
                     let p = parent.world(&slide.through_local) + u * q;
                     child.rotation = parent.rotation * slide.relative;
                     child.origin.position = p - child.rotation * slide.slider_local;
-                    (self.w.contacts[k], self.w.guides[k]) = (p, u);
+                    (self.work.contacts[k], self.work.guides[k]) = (p, u);
                 }
                 TreeKind::Prismatic {
                     slide,
@@ -54,7 +54,7 @@ impl Solver<'_> {
                     let u = child.rotation * slide.direction_local;
                     let through = parent.world(&slide.slider_local) - u * q;
                     child.origin.position = through - child.rotation * slide.through_local;
-                    (self.w.contacts[k], self.w.guides[k]) = (through, u);
+                    (self.work.contacts[k], self.work.guides[k]) = (through, u);
                 }
             }
         }
@@ -68,8 +68,8 @@ impl Solver<'_> {
         rate: impl Fn(usize) -> f64,
         accel: impl Fn(usize) -> f64,
     ) {
-        links[self.m.ground] = LinkMotion::default();
-        for (k, t) in self.m.tree.iter().enumerate() {
+        links[self.model.ground] = LinkMotion::default();
+        for (k, t) in self.model.tree.iter().enumerate() {
             let parent = links[t.parent];
             let (qd, qdd) = (rate(k), accel(k));
             let child = &mut links[t.child];
@@ -78,7 +78,7 @@ impl Solver<'_> {
                     parent.omega_rad_s + qd,
                     parent.alpha_rad_s2 + qdd,
                     *on_child,
-                    parent.material_point_at(&self.w.contacts[k]),
+                    parent.material_point_at(&self.work.contacts[k]),
                 ),
                 TreeKind::Prismatic {
                     slide,
@@ -89,13 +89,13 @@ impl Solver<'_> {
                     } else {
                         (-1.0, slide.through_local)
                     };
-                    let base = parent.material_point_at(&self.w.contacts[k]);
+                    let base = parent.material_point_at(&self.work.contacts[k]);
                     let pin = PointMotion {
-                        position: self.w.contacts[k],
-                        velocity: base.velocity + self.w.guides[k] * (sign * qd),
+                        position: self.work.contacts[k],
+                        velocity: base.velocity + self.work.guides[k] * (sign * qd),
                         acceleration: base.acceleration
-                            + perp(&self.w.guides[k]) * (2.0 * parent.omega_rad_s * sign * qd)
-                            + self.w.guides[k] * (sign * qdd),
+                            + perp(&self.work.guides[k]) * (2.0 * parent.omega_rad_s * sign * qd)
+                            + self.work.guides[k] * (sign * qdd),
                     };
                     (parent.omega_rad_s, parent.alpha_rad_s2, local, pin)
                 }
@@ -107,8 +107,8 @@ impl Solver<'_> {
     /// Cut-joint residuals (positions), written to `out`; returns the max-norm.
     pub(super) fn residual(&self, links: &[LinkMotion], out: &mut [f64]) -> f64 {
         let mut worst: f64 = 0.0;
-        let per_m = 1.0 / self.m.size_m;
-        for (c, cut) in self.m.cuts.iter().enumerate() {
+        let per_m = 1.0 / self.model.size_m;
+        for (c, cut) in self.model.cuts.iter().enumerate() {
             let (r0, r1) = match cut {
                 Cut::Revolute {
                     a,
@@ -135,13 +135,13 @@ impl Solver<'_> {
             };
             worst = worst.max(r0.abs() * per_m).max(r1_relative.abs());
         }
-        worst.max(self.cam_residuals(links, out, 2 * self.m.cuts.len()))
+        worst.max(self.cam_residuals(links, out, 2 * self.model.cuts.len()))
     }
 
     /// Second time derivative of the cut residuals (the acceleration bias `b` when the
     /// coordinates' second derivatives are zero).
     pub(super) fn cut_accelerations(&self, links: &[LinkMotion], out: &mut [f64]) {
-        for (c, cut) in self.m.cuts.iter().enumerate() {
+        for (c, cut) in self.model.cuts.iter().enumerate() {
             let (r0, r1) = match cut {
                 Cut::Revolute {
                     a,
@@ -171,7 +171,7 @@ impl Solver<'_> {
             out[2 * c] = r0;
             out[2 * c + 1] = r1;
         }
-        self.cam_accelerations(links, out, 2 * self.m.cuts.len());
+        self.cam_accelerations(links, out, 2 * self.model.cuts.len());
     }
 
     /// Velocity of the material point at `p` of `link`, and the link's angular
@@ -179,27 +179,27 @@ impl Solver<'_> {
     /// a turn about the joint or a slide along its guide, if `k` carries the link.
     #[inline]
     pub(super) fn unit_rate(&self, k: usize, link: LinkId, p: &Vec2) -> (Vec2, f64) {
-        if !self.m.moved_by[link.index() * self.m.tree.len() + k] {
+        if !self.model.moved_by[link.index() * self.model.tree.len() + k] {
             return (Vec2::zeros(), 0.0);
         }
-        let t = &self.m.tree[k];
+        let t = &self.model.tree[k];
         match &t.kind {
-            TreeKind::Revolute { .. } => (perp(&(p - self.w.contacts[k])), 1.0),
+            TreeKind::Revolute { .. } => (perp(&(p - self.work.contacts[k])), 1.0),
             TreeKind::Prismatic {
                 parent_is_guide, ..
             } => (
-                self.w.guides[k] * if *parent_is_guide { 1.0 } else { -1.0 },
+                self.work.guides[k] * if *parent_is_guide { 1.0 } else { -1.0 },
                 0.0,
             ),
         }
     }
 
     /// Jacobian of the cut residuals at the current positions (columns: unknowns) and,
-    /// in `self.w.rates`, the driver's column. Each column is the cut joints' relative
+    /// in `self.work.rates`, the driver's column. Each column is the cut joints' relative
     /// velocity for a unit rate of one tree joint, written directly from the joint
     /// points (what a velocity pass with that one rate would give, without the pass).
     pub(super) fn build_jacobian(&mut self, links: &[LinkMotion]) {
-        for (c, cut) in self.m.cuts.iter().enumerate() {
+        for (c, cut) in self.model.cuts.iter().enumerate() {
             // The cut's points and guide direction are the same for every column.
             let (first, second, guide_dir) = match cut {
                 Cut::Revolute {
@@ -218,7 +218,7 @@ impl Solver<'_> {
                     Some(links[s.guide].rotation * s.direction_local),
                 ),
             };
-            for k in 0..self.m.tree.len() {
+            for k in 0..self.model.tree.len() {
                 let (v_first, w_first) = self.unit_rate(k, first.0, &first.1);
                 let (v_second, w_second) = self.unit_rate(k, second.0, &second.1);
                 let (r0, r1) = match guide_dir {
@@ -232,14 +232,14 @@ impl Solver<'_> {
                     ),
                 };
                 if k == 0 {
-                    self.w.rates[2 * c] = r0;
-                    self.w.rates[2 * c + 1] = r1;
+                    self.work.rates[2 * c] = r0;
+                    self.work.rates[2 * c + 1] = r1;
                 } else {
-                    self.w.jac[(2 * c, k - 1)] = r0;
-                    self.w.jac[(2 * c + 1, k - 1)] = r1;
+                    self.work.jac[(2 * c, k - 1)] = r0;
+                    self.work.jac[(2 * c + 1, k - 1)] = r1;
                 }
             }
         }
-        self.cam_jacobian_rows(links, 2 * self.m.cuts.len());
+        self.cam_jacobian_rows(links, 2 * self.model.cuts.len());
     }
 }
