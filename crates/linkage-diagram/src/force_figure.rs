@@ -4,6 +4,7 @@
 //! diagonal — in newtons, laid out by the same code as the velocity polygons.
 
 use linkage::Mechanism;
+use linkage::dyad::{DyadKind, DyadLabel};
 use linkage::force_polygon::{CoupleTerm, ForceVector, Stage, StagePolygon, SymbolParts};
 
 use crate::figure::{ArrowStyle, Figure, Vertex};
@@ -129,18 +130,25 @@ pub fn stage_title(stage: &StagePolygon, m: &Mechanism) -> String {
         .collect();
     match &stage.stage {
         Stage::Group { dyad, .. } => {
-            let [a, b] = &dyad.links;
-            let links = numbers.join(", ");
-            if dyad.kind == linkage::dyad::DyadKind::CamFollower {
-                format!("{a}, on the cam at {} (link {links})", dyad.inner_point)
+            let noun = if dyad.kind == DyadKind::CamFollower {
+                "link"
             } else {
-                format!(
-                    "{a} and {b}, joined at {} (links {links})",
-                    dyad.inner_point
-                )
-            }
+                "links"
+            };
+            format!("{} ({noun} {})", dyad_words(dyad), numbers.join(", "))
         }
         Stage::Crank { link } => format!("{} (link {})", m.links[*link].name, numbers.join("")),
+    }
+}
+
+/// A dyad by its links and joint, as the user knows it: "coupler and rocker, joined
+/// at C", or a cam's follower "follower, on the cam at F"; never the solver's kind.
+pub fn dyad_words(dyad: &DyadLabel) -> String {
+    let [a, b] = &dyad.links;
+    if dyad.kind == DyadKind::CamFollower {
+        format!("{a}, on the cam at {}", dyad.inner_point)
+    } else {
+        format!("{a} and {b}, joined at {}", dyad.inner_point)
     }
 }
 

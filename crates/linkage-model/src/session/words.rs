@@ -4,7 +4,7 @@
 
 use linkage::LinkageError;
 use linkage::assembly::AssemblyRanges;
-use linkage::dyad::{DyadKind, DyadLabel, GroupLabel, Shortfall};
+use linkage::dyad::{DyadLabel, GroupLabel, Shortfall};
 use linkage::error::{AssemblyFailure, RunRefusal, RunWarning, StabilityLimit};
 use linkage::scene::LengthUnit;
 pub use linkage_diagram::numbers::significant;
@@ -25,16 +25,10 @@ pub fn unit_label_of(unit: linkage::scene::LengthUnit) -> &'static str {
 }
 
 /// A group of the chain by its links and joint ("coupler and rocker, joined at C"),
-/// not by the solver's dyad kind.
+/// in the words of the force polygons' titles, not by the solver's dyad kind.
 pub fn group(label: &GroupLabel) -> String {
     match label {
-        GroupLabel::Dyad(d) if d.kind == DyadKind::CamFollower => {
-            format!("the follower {} at {}", d.links[0], d.inner_point)
-        }
-        GroupLabel::Dyad(d) => {
-            let [a, b] = &d.links;
-            format!("{a} and {b}, joined at {}", d.inner_point)
-        }
+        GroupLabel::Dyad(d) => linkage_diagram::force_figure::dyad_words(d),
         GroupLabel::Numbered(g) => format!("group {g}"),
     }
 }

@@ -115,16 +115,6 @@ impl Newton {
         Ok(Self { model, state, work })
     }
 
-    /// The model, fixed once built.
-    pub fn model(&self) -> &NewtonModel {
-        &self.model
-    }
-
-    /// The continuation state the next solve starts from.
-    pub fn continuation(&self) -> &Continuation {
-        &self.state
-    }
-
     /// Number of unknown coordinates.
     pub fn unknowns(&self) -> usize {
         self.model.unknowns()

@@ -31,9 +31,6 @@ pub struct NewtonModel {
     /// 50 µm chain converges exactly as its 50 m twin does.
     pub(super) size_m: f64,
     pub(super) max_iterations: usize,
-    unknowns: usize,
-    equations: usize,
-    joints: usize,
 }
 
 impl NewtonModel {
@@ -41,7 +38,7 @@ impl NewtonModel {
     ///
     /// # Errors
     /// A tolerance that is not finite and positive; a chain with unconnected links or
-    /// with as many equations as unknowns missing.
+    /// whose loop equations do not match its unknowns.
     pub fn new(m: &Mechanism, tolerance: f64, max_iterations: usize) -> Result<Self> {
         if !(tolerance.is_finite() && tolerance > 0.0) {
             return Err(LinkageError::invalid(
@@ -60,7 +57,6 @@ impl NewtonModel {
             }));
         }
         let moved_by = moved_by(&tree, m.links.len());
-        let joints = tree.len();
         Ok(Self {
             tree,
             moved_by,
@@ -71,28 +67,25 @@ impl NewtonModel {
             stall_residual: 1e-12,
             size_m: m.size_m,
             max_iterations,
-            unknowns,
-            equations,
-            joints,
         })
     }
 
     /// Number of unknown coordinates.
     pub fn unknowns(&self) -> usize {
-        self.unknowns
+        self.tree.len() - 1
     }
 
     /// The state at a full set of link poses `links` at `input_rad` (from the closed
     /// form or the scene's guesses): the branch the solves then follow.
     pub fn start(&self, links: &[LinkMotion], input_rad: f64) -> Continuation {
-        let mut state = Continuation::zeros(self.unknowns, self.joints);
+        let mut state = Continuation::zeros(self.unknowns(), self.tree.len());
         self.set_pose(&mut state, links, input_rad);
         state
     }
 
     /// Buffers for solving this model.
     pub fn workspace(&self) -> NewtonWorkspace {
-        NewtonWorkspace::new(self.unknowns, self.equations, self.joints)
+        NewtonWorkspace::new(self.unknowns(), self.tree.len())
     }
 
     /// Sets the tracked coordinates from a full set of link poses at `input_rad`.

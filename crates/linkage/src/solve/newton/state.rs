@@ -159,14 +159,15 @@ pub struct NewtonWorkspace {
 }
 
 impl NewtonWorkspace {
-    /// Buffers for `unknowns` coordinates, `equations` rows and `joints` tree joints.
-    pub(super) fn new(unknowns: usize, equations: usize, joints: usize) -> Self {
+    /// Buffers for `unknowns` coordinates and `joints` tree joints; the model has as
+    /// many equations as unknowns (`NewtonModel::new` refuses any other chain).
+    pub(super) fn new(unknowns: usize, joints: usize) -> Self {
         Self {
             jac: DMatrix::zeros(unknowns, unknowns),
             rhs: DVector::zeros(unknowns),
             rates: vec![0.0; 2 * unknowns.max(1)],
-            col_buf: vec![0.0; equations],
-            res_buf: vec![0.0; equations],
+            col_buf: vec![0.0; unknowns],
+            res_buf: vec![0.0; unknowns],
             saved: (
                 DVector::zeros(unknowns),
                 DVector::zeros(unknowns),
