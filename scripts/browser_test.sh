@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Real-browser test of the web demo: builds it (scripts/build_web.sh), serves dist/ on
 # 127.0.0.1, and runs tests/browser/browser_test.mjs and every_scene.mjs in Debian's
-# headless Chromium via playwright-core, once per build (WebGL2, WebGPU;
-# every_scene.mjs's controls in the WebGL2 build only), and links_and_drops.mjs,
+# headless Chromium via playwright-core, once per build (WebGL2, WebGPU; in the WebGPU
+# build only what its renderer decides), and links_and_drops.mjs,
 # every_device.mjs (phones and tablets, by touch) and laptop.mjs in the WebGL2 build. First the unit tests of the browser tests' own judges (frames_test.mjs).
 # Installs chromium and the npm packages if missing.
 set -euo pipefail
@@ -51,12 +51,14 @@ timed() {
 for build in webgl2 webgpu; do
     echo "== $build build (browser tests from $(( $(date +%s) - started )) s after the web builds began)"
     export LINKAGE_BUILD=$build
-    timed node tests/browser/browser_test.mjs "http://127.0.0.1:$port/" || status=1
-    # Every scene file; the picker and the URL fragment in turn, so that each scene
-    # opens both ways over the two builds. Every kind of control in the WebGL2 build;
-    # in the WebGPU build what its renderer decides (drawn, played, the crank moved,
-    # the edit's CPU): the controls are the same code, drawn five times slower.
+    # Every check in the WebGL2 build; in the WebGPU build what its renderer decides
+    # (drawn, dragged, played; each scene opened, drawn, played, its crank moved, the
+    # edit's CPU): the files, links, editor, search and controls are the same code,
+    # drawn five times slower through SwiftShader's Vulkan.
     checks=all; [ "$build" = webgpu ] && checks=drawn
+    LINKAGE_BROWSER_CHECKS=$checks timed node tests/browser/browser_test.mjs "http://127.0.0.1:$port/" || status=1
+    # Every scene file; the picker and the URL fragment in turn, so that each scene
+    # opens both ways over the two builds.
     LINKAGE_SCENE_CHECKS=$checks timed node tests/browser/every_scene.mjs "http://127.0.0.1:$port/" || status=1
 done
 # The page's other doors (a pasted link, back and forward, a dropped file) are the

@@ -5,7 +5,7 @@
 //! an error that names the reachable range.
 //!
 //! `LINKAGE_PROPERTY_CASES` sets the cases per generator (96 by default; CI runs
-//! 34,000 of each in release mode, over 10^5 in all: scripts/check.sh).
+//! 34,000 of each with the test build, over 10^5 in all: scripts/check.sh).
 
 mod common;
 
