@@ -11,11 +11,12 @@
 // link; and that a small path search in the synthesis window runs to designs, and a
 // long one keeps frames coming (frames.mjs) and stops when asked. Measures time to first frame (the app logs it) and frames per second while
 // the mechanism plays. With LINKAGE_BROWSER_CHECKS=drawn (the WebGPU build's pass) only
-// what the renderer decides: the first frame, the canvas drawn, the drag and play.
+// what the renderer decides: the first frame, the canvas drawn, the drag and play, then
+// every shipped scene opened by its link and drawn, with its edit's CPU measured.
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { appState, build, colouredIn, decode, differing, launchChromium, nonBackground, settledControl, until, wrongBuild } from './common.mjs';
+import { appState, build, colouredIn, decode, differing, launchChromium, nonBackground, quiet, settledControl, shippedScenes, until, wrongBuild } from './common.mjs';
 import { framesKeptComing, framesSpanned, slicesKeptTheirBudget } from './frames.mjs';
 
 const url = process.argv[2] ?? 'http://127.0.0.1:8917/';
@@ -119,7 +120,41 @@ if (played < 2000) fail(`playing changed only ${played} pixels`);
 // checked for what its renderer decides, above: 39 s here, where the whole script
 // took 143 s in CI's WebGPU pass (2026-11-27), at SwiftShader's Vulkan speed.
 const checks = process.env.LINKAGE_BROWSER_CHECKS ?? 'all';
-const pageActions = checks === 'all' ? await filesLinksEditorAndSearch() : { checks };
+const pageActions = checks === 'all' ? await filesLinksEditorAndSearch() : { checks, scenes_drawn: await everySceneDrawn() };
+
+/** Every shipped scene opened in this page by its link (a hashchange), each drawn by
+ * the renderer (the page covered, the mechanism coloured in the view), and the CPU of
+ * its length edit measured in the page once it is quiet: the WebGPU build's pass over
+ * the scenes (every_scene.mjs opens each in a new page, every control moved, in the
+ * WebGL2 build). */
+async function everySceneDrawn() {
+  const drawn = [];
+  console.log(`edit CPU in the page, ${build} build, median of 15 length edits, ms: scene | valid | refused, too long | refused, too short`);
+  for (const scene of shippedScenes()) {
+    await page.evaluate((key) => { location.hash = `#scene=${key}`; }, scene.key);
+    const opened = await until(async () => (await page.evaluate(() => location.hash)).startsWith(`#scene=${scene.key}&`), () => page.mouse.move(21, 10));
+    if (!opened) { fail(`${scene.key}: its link did not open it`); continue; }
+    let img, st, px = 0;
+    await until(async () => {
+      st = await appState(page);
+      img = await shot(`scene_${scene.key}`);
+      px = colouredIn(img, st.controls.view ?? [0, 0, 0, 0]);
+      return st.scene_name === scene.name && px >= 300 && nonBackground(img) >= 0.2;
+    }, () => page.mouse.move(21, 10));
+    if (st.scene_name !== scene.name) fail(`${scene.key}: the app shows ${st.scene_name}`);
+    if (px < 300) fail(`${scene.key}: the view shows ${px} coloured pixels: no mechanism drawn`);
+    if (!st.pose_finite) fail(`${scene.key}: non-finite pose`);
+    // SwiftShader draws the last frames on the same two cores as the page's
+    // WebAssembly: measured once the page is quiet (common.mjs).
+    if (!(await quiet(page))) fail(`${scene.key}: the app kept drawing frames with nothing to do`);
+    const cpu = JSON.parse(await page.evaluate((key) => window.wasmBindings.linkage_lab_edit_cpu(key), scene.key));
+    if (!cpu) fail(`${scene.key}: no edit CPU measured`);
+    const ms = (v) => (v == null ? '-' : v.toFixed(2));
+    console.log(`${scene.key} | ${ms(cpu?.valid_ms)} | ${ms(cpu?.refused_long_ms)} | ${ms(cpu?.refused_short_ms)}`);
+    drawn.push({ scene: scene.key, view_pixels: px, edit_cpu: cpu });
+  }
+  return drawn;
+}
 
 /** The page's doors and tools: Save, Export (CSV, diagram, PNG), Open (an upload),
  * a reload and a share link, a four-bar built and one drawn in the page, an unfinished

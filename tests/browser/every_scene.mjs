@@ -9,10 +9,8 @@
 // (performance.now()); under SwiftShader it is set by the rasteriser's few frames a
 // second, not by the edit.
 // The app says where its controls are: window.wasmBindings.linkage_lab_controls().
-// With LINKAGE_SCENE_CHECKS=drawn only what the renderer decides: each scene opened,
-// drawn, played and its crank moved, and the edit's CPU measured (the WebGPU build's
-// pass: its controls and layout are the WebGL2 build's code, and SwiftShader's Vulkan
-// draws it at a fifth of the speed; every control took 418 s there, 2026-11-26).
+// The WebGPU build's pass over the scenes is in browser_test.mjs
+// (LINKAGE_BROWSER_CHECKS=drawn): the controls are the same code in both builds.
 // Usage: node every_scene.mjs http://127.0.0.1:PORT/
 import { appState as state, build, decode, differing, launchChromium, nonBackground, openApp, quiet, shippedScenes, until } from './common.mjs';
 
@@ -117,7 +115,6 @@ async function settle(page, before, picture) {
   return st;
 }
 
-const drawnOnly = process.env.LINKAGE_SCENE_CHECKS === 'drawn';
 /** Opens `page`'s URL in a new page: it must show the same state (the fragment's
  * numbers and the crank angle); its console errors join `errors`. */
 async function reopens(page, what, errors) {
@@ -130,16 +127,15 @@ async function reopens(page, what, errors) {
   await again.page.close();
 }
 
-const SLIDERS = drawnOnly ? ['Crank'] : ['Crank', 'Length', 'Spring', 'Mass', 'Tolerance'];
+const SLIDERS = ['Crank', 'Length', 'Spring', 'Mass', 'Tolerance'];
 const results = [];
-// Each scene opens through both routes over the two builds (and each build opens
-// scenes through both): the picker on one build, the fragment on the other, in turn.
-// LINKAGE_ROUTES=all runs both routes on every build.
+// The scenes open through the picker and through a URL fragment in turn (both routes
+// are the same code for every scene); LINKAGE_ROUTES=all opens each both ways.
 const allRoutes = process.env.LINKAGE_ROUTES === 'all';
 const routesFor = (i) => {
   const both = ['picker', 'fragment'];
   if (allRoutes) return both;
-  return [both[(i + (build === 'webgpu' ? 1 : 0)) % 2]];
+  return [both[i % 2]];
 };
 for (const [i, scene] of scenes.entries()) {
   for (const route of routesFor(i)) {
@@ -179,7 +175,7 @@ for (const [i, scene] of scenes.entries()) {
     // A slider's rail spans its rectangle: 23 points in, and 2 points short of its
     // far end.
     const moves = SLIDERS.filter((k) => kinds.has(k)).map((k) => [k, k, (r) => r[0] + 23]);
-    if (kinds.has('Length') && !drawnOnly) moves.push(['Length', 'Length at max', (r) => r[2] - 2]);
+    if (kinds.has('Length')) moves.push(['Length', 'Length at max', (r) => r[2] - 2]);
     for (const [kind, name, at] of moves) {
       const c = await find(page, kind);
       const urlBefore = await hash(page);
@@ -198,7 +194,7 @@ for (const [i, scene] of scenes.entries()) {
         refused: Boolean(after.message),
       };
     }
-    if (kinds.has('Branch') && !drawnOnly) {
+    if (kinds.has('Branch')) {
       const c = await find(page, 'Branch');
       const urlBefore = await hash(page);
       const ms = await timedClick(page, centre(c, 0.1));
@@ -206,7 +202,7 @@ for (const [i, scene] of scenes.entries()) {
       if ((await hash(page)) === urlBefore && !after.message) fail(`${what}: the branch flip "${c.label}" at ${c.rect} changed nothing (${urlBefore})`);
       moved.Branch = { edit_frame_ms: Number(after.edit_timing.last_ms.toFixed(2)), edit_ms: Number(after.edit_timing.last_edit_ms.toFixed(2)), click_to_frame_ms: Number(ms.toFixed(1)), refused: Boolean(after.message) };
     }
-    if (kinds.has('Integrator') && !drawnOnly) {
+    if (kinds.has('Integrator')) {
       const picBefore = await shot(page);
       await page.mouse.click(...centre(await find(page, 'Integrator')));
       const rk4 = await find(page, 'IntegratorItem', 'rk4');
@@ -222,7 +218,7 @@ for (const [i, scene] of scenes.entries()) {
     }
     // The instant centres shown and hidden, the polygon pane enlarged and narrowed:
     // each changes the picture (waited for: SwiftShader draws a few frames a second).
-    for (const [kind, label] of drawnOnly ? [] : [['Layer', 'instant centres'], ['PolygonLayout', undefined]]) {
+    for (const [kind, label] of [['Layer', 'instant centres'], ['PolygonLayout', undefined]]) {
       const name = label ?? kind;
       for (const turn of ['on', 'off']) {
         const c = await find(page, kind, label);
@@ -235,10 +231,10 @@ for (const [i, scene] of scenes.entries()) {
         moved[`${name} ${turn}`] = { click_to_frame_ms: Number(ms.toFixed(1)), pixels_changed: px };
       }
     }
-    for (const k of drawnOnly ? ['Crank'] : ['Crank', 'Length']) if (!moved[k]) fail(`${what}: no ${k} control`);
+    for (const k of ['Crank', 'Length']) if (!moved[k]) fail(`${what}: no ${k} control`);
 
     // The URL after the edits reopens the same state.
-    if (!drawnOnly) await reopens(page, what, errors);
+    await reopens(page, what, errors);
 
     // The edit's own CPU, measured in the page: the median of repeated length
     // edits of the scene, valid and refused (session::edit_cost), once the page has
