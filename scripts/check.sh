@@ -50,8 +50,10 @@ section "fuzzing and properties at scale"
 # the test binaries built above: the test build compiles the solver optimised
 # (Cargo.toml), and a release build of its own took 118 s to save 30 s of running
 # (docs/architecture.md, "CI time").
+# `--workspace`, not `-p linkage`: the solver alone is built with other features
+# than in the workspace (no `parallel`), and was built anew (70 s).
 LINKAGE_FUZZ_CASES=100000 LINKAGE_PROPERTY_CASES=34000 \
-    cargo test -p linkage --test fuzz_scenes --test properties -- --nocapture
+    cargo test --workspace --test fuzz_scenes --test properties -- --nocapture
 
 section "CLI over every scene"
 bin="${CARGO_TARGET_DIR:-target}/debug"
