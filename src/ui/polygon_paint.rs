@@ -144,7 +144,7 @@ pub fn draw(
         painter.text(
             b + Vec2::new(6.0, 0.0),
             egui::Align2::LEFT_CENTER,
-            format!("{} {unit}", linkage_diagram::svg::round_text(bar.value)),
+            linkage_diagram::numbers::si(bar.value, unit),
             egui::FontId::proportional(12.0),
             ink,
         );

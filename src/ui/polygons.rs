@@ -10,6 +10,7 @@ use linkage::polygon::{Quantity, Symbol, VectorEquation};
 use linkage_diagram::PolygonFigure;
 use linkage_diagram::label::Label;
 use linkage_diagram::layout::LaidPolygon;
+use linkage_diagram::numbers;
 use linkage_diagram::polygon_figure::title;
 
 use crate::state::AppState;
@@ -212,10 +213,9 @@ fn figure(
             ink,
         ));
         ui.label(format!(
-            "{:.4} {} at {:.2}°",
-            v[0].hypot(v[1]),
-            fig.unit(),
-            v[1].atan2(v[0]).to_degrees()
+            "{} at {}",
+            numbers::si(v[0].hypot(v[1]), fig.unit()),
+            numbers::degrees(v[1].atan2(v[0]).to_degrees())
         ));
     });
     (Some(symbol), rect)
@@ -255,6 +255,7 @@ fn table(
                 ui.strong(head);
             }
             ui.end_row();
+            let scale = linkage_diagram::polygon_figure::largest_term(eq);
             for t in eq.lhs.iter().chain(&eq.rhs) {
                 let on = marked == Some(&t.symbol);
                 let mut job = crate::ui::typeset::job(&Label::of_symbol(&t.symbol), 14.0, ink);
@@ -270,14 +271,14 @@ fn table(
                 let known = |k: bool| if k { "known" } else { "solved" };
                 let row = [
                     ui.label(job),
-                    ui.label(cell(format!(
-                        "{:.4} {}",
+                    ui.label(cell(numbers::si_beside(
                         t.magnitude,
-                        linkage_diagram::polygon_figure::unit(q)
+                        scale,
+                        linkage_diagram::polygon_figure::unit(q),
                     ))),
                     ui.label(cell(format!(
-                        "{:.2}° ({})",
-                        t.direction_rad.to_degrees(),
+                        "{} ({})",
+                        numbers::degrees(t.direction_rad.to_degrees()),
                         t.direction
                     ))),
                     ui.label(cell(format!(

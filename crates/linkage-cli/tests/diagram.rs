@@ -199,8 +199,8 @@ fn the_course_sheet_of_the_quick_return_holds_what_a_course_asks_for() {
         "ram displacement (m)",
         "ram velocity (m/s)",
         "ram acceleration (m/s²)",
-        "Position 2 (crank at 60.0°): polygons",
-        "Position 8 (crank at 240.0°): polygons",
+        "Position 2 (crank at 60°): polygons",
+        "Position 8 (crank at 240°): polygons",
         "Force polygons",
     ] {
         assert!(drawn.iter().any(|t| t == want), "{want} missing: {drawn:?}");

@@ -11,6 +11,7 @@ use linkage::polygon::{Term, VectorEquation};
 
 use crate::geometry::Pt;
 use crate::label::{Label, Run, Script};
+use crate::numbers::si;
 use crate::polygon_figure::{Arrow, ArrowStyle, PolygonFigure, Vertex};
 
 /// A line of known direction through a known point, for an unknown term.
@@ -172,9 +173,9 @@ pub fn construct(
         says: words(&[
             Piece::Text(format!("the lines cross at {crossing}: |")),
             Piece::Terms(vec![first]),
-            Piece::Text(format!("| = {:.4} {unit}, |", distance_between(p1, x))),
+            Piece::Text(format!("| = {}, |", si(distance_between(p1, x), unit))),
             Piece::Terms(vec![second]),
-            Piece::Text(format!("| = {:.4} {unit}", distance_between(p2, x))),
+            Piece::Text(format!("| = {}", si(distance_between(p2, x), unit))),
         ]),
     });
     Ok(steps)

@@ -216,13 +216,13 @@ pub fn row_cells(r: &ForceRow) -> (String, String) {
         } else {
             "clockwise"
         };
-        (format!("{:.4} N·m", r.magnitude), sense.to_string())
+        (crate::numbers::si(r.magnitude, "N·m"), sense.to_string())
     } else {
-        // Rounded first, so that −0.001° reads 0.00°, not 360.00°.
-        let deg = (r.direction_deg * 100.0).round() / 100.0;
+        // Rounded first, so that −0.01° reads 0°, not 360°.
+        let deg = (r.direction_deg * 10.0).round() / 10.0;
         (
-            format!("{:.4} N", r.magnitude),
-            format!("{:.2}°", deg.rem_euclid(360.0) + 0.0),
+            crate::numbers::si(r.magnitude, "N"),
+            crate::numbers::degrees(deg.rem_euclid(360.0) + 0.0),
         )
     }
 }

@@ -72,6 +72,25 @@ pub fn si(value: f64, unit: &str) -> String {
     format!("{} {}", significant(value * p.factor, 4), p.unit(unit))
 }
 
+/// Relative size below which a value is the round-off of the values beside it.
+pub const ROUND_OFF: f64 = 1e-9;
+
+/// `value` as [`si`] writes it, or "0 unit" where it is below `scale` ×
+/// [`ROUND_OFF`]: a computation whose values are of size `scale` leaves such a value
+/// as its round-off (1e-17 m/s beside velocities of 0.1 m/s is a zero, not
+/// "0.00000000001 µm/s").
+pub fn si_beside(value: f64, scale: f64, unit: &str) -> String {
+    if value.abs() <= scale.abs() * ROUND_OFF {
+        return format!("0 {unit}");
+    }
+    si(value, unit)
+}
+
+/// An angle in degrees to four significant digits, with the degree sign ("42.58°").
+pub fn degrees(deg: f64) -> String {
+    format!("{}°", significant(deg, 4))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -87,6 +106,16 @@ mod tests {
         assert_eq!(si(999.99, "N"), "1 kN");
         assert_eq!(si(0.0, "N"), "0 N");
         assert_eq!(si(12.0, "J"), "12 J");
+    }
+
+    #[test]
+    fn round_off_beside_the_values_prints_as_zero() {
+        assert_eq!(si_beside(1e-17, 0.1, "m/s"), "0 m/s");
+        assert_eq!(si_beside(-3e-11, 0.1, "m/s"), "0 m/s");
+        assert_eq!(si_beside(1.275e-3, 0.1, "m/s"), "1.275 mm/s");
+        assert_eq!(degrees(42.5815), "42.58°");
+        assert_eq!(degrees(-179.94), "-179.9°");
+        assert_eq!(degrees(0.0), "0°");
     }
 
     #[test]

@@ -185,6 +185,16 @@ pub fn unit(quantity: Quantity) -> &'static str {
     }
 }
 
+/// The largest magnitude among `eq`'s terms: a term below its round-off
+/// ([`crate::numbers::si_beside`]) is a zero.
+pub fn largest_term(eq: &VectorEquation) -> f64 {
+    eq.lhs
+        .iter()
+        .chain(&eq.rhs)
+        .map(|t| t.magnitude.abs())
+        .fold(0.0, f64::max)
+}
+
 /// An absolute term (`v_B`, `a_C`: a joint's whole motion relative to the frame) is
 /// drawn from the pole with the joints' vectors, not again in a chain.
 fn is_absolute(symbol: &Symbol, joints: &[&(String, Pt)]) -> bool {

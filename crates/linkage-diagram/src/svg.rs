@@ -12,6 +12,7 @@ use linkage::{Mechanism, Solution};
 use crate::geometry::Rect;
 use crate::label::{Label, Script};
 use crate::layout::{Sizes, layout_polygon};
+use crate::numbers::{degrees, si, si_beside, significant};
 use crate::polygon_figure::{self, PolygonFigure, unit};
 use crate::pose_figure::PoseFigure;
 use crate::pose_layout::{LaidPose, layout_pose};
@@ -78,10 +79,10 @@ pub fn sheet(pos: &Position<'_>, parts: Parts) -> String {
     let m = pos.mechanism;
     let s = pos.solution;
     let title = format!(
-        "{} at input {:.2}°, ω = {:.3} rad/s",
+        "{} at input {}, ω = {} rad/s",
         m.name,
-        s.input_rad.to_degrees(),
-        s.input_speed_rad_s
+        degrees(s.input_rad.to_degrees()),
+        significant(s.input_speed_rad_s, 4)
     );
     text_at(&mut body, [MARGIN, y + 14.0], &title, 16.0, "bold");
     y += 30.0;
@@ -167,10 +168,14 @@ fn pose(out: &mut String, laid: &LaidPose) -> f64 {
     for (label, centre) in &laid.centres_off {
         let note = match centre {
             Centre::AtInfinity(d) => format!(
-                ": at infinity, direction {:.1}°",
-                d[1].atan2(d[0]).to_degrees()
+                ": at infinity, direction {}",
+                degrees(d[1].atan2(d[0]).to_degrees())
             ),
-            Centre::At(p) => format!(": at ({:.4}, {:.4}) m, off the figure", p[0], p[1]),
+            Centre::At(p) => format!(
+                ": at ({}, {}), off the figure",
+                si(p[0], "m"),
+                si(p[1], "m")
+            ),
         };
         let mut text = label.clone();
         text.runs.push(crate::label::Run {
@@ -204,10 +209,11 @@ fn table(out: &mut String, equations: &[VectorEquation], quantity: Quantity, mut
         {
             text_at(out, [MARGIN + x, y], head, FONT, "bold");
         }
+        let scale = polygon_figure::largest_term(eq);
         for t in eq.lhs.iter().chain(&eq.rhs) {
             let cells = [
-                format!("{:.4} {}", t.magnitude, unit(quantity)),
-                format!("{:.2}°", t.direction_rad.to_degrees()),
+                si_beside(t.magnitude, scale, unit(quantity)),
+                degrees(t.direction_rad.to_degrees()),
                 t.direction.clone(),
                 format!(
                     "magnitude {}, direction {}",

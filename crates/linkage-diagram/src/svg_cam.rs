@@ -11,6 +11,7 @@ use linkage::cam::CamPoint;
 
 use crate::geometry::{Pt, Rect};
 use crate::layout::ScaleBar;
+use crate::numbers::{degrees, si};
 use crate::svg_draw::{
     MARGIN, PAGE_W, circle, document, line, polygon_shape, scale_bar, text_at, titled_pane,
 };
@@ -57,11 +58,11 @@ pub fn cam_sheet(c: &CamSheet<'_>) -> String {
     let bar_mm = crate::layout::round_scale(2.0 * reach * 1e3);
     let from = [inner.min[0] + 12.0, inner.max[1] - 50.0];
     let bar = ScaleBar {
-        value: bar_mm,
+        value: bar_mm * 1e-3,
         from,
         to: [from[0] + bar_mm * 1e-3 * scale, from[1]],
     };
-    scale_bar(&mut body, &bar, "mm");
+    scale_bar(&mut body, &bar, "m");
     figures(&mut body, c, [inner.min[0] + 12.0, inner.max[1] - 24.0]);
     document(c.title, &body, height)
 }
@@ -123,12 +124,12 @@ fn figures(out: &mut String, c: &CamSheet<'_>, at: Pt) {
         .fold(0.0, f64::max);
     let least = |f: fn(&CamPoint) -> f64| c.points.iter().map(f).fold(f64::INFINITY, f64::min);
     let text = format!(
-        "base circle {:.2} mm; largest pressure angle {:.2} deg (limit {:.0}); least radius of curvature: pitch {:.2} mm, profile {:.2} mm",
-        c.base_radius_m * 1e3,
-        largest.to_degrees(),
-        c.pressure_limit_rad.to_degrees(),
-        least(|p| p.pitch_radius_m) * 1e3,
-        least(|p| p.profile_radius_m) * 1e3,
+        "base circle {}; largest pressure angle {} (limit {}); least radius of curvature: pitch {}, profile {}",
+        si(c.base_radius_m, "m"),
+        degrees(largest.to_degrees()),
+        degrees(c.pressure_limit_rad.to_degrees()),
+        si(least(|p| p.pitch_radius_m), "m"),
+        si(least(|p| p.profile_radius_m), "m"),
     );
     text_at(out, at, &text, 10.0, "normal");
     let legend = "profile solid, pitch curve dashed, base circle grey; red: pressure angle past the limit or undercut";

@@ -35,10 +35,10 @@ pub fn course_sheet(c: &CourseSheet) -> String {
     let m = &c.mechanism;
     let mut body = String::new();
     let title = format!(
-        "{}: {} positions, ω = {:.3} rad/s",
+        "{}: {} positions, ω = {} rad/s",
         m.name,
         c.positions.len(),
-        m.driver.speed_rad_s
+        crate::numbers::significant(m.driver.speed_rad_s, 4)
     );
     text_at(&mut body, [MARGIN, MARGIN + 14.0], &title, 16.0, "bold");
     let mut y = MARGIN + 30.0;
@@ -100,9 +100,9 @@ fn chosen_polygons(
 ) -> f64 {
     let width = PAGE_W - 2.0 * MARGIN;
     let heading = format!(
-        "Position {} (crank at {:.1}°): polygons",
+        "Position {} (crank at {}): polygons",
         chosen.number,
-        s.input_rad.to_degrees()
+        crate::numbers::degrees(s.input_rad.to_degrees())
     );
     text_at(body, [MARGIN, y + 14.0], &heading, 14.0, "bold");
     y += 22.0;
@@ -216,7 +216,7 @@ fn plan(out: &mut String, m: &Mechanism, positions: &[Solution], pane: Rect, siz
     text_at(
         out,
         [bar.to[0] + 6.0, bar.to[1] + 4.0],
-        &format!("{} m", round_text(bar.value)),
+        &crate::numbers::si(bar.value, "m"),
         FONT,
         "normal",
     );

@@ -167,7 +167,7 @@ pub(crate) fn scale_bar(out: &mut String, bar: &ScaleBar, unit: &str) {
     text_at(
         out,
         [bar.to[0] + 6.0, bar.to[1] + 4.0],
-        &format!("{} {unit}", round_text(bar.value)),
+        &crate::numbers::si(bar.value, unit),
         FONT,
         "normal",
     );

@@ -56,9 +56,9 @@ pub fn timing_sheet(title: &str, d: &TimingDiagram) -> String {
 fn stroke_text(lane: &TimingLane) -> String {
     let [lo, hi] = lane.range;
     if lane.is_angle {
-        format!("swing {:.2} deg", (hi - lo).to_degrees())
+        format!("swing {}", crate::numbers::degrees((hi - lo).to_degrees()))
     } else {
-        format!("stroke {:.2} mm", (hi - lo) * 1e3)
+        format!("stroke {}", crate::numbers::si(hi - lo, "m"))
     }
 }
 
