@@ -59,7 +59,7 @@ fn the_sheet_is_written_and_bad_options_are_refused_by_name() {
     for part in [
         "Timing diagram",
         "bell_crank",
-        "swing 8.00 deg",
+        "swing 8°",
         "stroke",
         "dwells shaded",
     ] {
