@@ -16,7 +16,7 @@
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { appState, build, colouredIn, decode, differing, launchChromium, nonBackground, quiet, settledControl, shippedScenes, until, wrongBuild } from './common.mjs';
+import { EDIT_CPU_HEADING, appState, build, colouredIn, decode, differing, editCpuRow, launchChromium, nonBackground, quiet, settledControl, shippedScenes, until, wrongBuild } from './common.mjs';
 import { framesKeptComing, framesSpanned, slicesKeptTheirBudget } from './frames.mjs';
 
 const url = process.argv[2] ?? 'http://127.0.0.1:8917/';
@@ -129,7 +129,7 @@ const pageActions = checks === 'all' ? await filesLinksEditorAndSearch() : { che
  * WebGL2 build). */
 async function everySceneDrawn() {
   const drawn = [];
-  console.log(`edit CPU in the page, ${build} build, median of 15 length edits, ms: scene | valid | refused, too long | refused, too short`);
+  console.log(EDIT_CPU_HEADING);
   for (const scene of shippedScenes()) {
     await page.evaluate((key) => { location.hash = `#scene=${key}`; }, scene.key);
     const opened = await until(async () => (await page.evaluate(() => location.hash)).startsWith(`#scene=${scene.key}&`), () => page.mouse.move(21, 10));
@@ -149,8 +149,7 @@ async function everySceneDrawn() {
     if (!(await quiet(page))) fail(`${scene.key}: the app kept drawing frames with nothing to do`);
     const cpu = JSON.parse(await page.evaluate((key) => window.wasmBindings.linkage_lab_edit_cpu(key), scene.key));
     if (!cpu) fail(`${scene.key}: no edit CPU measured`);
-    const ms = (v) => (v == null ? '-' : v.toFixed(2));
-    console.log(`${scene.key} | ${ms(cpu?.valid_ms)} | ${ms(cpu?.refused_long_ms)} | ${ms(cpu?.refused_short_ms)}`);
+    console.log(editCpuRow(scene.key, cpu));
     drawn.push({ scene: scene.key, view_pixels: px, edit_cpu: cpu });
   }
   return drawn;

@@ -137,6 +137,17 @@ export async function openApp(page, url) {
   return errors;
 }
 
+/** The heading of the table of edit CPU measured in the page (the app's
+ * `linkage_lab_edit_cpu`: the median of 15 length edits; a figure, not asserted: the
+ * goal is 4 ms). */
+export const EDIT_CPU_HEADING = `edit CPU in the page, ${build} build, median of 15 length edits, ms: scene | valid | refused, too long | refused, too short`;
+
+/** One scene's row of that table. */
+export function editCpuRow(key, cpu) {
+  const ms = (v) => (v == null ? '-' : v.toFixed(2));
+  return `${key} | ${ms(cpu?.valid_ms)} | ${ms(cpu?.refused_long_ms)} | ${ms(cpu?.refused_short_ms)}`;
+}
+
 /** What the app publishes for tests (src/web.rs): its frame, controls, scene, ... */
 export async function appState(page) {
   return JSON.parse(await page.evaluate(() => window.wasmBindings.linkage_lab_controls()));

@@ -16,7 +16,6 @@ use crate::numbers::{degrees, si, si_beside, significant};
 use crate::polygon_figure::{self, PolygonFigure, unit};
 use crate::pose_figure::PoseFigure;
 use crate::pose_layout::{LaidPose, layout_pose};
-pub use crate::svg_draw::round_text;
 use crate::svg_draw::{
     FONT, MARGIN, PAGE_H, PAGE_W, circle, document, frame, label_at, leaders_and_label, line,
     measure, polygon, polygon_shape, scale_bar, text_at, titled_pane,
