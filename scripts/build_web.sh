@@ -41,6 +41,8 @@ if [ "${WASM_OPT:-0}" = 1 ]; then
 fi
 # window.wasmBindings, as trunk names it: the browser test reads the app's controls there.
 cp web/load.js dist/
+# The Chinese face, fetched by the app only once Chinese text is shown (src/web_font.rs).
+mkdir -p dist/fonts && cp assets/fonts/NotoSansSC-Subset.otf assets/fonts/OFL.txt dist/fonts/
 sed -e 's|<link data-trunk rel="rust"[^>]*/>|<script type="module" src="./load.js"></script>|' \
     index.html > dist/index.html
 ls -l dist dist/*/

@@ -39,6 +39,9 @@ pub struct LinkageApp {
     fragment_watch: crate::web::FragmentWatch,
     #[cfg(target_arch = "wasm32")]
     drawing_store: crate::web::DrawingStore,
+    /// The Chinese face, fetched once Chinese text is shown.
+    #[cfg(target_arch = "wasm32")]
+    cjk_font: crate::web_font::CjkFont,
 }
 
 impl LinkageApp {
@@ -89,6 +92,8 @@ impl LinkageApp {
             fragment_watch: crate::web::FragmentWatch::default(),
             #[cfg(target_arch = "wasm32")]
             drawing_store: crate::web::DrawingStore::default(),
+            #[cfg(target_arch = "wasm32")]
+            cjk_font: crate::web_font::CjkFont::watch(&cc.egui_ctx),
         }
     }
 
@@ -408,28 +413,8 @@ impl eframe::App for LinkageApp {
             self.state.timing.edit_timing.add(frame_us * 1e-3, edit_ms);
         }
         #[cfg(target_arch = "wasm32")]
-        {
-            if let Some(why) = self.url.update(&self.state.session) {
-                self.state.status = Some(why);
-            }
-            self.drawing_store.update(self.state.drawing.as_ref());
-            crate::web::publish_controls(
-                &self.state,
-                &self.panels.viewport.camera,
-                self.panels.synthesis.view(),
-                self.frames_drawn + 1,
-                self.renderer.is_some(),
-            );
-        }
+        self.end_web_frame(ui.ctx());
         self.frames_drawn += 1;
-        #[cfg(target_arch = "wasm32")]
-        if self.frames_drawn == 1 {
-            // The browser test reads this line to measure the time to first frame.
-            let now = web_sys::window()
-                .and_then(|w| w.performance())
-                .map_or(f64::NAN, |p| p.now());
-            log::info!("linkage-lab first frame at {now:.0} ms");
-        }
         if let Some(n) = self.exit_after_frames {
             // egui repaints only on input: a smoke run has to ask for every frame.
             ui.ctx().request_repaint();
@@ -443,6 +428,34 @@ impl eframe::App for LinkageApp {
                 );
                 ui.ctx().send_viewport_cmd(egui::ViewportCommand::Close);
             }
+        }
+    }
+}
+
+#[cfg(target_arch = "wasm32")]
+impl LinkageApp {
+    /// What the page keeps in step with the app at the end of each frame: the URL,
+    /// the stored drawing, the Chinese face, the controls the browser test reads, and
+    /// on the first frame the time it was drawn.
+    fn end_web_frame(&mut self, ctx: &egui::Context) {
+        if let Some(why) = self.url.update(&self.state.session) {
+            self.state.status = Some(why);
+        }
+        self.drawing_store.update(self.state.drawing.as_ref());
+        self.cjk_font.update(ctx);
+        crate::web::publish_controls(
+            &self.state,
+            &self.panels.viewport.camera,
+            self.panels.synthesis.view(),
+            self.frames_drawn + 1,
+            self.renderer.is_some(),
+        );
+        if self.frames_drawn == 0 {
+            // The browser test reads this line to measure the time to first frame.
+            let now = web_sys::window()
+                .and_then(|w| w.performance())
+                .map_or(f64::NAN, |p| p.now());
+            log::info!("linkage-lab first frame at {now:.0} ms");
         }
     }
 }

@@ -1,5 +1,9 @@
 //! The app's fonts: egui's Ubuntu-Light for all text, proportional and monospace,
-//! and egui's few icons.
+//! egui's few icons, and Noto Sans CJK SC for Chinese (cut to the common characters
+//! by `scripts/cjk_font.py`; SIL OFL, `assets/fonts/OFL.txt`). The desktop app
+//! embeds the Chinese face; the web demo fetches it only once Chinese text is to
+//! be shown (`web_font.rs`), so that an English user's first download does not grow
+//! by its 1.5 MB.
 //!
 //! Why not egui's `default_fonts`: they add the Hack monospace face, which only
 //! egui_plot's axis numbers would use here, and which is 0.15 MB of the web demo's
@@ -8,9 +12,44 @@
 
 use std::sync::Arc;
 
+use eframe::egui::epaint::text::{FontInsert, FontPriority, InsertFontFamily};
 use eframe::egui::{FontData, FontDefinitions, FontFamily, FontTweak};
 
-/// Ubuntu-Light for both families, egui's icon face as fallback.
+/// The Chinese face's name among the fonts.
+pub const CJK_FACE: &str = "NotoSansSC";
+
+/// Where the web demo fetches the Chinese face, beside its page.
+pub const CJK_FONT_URL: &str = "fonts/NotoSansSC-Subset.otf";
+
+/// The Chinese face, embedded in the desktop app (the sheets' PNG draws with the
+/// same bytes).
+#[cfg(not(target_arch = "wasm32"))]
+const CJK_FONT: &[u8] = linkage_diagram::png::CJK_FONT;
+
+/// Whether `text` holds a character that only the Chinese face draws (CJK
+/// ideographs and radicals, CJK punctuation, full-width forms).
+pub fn has_cjk(text: &str) -> bool {
+    text.chars().any(|c| {
+        matches!(c, '\u{2E80}'..='\u{9FFF}' | '\u{F900}'..='\u{FAFF}' | '\u{FF00}'..='\u{FFEF}')
+    })
+}
+
+/// The Chinese face (an `.otf`'s bytes) as the last fallback of both families:
+/// Latin text keeps Ubuntu-Light.
+pub fn cjk_insert(data: FontData) -> FontInsert {
+    let last = |family| InsertFontFamily {
+        family,
+        priority: FontPriority::Lowest,
+    };
+    FontInsert::new(
+        CJK_FACE,
+        data,
+        vec![last(FontFamily::Proportional), last(FontFamily::Monospace)],
+    )
+}
+
+/// Ubuntu-Light for both families, egui's icon face as fallback, and on the desktop
+/// the Chinese face after it.
 pub fn definitions() -> FontDefinitions {
     let mut fonts = FontDefinitions::empty();
     fonts.font_data.insert(
@@ -27,7 +66,16 @@ pub fn definitions() -> FontDefinitions {
             }),
         ),
     );
-    let family = vec!["Ubuntu-Light".to_owned(), "egui-icons".to_owned()];
+    #[allow(unused_mut)] // the web demo adds the Chinese face when it is needed
+    let mut family = vec!["Ubuntu-Light".to_owned(), "egui-icons".to_owned()];
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        fonts.font_data.insert(
+            CJK_FACE.to_owned(),
+            Arc::new(FontData::from_static(CJK_FONT)),
+        );
+        family.push(CJK_FACE.to_owned());
+    }
     fonts
         .families
         .insert(FontFamily::Proportional, family.clone());

@@ -16,6 +16,8 @@ pub mod state;
 pub mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;
+#[cfg(target_arch = "wasm32")]
+mod web_font;
 
 /// The controls on screen and the session's state as JSON, for the browser test
 /// (exported to the page by the binary as `linkage_lab_controls`).

@@ -143,7 +143,19 @@ fn export_writes_the_sweep_csv() {
         h.state().state.session.sweep_csv().expect("sweeps"),
         "file = the session's sweep"
     );
-    assert!(text.starts_with("input_rad,"), "{}", &text[..40]);
+    // The table a report takes, as `linkage sweep` writes it: whole degrees, the
+    // die cutter's millimetres, columns named with their units.
+    assert!(text.starts_with("input (deg),"), "{}", &text[..40]);
+    assert!(
+        text.lines().next().is_some_and(|h| h.contains(" x (mm),")),
+        "{}",
+        &text[..80]
+    );
+    assert_eq!(text.lines().count(), 361, "a header and 360 rows");
+    assert!(
+        text.lines().any(|row| row.starts_with("60,")),
+        "a row at 60°"
+    );
     std::fs::remove_dir_all(dir).expect("clean up");
 }
 

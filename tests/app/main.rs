@@ -4,6 +4,7 @@
 
 mod common;
 
+mod chinese_names;
 mod commands;
 mod drawing;
 mod every_control;

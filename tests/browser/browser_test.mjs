@@ -191,7 +191,7 @@ async function filesLinksEditorAndSearch() {
   const csv = await download(EXPORT);
   const csvRows = csv.text.trim().split('\n').length;
   if (csv.name !== 'die_cutter_sweep.csv') fail(`CSV download named ${csv.name}`);
-  if (!csv.text.startsWith('input_rad,') || csvRows < 100) fail(`CSV download: ${csvRows} rows, starts ${csv.text.slice(0, 40)}`);
+  if (!csv.text.startsWith('input (deg),') || csvRows < 100) fail(`CSV download: ${csvRows} rows, starts ${csv.text.slice(0, 40)}`);
   // The diagram sheet: found through the app's control map, compared with the CLI's.
   const controls = await appState(page);
   const exportDiagram = controls.controls.entries.find((e) => e.kind === 'FileButton' && e.label === 'Export diagram…');

@@ -1,11 +1,13 @@
 // The page's doors other than its own buttons, in real headless Chromium (desktop,
 // 1500x950): a link pasted into the address bar of the open page (a hashchange), back
-// and forward, and a scene file dropped on the canvas. Over unsaved edits each asks
+// and forward, and a scene file dropped on the canvas. The Chinese face is not fetched
+// until a scene named in Chinese is dropped; then it is, and the app draws with it. Over unsaved edits each asks
 // first and the scene stays until the answer: "Keep editing" keeps it with its edits,
 // "Drop the edits and open" opens. A file that is not a scene is refused with its
 // cause in the status line, and the scene shown stays.
 // Usage: node links_and_drops.mjs http://127.0.0.1:PORT/
-import { appState, build, launchChromium, openApp, settledControl, shippedScenes, until } from './common.mjs';
+import { readFileSync } from 'node:fs';
+import { appState, build, launchChromium, openApp, quiet, settledControl, shippedScenes, until } from './common.mjs';
 
 const base = (process.argv[2] ?? 'http://127.0.0.1:8917/').replace(/#.*$/, '');
 const fail = (msg) => { console.error(`FAIL: ${msg}`); process.exitCode = 1; };
@@ -125,6 +127,24 @@ st = await state();
 if (!/notes\.ron: .+/.test(st.status ?? '')) fail(`a malformed drop was not refused with its cause: ${st.status}`);
 if (st.scene_name !== cutter.name) fail(`a malformed drop replaced the scene: ${st.scene_name}`);
 out.bad_drop = st.status;
+
+// The Chinese face: not part of an English user's download, fetched once Chinese
+// text is shown (src/web_font.rs).
+const fontRequests = () => page.evaluate(() => performance.getEntriesByType('resource')
+  .filter((e) => e.name.includes('NotoSansSC')).map((e) => ({ name: e.name, bytes: e.encodedBodySize })));
+if ((await fontRequests()).length) fail(`the Chinese face was fetched before any Chinese text: ${JSON.stringify(await fontRequests())}`);
+const zh = readFileSync(new URL('../../docs/examples/slider_crank_zh.ron', import.meta.url), 'utf8');
+await drop('曲柄滑块.ron', zh);
+const zhShown = async () => (await state()).scene_name === '对心曲柄滑块机构';
+await until(async () => (await zhShown()) || (await asking()), poke);
+if (await asking()) await answer('Drop the edits and open');
+if (!(await until(zhShown, poke))) fail(`the Chinese scene did not open: ${(await state()).scene_name}`);
+if (!(await until(async () => (await fontRequests()).length > 0, poke))) fail('the Chinese face was not fetched for a scene named in Chinese');
+out.chinese_font = await fontRequests();
+if (process.env.LINKAGE_SHOTS) {
+  await quiet(page); // the frames after the face arrived
+  await page.screenshot({ path: `${process.env.LINKAGE_SHOTS}/chinese_names_${build}.png` });
+}
 
 if (errors.length) fail(`console errors:\n  ${errors.join('\n  ')}`);
 out.console_errors = errors.length;

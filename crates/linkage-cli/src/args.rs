@@ -71,18 +71,26 @@ pub(crate) struct SceneArgs {
 
 #[derive(Subcommand, Debug)]
 pub(crate) enum Command {
-    /// One input cycle (or the assemblable range) as CSV or JSON.
+    /// One input cycle (or the assemblable range) as CSV or JSON. CSV is the table a
+    /// report takes: the input in degrees, lengths in the scene's unit, columns named
+    /// with their units, plain decimals. JSON is SI (m, rad), for programs.
     Sweep {
         #[command(flatten)]
         scene: SceneArgs,
-        /// Number of positions, at least 2. A crank's full turn is cut into N equal
-        /// steps from its start angle (N = 12 gives 0, 30, …, 330 deg from the start:
-        /// the turn's end is its start again); an input that rocks between dead
-        /// points gets N positions from one end of its range to the other, both ends
-        /// included (a millionth of the range inside the dead points, which a note
-        /// on stderr names).
-        #[arg(long, default_value_t = 360, allow_hyphen_values = true, value_parser = counts::at_least_two)]
-        steps: usize,
+        /// Number of positions, at least 2, instead of whole multiples of --step-deg.
+        /// A crank's full turn is cut into N equal steps from its start angle (N = 12
+        /// gives 0, 30, …, 330 deg from the start: the turn's end is its start again);
+        /// an input that rocks between dead points gets N positions from one end of
+        /// its range to the other, both ends included (a millionth of the range
+        /// inside the dead points, which a note on stderr names). JSON's default is
+        /// 360.
+        #[arg(long, allow_hyphen_values = true, value_parser = counts::at_least_two, conflicts_with = "step_deg")]
+        steps: Option<usize>,
+        /// The input's step in degrees (0.01 to 360): the rows are the whole
+        /// multiples of it, 0, 1, 2, …, 359 deg for 1 on a crank's full turn, and those
+        /// between the dead points of an input that rocks. CSV's default is 1.
+        #[arg(long, allow_hyphen_values = true)]
+        step_deg: Option<f64>,
         /// Output format.
         #[arg(long, value_enum, default_value_t = Format::Csv)]
         format: Format,

@@ -1,13 +1,14 @@
-//! `linkage at`: one position as a CSV row, or as JSON with every point's and link's
+//! `linkage at`: one position as a CSV row (the table a report takes, as `sweep`), or as JSON with every point's and link's
 //! motion, the velocity and acceleration polygons' equations and the instant centres.
 
 use linkage::sweep::{csv_header, csv_row};
 use linkage::{LinkId, Mechanism, Solution};
+use linkage_diagram::cycle_table::{CycleTable, csv_line};
 use serde_json::{Value, json};
 
 use crate::args::{Format, SceneArgs};
 use crate::error::Result;
-use crate::io::{check_finite, describe, json_text, load, to_csv};
+use crate::io::{check_finite, describe, json_text, length_unit, load};
 
 /// `at SCENE --input-deg X`.
 pub(crate) fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<String> {
@@ -22,7 +23,12 @@ pub(crate) fn at(args: &SceneArgs, input_deg: f64, format: Format) -> Result<Str
     let row = csv_row(m, &s, &angles);
     check_finite(&row, "solution")?;
     match format {
-        Format::Csv => to_csv(&header, &[row]),
+        Format::Csv => {
+            let table = CycleTable::new(length_unit(args)?);
+            let mut text = csv_line(&table.header(m));
+            text.push_str(&csv_line(&table.row(m, &s, &angles)));
+            Ok(text)
+        }
         Format::Json => {
             let v2 = |v: &linkage::Vec2| json!([v.x, v.y]);
             let points: serde_json::Map<String, Value> = m

@@ -60,8 +60,12 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
         Command::Sweep {
             scene,
             steps,
+            step_deg,
             format,
-        } => return sweep::sweep(&scene, steps, format, out),
+        } => {
+            let rows = sweep::Rows::new(steps, step_deg, format);
+            return sweep::sweep(&scene, rows, format, out);
+        }
         Command::At {
             scene,
             input_deg,

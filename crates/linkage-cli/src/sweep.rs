@@ -5,12 +5,13 @@
 use std::io::Write;
 
 use linkage::Kinematics;
-use linkage::sweep::{csv_header, csv_row};
+use linkage::sweep::{Grid, csv_header, csv_row, sweep_each_on, sweep_range};
+use linkage_diagram::cycle_table::{self, CycleTable, DEFAULT_STEP_DEG};
 use serde_json::json;
 
 use crate::args::{Format, SceneArgs};
 use crate::error::{CliError, Result};
-use crate::io::{check_finite, describe, json_text, load};
+use crate::io::{check_finite, describe, json_text, length_unit, load};
 
 /// A CSV writer's failure: a failed write (a closed pipe) is the output's.
 fn csv_failure(e: csv::Error) -> CliError {
@@ -28,11 +29,45 @@ fn csv_failure(e: csv::Error) -> CliError {
 pub const MAX_CSV_STEPS: usize = 100_000_000;
 /// See [`MAX_CSV_STEPS`].
 pub const MAX_JSON_STEPS: usize = 100_000;
+/// JSON's rows unless asked otherwise: a degree apart on a full turn.
+const JSON_STEPS: usize = 360;
 
-/// `sweep SCENE --steps N`: the rows written to `out`.
+/// Where the sweep's rows lie.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Rows {
+    /// So many positions, evenly spaced over the input's range (`--steps`).
+    Steps(usize),
+    /// The whole multiples of a step in degrees (`--step-deg`).
+    EveryDeg(f64),
+}
+
+impl Rows {
+    /// The rows asked for: CSV on whole degrees unless told, JSON on 360 steps.
+    pub(crate) fn new(steps: Option<usize>, step_deg: Option<f64>, format: Format) -> Self {
+        match (steps, step_deg, format) {
+            (Some(n), _, _) => Self::Steps(n),
+            (None, Some(d), _) => Self::EveryDeg(d),
+            (None, None, Format::Csv) => Self::EveryDeg(DEFAULT_STEP_DEG),
+            (None, None, Format::Json) => Self::Steps(JSON_STEPS),
+        }
+    }
+
+    /// The inputs these rows lie at for `k`.
+    fn grid(self, k: &Kinematics) -> std::result::Result<Grid, linkage::LinkageError> {
+        match self {
+            Self::Steps(n) => {
+                let (range, full) = sweep_range(k)?;
+                Ok(Grid::even(range, full, n))
+            }
+            Self::EveryDeg(d) => cycle_table::grid(k, d),
+        }
+    }
+}
+
+/// `sweep SCENE`: the rows written to `out`.
 pub(crate) fn sweep(
     args: &SceneArgs,
-    steps: usize,
+    rows: Rows,
     format: Format,
     out: &mut dyn Write,
 ) -> Result<()> {
@@ -40,63 +75,69 @@ pub(crate) fn sweep(
         Format::Csv => MAX_CSV_STEPS,
         Format::Json => MAX_JSON_STEPS,
     };
-    if steps > most {
+    if let Rows::Steps(steps) = rows
+        && steps > most
+    {
         return Err(CliError::refused(format!(
             "--steps {steps} is too many for {} output: at most {most}",
             if format == Format::Csv { "CSV" } else { "JSON" }
         )));
     }
     let mut k = load(args)?;
+    let grid = rows.grid(&k).map_err(|e| describe(args, e))?;
     let dead_points = dead_points(&k);
     if format == Format::Csv {
-        sweep_csv(&mut k, steps, out).map_err(|f| match f {
+        let table = CycleTable::new(length_unit(args)?);
+        sweep_csv(&mut k, grid, table, out).map_err(|f| match f {
             CliError::Solver(e) => describe(args, e),
             other => other,
         })?;
-        note_dead_points(dead_points, steps);
+        note_dead_points(dead_points, rows);
         return Ok(());
     }
-    let sw = linkage::sweep::sweep(&mut k, steps).map_err(|e| describe(args, e))?;
-    note_dead_points(dead_points, steps);
-    let m = k.mechanism();
-    let header = csv_header(m);
-    let rows: Vec<Vec<f64>> = sw
-        .solutions
-        .iter()
-        .zip(&sw.angles)
-        .map(|(s, a)| csv_row(m, s, a))
-        .collect();
-    for r in &rows {
-        check_finite(r, "sweep")?;
-    }
-    warn_near_singular(&sw.near_singular);
+    let m = k.mechanism().clone();
+    let mut table: Vec<Vec<f64>> = Vec::with_capacity(grid.count);
+    let info = sweep_each_on(&mut k, grid, |m, s, a| -> Result<()> {
+        let row = csv_row(m, s, a);
+        check_finite(&row, "sweep")?;
+        table.push(row);
+        Ok(())
+    })
+    .map_err(|f| match f {
+        CliError::Solver(e) => describe(args, e),
+        other => other,
+    })?;
+    note_dead_points(dead_points, rows);
+    warn_near_singular(&info.near_singular);
+    let next_to_dead_points = match (dead_points, rows) {
+        (Some(_), Rows::Steps(n)) => vec![0, n - 1],
+        _ => Vec::new(),
+    };
     let text = json_text(&json!({
             "scene": m.name,
             "solver_path": k.path().label(),
             "input_speed_rad_s": m.driver.speed_rad_s,
-            "range_rad": sw.range,
-            "near_singular_inputs_rad": sw.near_singular,
+            "range_rad": info.range,
+            "near_singular_inputs_rad": info.near_singular,
             "dead_points_rad": dead_points,
-            "rows_next_to_dead_points": dead_points.map_or(Vec::new(), |_| vec![0, steps - 1]),
-            "columns": header,
-            "rows": rows,
+            "rows_next_to_dead_points": next_to_dead_points,
+            "columns": csv_header(&m),
+            "rows": table,
     }))?;
     out.write_all(text.as_bytes())?;
     Ok(())
 }
 
-/// The sweep as CSV, each row written as soon as it is solved.
-fn sweep_csv(k: &mut Kinematics, steps: usize, out: &mut dyn Write) -> Result<()> {
-    let header = csv_header(k.mechanism());
+/// The sweep as CSV in the table a report takes ([`CycleTable`]), each row written
+/// as soon as it is solved.
+fn sweep_csv(k: &mut Kinematics, grid: Grid, table: CycleTable, out: &mut dyn Write) -> Result<()> {
     let mut w = csv::Writer::from_writer(out);
-    w.write_record(&header).map_err(csv_failure)?;
-    let mut cells: Vec<String> = Vec::with_capacity(header.len());
-    let info = linkage::sweep::sweep_each(k, steps, |m, s, angles| -> Result<()> {
-        let row = csv_row(m, s, angles);
-        check_finite(&row, "sweep")?;
-        cells.clear();
-        cells.extend(row.iter().map(|v| format!("{v:e}")));
-        w.write_record(&cells).map_err(csv_failure)?;
+    w.write_record(table.header(k.mechanism()))
+        .map_err(csv_failure)?;
+    let info = sweep_each_on(k, grid, |m, s, angles| -> Result<()> {
+        check_finite(&csv_row(m, s, angles), "sweep")?;
+        w.write_record(table.row(m, s, angles))
+            .map_err(csv_failure)?;
         Ok(())
     })?;
     w.flush()?;
@@ -114,19 +155,27 @@ fn dead_points(k: &Kinematics) -> Option<[f64; 2]> {
     ranges.containing(k.mechanism().driver.start_rad)
 }
 
-/// Says which rows sit next to the input's dead points: the sweep's first and last,
-/// a millionth of the range inside them, where the outputs' rates grow without
-/// bound (a slider's speed of hundreds of m/s there is the dead point's, not the
-/// mechanism's working speed).
-fn note_dead_points(dead_points: Option<[f64; 2]>, steps: usize) {
-    if let Some([a, b]) = dead_points {
-        eprintln!(
-            "note: the input's range ends at dead points, {:.4} deg and {:.4} deg; rows 1 and \
+/// Says where the input's dead points are and which rows sit next to them: with
+/// `--steps`, the sweep's first and last, a millionth of the range inside them,
+/// where the outputs' rates grow without bound (a slider's speed of hundreds of m/s
+/// there is the dead point's, not the mechanism's working speed); on whole
+/// multiples of a step, the rows lie between them.
+fn note_dead_points(dead_points: Option<[f64; 2]>, rows: Rows) {
+    let Some([a, b]) = dead_points else {
+        return;
+    };
+    let (a, b) = (a.to_degrees(), b.to_degrees());
+    match rows {
+        Rows::Steps(steps) => eprintln!(
+            "note: the input's range ends at dead points, {a:.4} deg and {b:.4} deg; rows 1 and \
              {steps} are a millionth of the range inside them, where the outputs' speeds and \
-             accelerations grow without bound",
-            a.to_degrees(),
-            b.to_degrees()
-        );
+             accelerations grow without bound"
+        ),
+        Rows::EveryDeg(step) => eprintln!(
+            "note: the input's range ends at dead points, {a:.4} deg and {b:.4} deg; the rows are \
+             the multiples of {step} deg between them (the outputs' speeds and accelerations \
+             grow without bound towards the dead points)"
+        ),
     }
 }
 

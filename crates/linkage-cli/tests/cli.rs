@@ -11,44 +11,56 @@ fn linkage(args: &[&str]) -> (bool, String, String) {
     (code == Some(0), out, err)
 }
 
+/// The CSV a student pastes: whole degrees 0..359 on a full turn, lengths in the
+/// scene's millimetres, every column named with its unit, plain decimals; the
+/// numbers are JSON's (SI) in those units.
 #[test]
-fn sweep_csv_has_the_contract_header_and_finite_rows() {
-    let (ok, out, err) = linkage(&["sweep", &scene("slider_crank.ron"), "--steps", "36"]);
+fn sweep_csv_is_the_table_a_report_takes() {
+    let (ok, out, err) = linkage(&["sweep", &scene("slider_crank.ron")]);
     assert!(ok, "{err}");
     let mut lines = out.lines();
     let header: Vec<&str> = lines.next().expect("header").split(',').collect();
-    assert_eq!(header[0], "input_rad");
+    assert_eq!(header[0], "input (deg)");
     assert_eq!(
         &header[1..7],
-        ["A_x", "A_y", "A_vx", "A_vy", "A_ax", "A_ay"]
+        [
+            "A x (mm)",
+            "A y (mm)",
+            "A vx (mm/s)",
+            "A vy (mm/s)",
+            "A ax (mm/s^2)",
+            "A ay (mm/s^2)"
+        ]
     );
     assert_eq!(
         &header[header.len() - 3..],
-        ["slider_theta", "slider_omega", "slider_alpha"]
+        [
+            "slider angle (deg)",
+            "slider omega (rad/s)",
+            "slider alpha (rad/s^2)"
+        ]
     );
-    assert!(header.contains(&"rod_omega") && header.contains(&"C_ax"));
-    let rows: Vec<Vec<f64>> = lines
-        .map(|l| {
-            l.split(',')
-                .map(|v| v.parse::<f64>().expect("number"))
-                .collect()
-        })
-        .collect();
-    assert_eq!(rows.len(), 36);
-    assert!(
-        rows.iter()
-            .all(|r| r.len() == header.len() && r.iter().all(|v| v.is_finite()))
-    );
-    // SI units at the scene's 300 rpm: |v_B| = 0.05 m · 31.416 rad/s.
-    let (bvx, bvy) = (
-        header.iter().position(|h| *h == "B_vx").expect("B_vx"),
-        header.iter().position(|h| *h == "B_vy").expect("B_vy"),
-    );
-    let vb = rows[5][bvx].hypot(rows[5][bvy]);
-    assert!(
-        (vb - 0.05 * 10.0 * std::f64::consts::PI).abs() < 1e-12,
-        "{vb}"
-    );
+    let cells: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(cells.len(), 360);
+    for (i, row) in cells.iter().enumerate() {
+        assert_eq!(row.len(), header.len());
+        assert_eq!(row[0], i.to_string(), "whole degrees from 0");
+        assert!(
+            row.iter()
+                .all(|c| !c.contains(['e', 'E']) && c.parse::<f64>().is_ok_and(f64::is_finite)),
+            "plain decimals: {row:?}"
+        );
+    }
+    // Row 30 against `at --input-deg 30` in JSON (m, m/s): |v_B| = 50 mm · 31.416 rad/s.
+    let column = |name: &str| header.iter().position(|h| *h == name).expect(name);
+    let value = |name: &str| cells[30][column(name)].parse::<f64>().expect("number");
+    let vb = value("B vx (mm/s)").hypot(value("B vy (mm/s)"));
+    let want = 50.0 * 10.0 * std::f64::consts::PI;
+    assert!((vb - want).abs() < 1e-5 * want, "{vb} vs {want}");
+    let (_, json, _) = linkage(&["at", &scene("slider_crank.ron"), "--input-deg", "30"]);
+    let v: serde_json::Value = serde_json::from_str(&json).expect("json");
+    let cx = v["points"]["C"]["position"][0].as_f64().expect("C x") * 1e3;
+    assert!((value("C x (mm)") - cx).abs() < 1e-5 * cx.abs(), "{cx}");
 }
 
 #[test]
@@ -166,7 +178,11 @@ fn at_json_adds_polygon_equations() {
         "--format",
         "csv",
     ]);
-    assert!(ok && csv.lines().count() == 2 && csv.starts_with("input_rad,"));
+    assert!(ok && csv.lines().count() == 2 && csv.starts_with("input (deg),"));
+    assert!(
+        csv.lines().nth(1).is_some_and(|row| row.starts_with("30,")),
+        "{csv}"
+    );
 }
 
 #[test]
@@ -459,18 +475,14 @@ fn a_newton_only_chain_at_outside_its_range_names_it_and_sweep_covers_it() {
     assert!(!ok, "120 deg is outside the range");
     let want = format!("reachable input range: {a:.2}..{b:.2} deg");
     assert!(err.contains(&want), "{err}");
-    let (ok, out, err) = linkage(&["sweep", &file, "--steps", "50"]);
+    let (ok, out, err) = linkage(&["sweep", &file, "--steps", "50", "--format", "json"]);
     assert!(ok, "{err}");
-    let inputs: Vec<f64> = out
-        .lines()
-        .skip(1)
-        .map(|l| {
-            l.split(',')
-                .next()
-                .unwrap_or_default()
-                .parse()
-                .expect("input_rad")
-        })
+    let v: serde_json::Value = serde_json::from_str(&out).expect("json");
+    let inputs: Vec<f64> = v["rows"]
+        .as_array()
+        .expect("rows")
+        .iter()
+        .map(|row| row[0].as_f64().expect("input_rad"))
         .collect();
     assert_eq!(inputs.len(), 50);
     // The sweep's ends are 1e-6 of the range inside the dead points.
@@ -625,25 +637,23 @@ fn known_coupler_point(deg: f64) -> (f64, f64) {
     (bx + ux * 1.5 - uy * 1.1, by + uy * 1.5 + ux * 1.1)
 }
 
-/// The sweep's P column as points.
+/// The sweep's P column as points, m (JSON: SI to the last digit).
 fn swept_p(scene: &std::path::Path, steps: usize) -> Vec<(f64, f64)> {
-    let (ok, csv, err) = linkage(&[
+    let (ok, json, err) = linkage(&[
         "sweep",
         scene.to_str().expect("path"),
         "--steps",
         &steps.to_string(),
+        "--format",
+        "json",
     ]);
     assert!(ok, "{err}");
-    let mut lines = csv.lines();
-    let header: Vec<&str> = lines.next().expect("header").split(',').collect();
-    let col = |name: &str| header.iter().position(|h| *h == name).expect("column");
+    let v: serde_json::Value = serde_json::from_str(&json).expect("json");
+    let header: Vec<String> = serde_json::from_value(v["columns"].clone()).expect("columns");
+    let col = |name: &str| header.iter().position(|h| h == name).expect("column");
     let (x, y) = (col("P_x"), col("P_y"));
-    lines
-        .map(|l| {
-            let v: Vec<f64> = l.split(',').map(|c| c.parse().expect("number")).collect();
-            (v[x], v[y])
-        })
-        .collect()
+    let rows: Vec<Vec<f64>> = serde_json::from_value(v["rows"].clone()).expect("rows");
+    rows.iter().map(|r| (r[x], r[y])).collect()
 }
 
 fn write_targets(

@@ -15,6 +15,8 @@
 //!   the unknowns' direction lines, their crossing).
 //! - [`force_figure`]: one stage's force polygon (an Assur group or the crank) as
 //!   arrows in newtons, with its table of forces and couples.
+//! - [`cycle_table`]: the table of the cycle as CSV a student pastes (degrees,
+//!   the scene's length unit, columns named with units): the app's and the CLI's.
 //! - [`svg`]: an A4 sheet of the chosen figures and the vector-equation tables;
 //!   `png` (feature `png`) renders it.
 
@@ -25,6 +27,7 @@
 pub mod cam_dxf;
 pub mod construction;
 pub mod course;
+pub mod cycle_table;
 pub mod figure;
 pub mod force_figure;
 pub mod geometry;

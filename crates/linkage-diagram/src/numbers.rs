@@ -86,6 +86,14 @@ pub fn si_beside(value: f64, scale: f64, unit: &str) -> String {
     si(value, unit)
 }
 
+/// A length unit's symbol ("mm", "m").
+pub fn unit_symbol(unit: linkage::scene::LengthUnit) -> &'static str {
+    match unit {
+        linkage::scene::LengthUnit::Metre => "m",
+        linkage::scene::LengthUnit::Millimetre => "mm",
+    }
+}
+
 /// An angle in degrees to four significant digits, with the degree sign ("42.58°").
 pub fn degrees(deg: f64) -> String {
     format!("{}°", significant(deg, 4))

@@ -1,14 +1,19 @@
 //! The sheet as PNG: the SVG rendered by resvg (the reference Rust SVG renderer)
 //! rather than drawn a second time, with only the font given loaded, so that the
-//! picture is the same on every machine.
+//! picture is the same on every machine. Chinese text (names in a scene, a sheet in
+//! Chinese) draws with Noto Sans CJK SC, cut to the common characters
+//! (`scripts/cjk_font.py`; SIL OFL, `assets/fonts/OFL.txt`).
+
+/// Noto Sans CJK SC cut to the common characters: the face Chinese text is drawn
+/// with, here and in the desktop app.
+pub const CJK_FONT: &[u8] = include_bytes!("../../../assets/fonts/NotoSansSC-Subset.otf");
 
 /// `svg` rendered at `dpi` (the sheet's units are CSS pixels, 96 to the inch) with the
-/// sans-serif face `font` (TrueType or OpenType data, family `family`), as PNG bytes.
+/// sans-serif face `font` (TrueType or OpenType data, family `family`), and
+/// [`CJK_FONT`] for the characters it lacks where the sheet holds Chinese text, as
+/// PNG bytes.
 pub fn render(svg: &str, dpi: f32, font: &[u8], family: &str) -> Result<Vec<u8>, String> {
-    let mut opt = resvg::usvg::Options::default();
-    opt.fontdb_mut().load_font_data(font.to_vec());
-    opt.fontdb_mut().set_sans_serif_family(family);
-    opt.font_family = family.into();
+    let opt = options(font, family, has_cjk(svg));
     let tree = resvg::usvg::Tree::from_str(svg, &opt)
         .map_err(|e| format!("the SVG does not parse: {e}"))?;
     let zoom = dpi / 96.0;
@@ -27,4 +32,78 @@ pub fn render(svg: &str, dpi: f32, font: &[u8], family: &str) -> Result<Vec<u8>,
     pixmap
         .encode_png()
         .map_err(|e| format!("cannot encode the PNG: {e}"))
+}
+
+/// Whether `text` holds a character of the Chinese face's ranges (CJK radicals to
+/// the full-width forms).
+fn has_cjk(text: &str) -> bool {
+    text.chars().any(|c| ('\u{2E80}'..='\u{FFEF}').contains(&c))
+}
+
+/// resvg's options with `font` as the sans-serif face, and [`CJK_FONT`] beside it
+/// when `cjk`: usvg falls back, glyph by glyph, to a loaded face that has the
+/// character.
+fn options(font: &[u8], family: &str, cjk: bool) -> resvg::usvg::Options<'static> {
+    let mut opt = resvg::usvg::Options::default();
+    opt.fontdb_mut().load_font_data(font.to_vec());
+    if cjk {
+        opt.fontdb_mut().load_font_data(CJK_FONT.to_vec());
+    }
+    opt.fontdb_mut().set_sans_serif_family(family);
+    opt.font_family = family.into();
+    opt
+}
+
+/// The characters of `svg`'s text that [`render`] would draw as no glyph (the
+/// faces' `.notdef`), in order: none on a sheet whose every word is drawn.
+///
+/// # Errors
+/// An SVG that does not parse.
+pub fn undrawn_characters(svg: &str, font: &[u8], family: &str) -> Result<Vec<String>, String> {
+    undrawn_with(svg, &options(font, family, has_cjk(svg)))
+}
+
+fn undrawn_with(svg: &str, opt: &resvg::usvg::Options<'_>) -> Result<Vec<String>, String> {
+    let tree = resvg::usvg::Tree::from_str(svg, opt)
+        .map_err(|e| format!("the SVG does not parse: {e}"))?;
+    let mut undrawn = Vec::new();
+    collect_undrawn(tree.root(), &mut undrawn);
+    Ok(undrawn)
+}
+
+fn collect_undrawn(group: &resvg::usvg::Group, out: &mut Vec<String>) {
+    for node in group.children() {
+        match node {
+            resvg::usvg::Node::Group(g) => collect_undrawn(g, out),
+            resvg::usvg::Node::Text(t) => {
+                for span in t.layouted() {
+                    out.extend(
+                        span.positioned_glyphs
+                            .iter()
+                            .filter(|g| g.id.0 == 0 && !g.text.trim().is_empty())
+                            .map(|g| g.text.clone()),
+                    );
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const UBUNTU: &[u8] = epaint_default_fonts::UBUNTU_LIGHT;
+
+    /// Chinese names draw with the Chinese face; without it, the same words are
+    /// glyphs the sheet's Latin face lacks (so the check can fail).
+    #[test]
+    fn chinese_text_is_drawn_with_the_chinese_face() {
+        let svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"200\" height=\"40\">\
+                   <text x=\"5\" y=\"30\" font-size=\"20\">曲柄 AB 连杆，滑块</text></svg>";
+        assert_eq!(undrawn_characters(svg, UBUNTU, "Ubuntu"), Ok(Vec::new()));
+        let latin_only = undrawn_with(svg, &options(UBUNTU, "Ubuntu", false)).expect("parses");
+        assert_eq!(latin_only.concat(), "曲柄连杆，滑块");
+    }
 }

@@ -28,7 +28,7 @@ pub(crate) fn document(title: &str, body: &str, height: f64) -> String {
         "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n\
          <svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" \
          width=\"{:.1}mm\" height=\"{:.1}mm\" viewBox=\"0 0 {PAGE_W} {height:.1}\" \
-         font-family=\"Ubuntu, Liberation Sans, Arial, Helvetica, sans-serif\">\n\
+         font-family=\"Ubuntu, Liberation Sans, Arial, Helvetica, Noto Sans CJK SC, Noto Sans SC, Microsoft YaHei, PingFang SC, sans-serif\">\n\
          <title>{}</title>\n\
          <rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n{body}</svg>\n",
         PAGE_W * 25.4 / 96.0,

@@ -77,7 +77,7 @@ pub fn sweep(k: &mut Kinematics, steps: usize) -> Result<Sweep> {
 pub fn sweep_each<E: From<LinkageError>>(
     k: &mut Kinematics,
     steps: usize,
-    mut visit: impl FnMut(&Mechanism, &Solution, &[f64]) -> std::result::Result<(), E>,
+    visit: impl FnMut(&Mechanism, &Solution, &[f64]) -> std::result::Result<(), E>,
 ) -> std::result::Result<SweepInfo, E> {
     if steps < 2 {
         return Err(LinkageError::invalid(
@@ -87,21 +87,91 @@ pub fn sweep_each<E: From<LinkageError>>(
         )
         .into());
     }
-    let ([a, b], full) = sweep_range(k)?;
+    let (range, full) = sweep_range(k)?;
+    sweep_each_on(k, Grid::even(range, full, steps), visit)
+}
+
+/// Inputs evenly spaced by `step` from `first`: where a sweep solves.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Grid {
+    /// The first input, rad.
+    pub first: f64,
+    /// The step between inputs, rad.
+    pub step: f64,
+    /// How many inputs.
+    pub count: usize,
+    /// Where the inputs lie: the sweep's range, rad.
+    pub range: [f64; 2],
+}
+
+impl Grid {
+    /// `steps` inputs over `range`: a full turn (`full`) excludes its end, which
+    /// repeats the start; a rocking input's range includes both ends.
+    pub fn even(range: [f64; 2], full: bool, steps: usize) -> Self {
+        let [a, b] = range;
+        let divisions = if full { steps } else { steps - 1 }.max(1);
+        Self {
+            first: a,
+            step: (b - a) / divisions as f64,
+            count: steps,
+            range,
+        }
+    }
+
+    /// The whole multiples of `step` (rad, positive) in `range`, as a table of the
+    /// cycle lists them (0°, 1°, 2°, ... for a step of 1°). A full turn (`full`)
+    /// runs from 0 to just under a turn, each angle once, whatever its start.
+    pub fn multiples(range: [f64; 2], full: bool, step: f64) -> Self {
+        let (range, first, last) = if full {
+            let turn = std::f64::consts::TAU;
+            ([0.0, turn], 0.0, turn - 1e-9 * step)
+        } else {
+            // A rocking input's range ends a hair inside its dead points: the
+            // multiples stay inside it.
+            let [a, b] = range;
+            (range, (a / step).ceil() * step, b)
+        };
+        let count = if last < first {
+            0
+        } else {
+            ((last - first) / step).floor() as usize + 1
+        };
+        Self {
+            first,
+            step,
+            count: count.min(MAX_SWEEP_STEPS),
+            range,
+        }
+    }
+
+    /// The `i`-th input, rad.
+    pub fn input(&self, i: usize) -> f64 {
+        self.first + self.step * i as f64
+    }
+}
+
+/// Like [`sweep_each`], on the inputs of `grid`.
+///
+/// # Errors
+/// The solver's error, an input speed so high that a velocity or acceleration
+/// overflows ([`LinkageError::SpeedOverflow`]), or the first error of `visit`.
+pub fn sweep_each_on<E: From<LinkageError>>(
+    k: &mut Kinematics,
+    grid: Grid,
+    mut visit: impl FnMut(&Mechanism, &Solution, &[f64]) -> std::result::Result<(), E>,
+) -> std::result::Result<SweepInfo, E> {
     let speed = k.mechanism().driver.speed_rad_s;
-    let divisions = if full { steps } else { steps - 1 };
+    let [a, b] = grid.range;
     let mut near_singular = Vec::new();
     let mut lanes = k.empty_lane_solution();
     let mut s = k.empty_solution();
     let mut angles: Vec<f64> = Vec::new();
     // LANES inputs per call: the closed form solves them together in SIMD lanes.
     // The last call repeats its final input to fill the lanes.
-    for first in (0..steps).step_by(LANES) {
-        let inputs = std::array::from_fn(|l| {
-            a + (b - a) * (first + l).min(steps - 1) as f64 / divisions as f64
-        });
+    for first in (0..grid.count).step_by(LANES) {
+        let inputs = std::array::from_fn(|l| grid.input((first + l).min(grid.count - 1)));
         solve_stepping_past_branch_points(k, inputs, speed, (b - a) * 1e-6, &mut lanes)?;
-        for lane in 0..LANES.min(steps - first) {
+        for lane in 0..LANES.min(grid.count - first) {
             lanes.lane_into(lane, &mut s);
             crate::overflow::check(k, &s)?;
             if s.conditioning < NEAR_SINGULAR {
@@ -119,7 +189,7 @@ pub fn sweep_each<E: From<LinkageError>>(
     }
     Ok(SweepInfo {
         near_singular,
-        range: [a, b],
+        range: grid.range,
     })
 }
 
@@ -181,4 +251,48 @@ pub fn csv_row(m: &Mechanism, s: &Solution, angles: &[f64]) -> Vec<f64> {
         row.extend([angles[l], s.links[l].omega_rad_s, s.links[l].alpha_rad_s2]);
     }
     row
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Grid;
+
+    fn degrees(g: &Grid) -> Vec<f64> {
+        (0..g.count).map(|i| g.input(i).to_degrees()).collect()
+    }
+
+    #[test]
+    fn a_full_turn_on_whole_degrees_runs_from_zero_whatever_its_start() {
+        let start = 117.658_f64.to_radians();
+        let g = Grid::multiples(
+            [start, start + std::f64::consts::TAU],
+            true,
+            1f64.to_radians(),
+        );
+        let d = degrees(&g);
+        assert_eq!(d.len(), 360);
+        assert!(
+            d.iter()
+                .enumerate()
+                .all(|(i, x)| (x - i as f64).abs() < 1e-9)
+        );
+        // 7° does not divide the turn: 0, 7, ..., 357.
+        let g = Grid::multiples([0.0, std::f64::consts::TAU], true, 7f64.to_radians());
+        assert_eq!(g.count, 52);
+        assert!((degrees(&g)[51] - 357.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn a_rocking_range_keeps_the_multiples_inside_it() {
+        let range = [10.5f64.to_radians(), 40.0f64.to_radians() - 1e-9];
+        let g = Grid::multiples(range, false, 10f64.to_radians());
+        let d = degrees(&g);
+        assert_eq!(d.len(), 2, "{d:?}");
+        assert!((d[0] - 20.0).abs() < 1e-9 && (d[1] - 30.0).abs() < 1e-9);
+        let even = Grid::even(range, false, 3);
+        assert!(
+            (degrees(&even)[2] - 40.0).abs() < 1e-6,
+            "both ends included"
+        );
+    }
 }

@@ -1,29 +1,20 @@
 //! What the session writes for the user: the sweep as CSV and the sheet of the
 //! current position as SVG, and a cam joint as CSV and its profile as SVG.
 
-use linkage::sweep::{csv_header, csv_row, sweep};
+use linkage_diagram::cycle_table::{CycleTable, DEFAULT_STEP_DEG};
 
 use super::Session;
-use super::curves;
 
 impl Session {
-    /// The current mechanism's sweep as CSV, in the `linkage sweep` format (same
-    /// header, SI units, velocities at the scene's crank speed).
+    /// The current mechanism's cycle as CSV a student pastes into a report, as
+    /// `linkage sweep` writes it: the input on whole degrees, lengths in the scene's
+    /// unit, columns named with units, velocities at the scene's crank speed.
     ///
     /// # Errors
     /// The sweep's error.
     pub fn sweep_csv(&self) -> Result<String, linkage::LinkageError> {
         let mut k = self.kinematics().clone();
-        let sw = sweep(&mut k, curves::CURVE_STEPS)?;
-        let m = k.mechanism();
-        let mut out = csv_header(m).join(",");
-        out.push('\n');
-        for (s, angles) in sw.solutions.iter().zip(&sw.angles) {
-            let row: Vec<String> = csv_row(m, s, angles).iter().map(f64::to_string).collect();
-            out.push_str(&row.join(","));
-            out.push('\n');
-        }
-        Ok(out)
+        CycleTable::new(self.scene().length_unit).csv(&mut k, DEFAULT_STEP_DEG)
     }
 
     /// The sheet of the current position (pose, polygons, tables; instant centres if

@@ -275,6 +275,31 @@ mod tests {
         );
     }
 
+    /// A student's scene named in Chinese (its name, links and description) comes
+    /// back whole from its link and from the file the app saves.
+    #[test]
+    fn chinese_names_round_trip_through_the_link_and_the_saved_file() {
+        let text = include_str!("../../../../docs/examples/slider_crank_zh.ron");
+        let s = Session::open_text(SceneSource::File("曲柄滑块.ron".into()), text).expect("opens");
+        assert_eq!(s.scene().name, "对心曲柄滑块机构");
+        let fragment = encode(&s);
+        assert!(fragment.is_ascii(), "a link is plain ASCII: {fragment}");
+        let back = open(&decode(&fragment)).expect("reopens");
+        assert_eq!(back.scene(), s.scene());
+        assert_eq!(back.source(), &SceneSource::File("曲柄滑块.ron".into()));
+        let saved = s.to_ron().expect("saves");
+        let again = Session::open_text(SceneSource::File("again.ron".into()), &saved)
+            .expect("reopens the saved file");
+        assert_eq!(again.scene(), s.scene());
+        let links: Vec<&str> = again
+            .mechanism()
+            .links
+            .iter()
+            .map(|l| l.name.as_str())
+            .collect();
+        assert_eq!(links, ["机架", "曲柄", "连杆", "滑块"]);
+    }
+
     #[test]
     fn edited_state_round_trips_through_the_fragment() {
         let mut s = Session::open_builtin("gravity_flipper").expect("opens");

@@ -17,11 +17,7 @@ pub fn length(m: f64, unit: LengthUnit) -> String {
 
 /// A length unit as shown.
 pub fn unit_label_of(unit: linkage::scene::LengthUnit) -> &'static str {
-    use linkage::scene::LengthUnit;
-    match unit {
-        LengthUnit::Metre => "m",
-        LengthUnit::Millimetre => "mm",
-    }
+    linkage_diagram::numbers::unit_symbol(unit)
 }
 
 /// A group of the chain by its links and joint ("coupler and rocker, joined at C"),

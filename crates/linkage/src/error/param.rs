@@ -19,6 +19,8 @@ pub enum Param {
     NewtonTolerance,
     /// The steps of a sweep.
     SweepSteps,
+    /// The input's step of a table of the cycle, degrees.
+    SweepStepDeg,
     /// Which segment of a dynamic run a sample is from.
     SampleSegment,
     /// A dynamic run's relative tolerance.
@@ -136,6 +138,7 @@ impl std::fmt::Display for Param {
             Self::NewtonInput => "input",
             Self::NewtonTolerance => "Newton tolerance",
             Self::SweepSteps => "steps",
+            Self::SweepStepDeg => "step (deg)",
             Self::SampleSegment => "sample segment",
             Self::Rtol => "rtol",
             Self::Atol => "atol",

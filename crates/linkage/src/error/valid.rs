@@ -122,6 +122,8 @@ pub enum Valid {
     NotZeroShort,
     /// Between 0 and 90.
     Between0And90,
+    /// Between two numbers, both included.
+    Between(f64, f64),
     /// A pressure angle limit that a base circle up to `most_m` reaches.
     BaseCircleUpTo {
         /// The largest base circle tried, m.
@@ -225,6 +227,7 @@ impl Valid {
             | Self::AtLeast(_)
             | Self::AtMostSteps(_)
             | Self::BaseCircleUpTo { .. }
+            | Self::Between(..)
             | Self::BelowNoLoad { .. }
             | Self::BelowPrimeCircle { .. }
             | Self::Count { .. }
@@ -245,6 +248,7 @@ impl std::fmt::Display for Valid {
             return f.write_str(words);
         }
         match self {
+            Self::Between(low, high) => write!(f, "must be between {low} and {high}"),
             Self::AngleWithin { limit } => {
                 write!(
                     f,
