@@ -441,7 +441,8 @@ fn the_cam_panel_exports_csv_svg_and_a_dxf_holding_every_profile_point() {
     );
     let svg = std::fs::read_to_string(&written[1]).expect("svg");
     assert!(
-        svg.contains("Cam profile: crank/bell_crank"),
+        // The title names the links as the user named them, not the joint's id.
+        svg.contains(": cam on crank, follower bell_crank") && !svg.contains("crank/bell_crank"),
         "{}",
         &svg[..200]
     );

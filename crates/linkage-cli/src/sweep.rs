@@ -96,7 +96,7 @@ pub(crate) fn sweep(
         return Ok(());
     }
     let m = k.mechanism().clone();
-    let mut table: Vec<Vec<f64>> = Vec::with_capacity(grid.count);
+    let mut table: Vec<Vec<f64>> = Vec::with_capacity(grid.count());
     let info = sweep_each_on(&mut k, grid, |m, s, a| -> Result<()> {
         let row = csv_row(m, s, a);
         check_finite(&row, "sweep")?;

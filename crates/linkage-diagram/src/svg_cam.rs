@@ -19,6 +19,7 @@ use crate::svg_draw::{
 const PROFILE: &str = "#222222";
 const PITCH: &str = "#2f5f9e";
 const PAST_LIMIT: &str = "#c0392b";
+const BASE_CIRCLE: &str = "#8c8c8c";
 
 /// A cam to draw: its points over the turn (in its own frame, m) and its limits.
 pub struct CamSheet<'a> {
@@ -67,14 +68,13 @@ pub fn cam_sheet(c: &CamSheet<'_>) -> String {
     document(c.title, &body, height)
 }
 
-/// The base circle, the pitch curve dashed, the profile, the centre, the marks.
+/// The pitch curve dashed, the profile, the base circle, the centre, the marks.
 fn draw_cam(out: &mut String, c: &CamSheet<'_>, px: &dyn Fn([f64; 2]) -> Pt, scale: f64, at: Pt) {
     let n = 180;
     let base: Vec<Pt> = (0..n)
         .map(|i| TAU * f64::from(i) / f64::from(n))
         .map(|t| px([c.base_radius_m * t.cos(), c.base_radius_m * t.sin()]))
         .collect();
-    polygon_shape(out, &base, "none", "#bbbbbb");
     // One path, so that its dashes run on round the curve.
     let pitch: Vec<String> = c
         .points
@@ -89,6 +89,8 @@ fn draw_cam(out: &mut String, c: &CamSheet<'_>, px: &dyn Fn([f64; 2]) -> Pt, sca
     );
     let profile: Vec<Pt> = c.points.iter().map(|p| px(p.profile_m)).collect();
     polygon_shape(out, &profile, "#efe6cf", PROFILE);
+    // Over the profile's fill, which would hide it: the base circle lies inside.
+    polygon_shape(out, &base, "none", BASE_CIRCLE);
     for p in c
         .points
         .iter()

@@ -14,8 +14,7 @@ use crate::geometry::{Pt, Rect};
 use crate::layout::{Fit, Sizes, layout_polygon, round_scale};
 use crate::polygon_figure::{PolygonFigure, title};
 use crate::svg_draw::{
-    FONT, MARGIN, PAGE_W, TITLE_H, document, frame, line, measure, polygon, round_text, text_at,
-    titled_pane,
+    FONT, MARGIN, PAGE_W, TITLE_H, document, frame, line, measure, polygon, text_at, titled_pane,
 };
 use linkage::polygon::Quantity;
 
@@ -295,10 +294,10 @@ fn value_ticks(out: &mut String, axes: &Axes, pane: Rect) {
         // A tick at zero reads 0, not the float noise of the steps that reach it.
         let tick = if v.abs() < 1e-9 * step {
             "0".to_string()
-        } else if v.abs() >= 1e5 {
-            format!("{v:.1e}")
         } else {
-            round_text(v)
+            // Plain digits, never an exponent (150000, not 1.5e5): a round step's
+            // value has few significant digits.
+            crate::numbers::significant(v, 4)
         };
         text_at(out, [pane.min[0] + 4.0, p[1] + 4.0], &tick, 10.0, "normal");
         v += step;
@@ -367,5 +366,29 @@ fn value_range(data: &[[f64; 2]]) -> (f64, f64) {
         (lo - pad, hi + pad)
     } else {
         (lo - 1.0, hi + 1.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A chart of large values (a die's acceleration in mm/s², a press's force)
+    /// labels its ticks in plain digits: 150000, never 1.5e5.
+    #[test]
+    fn large_values_tick_in_plain_digits() {
+        let pane = Rect::from_min_size([0.0, 0.0], 400.0, 150.0);
+        let axes = Axes {
+            plot: Rect::from_min_size([60.0, 20.0], 330.0, 110.0),
+            x: [0.0, 360.0],
+            y: [-150_000.0, 250_000.0],
+        };
+        let mut out = String::new();
+        value_ticks(&mut out, &axes, pane);
+        assert!(
+            out.contains(">200000<") && out.contains(">-100000<"),
+            "{out}"
+        );
+        assert!(!out.contains("e5"), "{out}");
     }
 }

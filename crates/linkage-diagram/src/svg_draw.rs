@@ -173,17 +173,6 @@ pub(crate) fn scale_bar(out: &mut String, bar: &ScaleBar, unit: &str) {
     );
 }
 
-/// A round value without float noise (0.05, not 0.05000000000000001).
-pub fn round_text(v: f64) -> String {
-    let t = format!("{v:.6}");
-    let t = t.trim_end_matches('0').trim_end_matches('.');
-    if t.is_empty() || t == "0" {
-        format!("{v:.0e}")
-    } else {
-        t.to_string()
-    }
-}
-
 pub(crate) fn leaders_and_label(
     out: &mut String,
     label: &Label,

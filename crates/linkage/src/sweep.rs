@@ -91,31 +91,38 @@ pub fn sweep_each<E: From<LinkageError>>(
     sweep_each_on(k, Grid::even(range, full, steps), visit)
 }
 
-/// Inputs evenly spaced by `step` from `first`: where a sweep solves.
+/// Where a sweep solves: its inputs, in order.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Grid {
-    /// The first input, rad.
-    pub first: f64,
-    /// The step between inputs, rad.
-    pub step: f64,
-    /// How many inputs.
-    pub count: usize,
-    /// Where the inputs lie: the sweep's range, rad.
-    pub range: [f64; 2],
+pub enum Grid {
+    /// `steps` inputs evenly spread over `range` (rad): a full turn (`full`)
+    /// excludes its end, which repeats the start; a rocking input's range includes
+    /// both ends.
+    Even {
+        /// The range, rad.
+        range: [f64; 2],
+        /// Whether the range is a full turn.
+        full: bool,
+        /// How many inputs.
+        steps: usize,
+    },
+    /// `count` whole multiples of `step` (rad) from `first` (rad), inside `range`.
+    Multiples {
+        /// The range the multiples lie in, rad.
+        range: [f64; 2],
+        /// The first input, rad.
+        first: f64,
+        /// The step, rad.
+        step: f64,
+        /// How many inputs.
+        count: usize,
+    },
 }
 
 impl Grid {
     /// `steps` inputs over `range`: a full turn (`full`) excludes its end, which
     /// repeats the start; a rocking input's range includes both ends.
     pub fn even(range: [f64; 2], full: bool, steps: usize) -> Self {
-        let [a, b] = range;
-        let divisions = if full { steps } else { steps - 1 }.max(1);
-        Self {
-            first: a,
-            step: (b - a) / divisions as f64,
-            count: steps,
-            range,
-        }
+        Self::Even { range, full, steps }
     }
 
     /// The whole multiples of `step` (rad, positive) in `range`, as a table of the
@@ -136,17 +143,42 @@ impl Grid {
         } else {
             ((last - first) / step).floor() as usize + 1
         };
-        Self {
+        Self::Multiples {
+            range,
             first,
             step,
             count: count.min(MAX_SWEEP_STEPS),
-            range,
+        }
+    }
+
+    /// How many inputs.
+    pub fn count(&self) -> usize {
+        match *self {
+            Self::Even { steps, .. } => steps,
+            Self::Multiples { count, .. } => count,
+        }
+    }
+
+    /// The range the inputs lie in, rad.
+    pub fn range(&self) -> [f64; 2] {
+        match *self {
+            Self::Even { range, .. } | Self::Multiples { range, .. } => range,
         }
     }
 
     /// The `i`-th input, rad.
     pub fn input(&self, i: usize) -> f64 {
-        self.first + self.step * i as f64
+        match *self {
+            Self::Even {
+                range: [a, b],
+                full,
+                steps,
+            } => {
+                let divisions = if full { steps } else { steps - 1 }.max(1);
+                a + (b - a) * i as f64 / divisions as f64
+            }
+            Self::Multiples { first, step, .. } => first + step * i as f64,
+        }
     }
 }
 
@@ -161,17 +193,18 @@ pub fn sweep_each_on<E: From<LinkageError>>(
     mut visit: impl FnMut(&Mechanism, &Solution, &[f64]) -> std::result::Result<(), E>,
 ) -> std::result::Result<SweepInfo, E> {
     let speed = k.mechanism().driver.speed_rad_s;
-    let [a, b] = grid.range;
+    let [a, b] = grid.range();
+    let count = grid.count();
     let mut near_singular = Vec::new();
     let mut lanes = k.empty_lane_solution();
     let mut s = k.empty_solution();
     let mut angles: Vec<f64> = Vec::new();
     // LANES inputs per call: the closed form solves them together in SIMD lanes.
     // The last call repeats its final input to fill the lanes.
-    for first in (0..grid.count).step_by(LANES) {
-        let inputs = std::array::from_fn(|l| grid.input((first + l).min(grid.count - 1)));
+    for first in (0..count).step_by(LANES) {
+        let inputs = std::array::from_fn(|l| grid.input((first + l).min(count - 1)));
         solve_stepping_past_branch_points(k, inputs, speed, (b - a) * 1e-6, &mut lanes)?;
-        for lane in 0..LANES.min(grid.count - first) {
+        for lane in 0..LANES.min(count - first) {
             lanes.lane_into(lane, &mut s);
             crate::overflow::check(k, &s)?;
             if s.conditioning < NEAR_SINGULAR {
@@ -189,7 +222,7 @@ pub fn sweep_each_on<E: From<LinkageError>>(
     }
     Ok(SweepInfo {
         near_singular,
-        range: grid.range,
+        range: grid.range(),
     })
 }
 
@@ -258,7 +291,7 @@ mod tests {
     use super::Grid;
 
     fn degrees(g: &Grid) -> Vec<f64> {
-        (0..g.count).map(|i| g.input(i).to_degrees()).collect()
+        (0..g.count()).map(|i| g.input(i).to_degrees()).collect()
     }
 
     #[test]
@@ -278,7 +311,7 @@ mod tests {
         );
         // 7° does not divide the turn: 0, 7, ..., 357.
         let g = Grid::multiples([0.0, std::f64::consts::TAU], true, 7f64.to_radians());
-        assert_eq!(g.count, 52);
+        assert_eq!(g.count(), 52);
         assert!((degrees(&g)[51] - 357.0).abs() < 1e-9);
     }
 

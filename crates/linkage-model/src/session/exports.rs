@@ -63,9 +63,17 @@ impl Session {
     /// `None` without that joint.
     pub fn cam_svg(&self, index: usize) -> Option<String> {
         let c = self.curves().cams.get(index)?;
+        let m = self.mechanism();
+        let joint = m.cams.get(index)?;
+        // The links by the names the user gave them, not the joint's own id
+        // ("crank/bell_crank").
+        let title = format!(
+            "{}: cam on {}, follower {}",
+            m.name, m.links[joint.cam].name, m.links[joint.follower].name
+        );
         Some(linkage_diagram::svg_cam::cam_sheet(
             &linkage_diagram::svg_cam::CamSheet {
-                title: &c.name,
+                title: &title,
                 points: &c.points,
                 base_radius_m: c.base_radius_m,
                 pressure_limit_rad: c.pressure_limit_rad,
