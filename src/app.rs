@@ -60,6 +60,8 @@ impl LinkageApp {
         };
         let (session, why_not) = session;
         let mut state = AppState::new(session);
+        state.language = start.language;
+        state.remember_choices = start.remember_choices;
         // Natively the command line's file sets the file dialog's folder.
         #[cfg_attr(target_arch = "wasm32", allow(unused_mut))]
         let mut panels = ui::panels::Panels::default();
@@ -380,6 +382,8 @@ impl eframe::App for LinkageApp {
             edits_before: (self.state.timing.opened, self.state.session.edit_count()),
             solver_us: 0.0,
         });
+        // Every word of this frame in the language chosen (`tr!` reads it).
+        crate::i18n::set_language(self.state.language);
         ui::scene_picker::top_bar(ui, &mut self.state, &mut self.panels.files, frame);
         self.take_app_commands();
         if self.state.drawing.is_some() {
@@ -438,7 +442,7 @@ impl LinkageApp {
     /// the stored drawing, the Chinese face, the controls the browser test reads, and
     /// on the first frame the time it was drawn.
     fn end_web_frame(&mut self, ctx: &egui::Context) {
-        if let Some(why) = self.url.update(&self.state.session) {
+        if let Some(why) = self.url.update(&self.state.session, self.state.language) {
             self.state.status = Some(why);
         }
         self.drawing_store.update(self.state.drawing.as_ref());

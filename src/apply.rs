@@ -9,6 +9,7 @@ use linkage::drawing::Drawing;
 use crate::command::{Command, Waiting};
 use crate::drawing::DrawingEditor;
 use crate::drawing::edit::DrawingEdit;
+use crate::i18n::tr;
 use crate::session::{SceneEdit, SceneSource, Session};
 use crate::state::AppState;
 
@@ -115,7 +116,7 @@ impl AppState {
         match Drawing::from_pose(s.scene(), s.mechanism(), s.pose()) {
             Ok(drawing) => self.resume_drawing(drawing),
             Err(why) => {
-                self.status = Some(format!("this scene cannot become a drawing: {why}"));
+                self.status = Some(tr!("drawing.cannot_become", why = why));
                 Replaced::No
             }
         }
@@ -161,7 +162,7 @@ impl AppState {
                 Replaced::Yes
             }
             Err(why) => {
-                self.status = Some(format!("the drawing does not solve: {why}"));
+                self.status = Some(tr!("drawing.does_not_solve", why = why));
                 Replaced::No
             }
         }

@@ -3,6 +3,10 @@
 //! The same crate builds the desktop app (`src/main.rs`) and the browser demo
 //! (wasm32, started by [`start_web`]).
 
+// The catalogue of the app's words (locales/app.yml), compiled in; English where a
+// key lacks a language.
+rust_i18n::i18n!("locales", fallback = "en");
+
 mod app;
 mod apply;
 pub mod command;
@@ -10,6 +14,8 @@ pub mod file_action;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod file_dialog;
 pub mod fonts;
+pub mod i18n;
+pub mod language_pref;
 pub mod render;
 pub mod start;
 pub mod state;
@@ -66,11 +72,24 @@ pub fn start_web() {
             .start(
                 canvas,
                 eframe::WebOptions::default(),
-                Box::new(|cc| Ok(Box::new(LinkageApp::new(cc, StartOptions::default())))),
+                Box::new(|cc| Ok(Box::new(LinkageApp::new(cc, web_start_options())))),
             )
             .await;
         if let Err(err) = result {
             log::error!("failed to start Linkage Lab: {err:?}");
         }
     });
+}
+
+/// The web demo's start: the language a share link asks for, else the one chosen on
+/// an earlier visit, else the browser's.
+#[cfg(target_arch = "wasm32")]
+fn web_start_options() -> StartOptions {
+    let language =
+        language_pref::in_fragment(&web::fragment()).unwrap_or_else(language_pref::at_start);
+    StartOptions {
+        language,
+        remember_choices: true,
+        ..StartOptions::default()
+    }
 }

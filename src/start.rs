@@ -15,6 +15,12 @@ pub struct StartOptions {
     pub scene: Option<String>,
     /// Open this scene file.
     pub file: Option<PathBuf>,
+    /// The language of the app's words (English unless told: the command line, the
+    /// page and the remembered choice tell it).
+    pub language: crate::i18n::Language,
+    /// Whether a language chosen in the app is kept for the next run (the desktop
+    /// app and the web demo; not the tests, which must not write the user's files).
+    pub remember_choices: bool,
 }
 
 /// Linkage Lab: planar linkages for machine theory and design (the desktop app).
@@ -33,6 +39,10 @@ struct Args {
     /// Close after this many frames and print the mean CPU time per frame.
     #[arg(long, value_name = "N")]
     exit_after_frames: Option<u64>,
+    /// The language of the app's words: en or zh (English, 简体中文). Without it,
+    /// the one chosen in the app last time, else the system's.
+    #[arg(long, value_name = "LANG")]
+    lang: Option<String>,
 }
 
 /// A shipped scene's key, or why not with the keys there are.
@@ -82,6 +92,11 @@ impl From<Args> for StartOptions {
             play: a.play,
             scene: a.scene,
             file: a.file,
+            language: a.lang.as_deref().map_or_else(
+                crate::language_pref::at_start,
+                crate::i18n::Language::from_tag,
+            ),
+            remember_choices: true,
         }
     }
 }

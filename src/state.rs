@@ -136,6 +136,11 @@ pub struct AppState {
     pub layout: LayoutState,
     /// What the frames cost.
     pub timing: Timing,
+    /// The language of the app's words (`crate::i18n`), set by the top bar's switch.
+    pub language: crate::i18n::Language,
+    /// Whether the language chosen is kept for the next run
+    /// ([`crate::StartOptions::remember_choices`]).
+    pub remember_choices: bool,
 }
 
 impl AppState {
@@ -163,6 +168,8 @@ impl AppState {
                 opened: 0,
                 show: true,
             },
+            language: crate::i18n::Language::English,
+            remember_choices: false,
         }
     }
 }

@@ -56,6 +56,8 @@ struct Published<'a> {
     arrangement: crate::ui::layout::Arrangement,
     /// The sheet's tab shown (in the compact arrangements).
     sheet_tab: crate::ui::layout::SheetTab,
+    /// The language of the app's words, as its locale code ("en", "zh-CN").
+    language: &'static str,
 }
 
 /// A path search as the test hook shows it.
@@ -189,6 +191,7 @@ pub fn publish_controls(
         path_refused: synthesis.and_then(|v| v.path.refused()),
         arrangement: st.layout.arrangement,
         sheet_tab: st.layout.tab,
+        language: st.language.code(),
     };
     let json = serde_json::to_string(&published).unwrap_or_default();
     CONTROLS.with(|c| *c.borrow_mut() = json);
@@ -219,10 +222,16 @@ impl UrlSync {
         self.last.clear();
     }
 
-    /// Updates the URL if the state differs from the last one written. Returns why
-    /// the scene cannot travel in the URL, once, when that becomes so.
-    pub fn update(&mut self, s: &Session) -> Option<String> {
-        let now = url_state::encode(s);
+    /// Updates the URL if the state differs from the last one written (the
+    /// language, a preference, beside it where it is not English). Returns why the
+    /// scene cannot travel in the URL, once, when that becomes so.
+    pub fn update(&mut self, s: &Session, language: crate::i18n::Language) -> Option<String> {
+        let scene = url_state::encode(s);
+        let now = if scene.is_empty() {
+            scene
+        } else {
+            scene + &crate::language_pref::fragment_entry(language)
+        };
         if now == self.last {
             return None;
         }
@@ -286,7 +295,12 @@ impl FragmentWatch {
 /// afresh): the current scene's until the new one opens.
 pub fn follow_fragment(st: &mut crate::state::AppState, url: &mut UrlSync) {
     let fragment = fragment();
-    let wanted = fragment.trim_start_matches('#');
+    // The language a link asks for is a preference, followed at once; the rest is
+    // the scene.
+    if let Some(language) = crate::language_pref::in_fragment(&fragment) {
+        st.language = language;
+    }
+    let wanted = crate::language_pref::without_language(&fragment);
     if wanted == url_state::encode(&st.session) {
         return;
     }
@@ -295,7 +309,7 @@ pub fn follow_fragment(st: &mut crate::state::AppState, url: &mut UrlSync) {
             log::info!("opening the link's scene: {}", session.scene().name);
             st.open(session);
         }
-        Err(e) => st.status = Some(format!("the link's scene did not open: {e}")),
+        Err(e) => st.status = Some(crate::i18n::tr!("file.link_failed", why = e)),
     }
     url.forget();
 }

@@ -7,6 +7,7 @@ use linkage::PathKind;
 use linkage::dynamics::Method;
 use linkage::scene::Models;
 
+use crate::i18n::tr;
 use crate::session::dynamic_run::{IntegratorChoice, METHODS};
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
@@ -20,56 +21,64 @@ pub fn mobility_line(m: &linkage::Mechanism) -> String {
     let j = m.revolutes.len() + m.sliders.len();
     let h = m.cams.len();
     let dof = 3 * (n as i64 - 1) - 2 * j as i64 - h as i64;
+    let moving = n - 1;
     if h == 0 {
-        return format!(
-            "degrees of freedom: 3(n − 1) − 2j = 3·{} − 2·{j} = {dof} ({n} links, {j} joints)",
-            n - 1
+        return tr!(
+            "accuracy.mobility",
+            moving = moving,
+            j = j,
+            dof = dof,
+            n = n
         );
     }
-    format!(
-        "degrees of freedom: 3(n − 1) − 2j − h = 3·{} − 2·{j} − {h} = {dof} ({n} links, {j} \
-         joints, {h} cam contacts)",
-        n - 1
+    tr!(
+        "accuracy.mobility_cams",
+        moving = moving,
+        j = j,
+        h = h,
+        dof = dof,
+        n = n
     )
 }
 
 /// The accuracy panel.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
-    ui.heading("Accuracy and cost");
+    ui.heading(tr!("accuracy.heading"));
     let k = st.session.kinematics();
     let solver = &k.mechanism().solver;
     match k.path() {
-        PathKind::ClosedForm => ui.label("solver: closed-form dyads (exact)"),
-        path => ui.label(format!(
-            "solver: {} (tolerance {:.0e}, at most {} iterations)",
-            path.label(),
-            solver.tolerance,
-            solver.max_iterations
+        PathKind::ClosedForm => ui.label(tr!("accuracy.closed_form")),
+        path => ui.label(tr!(
+            "accuracy.newton",
+            path = path.label(),
+            tolerance = format!("{:.0e}", solver.tolerance),
+            iterations = solver.max_iterations
         )),
     };
-    ui.label(format!(
-        "conditioning here: {:.3e} (0 at a dead point)",
-        st.session.pose().conditioning
-    ))
-    .on_hover_text("Smallest singular value ratio of the group Jacobians: how far from a dead point or toggle.");
+    let conditioning = format!("{:.3e}", st.session.pose().conditioning);
+    ui.label(tr!("accuracy.conditioning", value = conditioning))
+        .on_hover_text(tr!("accuracy.conditioning_hint"));
     ui.label(mobility_line(k.mechanism()))
-        .on_hover_text("Grübler–Kutzbach count over links, lower pairs and cam contacts; the solver also checks the true mobility from the constraint Jacobian's rank, which redundant joints do not fool.");
+        .on_hover_text(tr!("accuracy.mobility_hint"));
     if st.timing.show {
-        ui.label(format!(
-            "CPU per frame: {:.0} µs (pose, polygons and shapes {:.0} µs)",
-            st.timing.cost.frame_us, st.timing.cost.solver_us
-        ));
+        let frame = format!("{:.0}", st.timing.cost.frame_us);
+        let solver = format!("{:.0}", st.timing.cost.solver_us);
+        ui.label(tr!("accuracy.cpu", frame = frame, solver = solver));
     }
 
-    if st.session.models() != Models::Dynamics {
-        ui.label(format!(
-            "{:?} scene: no dynamics computed",
-            st.session.models()
-        ));
-        return;
+    match st.session.models() {
+        Models::Kinematics => {
+            ui.label(tr!("accuracy.kinematics_only"));
+            return;
+        }
+        Models::Kinetostatics => {
+            ui.label(tr!("accuracy.kinetostatics_only"));
+            return;
+        }
+        Models::Dynamics => {}
     }
     ui.separator();
-    ui.label("Dynamics (released from rest)");
+    ui.label(tr!("accuracy.dynamics"));
     let mut choice = st.session.integrator();
     integrator_menu(ui, st, &mut choice);
     let changed = tolerance_slider(ui, st, &mut choice);
@@ -82,7 +91,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
 /// The integrator's menu, each item noted for the tests.
 fn integrator_menu(ui: &mut egui::Ui, st: &mut AppState, choice: &mut IntegratorChoice) {
     let mut items = Vec::new();
-    let menu = egui::ComboBox::from_label("integrator")
+    let menu = egui::ComboBox::from_label(tr!("accuracy.integrator"))
         .selected_text(choice.method.label())
         .show_ui(ui, |ui| {
             for m in METHODS {
@@ -136,24 +145,30 @@ fn run_stats(ui: &mut egui::Ui, st: &AppState) {
     match st.session.dynamics() {
         None => {
             let [t, end] = st.session.run_progress().unwrap_or([0.0, 0.0]);
-            ui.label(format!(
-                "computing the run: t = {t:.3} s of at most {end:.1} s"
-            ));
+            let (t, end) = (format!("{t:.3}"), format!("{end:.1}"));
+            ui.label(tr!("accuracy.computing", t = t, end = end));
         }
         Some(Ok(run)) => {
             let s = run.stats();
             let cpu = if st.timing.show {
-                format!(", {:.2} ms CPU", s.cpu_seconds * 1e3)
+                tr!(
+                    "accuracy.run_cpu",
+                    ms = format!("{:.2}", s.cpu_seconds * 1e3)
+                )
             } else {
                 String::new()
             };
-            ui.label(format!(
-                "{} steps ({} rejected), {} RHS evaluations{cpu}",
-                s.steps, s.rejected_steps, s.rhs_evaluations
+            ui.label(tr!(
+                "accuracy.run_steps",
+                steps = s.steps,
+                rejected = s.rejected_steps,
+                rhs = s.rhs_evaluations,
+                cpu = cpu
             ));
-            ui.label(format!(
-                "error estimate {:.2e} (≤ 1: within tolerance), energy balance drift {:.2e} J",
-                s.max_error_estimate, run.energy_drift_j
+            ui.label(tr!(
+                "accuracy.run_error",
+                estimate = format!("{:.2e}", s.max_error_estimate),
+                drift = format!("{:.2e}", run.energy_drift_j)
             ));
             for w in &s.warnings {
                 let words = crate::session::words::run_warning(w);

@@ -59,6 +59,8 @@ pub enum ControlKind {
     PlotTab,
     /// "Reset layout": the panes back to their default sizes.
     ResetLayout,
+    /// The language switch of the top bar.
+    Language,
     /// A section of a pane that opens and closes (the polygons' vector equations,
     /// the construction).
     Section,

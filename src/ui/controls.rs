@@ -4,18 +4,20 @@
 use eframe::egui;
 use linkage::scene::Models;
 
+use crate::i18n::tr;
 use crate::session::params::{mass_range, spring_range};
 use crate::session::{SceneEdit, unit_label};
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
 use crate::ui::number_field::{NumberInput, NumberSpec, slider_row};
 
-/// Label of the crank-angle slider (UI tests find it by this).
+/// The crank-angle slider's name in the control map, and its English label (UI
+/// tests find it by this).
 pub const CRANK_LABEL: &str = "crank angle (deg)";
 
 /// The control panel.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
-    ui.heading("Controls");
+    ui.heading(tr!("controls.heading"));
     play_and_speed(ui, st);
     crank_and_run_time(ui, st);
     lengths(ui, st);
@@ -27,13 +29,18 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
 
 /// Play or pause, and the animation's speed.
 fn play_and_speed(ui: &mut egui::Ui, st: &mut AppState) {
-    let label = if st.play.playing { "Pause" } else { "Play" };
-    let play = ui.button(label);
-    st.controls.note(ui, ControlKind::Play, label, &play);
+    let (id, text) = if st.play.playing {
+        ("Pause", tr!("controls.pause"))
+    } else {
+        ("Play", tr!("controls.play"))
+    };
+    let play = ui.button(text);
+    st.controls.note(ui, ControlKind::Play, id, &play);
     if play.clicked() {
         st.play.playing = !st.play.playing;
     }
-    let spec = NumberSpec::new("speed ×", "", 0.01..=4.0).logarithmic();
+    let label = tr!("controls.speed");
+    let spec = NumberSpec::new(&label, "", 0.01..=4.0).logarithmic();
     let (_, input) = slider_row(ui, "speed", &spec, st.play.speed);
     if let Some(v) = input.value() {
         st.play.speed = v;
@@ -47,7 +54,8 @@ fn crank_and_run_time(ui: &mut egui::Ui, st: &mut AppState) {
     if st.session.curves().full_rotation {
         input = input.rem_euclid(360.0);
     }
-    let spec = NumberSpec::new(CRANK_LABEL, "°", lo..=hi);
+    let label = tr!("controls.crank_angle");
+    let spec = NumberSpec::new(&label, "°", lo..=hi);
     let spec = if st.session.curves().full_rotation {
         spec.wrapping()
     } else {
@@ -62,7 +70,8 @@ fn crank_and_run_time(ui: &mut egui::Ui, st: &mut AppState) {
     }
 
     if let Some(Ok(run)) = st.session.dynamics() {
-        let spec = NumberSpec::new("run time (s)", "s", 0.0..=run.duration_s());
+        let label = tr!("controls.run_time");
+        let spec = NumberSpec::new(&label, "s", 0.0..=run.duration_s());
         let (r, typed) = slider_row(ui, "run time", &spec, st.session.time_s());
         st.controls
             .note(ui, ControlKind::RunTime, "run time (s)", &r);
@@ -97,7 +106,7 @@ fn row_edit(
 fn lengths(ui: &mut egui::Ui, st: &mut AppState) {
     ui.separator();
     let unit = unit_label(st.session.scene());
-    ui.label(format!("Link lengths ({unit})"));
+    ui.label(tr!("controls.link_lengths", unit = unit));
     let lengths: Vec<_> = st.session.lengths().to_vec();
     for (i, p) in lengths.iter().enumerate() {
         let Some(v) = p.value(st.session.scene()) else {
@@ -116,7 +125,8 @@ fn springs(ui: &mut egui::Ui, st: &mut AppState) {
     if st.session.models() == Models::Kinematics {
         return;
     }
-    let springs: Vec<(usize, String, f64, f64)> = st
+    // (index, the control map's English name, the label shown, k, k as opened)
+    let springs: Vec<(usize, String, String, f64, f64)> = st
         .session
         .scene()
         .forces
@@ -128,6 +138,7 @@ fn springs(ui: &mut egui::Ui, st: &mut AppState) {
             (
                 i,
                 format!("k {}-{} (N/m)", s.a, s.b),
+                tr!("controls.spring", a = s.a, b = s.b),
                 s.k_n_per_m,
                 o.k_n_per_m,
             )
@@ -137,10 +148,10 @@ fn springs(ui: &mut egui::Ui, st: &mut AppState) {
         return;
     }
     ui.separator();
-    for (i, label, k, orig) in springs {
+    for (i, id, label, k, orig) in springs {
         let spec = NumberSpec::new(&label, "N/m", spring_range(orig)).logarithmic();
         let row = slider_row(ui, ("spring", i), &spec, k);
-        row_edit(ui, st, ControlKind::Spring, &label, row, |n_per_m| {
+        row_edit(ui, st, ControlKind::Spring, &id, row, |n_per_m| {
             SceneEdit::SpringK { index: i, n_per_m }
         });
     }
@@ -151,24 +162,30 @@ fn masses(ui: &mut egui::Ui, st: &mut AppState) {
     if st.session.models() != Models::Dynamics {
         return;
     }
-    let masses: Vec<(usize, String, f64, f64)> = st
+    // (index, the control map's English name, the label shown, kg, kg as opened)
+    let masses: Vec<(usize, String, String, f64, f64)> = st
         .session
         .scene()
         .links
         .iter()
         .zip(&st.session.original().links)
         .enumerate()
-        .filter_map(|(i, (l, o))| Some((i, format!("mass {} (kg)", l.name), l.mass?, o.mass?)))
+        .filter_map(|(i, (l, o))| {
+            let id = format!("mass {} (kg)", l.name);
+            let label = tr!("controls.mass", link = l.name);
+            Some((i, id, label, l.mass?, o.mass?))
+        })
         .collect();
     if masses.is_empty() {
         return;
     }
     ui.separator();
-    for (i, label, m, orig) in masses {
+    for (i, id, label, m, orig) in masses {
         let spec = NumberSpec::new(&label, "kg", mass_range(orig)).logarithmic();
         let row = slider_row(ui, ("mass", i), &spec, m);
-        row_edit(ui, st, ControlKind::Mass, &label, row, |kg| {
-            SceneEdit::Mass { index: i, kg }
+        row_edit(ui, st, ControlKind::Mass, &id, row, |kg| SceneEdit::Mass {
+            index: i,
+            kg,
         });
     }
 }
@@ -178,14 +195,15 @@ fn branches(ui: &mut egui::Ui, st: &mut AppState) {
     let branches = st.session.branches();
     if !branches.is_empty() {
         ui.separator();
-        ui.label("Assembly branch");
+        ui.label(tr!("controls.branch"));
         for (point, words, flipped) in branches {
             let mut on = flipped;
-            let label = format!("flip at {point} (now {words})");
+            let label = tr!("controls.flip", point = point, now = words);
             let r = ui
                 .push_id(("branch", &point), |ui| ui.checkbox(&mut on, &label))
                 .inner;
-            st.controls.note(ui, ControlKind::Branch, &label, &r);
+            let id = format!("flip at {point} (now {words})");
+            st.controls.note(ui, ControlKind::Branch, &id, &r);
             if r.changed() {
                 st.edit(SceneEdit::FlipBranch { point });
             }

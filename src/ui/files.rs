@@ -3,6 +3,7 @@
 //! file dialog chooses the path (a typed path where no dialog can be shown); in the
 //! browser the file picker uploads and the browser downloads.
 
+use crate::i18n::tr;
 use eframe::egui;
 
 pub use crate::file_action::FileAction;
@@ -53,18 +54,23 @@ impl Default for DesktopDialog {
 impl Files {
     /// The file buttons of the top bar (and the answers of dialogs they opened); `frame` is the window a dialog stays above.
     pub fn ui(&mut self, ui: &mut egui::Ui, st: &mut AppState, frame: &eframe::Frame) {
-        for (label, action) in [
-            ("Open scene…", FileAction::Open),
-            ("Save scene…", FileAction::SaveScene),
-            ("Export CSV…", FileAction::ExportCsv),
-            ("Export diagram…", FileAction::ExportSheet),
-            ("PNG…", FileAction::ExportSheetPng),
+        // The control map keeps the English names: the tests' handles in any language.
+        for (id, text, action) in [
+            ("Open scene…", tr!("file.open"), FileAction::Open),
+            ("Save scene…", tr!("file.save"), FileAction::SaveScene),
+            ("Export CSV…", tr!("file.export_csv"), FileAction::ExportCsv),
+            (
+                "Export diagram…",
+                tr!("file.export_sheet"),
+                FileAction::ExportSheet,
+            ),
+            ("PNG…", tr!("file.png"), FileAction::ExportSheetPng),
         ] {
-            let button = ui.button(label);
+            let button = ui.button(text);
             st.controls.note(
                 ui,
                 crate::ui::control_map::ControlKind::FileButton,
-                label,
+                id,
                 &button,
             );
             if button.clicked() {
@@ -74,8 +80,8 @@ impl Files {
         #[cfg(target_arch = "wasm32")]
         {
             let copy = ui
-                .button("Copy link")
-                .on_hover_text("The page's address carries the scene and its edits: share it");
+                .button(tr!("file.copy_link"))
+                .on_hover_text(tr!("file.copy_link_hint"));
             st.controls.note(
                 ui,
                 crate::ui::control_map::ControlKind::FileButton,
@@ -85,10 +91,10 @@ impl Files {
             if copy.clicked() {
                 match crate::web::page_url() {
                     Some(url) => {
-                        st.status = Some(format!("link copied ({} characters)", url.len()));
+                        st.status = Some(tr!("file.link_copied", count = url.len()));
                         ui.ctx().copy_text(url);
                     }
-                    None => st.status = Some("the page has no address to copy".into()),
+                    None => st.status = Some(tr!("file.no_address")),
                 }
             }
         }
@@ -132,13 +138,9 @@ impl Files {
                     self.dialog.last_dir = path.parent().map(std::path::Path::to_path_buf);
                     run(st, action, &path);
                 }
-                PathAnswer::Cancelled => st.status = Some("no file chosen".into()),
+                PathAnswer::Cancelled => st.status = Some(tr!("file.none_chosen")),
                 PathAnswer::Unavailable => {
-                    st.status = Some(
-                        "no file dialog could be shown (it needs xdg-desktop-portal or zenity): \
-                         type the path instead"
-                            .into(),
-                    );
+                    st.status = Some(tr!("file.no_dialog"));
                     self.prompt = Some((action, default_name(st, action)));
                 }
             }
@@ -182,7 +184,7 @@ impl Files {
     ) {
         use crate::file_dialog::PathRequest;
         if self.dialog.waiting.is_some() {
-            st.status = Some("a file dialog is already open".into());
+            st.status = Some(tr!("file.dialog_open"));
             return;
         }
         let request = PathRequest {
@@ -193,7 +195,7 @@ impl Files {
         let send = self.dialog.send.clone();
         let ctx = ctx.clone();
         self.dialog.waiting = Some(action);
-        st.status = Some(format!("{}: waiting for the file dialog", action.title()));
+        st.status = Some(tr!("file.waiting", action = action.title()));
         self.dialog.chooser.clone().choose(
             request,
             Some(frame),
@@ -251,14 +253,14 @@ impl Files {
         let mut keep = true;
         let mut go = false;
         egui::Window::new(title).collapsible(false).show(ctx, |ui| {
-            let label = ui.label("Path (relative to the working directory):");
+            let label = ui.label(tr!("file.path_prompt"));
             let edit = ui.text_edit_singleline(&mut path).labelled_by(label.id);
             if edit.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
                 go = true;
             }
             ui.horizontal(|ui| {
-                go |= ui.button("OK").clicked();
-                keep = !ui.button("Cancel").clicked();
+                go |= ui.button(tr!("file.ok")).clicked();
+                keep = !ui.button(tr!("file.cancel")).clicked();
             });
         });
         if go {

@@ -3,6 +3,7 @@
 //! with its table of forces and couples, and the balancing torque. Laid out by
 //! `linkage-diagram` as on the exported sheet.
 
+use crate::i18n::tr;
 use eframe::egui;
 use linkage::force_polygon::ForcePolygons;
 use linkage_diagram::force_figure::{
@@ -15,20 +16,17 @@ use crate::ui::polygon_paint::{INK, Paper, draw};
 /// The force polygons' section: the figures, or why the position has none.
 pub fn section(ui: &mut egui::Ui, session: &Session, figure_height: f32) {
     ui.separator();
-    ui.strong("Force polygons");
+    ui.strong(tr!("forces.heading"));
     match session.force_polygons() {
         None => {
-            ui.label(
-                "This scene computes kinematics only. Make it compute kinetostatics or \
-                 dynamics, with its links' masses or its forces, to see them.",
-            );
+            ui.label(tr!("forces.kinematics_only"));
         }
         Some(Err(e)) => {
             ui.colored_label(
                 ui.visuals().warn_fg_color,
-                format!(
-                    "No force polygons here: {}",
-                    linkage_model::session::words::error(e, session.scene().length_unit)
+                tr!(
+                    "forces.none_here",
+                    why = linkage_model::session::words::error(e, session.scene().length_unit)
                 ),
             );
         }
@@ -48,7 +46,7 @@ fn stages(ui: &mut egui::Ui, session: &Session, fp: &ForcePolygons, figure_heigh
         ui.label(egui::RichText::new(&title).strong());
         let fig = ForceFigure::new(stage, m);
         if fig.arrows.is_empty() {
-            ui.weak("no force on these links here (no mass, no load): the polygon is a point");
+            ui.weak(tr!("forces.no_force"));
             continue;
         }
         let paper = Paper::new(ui, figure_height);

@@ -110,7 +110,7 @@ impl SheetTab {
         Self::Accuracy,
     ];
 
-    /// The tab's label.
+    /// The tab's name in the control map (English, the tests' handle).
     pub fn label(self) -> &'static str {
         match self {
             Self::Controls => "Controls",
@@ -118,6 +118,17 @@ impl SheetTab {
             Self::Plots => "Plots",
             Self::Report => "Report",
             Self::Accuracy => "Accuracy",
+        }
+    }
+
+    /// The tab's name as shown, in the app's language.
+    pub fn shown(self) -> String {
+        match self {
+            Self::Controls => crate::i18n::tr!("tab.controls"),
+            Self::Polygons => crate::i18n::tr!("tab.polygons"),
+            Self::Plots => crate::i18n::tr!("tab.plots"),
+            Self::Report => crate::i18n::tr!("tab.report"),
+            Self::Accuracy => crate::i18n::tr!("tab.accuracy"),
         }
     }
 }

@@ -4,6 +4,7 @@
 //! ticks 0, 20, 40, not 0 … 5.172e4 N·m), angles stepped by 15°, 30°, 90°, and the
 //! value under the pointer to four digits. Every tab's plots are made here.
 
+use crate::i18n::tr;
 use egui_plot::{AxisHints, GridInput, GridMark, Plot};
 use linkage_diagram::numbers::{Prefix, significant};
 
@@ -68,12 +69,27 @@ pub fn series(axis: Axis<'_>, data: &[[f64; 2]]) -> Series {
     }
 }
 
-/// An axis title with its unit and prefix.
+/// An axis title with its unit and prefix, its name in the app's language.
 pub fn title(axis: Axis<'_>, prefix: Prefix) -> String {
+    let name = shown_name(axis.name);
     match axis.unit {
-        Unit::Si(u) => format!("{} ({})", axis.name, prefix.unit(u)),
-        Unit::Fixed(u) => format!("{} ({u})", axis.name),
-        Unit::None => axis.name.to_owned(),
+        Unit::Si(u) => format!("{name} ({})", prefix.unit(u)),
+        Unit::Fixed(u) => format!("{name} ({u})"),
+        Unit::None => name,
+    }
+}
+
+/// An axis' name as shown: the plots name their axes in English (symbols such as
+/// ω, J(q) and the scene's own link names stay as they are); the words among them
+/// come from the catalogue.
+fn shown_name(name: &str) -> String {
+    match name {
+        "crank angle" => tr!("axis.crank_angle"),
+        "transmission angle" => tr!("axis.transmission_angle"),
+        "input torque" => tr!("axis.input_torque"),
+        "log10 amplification" => tr!("axis.amplification"),
+        "M(q) at rest" => tr!("axis.reduced_torque_at_rest"),
+        other => other.to_owned(),
     }
 }
 

@@ -8,6 +8,7 @@ use egui_plot::{Line, PlotPoints, VLine};
 use linkage::scene::Models;
 use linkage_diagram::numbers::Prefix;
 
+use crate::i18n::tr;
 use crate::session::Session;
 use crate::session::curves::ModelCurves;
 use crate::session::derived::Shown;
@@ -68,6 +69,23 @@ fn cursor_deg(s: &Session) -> f64 {
     match c.input_deg.first() {
         Some(&first) if c.full_rotation => first + (now - first).rem_euclid(360.0),
         _ => now,
+    }
+}
+
+/// A tab's short name and its full name in the app's language.
+fn tab_words(tab: PlotTab) -> (String, String) {
+    match tab {
+        PlotTab::Output => (tr!("plot.output"), tr!("plot.output_hint")),
+        PlotTab::Transmission => (tr!("plot.transmission"), tr!("plot.transmission_hint")),
+        PlotTab::Timing => (tr!("plot.timing"), tr!("plot.timing_hint")),
+        PlotTab::CamMotion => (tr!("plot.cam_motion"), tr!("plot.cam_motion_hint")),
+        PlotTab::CamLimits => (tr!("plot.cam_limits"), tr!("plot.cam_limits_hint")),
+        PlotTab::Torque => (tr!("plot.torque"), tr!("plot.torque_hint")),
+        PlotTab::Flywheel => (tr!("plot.flywheel"), tr!("plot.flywheel_hint")),
+        PlotTab::Steady => (tr!("plot.speed"), tr!("plot.speed_hint")),
+        PlotTab::Shaking => (tr!("plot.shaking"), tr!("plot.shaking_hint")),
+        PlotTab::Motion => (tr!("plot.motion"), tr!("plot.motion_hint")),
+        PlotTab::ReducedModel => (tr!("plot.reduced"), tr!("plot.reduced_hint")),
     }
 }
 
@@ -150,12 +168,15 @@ impl PlotsPanel {
     /// on hover. Each tab is noted where it is drawn (tests check it stays in view).
     fn tab_row(&mut self, ui: &mut egui::Ui, st: &mut AppState) {
         ui.horizontal_wrapped(|ui| {
-            for (tab, label, full) in TABS {
+            // The control map keeps the English names: the tests' handles in any
+            // language.
+            for (tab, id, _) in TABS {
                 if tab_available(tab, &st.session) {
+                    let (label, full) = tab_words(tab);
                     let r = ui
                         .selectable_value(&mut self.tab, tab, label)
                         .on_hover_text(full);
-                    st.controls.note(ui, ControlKind::PlotTab, label, &r);
+                    st.controls.note(ui, ControlKind::PlotTab, id, &r);
                 }
             }
         });
@@ -303,7 +324,7 @@ fn flywheel_tab(ui: &mut egui::Ui, s: &Session) {
             crate::ui::flywheel_plots::flywheel_plots(ui, plot_key(s), sized, cursor_deg(s))
         }
         Some(Err(why)) => {
-            ui.label(format!("no flywheel to size: {why}"));
+            ui.label(tr!("plot.no_flywheel", why = why));
         }
         None => {}
     }
@@ -328,7 +349,7 @@ fn steady_tab(ui: &mut egui::Ui, s: &Session) {
             );
         }
         Some(Err(why)) => {
-            ui.label(format!("no steady state: {why}"));
+            ui.label(tr!("plot.no_steady", why = why));
         }
         None => {}
     }
@@ -344,7 +365,7 @@ fn shaking_tab(ui: &mut egui::Ui, s: &Session) {
             crate::ui::machine_plots::shaking_plots(ui, plot_key(s), sc, cursor_deg(s));
         }
         Some(Err(why)) => {
-            ui.label(format!("no shaking force: {why}"));
+            ui.label(tr!("plot.no_shaking", why = why));
         }
         None => {}
     }
@@ -398,7 +419,7 @@ fn model_curves<'s>(ui: &mut egui::Ui, s: &'s Session) -> Option<&'s ModelCurves
     match s.model_curves_shown() {
         Shown::Current(c) | Shown::Outdated(c) => Some(c),
         Shown::Pending => {
-            ui.weak("computing…");
+            ui.weak(tr!("plot.computing"));
             None
         }
     }

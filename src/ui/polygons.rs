@@ -13,6 +13,7 @@ use linkage_diagram::layout::LaidPolygon;
 use linkage_diagram::numbers;
 use linkage_diagram::polygon_figure::title;
 
+use crate::i18n::tr;
 use crate::state::AppState;
 use crate::ui::construction::ConstructionView;
 use crate::ui::control_map::ControlKind;
@@ -71,19 +72,29 @@ impl PolygonPane {
     /// where it takes the sheet's full width.
     pub fn ui(&mut self, ui: &mut egui::Ui, st: &mut AppState) {
         ui.horizontal(|ui| {
-            ui.heading("Polygons");
-            let (text, tip) = match (st.layout.polygons_wide, st.layout.compact()) {
-                (true, false) => ("narrower", "Give the mechanism its room back"),
-                (true, true) => ("fit", "Fit each polygon to the sheet's height"),
+            ui.heading(tr!("polygons.heading"));
+            // (the control map's English name, the text shown, the hint)
+            let (id, text, tip) = match (st.layout.polygons_wide, st.layout.compact()) {
+                (true, false) => (
+                    "narrower",
+                    tr!("polygons.narrower"),
+                    tr!("polygons.narrower_hint"),
+                ),
+                (true, true) => ("fit", tr!("polygons.fit"), tr!("polygons.fit_hint")),
                 (false, false) => (
                     "enlarge",
-                    "Widen the polygon pane as far as the view allows",
+                    tr!("polygons.enlarge"),
+                    tr!("polygons.enlarge_hint"),
                 ),
-                (false, true) => ("enlarge", "Draw each polygon the sheet's full width"),
+                (false, true) => (
+                    "enlarge",
+                    tr!("polygons.enlarge"),
+                    tr!("polygons.enlarge_sheet_hint"),
+                ),
             };
             let button = ui.button(text).on_hover_text(tip);
             st.controls
-                .note(ui, ControlKind::PolygonLayout, text, &button);
+                .note(ui, ControlKind::PolygonLayout, id, &button);
             if button.clicked() {
                 st.layout.polygons_wide = !st.layout.polygons_wide;
             }
@@ -127,7 +138,7 @@ impl PolygonPane {
             figure_height
         };
         let show_figure = |ui: &mut egui::Ui, q: Quantity, sections: &mut Vec<Section>| {
-            ui.strong(title(q));
+            ui.strong(polygon_title(q));
             let fig = PolygonFigure::of_position(q, s.mechanism(), s.pose(), s.polygons());
             let (over, rect) = figure(ui, &fig, before.as_ref(), figure_height);
             sections.push(Section::figure(ui, title(q).to_owned(), rect));
@@ -148,25 +159,36 @@ impl PolygonPane {
             }
             // A table wider than the pane scrolls sideways instead of widening it.
             let name = format!("{}: vector equations", title(q));
-            let shown = egui::CollapsingHeader::new(&name)
-                .default_open(false)
-                .show(ui, |ui| {
-                    egui::ScrollArea::horizontal()
-                        .id_salt(("equations", q))
-                        .show(ui, |ui| table(ui, s.polygons(), q, before.as_ref()))
-                        .inner
-                });
+            let shown =
+                egui::CollapsingHeader::new(tr!("polygons.equations", polygon = polygon_title(q)))
+                    .id_salt(("equations header", q))
+                    .default_open(false)
+                    .show(ui, |ui| {
+                        egui::ScrollArea::horizontal()
+                            .id_salt(("equations", q))
+                            .show(ui, |ui| table(ui, s.polygons(), q, before.as_ref()))
+                            .inner
+                    });
             sections.push(Section::of(ui, name, &shown.header_response));
             hovered = hovered.or(shown.body_returned.flatten());
         }
         self.hover = hovered;
         let name = "Construct an equation step by step";
-        let shown = egui::CollapsingHeader::new(name)
+        let shown = egui::CollapsingHeader::new(tr!("polygons.construct"))
+            .id_salt("construction header")
             .default_open(false)
             .show(ui, |ui| self.construction.ui(ui, st, figure_height));
         sections.push(Section::of(ui, name.to_owned(), &shown.header_response));
         crate::ui::force_polygons::section(ui, &st.session, figure_height);
         sections
+    }
+}
+
+/// The polygon's name as the textbook has it, in the app's language.
+fn polygon_title(q: Quantity) -> String {
+    match q {
+        Quantity::Velocity => tr!("polygons.velocity"),
+        Quantity::Acceleration => tr!("polygons.acceleration"),
     }
 }
 
@@ -190,7 +212,7 @@ fn figure(
         painter.text(
             rect.center(),
             egui::Align2::CENTER_CENTER,
-            "at rest: the polygon is a point",
+            tr!("polygons.at_rest"),
             egui::FontId::proportional(12.0),
             ink,
         );

@@ -7,6 +7,7 @@ use linkage::analysis::Report;
 use linkage::scene::LengthUnit;
 use linkage_model::session::words::{self, length};
 
+use crate::i18n::tr;
 use crate::session::derived::Shown;
 use crate::state::AppState;
 
@@ -45,14 +46,14 @@ fn shown(ui: &mut egui::Ui, st: &AppState, form: Form) {
     match st.session.report_shown() {
         Shown::Current(r) => entries(ui, r, unit, form),
         Shown::Outdated(r) => {
-            ui.weak("updating…");
+            ui.weak(tr!("report.updating"));
             if form == Form::Strip {
                 ui.separator();
             }
             ui.add_enabled_ui(false, |ui| entries(ui, r, unit, form));
         }
         Shown::Pending => {
-            ui.weak("report: computing…");
+            ui.weak(tr!("report.computing"));
         }
     }
 }
@@ -67,7 +68,7 @@ fn entries(
     let r = match report {
         Ok(r) => r,
         Err(e) => {
-            ui.colored_label(ui.visuals().warn_fg_color, format!("no report: {e}"));
+            ui.colored_label(ui.visuals().warn_fg_color, tr!("report.none", why = e));
             return;
         }
     };
@@ -93,26 +94,30 @@ fn entries(
     }
 }
 
-/// Each entry of the report: its headline and where on the cycle it occurs.
-fn items(r: &Report, unit: LengthUnit) -> Vec<(String, String)> {
-    let mut out = Vec::new();
-    out.push(match &r.grashof {
+/// The Grashof entry: the class, and the sums it is judged by.
+fn grashof_item(r: &Report, unit: LengthUnit) -> (String, String) {
+    match &r.grashof {
         Some(g) => (
-            format!("Grashof: {}", g.class),
+            tr!("report.grashof", class = grashof_class(g.class)),
             format!(
                 "s + l = {}, p + q = {} ({}){}",
                 length(g.s_plus_l_m, unit),
                 length(g.p_plus_q_m, unit),
                 g.links.join(", "),
                 if g.change_point {
-                    "; change point: the links can fold flat"
+                    tr!("report.change_point")
                 } else {
-                    ""
+                    String::new()
                 }
             ),
         ),
-        None => ("Grashof: only for a four-bar".into(), String::new()),
-    });
+        None => (tr!("report.grashof_none"), String::new()),
+    }
+}
+
+/// Each entry of the report: its headline and where on the cycle it occurs.
+fn items(r: &Report, unit: LengthUnit) -> Vec<(String, String)> {
+    let mut out = vec![grashof_item(r, unit)];
     let note = r
         .time_ratio_note
         .as_ref()
@@ -120,29 +125,33 @@ fn items(r: &Report, unit: LengthUnit) -> Vec<(String, String)> {
         .unwrap_or_default();
     out.push(match r.time_ratio {
         Some(k) => (format!("K = {k:.3}"), note),
-        None => ("K: none".into(), note),
+        None => (tr!("report.k_none"), note),
     });
     for (name, stroke) in &r.strokes_m {
         out.push((
-            format!("stroke {name} = {}", length(*stroke, unit)),
+            tr!("report.stroke", name = name, length = length(*stroke, unit)),
             limits_of(r, name),
         ));
     }
     for (name, swing) in &r.swings_rad {
         out.push((
-            format!("swing {name} = {:.2}°", swing.to_degrees()),
+            tr!(
+                "report.swing",
+                name = name,
+                deg = format!("{:.2}", swing.to_degrees())
+            ),
             limits_of(r, name),
         ));
     }
     if let Some(t) = &r.transmission_angle_rad {
         out.push((
-            format!("μ min = {:.2}°", t.min.to_degrees()),
-            format!(
-                "at crank {:.2}° ({}); max {:.2}° at crank {:.2}°",
-                t.at.to_degrees(),
-                words::group(&t.group),
-                t.max.to_degrees(),
-                t.at_max.to_degrees()
+            tr!("report.mu_min", deg = format!("{:.2}", t.min.to_degrees())),
+            tr!(
+                "report.mu_where",
+                at = format!("{:.2}", t.at.to_degrees()),
+                group = words::group(&t.group),
+                max = format!("{:.2}", t.max.to_degrees()),
+                at_max = format!("{:.2}", t.at_max.to_degrees())
             ),
         ));
     }
@@ -160,18 +169,31 @@ fn items(r: &Report, unit: LengthUnit) -> Vec<(String, String)> {
             })
             .collect();
         out.push((
-            format!("{} toggle/dead positions", r.toggles.len()),
+            tr!("report.toggles", count = r.toggles.len()),
             text.join("\n"),
         ));
     }
     if !r.branch_points.is_empty() {
         let text: Vec<String> = r.branch_points.iter().map(branch_point_line).collect();
         out.push((
-            format!("{} branch points", r.branch_points.len()),
+            tr!("report.branch_points", count = r.branch_points.len()),
             text.join("\n"),
         ));
     }
     out
+}
+
+/// The Grashof class in the textbook's words.
+fn grashof_class(class: linkage::analysis::GrashofClass) -> String {
+    use linkage::analysis::GrashofClass as G;
+    match class {
+        G::CrankRocker => tr!("grashof.crank_rocker"),
+        G::DoubleCrank => tr!("grashof.double_crank"),
+        G::DoubleRocker => tr!("grashof.double_rocker"),
+        G::RockerCrank => tr!("grashof.rocker_crank"),
+        G::ChangePoint => tr!("grashof.change_point"),
+        G::TripleRocker => tr!("grashof.triple_rocker"),
+    }
 }
 
 /// "crank 180.00°: coupler and rocker, joined at C, B on D".
@@ -197,7 +219,7 @@ fn limits_of(r: &linkage::analysis::Report, output: &str) -> String {
         .map(|l| format!("{} at crank {:.3}°", l.kind, l.input_rad.to_degrees()))
         .collect();
     if lines.is_empty() {
-        "no limit positions".into()
+        tr!("report.no_limits")
     } else {
         lines.join("\n")
     }

@@ -1,4 +1,4 @@
-//! The top bar: scene picker, file actions, view toggles.
+//! The top bar: scene picker, file actions, view toggles, the language.
 
 use std::sync::OnceLock;
 
@@ -6,6 +6,7 @@ use eframe::egui;
 
 use crate::catalog::{BUILTIN_SCENES, BuiltinScene};
 use crate::command::Command;
+use crate::i18n::{Language, tr};
 use crate::session::{SceneSource, Session};
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
@@ -38,31 +39,32 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &
 /// place and its keystrokes.
 fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &eframe::Frame) {
     ui.horizontal_wrapped(|ui| {
-        ui.strong("Linkage Lab");
+        ui.strong(tr!("app.name"));
         // The file buttons come before the scene's name, whose width varies, so that
         // they stay in place whichever scene is open.
         files.ui(ui, st, frame);
         scene_picker(ui, st, 300.0);
         new_menu(ui, st);
         synthesis_button(ui, st);
-        if ui.button("Reset edits").clicked() {
+        if ui.button(tr!("top.reset_edits")).clicked() {
             st.edit(crate::session::SceneEdit::Reset);
         }
         history_buttons(ui, st);
         edited_mark(ui, st);
         view_buttons(ui, st);
         view_toggles(ui, st);
+        language_switch(ui, st);
     });
 }
 
 /// "Fit view" and "Reset layout".
 fn view_buttons(ui: &mut egui::Ui, st: &mut AppState) {
-    if ui.button("Fit view").clicked() {
+    if ui.button(tr!("top.fit_view")).clicked() {
         st.commands.fit = true;
     }
     let reset = ui
-        .button("Reset layout")
-        .on_hover_text("The panes back to their default sizes, the view fitted");
+        .button(tr!("top.reset_layout"))
+        .on_hover_text(tr!("top.reset_layout_hint"));
     st.controls
         .note(ui, ControlKind::ResetLayout, "Reset layout", &reset);
     if reset.clicked() {
@@ -77,14 +79,14 @@ fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &
     // and undo, redo and fit go below.
     let one_row = ui.available_width() >= 700.0;
     ui.horizontal(|ui| {
-        let menu = ui.menu_button("Menu", |ui| {
+        let menu = ui.menu_button(tr!("top.menu"), |ui| {
             files.ui(ui, st, frame);
             new_menu(ui, st);
             synthesis_button(ui, st);
-            if ui.button("Reset edits").clicked() {
+            if ui.button(tr!("top.reset_edits")).clicked() {
                 st.edit(crate::session::SceneEdit::Reset);
             }
-            let reset = ui.button("Reset layout");
+            let reset = ui.button(tr!("top.reset_layout"));
             st.controls
                 .note(ui, ControlKind::ResetLayout, "Reset layout", &reset);
             if reset.clicked() {
@@ -93,6 +95,8 @@ fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &
             }
             ui.separator();
             view_toggles(ui, st);
+            ui.separator();
+            language_switch(ui, st);
         });
         st.controls
             .note(ui, ControlKind::Menu, "Menu", &menu.response);
@@ -115,7 +119,7 @@ fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &
 /// Undo, redo, fit and "(edited)" (the status line is shown in the view).
 fn history_and_status(ui: &mut egui::Ui, st: &mut AppState) {
     history_buttons(ui, st);
-    if ui.button("Fit view").clicked() {
+    if ui.button(tr!("top.fit_view")).clicked() {
         st.commands.fit = true;
     }
     edited_mark(ui, st);
@@ -137,7 +141,7 @@ fn scene_picker(ui: &mut egui::Ui, st: &mut AppState, width: f32) {
     let mut chosen = None;
     let mut items = Vec::new();
     let combo = if labelled {
-        egui::ComboBox::from_label("Scene")
+        egui::ComboBox::from_label(tr!("top.scene"))
     } else {
         egui::ComboBox::from_id_salt("Scene")
     };
@@ -194,7 +198,7 @@ fn fit_the_screen(ui: &mut egui::Ui) {
 }
 
 fn synthesis_button(ui: &mut egui::Ui, st: &mut AppState) {
-    let synthesis = ui.button("Synthesis…");
+    let synthesis = ui.button(tr!("top.synthesis"));
     st.controls
         .note(ui, ControlKind::FileButton, "Synthesis…", &synthesis);
     if synthesis.clicked() {
@@ -205,8 +209,8 @@ fn synthesis_button(ui: &mut egui::Ui, st: &mut AppState) {
 /// "(edited)" while the scene has unsaved edits; its place kept while it has none,
 /// so that the bar does not move when the first edit lands.
 fn edited_mark(ui: &mut egui::Ui, st: &AppState) {
-    let text = "(edited)";
-    let size = egui::WidgetText::from(text)
+    let text = tr!("top.edited");
+    let size = egui::WidgetText::from(text.as_str())
         .into_galley(
             ui,
             Some(egui::TextWrapMode::Extend),
@@ -214,30 +218,63 @@ fn edited_mark(ui: &mut egui::Ui, st: &AppState) {
             egui::TextStyle::Body,
         )
         .size();
-    let label = egui::Label::new(if st.session.is_dirty() { text } else { "" });
-    ui.add_sized(size, label)
-        .on_hover_text(if st.session.is_dirty() {
-            "The scene has edits not saved to a file: Save scene… keeps them"
-        } else {
-            "The scene is as opened or saved"
+    let dirty = st.session.is_dirty();
+    let label = egui::Label::new(if dirty { text } else { String::new() });
+    ui.add_sized(size, label).on_hover_text(if dirty {
+        tr!("top.edited_hint")
+    } else {
+        tr!("top.unedited_hint")
+    });
+}
+
+/// The language of the app's words: English or 中文, remembered for the next run.
+fn language_switch(ui: &mut egui::Ui, st: &mut AppState) {
+    let mut chosen = st.language;
+    let combo = egui::ComboBox::from_id_salt("language")
+        .selected_text(chosen.own_name())
+        .show_ui(ui, |ui| {
+            for language in Language::ALL {
+                ui.selectable_value(&mut chosen, language, language.own_name());
+            }
         });
+    let r = combo.response.on_hover_text(tr!("language.switch"));
+    st.controls.note(ui, ControlKind::Language, "Language", &r);
+    if chosen != st.language {
+        st.language = chosen;
+        if st.remember_choices {
+            crate::language_pref::remember(chosen);
+        }
+    }
 }
 
 /// "move points" and the overlays of the view.
 fn view_toggles(ui: &mut egui::Ui, st: &mut AppState) {
     let edit = ui
-        .checkbox(&mut st.view.edit_points, "move points")
-        .on_hover_text("Drag a joint in the view to move it; Undo takes a drag back");
+        .checkbox(&mut st.view.edit_points, tr!("view.move_points"))
+        .on_hover_text(tr!("view.move_points_hint"));
     st.controls
         .note(ui, ControlKind::Layer, "move points", &edit);
-    for (on, label) in [
-        (&mut st.view.layers.velocities, "v vectors"),
-        (&mut st.view.layers.accelerations, "a vectors"),
-        (&mut st.view.layers.traces, "traces"),
-        (&mut st.view.layers.centres, "instant centres"),
+    // The control map keeps the English names: the tests' handles in any language.
+    for (on, id, label) in [
+        (
+            &mut st.view.layers.velocities,
+            "v vectors",
+            tr!("view.v_vectors"),
+        ),
+        (
+            &mut st.view.layers.accelerations,
+            "a vectors",
+            tr!("view.a_vectors"),
+        ),
+        (&mut st.view.layers.traces, "traces", tr!("view.traces")),
+        (
+            &mut st.view.layers.centres,
+            "instant centres",
+            tr!("view.centres"),
+        ),
     ] {
         let r = ui.checkbox(on, label);
-        st.controls.note(ui, ControlKind::Layer, label, &r);
+        st.controls.note(ui, ControlKind::Layer, id, &r);
     }
 }
 
@@ -259,12 +296,12 @@ fn history_buttons(ui: &mut egui::Ui, st: &mut AppState) {
         None => (st.session.can_undo(), st.session.can_redo()),
     };
     let undo = ui
-        .add_enabled(can_undo, egui::Button::new("Undo"))
-        .on_hover_text("Ctrl+Z");
+        .add_enabled(can_undo, egui::Button::new(tr!("top.undo")))
+        .on_hover_text(tr!("top.undo_keys"));
     st.controls.note(ui, ControlKind::History, "Undo", &undo);
     let redo = ui
-        .add_enabled(can_redo, egui::Button::new("Redo"))
-        .on_hover_text("Ctrl+Shift+Z or Ctrl+Y");
+        .add_enabled(can_redo, egui::Button::new(tr!("top.redo")))
+        .on_hover_text(tr!("top.redo_keys"));
     st.controls.note(ui, ControlKind::History, "Redo", &redo);
     if undo.clicked() {
         st.push(Command::Undo);
@@ -285,11 +322,11 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
     let mut chosen = None;
     let mut empty = false;
     let mut as_drawing = false;
-    let menu = ui.menu_button("New…", |ui| {
-        empty = menu_item(ui, st, EMPTY_DRAWING);
-        as_drawing = menu_item(ui, st, AS_DRAWING);
+    let menu = ui.menu_button(tr!("top.new"), |ui| {
+        empty = menu_item(ui, st, EMPTY_DRAWING, &tr!("top.new_empty"));
+        as_drawing = menu_item(ui, st, AS_DRAWING, &tr!("top.new_as_drawing"));
         for (t, name) in crate::catalog::TEMPLATES.iter().zip(template_names()) {
-            if menu_item(ui, st, name) {
+            if menu_item(ui, st, name, name) {
                 chosen = Some(t);
             }
         }
@@ -305,19 +342,19 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
     if let Some(t) = chosen {
         match Session::open_text(SceneSource::File(format!("{}.ron", t.key)), t.text) {
             Ok(s) => st.open(s),
-            Err(e) => st.status = Some(format!("template {}: {e}", t.key)),
+            Err(e) => st.status = Some(tr!("top.template_failed", name = t.key, why = e)),
         }
     }
 }
 
-/// One item of the New… menu, noted in the control map; returns whether it was
-/// clicked (the menu then closes).
-fn menu_item(ui: &mut egui::Ui, st: &mut AppState, label: &str) -> bool {
-    let item = ui.button(label);
+/// One item of the New… menu, `text` on it, noted in the control map as `id`;
+/// returns whether it was clicked (the menu then closes).
+fn menu_item(ui: &mut egui::Ui, st: &mut AppState, id: &str, text: &str) -> bool {
+    let item = ui.button(text);
     // The menu's first frame only sizes it, somewhere else: not clickable yet.
     let placed = !ui.is_sizing_pass() && ui.clip_rect().contains_rect(item.rect);
     st.controls
-        .note_rect(ControlKind::TemplateItem, label, item.rect, placed);
+        .note_rect(ControlKind::TemplateItem, id, item.rect, placed);
     let clicked = item.clicked();
     if clicked {
         ui.close();
@@ -332,18 +369,19 @@ fn discard_question(ctx: &egui::Context, st: &mut AppState) {
     };
     let current = st.session.scene().name.clone();
     let mut answer = None;
-    egui::Window::new("Unsaved edits")
+    egui::Window::new(tr!("unsaved.title"))
         .collapsible(false)
         .resizable(false)
         .anchor(egui::Align2::CENTER_CENTER, egui::Vec2::ZERO)
         .show(ctx, |ui| {
-            ui.label(format!(
-                "\"{current}\" has edits that are not saved. {next} and drop them?"
-            ));
+            ui.label(tr!("unsaved.question", current = current, next = next));
             ui.horizontal(|ui| {
-                for (label, drop) in [("Drop the edits and open", true), ("Keep editing", false)] {
+                for (id, label, drop) in [
+                    ("Drop the edits and open", tr!("unsaved.drop"), true),
+                    ("Keep editing", tr!("unsaved.keep"), false),
+                ] {
                     let r = ui.button(label);
-                    st.controls.note(ui, ControlKind::FileButton, label, &r);
+                    st.controls.note(ui, ControlKind::FileButton, id, &r);
                     if r.clicked() {
                         answer = Some(drop);
                     }

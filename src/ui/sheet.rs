@@ -56,9 +56,9 @@ fn tabs(ui: &mut egui::Ui, st: &mut AppState, drawing: bool) {
                 continue;
             }
             let label = if drawing && tab == SheetTab::Controls {
-                "Drawing"
+                crate::i18n::tr!("tab.drawing")
             } else {
-                tab.label()
+                tab.shown()
             };
             let r = ui.selectable_label(st.layout.tab == tab, label);
             st.controls.note(ui, ControlKind::SheetTab, tab.label(), &r);

@@ -4,6 +4,7 @@
 
 use eframe::egui::{self, Align2, FontId, Sense};
 
+use crate::i18n::tr;
 use crate::render::Renderer;
 use crate::render::build::{VectorScales, build};
 use crate::render::shape::SharedShapes;
@@ -380,24 +381,26 @@ fn legend(
     scales: VectorScales,
 ) -> [f32; 2] {
     let small = FontId::proportional(12.0);
-    let mut legend = format!("crank {:.2}°", st.session.input_rad().to_degrees());
+    let deg = format!("{:.2}", st.session.input_rad().to_degrees());
+    let mut legend = tr!("overlay.crank", deg = deg);
     if let Some(t) = st.session.run_time_shown() {
         legend += &format!(", t = {t:.3} s");
     }
     if st.view.layers.velocities && scales.velocity > 0.0 {
         // The arrows' scale in the scene's length unit, as its lengths are written.
         let drawn = length(scales.velocity, st.session.scene().length_unit);
-        legend += &format!("\nv: 1 m/s drawn as {drawn}");
+        legend += &format!("\n{}", tr!("overlay.v_scale", drawn = drawn));
     }
     if st.view.layers.accelerations && scales.acceleration > 0.0 {
         let drawn = length(scales.acceleration, st.session.scene().length_unit);
-        legend += &format!("\na: 1 m/s² drawn as {drawn}");
+        legend += &format!("\n{}", tr!("overlay.a_scale", drawn = drawn));
     }
-    legend += match (st.view.edit_points, st.layout.compact()) {
-        (true, _) => "\ndrag a joint to move it (Alt: off the grid), elsewhere to pan",
-        (false, false) => "\ndrag to pan, wheel to zoom, double-click to fit",
-        (false, true) => "\ndrag to pan, pinch to zoom, double-tap to fit",
+    let how = match (st.view.edit_points, st.layout.compact()) {
+        (true, _) => tr!("overlay.drag_points"),
+        (false, false) => tr!("overlay.mouse"),
+        (false, true) => tr!("overlay.touch"),
     };
+    legend += &format!("\n{how}");
     let wrap = (rect.width() - 16.0).max(40.0);
     let top = painter.layout(legend, small, egui::Color32::from_gray(60), wrap);
     let top_height = top.size().y + 12.0;

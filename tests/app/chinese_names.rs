@@ -6,6 +6,7 @@
 use eframe::egui;
 use egui_kittest::kittest::Queryable as _;
 use linkage_lab::session::{SceneSource, Session};
+use linkage_lab::ui::control_map::ControlKind;
 
 use crate::common;
 
@@ -32,4 +33,54 @@ fn a_scene_named_in_chinese_draws_every_character() {
             .save(format!("{dir}/chinese_names_{}.png", tab.to_lowercase()))
             .expect("saved");
     }
+}
+
+/// The app in Chinese: its own words from the catalogue (the top bar, the panels'
+/// headings, the controls, the plot tabs, the overlay, the status line), every
+/// character drawn, the laptop's and the phone's screens written to
+/// `target/screens/` to look at; switched back to English from the top bar's menu.
+#[test]
+fn the_app_speaks_chinese_when_chosen_and_english_again() {
+    use linkage_lab::i18n::Language;
+    let dir = "target/screens";
+    std::fs::create_dir_all(dir).expect("a folder for the pictures");
+    for (w, h_px) in [(1366.0, 768.0), (390.0, 844.0)] {
+        let mut h = common::sized_harness(w, h_px);
+        h.ctx
+            .set_missing_glyph_policy(egui::MissingGlyphPolicy::Panic);
+        h.state_mut().state.language = Language::Chinese;
+        common::settle(&mut h);
+        for words in ["播放", "曲柄转角 (°)"] {
+            assert!(
+                h.query_all_by_label(words).next().is_some(),
+                "{w}×{h_px}: no \"{words}\""
+            );
+        }
+        assert!(
+            h.query_by_label("Play").is_none(),
+            "{w}×{h_px}: English left"
+        );
+        let image = h.render().expect("rendered");
+        image
+            .save(format!("{dir}/chinese_ui_{w}x{h_px}.png"))
+            .expect("saved");
+    }
+    let mut h = common::sized_harness(1366.0, 768.0);
+    h.state_mut().state.language = Language::Chinese;
+    common::settle(&mut h);
+    // The switch, where the control map says it is drawn; then its English item.
+    let [x0, y0, x1, y1] = h
+        .state()
+        .state
+        .controls
+        .of_kind(ControlKind::Language)
+        .next()
+        .expect("the language switch is on the top bar")
+        .rect;
+    common::click(&mut h, egui::pos2(0.5 * (x0 + x1), 0.5 * (y0 + y1)));
+    common::settle(&mut h);
+    h.get_by_label("English").click();
+    common::settle(&mut h);
+    assert_eq!(h.state().state.language, Language::English);
+    assert!(h.query_by_label("Play").is_some(), "English again");
 }

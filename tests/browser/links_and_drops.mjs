@@ -145,6 +145,19 @@ if (process.env.LINKAGE_SHOTS) {
   await quiet(page); // the frames after the face arrived
   await page.screenshot({ path: `${process.env.LINKAGE_SHOTS}/chinese_names_${build}.png` });
 }
+// A link that asks for Chinese: the app speaks it, and the address keeps asking.
+await go(`scene=${slider.key}&lang=zh-CN`);
+if (!(await until(async () => (await state()).language === 'zh-CN' && (await showing(slider)), poke))) {
+  fail(`a link with lang=zh-CN did not switch the language: ${(await state()).language}, ${(await state()).scene_name}`);
+}
+if (!(await until(async () => (await page.evaluate(() => location.hash)).endsWith('&lang=zh-CN'), poke))) {
+  fail(`the address dropped the language: ${await page.evaluate(() => location.hash)}`);
+}
+out.language_from_link = (await state()).language;
+if (process.env.LINKAGE_SHOTS) {
+  await quiet(page);
+  await page.screenshot({ path: `${process.env.LINKAGE_SHOTS}/chinese_ui_${build}.png` });
+}
 
 if (errors.length) fail(`console errors:\n  ${errors.join('\n  ')}`);
 out.console_errors = errors.length;
