@@ -10,6 +10,7 @@ use linkage::cam::{Law, SegmentSpec, peak_coefficients};
 use linkage::scene::CamJointSpec;
 
 use crate::file_action::FileAction;
+use crate::i18n::tr;
 use crate::session::SceneEdit;
 use crate::session::cam_curves::CamCurves;
 use crate::session::cam_edit::CamEdit;
@@ -26,7 +27,8 @@ pub fn cam_panels(ui: &mut egui::Ui, st: &mut AppState) {
     let specs = st.session.scene().cams.clone();
     for (index, spec) in specs.iter().enumerate() {
         ui.separator();
-        ui.label(egui::RichText::new(format!("Cam {}/{}", spec.cam, spec.follower)).strong());
+        let title = tr!("cam.title", cam = spec.cam, follower = spec.follower);
+        ui.label(egui::RichText::new(title).strong());
         segments(ui, st, index, spec);
         lift_and_roller(ui, st, index, spec);
         if let Some(c) = st.session.curves().cams.get(index).cloned() {
@@ -37,12 +39,12 @@ pub fn cam_panels(ui: &mut egui::Ui, st: &mut AppState) {
     }
 }
 
-/// A segment's kind in words.
-fn kind_name(s: &SegmentSpec) -> &'static str {
+/// A segment's kind in the textbook's words.
+fn kind_name(s: &SegmentSpec) -> String {
     match s {
-        SegmentSpec::Rise { .. } => "rise",
-        SegmentSpec::Dwell { .. } => "dwell",
-        SegmentSpec::Return { .. } => "return",
+        SegmentSpec::Rise { .. } => tr!("cam.rise"),
+        SegmentSpec::Dwell { .. } => tr!("cam.dwell"),
+        SegmentSpec::Return { .. } => tr!("cam.return"),
     }
 }
 
@@ -67,12 +69,13 @@ fn segments(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJointSpe
                 // The next segment gives or takes the difference: together they
                 // hold what this one may span.
                 let room = deg + spec.segments[(segment + 1) % n].angle_deg();
-                let label = format!("segment {} angle (deg)", segment + 1);
+                let id = format!("segment {} angle (deg)", segment + 1);
+                let label = tr!("cam.segment_angle", segment = segment + 1);
                 let spec = NumberSpec::new(&label, "°", 0.0..=room);
                 let (r, typed, refused) = cell(ui, ("cam segment", cam, segment), &spec, deg);
                 refusals.extend(refused);
-                let r = r.on_hover_text("the next segment gives or takes the difference");
-                st.controls.note(ui, ControlKind::Cam, &label, &r);
+                let r = r.on_hover_text(tr!("cam.segment_angle_hint"));
+                st.controls.note(ui, ControlKind::Cam, &id, &r);
                 if let Some(deg) = typed.value() {
                     st.edit(SceneEdit::Cam {
                         cam,
@@ -121,17 +124,17 @@ fn law_menu(
     }
 }
 
-/// A law as the textbooks name it.
-pub fn law_name(law: Law) -> &'static str {
+/// A law as the textbooks name it, in the app's language.
+pub fn law_name(law: Law) -> String {
     match law {
-        Law::ConstantVelocity => "constant velocity",
-        Law::SimpleHarmonic => "simple harmonic",
-        Law::Cycloidal => "cycloidal",
-        Law::Polynomial345 => "3-4-5 polynomial",
-        Law::Polynomial4567 => "4-5-6-7 polynomial",
-        Law::ModifiedTrapezoid => "modified trapezoid",
-        Law::ModifiedSine => "modified sine",
-        Law::ModifiedConstantVelocity => "modified constant velocity",
+        Law::ConstantVelocity => tr!("law.constant_velocity"),
+        Law::SimpleHarmonic => tr!("law.simple_harmonic"),
+        Law::Cycloidal => tr!("law.cycloidal"),
+        Law::Polynomial345 => tr!("law.polynomial_345"),
+        Law::Polynomial4567 => tr!("law.polynomial_4567"),
+        Law::ModifiedTrapezoid => tr!("law.modified_trapezoid"),
+        Law::ModifiedSine => tr!("law.modified_sine"),
+        Law::ModifiedConstantVelocity => tr!("law.modified_constant_velocity"),
     }
 }
 
@@ -152,10 +155,10 @@ fn lift_and_roller(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJ
     } else {
         (length, 0.0..=10.0 * largest)
     };
-    let lift = format!("lift ({unit})");
+    let lift = tr!("cam.lift", unit = unit);
     let spec_lift = NumberSpec::new(&lift, unit, lift_range);
     let (r, typed) = boxed(ui, ("cam lift", cam), &spec_lift, largest);
-    let r = r.on_hover_text("every rise and return scales with it");
+    let r = r.on_hover_text(tr!("cam.lift_hint"));
     st.controls.note(ui, ControlKind::Cam, "lift", &r);
     if let Some(to) = typed.value() {
         st.edit(SceneEdit::Cam {
@@ -163,7 +166,7 @@ fn lift_and_roller(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJ
             edit: CamEdit::Lift(to),
         });
     }
-    let roller = format!("roller ({length})");
+    let roller = tr!("cam.roller", unit = length);
     let top = 10.0 * spec.roller_radius.max(f64::MIN_POSITIVE);
     let spec_roller = NumberSpec::new(&roller, length, 0.0..=top);
     let (r, typed) = boxed(ui, ("cam roller", cam), &spec_roller, spec.roller_radius);
@@ -180,13 +183,16 @@ fn lift_and_roller(ui: &mut egui::Ui, st: &mut AppState, cam: usize, spec: &CamJ
 /// profile, each located on the cam (not read off its samples), red past their
 /// limits.
 fn figures(ui: &mut egui::Ui, c: &CamCurves, unit: linkage::scene::LengthUnit) {
-    ui.label(format!("base circle {}", length(c.base_radius_m, unit)));
+    ui.label(tr!(
+        "cam.base_circle",
+        radius = length(c.base_radius_m, unit)
+    ));
     let p = c.largest_pressure;
-    let text = format!(
-        "largest pressure angle {:.2}° at {:.1}° (limit {:.0}°)",
-        p.value.abs().to_degrees(),
-        p.angle_rad.to_degrees(),
-        c.pressure_limit_rad.to_degrees()
+    let text = tr!(
+        "cam.largest_pressure",
+        angle = format!("{:.2}", p.value.abs().to_degrees()),
+        at = format!("{:.1}", p.angle_rad.to_degrees()),
+        limit = format!("{:.0}", c.pressure_limit_rad.to_degrees())
     );
     let past = p.value.abs() > c.pressure_limit_rad;
     ui.label(if past {
@@ -199,11 +205,15 @@ fn figures(ui: &mut egui::Ui, c: &CamCurves, unit: linkage::scene::LengthUnit) {
         .iter()
         .any(|q| q.pitch_radius_m > 0.0 && q.profile_radius_m <= 0.0);
     let r = c.least_profile_radius;
-    let text = format!(
-        "least profile radius {} at {:.1}°{}",
-        length(r.value, unit),
-        r.angle_rad.to_degrees(),
-        if undercut { ": undercut" } else { "" }
+    let text = tr!(
+        "cam.least_radius",
+        radius = length(r.value, unit),
+        at = format!("{:.1}", r.angle_rad.to_degrees()),
+        undercut = if undercut {
+            tr!("cam.undercut")
+        } else {
+            String::new()
+        }
     );
     ui.label(if undercut {
         egui::RichText::new(text).color(PAST)
@@ -217,16 +227,16 @@ fn continuity_and_peaks(ui: &mut egui::Ui, st: &AppState, cam: usize, spec: &Cam
     let Some(joint) = st.session.mechanism().cams.get(cam) else {
         return;
     };
-    egui::CollapsingHeader::new("joins and peak coefficients")
+    egui::CollapsingHeader::new(tr!("cam.joins"))
         .id_salt(("cam joins", cam))
         .show(ui, |ui| {
             for j in joint.program.joins() {
-                ui.label(format!(
-                    "{:.1}°: segment {} to {}: {:?}",
-                    j.angle_rad.to_degrees(),
-                    j.before + 1,
-                    j.after + 1,
-                    j.continuity
+                ui.label(tr!(
+                    "cam.join",
+                    at = format!("{:.1}", j.angle_rad.to_degrees()),
+                    before = j.before + 1,
+                    after = j.after + 1,
+                    continuity = format!("{:?}", j.continuity)
                 ));
             }
             let mut laws: Vec<Law> = spec.segments.iter().filter_map(SegmentSpec::law).collect();
@@ -254,9 +264,14 @@ fn exports(ui: &mut egui::Ui, st: &mut AppState, cam: usize) {
         actions.push(("Cam DXF…", FileAction::CamDxf(cam)));
     }
     ui.horizontal_wrapped(|ui| {
-        for (label, action) in actions {
-            let r = ui.button(label).on_hover_text(action.title());
-            st.controls.note(ui, ControlKind::Cam, label, &r);
+        for (id, action) in actions {
+            let shown = match action {
+                FileAction::CamCsv(_) => tr!("cam.csv"),
+                FileAction::CamSvg(_) => tr!("cam.svg"),
+                _ => tr!("cam.dxf"),
+            };
+            let r = ui.button(shown).on_hover_text(action.title());
+            st.controls.note(ui, ControlKind::Cam, id, &r);
             if r.clicked() {
                 st.commands.file = Some(action);
             }

@@ -10,6 +10,7 @@ use linkage_diagram::construction::{DirectionLine, construct};
 use linkage_diagram::label::Label;
 use linkage_diagram::layout::LaidPolygon;
 
+use crate::i18n::tr;
 use crate::state::AppState;
 use crate::ui::polygon_paint::{INK, Paper, pos};
 use crate::ui::typeset::{galley, job};
@@ -30,14 +31,14 @@ impl ConstructionView {
     pub fn ui(&mut self, ui: &mut egui::Ui, st: &AppState, figure_height: f32) {
         let equations = st.session.polygons();
         if equations.is_empty() {
-            ui.weak("no equations at this position");
+            ui.weak(tr!("construct.none"));
             return;
         }
         let view = self;
         view.equation = view.equation.min(equations.len() - 1);
         let eq = &equations[view.equation];
         let ink = ui.visuals().text_color();
-        egui::ComboBox::from_label("equation")
+        egui::ComboBox::from_label(tr!("construct.equation"))
             .selected_text(job(&Label::of_equation(eq), 14.0, ink))
             .width(ui.available_width() - 80.0)
             .show_ui(ui, |ui| {
@@ -78,14 +79,21 @@ impl ConstructionView {
         view.step = view.step.min(steps.len() - 1);
         ui.horizontal(|ui| {
             if ui
-                .add_enabled(view.step > 0, egui::Button::new("back"))
+                .add_enabled(view.step > 0, egui::Button::new(tr!("construct.back")))
                 .clicked()
             {
                 view.step -= 1;
             }
-            ui.label(format!("step {} of {}", view.step + 1, steps.len()));
+            ui.label(tr!(
+                "construct.step",
+                step = view.step + 1,
+                of = steps.len()
+            ));
             if ui
-                .add_enabled(view.step + 1 < steps.len(), egui::Button::new("next"))
+                .add_enabled(
+                    view.step + 1 < steps.len(),
+                    egui::Button::new(tr!("construct.next")),
+                )
                 .clicked()
             {
                 view.step += 1;

@@ -8,6 +8,7 @@ use linkage::scene::Models;
 
 use crate::command::Command;
 use crate::drawing::edit::DrawingEdit;
+use crate::i18n::tr;
 use crate::state::AppState;
 
 /// One row per link with a mass: "uniform", or its centroid (x, y) and inertia.
@@ -26,7 +27,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     let unit_label = crate::session::unit_label_of(drawing.length_unit);
     let mut edits = Vec::new();
     ui.separator();
-    ui.strong("Bodies");
+    ui.strong(tr!("draw.bodies"));
     egui::Grid::new("drawing bodies")
         .num_columns(5)
         .show(ui, |ui| {
@@ -38,10 +39,8 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
                 ui.label(&link.name);
                 let mut uniform = link.centroid.is_none() && link.inertia_kg_m2.is_none();
                 let toggled = ui
-                    .checkbox(&mut uniform, "uniform")
-                    .on_hover_text(
-                        "centroid at the mean of its points, a uniform bar's or plate's inertia",
-                    )
+                    .checkbox(&mut uniform, tr!("draw.uniform"))
+                    .on_hover_text(tr!("draw.uniform_hint"))
                     .changed();
                 let (mut x, mut y, mut i) = (centroid.x / unit, centroid.y / unit, inertia);
                 let mut typed = false;

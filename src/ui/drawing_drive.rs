@@ -8,6 +8,7 @@ use linkage::scene::{DriveSpec, Models, MotorSpec, Shaft};
 
 use crate::command::Command;
 use crate::drawing::edit::DrawingEdit;
+use crate::i18n::tr;
 use crate::state::AppState;
 
 /// Which characteristic the motor has, for the chooser.
@@ -31,12 +32,12 @@ impl Kind {
         }
     }
 
-    fn label(self) -> &'static str {
+    fn label(self) -> String {
         match self {
-            Self::None => "none (the input keeps its speed)",
-            Self::Constant => "constant torque",
-            Self::Linear => "linear (induction motor)",
-            Self::Table => "table of torque against speed",
+            Self::None => tr!("drive.none"),
+            Self::Constant => tr!("drive.constant"),
+            Self::Linear => tr!("drive.linear"),
+            Self::Table => tr!("drive.table"),
         }
     }
 
@@ -68,10 +69,10 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     let before = b.drawing().drive.clone();
     let mut drive = before.clone();
     ui.separator();
-    ui.strong("Drive");
+    ui.strong(tr!("drive.heading"));
     let kind = Kind::of(drive.as_ref());
     let mut chosen = kind;
-    egui::ComboBox::from_label("motor")
+    egui::ComboBox::from_label(tr!("drive.motor"))
         .selected_text(kind.label())
         .show_ui(ui, |ui| {
             for k in Kind::ALL {
@@ -109,15 +110,15 @@ fn number(ui: &mut egui::Ui, label: &str, value: &mut f64, unit: &str) {
 
 fn motor(ui: &mut egui::Ui, m: &mut MotorSpec) {
     match m {
-        MotorSpec::Constant { torque_n_m } => number(ui, "torque", torque_n_m, " N·m"),
+        MotorSpec::Constant { torque_n_m } => number(ui, &tr!("drive.torque"), torque_n_m, " N·m"),
         MotorSpec::Linear {
             no_load_rpm,
             rated_torque_n_m,
             rated_rpm,
         } => {
-            number(ui, "no-load speed", no_load_rpm, " rpm");
-            number(ui, "rated torque", rated_torque_n_m, " N·m");
-            number(ui, "rated speed (below no-load)", rated_rpm, " rpm");
+            number(ui, &tr!("drive.no_load_speed"), no_load_rpm, " rpm");
+            number(ui, &tr!("drive.rated_torque"), rated_torque_n_m, " N·m");
+            number(ui, &tr!("drive.rated_speed"), rated_rpm, " rpm");
         }
         MotorSpec::Table { points } => table(ui, points),
     }
@@ -129,15 +130,15 @@ fn table(ui: &mut egui::Ui, points: &mut Vec<(f64, f64)>) {
     egui::Grid::new("motor table")
         .num_columns(3)
         .show(ui, |ui| {
-            let speed = ui.strong("speed");
-            let torque_head = ui.strong("torque");
+            let speed = ui.strong(tr!("drive.speed"));
+            let torque_head = ui.strong(tr!("drive.torque"));
             ui.end_row();
             for (i, (rpm, torque)) in points.iter_mut().enumerate() {
                 ui.add(egui::DragValue::new(rpm).speed(1.0).suffix(" rpm"))
                     .labelled_by(speed.id);
                 ui.add(egui::DragValue::new(torque).speed(0.5).suffix(" N·m"))
                     .labelled_by(torque_head.id);
-                if ui.small_button("remove").clicked() {
+                if ui.small_button(tr!("draw.remove")).clicked() {
                     remove = Some(i);
                 }
                 ui.end_row();
@@ -146,24 +147,24 @@ fn table(ui: &mut egui::Ui, points: &mut Vec<(f64, f64)>) {
     if let Some(i) = remove.filter(|_| points.len() > 1) {
         points.remove(i);
     }
-    if ui.button("add a row").clicked() {
+    if ui.button(tr!("drive.add_row")).clicked() {
         let last = points.last().copied().unwrap_or((0.0, 0.0));
         points.push((last.0 + 100.0, last.1));
     }
 }
 
 fn gear_and_flywheel(ui: &mut egui::Ui, d: &mut DriveSpec) {
+    number(ui, &tr!("drive.gear_ratio"), &mut d.gear_ratio, "");
     number(
         ui,
-        "gear ratio (motor turns per crank turn)",
-        &mut d.gear_ratio,
-        "",
+        &tr!("drive.rotor_inertia"),
+        &mut d.motor_inertia_kg_m2,
+        " kg·m²",
     );
-    number(ui, "rotor inertia", &mut d.motor_inertia_kg_m2, " kg·m²");
-    number(ui, "flywheel", &mut d.flywheel_kg_m2, " kg·m²");
+    number(ui, &tr!("drive.flywheel"), &mut d.flywheel_kg_m2, " kg·m²");
     ui.horizontal(|ui| {
-        ui.label("flywheel on the");
-        ui.radio_value(&mut d.flywheel_on, Shaft::Crank, "crank");
-        ui.radio_value(&mut d.flywheel_on, Shaft::Motor, "motor shaft");
+        ui.label(tr!("drive.flywheel_on"));
+        ui.radio_value(&mut d.flywheel_on, Shaft::Crank, tr!("drive.on_crank"));
+        ui.radio_value(&mut d.flywheel_on, Shaft::Motor, tr!("drive.on_motor"));
     });
 }

@@ -10,6 +10,7 @@ use linkage::scene::{ForceWhen, Models};
 
 use crate::command::Command;
 use crate::drawing::edit::{DrawingEdit, Element};
+use crate::i18n::tr;
 use crate::state::AppState;
 
 /// The springs, dampers and point forces, each editable.
@@ -25,7 +26,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     }
     let mut edits = Vec::new();
     ui.separator();
-    ui.strong("Springs, dampers, forces");
+    ui.strong(tr!("draw.force_elements"));
     egui::Grid::new("drawing force elements")
         .num_columns(5)
         .show(ui, |ui| {
@@ -48,7 +49,7 @@ fn springs(ui: &mut egui::Ui, drawing: &Drawing, edits: &mut Vec<DrawingEdit>) {
     let unit = drawing.length_unit.to_metres();
     let unit_label = crate::session::unit_label_of(drawing.length_unit);
     for (i, s) in drawing.springs.iter().enumerate() {
-        ui.label(format!("spring {}", ends(drawing, s.a, s.b)));
+        ui.label(tr!("draw.spring", ends = ends(drawing, s.a, s.b)));
         let mut k = s.k_n_per_m;
         let stiffness = ui.add(
             egui::DragValue::new(&mut k)
@@ -58,7 +59,9 @@ fn springs(ui: &mut egui::Ui, drawing: &Drawing, edits: &mut Vec<DrawingEdit>) {
         );
         let mut as_drawn = s.free_length_m.is_none();
         let drawn_length = (drawing.points[s.a].at - drawing.points[s.b].at).norm();
-        let toggled = ui.checkbox(&mut as_drawn, "free as drawn").changed();
+        let toggled = ui
+            .checkbox(&mut as_drawn, tr!("draw.free_as_drawn"))
+            .changed();
         let mut free = s.free_length_m.unwrap_or(drawn_length) / unit;
         let typed = !as_drawn
             && ui
@@ -87,7 +90,7 @@ fn springs(ui: &mut egui::Ui, drawing: &Drawing, edits: &mut Vec<DrawingEdit>) {
 /// A coefficient in N·s/m.
 fn dampers(ui: &mut egui::Ui, drawing: &Drawing, edits: &mut Vec<DrawingEdit>) {
     for (i, d) in drawing.dampers.iter().enumerate() {
-        ui.label(format!("damper {}", ends(drawing, d.a, d.b)));
+        ui.label(tr!("draw.damper", ends = ends(drawing, d.a, d.b)));
         let mut c = d.c_n_s_per_m;
         if ui
             .add(
@@ -114,7 +117,7 @@ fn dampers(ui: &mut egui::Ui, drawing: &Drawing, edits: &mut Vec<DrawingEdit>) {
 /// its point moves against it, as a cutting force does).
 fn forces(ui: &mut egui::Ui, drawing: &Drawing, edits: &mut Vec<DrawingEdit>) {
     for (i, f) in drawing.forces.iter().enumerate() {
-        ui.label(format!("force at {}", drawing.points[f.point].name));
+        ui.label(tr!("draw.force_at", point = drawing.points[f.point].name));
         let (mut x, mut y) = (f.force_n.x, f.force_n.y);
         let mut working = f.when == ForceWhen::WorkingStroke;
         let speed = 0.01 * f.force_n.norm().max(10.0);
@@ -131,8 +134,8 @@ fn forces(ui: &mut egui::Ui, drawing: &Drawing, edits: &mut Vec<DrawingEdit>) {
                 .suffix(" N"),
         );
         let wr = ui
-            .checkbox(&mut working, "working stroke only")
-            .on_hover_text("acts only while its point moves against it, as a cutting force");
+            .checkbox(&mut working, tr!("draw.working_only"))
+            .on_hover_text(tr!("draw.working_only_hint"));
         if xr.changed() || yr.changed() || wr.changed() {
             edits.push(DrawingEdit::SetForce {
                 force: i,
@@ -150,7 +153,7 @@ fn forces(ui: &mut egui::Ui, drawing: &Drawing, edits: &mut Vec<DrawingEdit>) {
 }
 
 fn remove(ui: &mut egui::Ui, element: Element, edits: &mut Vec<DrawingEdit>) {
-    if ui.button("remove").clicked() {
+    if ui.button(tr!("draw.remove")).clicked() {
         edits.push(DrawingEdit::DeleteElement(element));
     }
 }

@@ -9,6 +9,7 @@ use linkage::Vec2;
 use crate::command::Command;
 use crate::drawing::edit::{Body, DrawingEdit, Named};
 use crate::drawing::{DrawingEditor, Tool};
+use crate::i18n::tr;
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
 use linkage::scene::{Models, Speed};
@@ -18,7 +19,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     let Some(b) = st.drawing.as_ref() else {
         return;
     };
-    ui.heading("Draw a mechanism");
+    ui.heading(tr!("draw.heading"));
     let mut chosen = None;
     ui.horizontal_wrapped(|ui| {
         for tool in Tool::ALL {
@@ -59,18 +60,15 @@ fn status(ui: &mut egui::Ui, st: &AppState) {
         return;
     };
     let m = b.drawing().mobility();
-    ui.label(format!(
-        "degrees of freedom: 3·{} − 2·{} = {}",
-        m.moving,
-        m.revolutes + m.prismatics,
-        m.dof()
+    ui.label(tr!(
+        "draw.mobility",
+        moving = m.moving,
+        joints = m.revolutes + m.prismatics,
+        dof = m.dof()
     ));
     match &b.problem {
         Some(why) => ui.colored_label(egui::Color32::from_rgb(150, 90, 0), why.to_string()),
-        None => ui.colored_label(
-            egui::Color32::from_rgb(20, 110, 40),
-            "a mechanism: its report, plots and polygons follow the drawing",
-        ),
+        None => ui.colored_label(egui::Color32::from_rgb(20, 110, 40), tr!("draw.complete")),
     };
     if let Some(why) = &b.refusal {
         ui.colored_label(egui::Color32::DARK_RED, why.to_string());
@@ -83,7 +81,7 @@ fn actions(ui: &mut egui::Ui, st: &mut AppState) -> bool {
     let Some(b) = st.drawing.as_ref() else {
         return false;
     };
-    let done = ui.add_enabled(b.problem.is_none(), egui::Button::new("Done"));
+    let done = ui.add_enabled(b.problem.is_none(), egui::Button::new(tr!("draw.done")));
     st.controls.note(ui, ControlKind::DrawTool, "Done", &done);
     done.clicked()
 }
@@ -95,7 +93,7 @@ fn points(ui: &mut egui::Ui, st: &mut AppState) {
     };
     let unit = b.drawing().length_unit.to_metres();
     let mut edits = Vec::new();
-    ui.strong("Points");
+    ui.strong(tr!("draw.points"));
     egui::Grid::new("drawing points")
         .num_columns(4)
         .show(ui, |ui| {
@@ -110,7 +108,7 @@ fn points(ui: &mut egui::Ui, st: &mut AppState) {
                         .changed();
                 }
                 let mut ground = point.ground;
-                if ui.checkbox(&mut ground, "ground").changed() {
+                if ui.checkbox(&mut ground, tr!("draw.ground")).changed() {
                     edits.push(DrawingEdit::SetGround { point: p, ground });
                 }
                 if changed {
@@ -132,7 +130,7 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
         return;
     };
     let mut edits = Vec::new();
-    ui.strong("Links");
+    ui.strong(tr!("draw.links"));
     egui::Grid::new("drawing links")
         .num_columns(4)
         .show(ui, |ui| {
@@ -147,12 +145,12 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
             for l in 0..b.drawing().links.len() {
                 name_cell(ui, b, Named::Link(l), &mut edits);
                 let role = if b.drawing().driver == Some(l) {
-                    "input"
+                    tr!("draw.input")
                 } else {
-                    ""
+                    String::new()
                 };
                 ui.label(role);
-                if ui.radio(output == Some(l), "output").clicked() {
+                if ui.radio(output == Some(l), tr!("draw.output")).clicked() {
                     edits.push(DrawingEdit::SetOutput(Some(l)));
                 }
                 if masses {
@@ -167,7 +165,7 @@ fn links(ui: &mut egui::Ui, st: &mut AppState) {
         Speed::RadPerSecond(w) => w * 60.0 / std::f64::consts::TAU,
     };
     ui.horizontal(|ui| {
-        ui.label("input speed");
+        ui.label(tr!("draw.input_speed"));
         if ui
             .add(egui::DragValue::new(&mut rpm).speed(1.0).suffix(" rpm"))
             .changed()
@@ -189,22 +187,18 @@ fn model(ui: &mut egui::Ui, st: &mut AppState) {
     let (mut models, mut gravity) = (b.drawing().models, b.drawing().gravity);
     let mut edits = Vec::new();
     ui.horizontal(|ui| {
-        ui.label("computes");
+        ui.label(tr!("draw.computes"));
         for (m, label) in [
-            (Models::Kinematics, "kinematics"),
-            (Models::Kinetostatics, "kinetostatics"),
-            (Models::Dynamics, "dynamics"),
+            (Models::Kinematics, tr!("draw.kinematics")),
+            (Models::Kinetostatics, tr!("draw.kinetostatics")),
+            (Models::Dynamics, tr!("draw.dynamics")),
         ] {
             if ui.radio_value(&mut models, m, label).changed() {
                 edits.push(DrawingEdit::SetModels(models));
             }
         }
     });
-    if models != Models::Kinematics
-        && ui
-            .checkbox(&mut gravity, "gravity (9.81 m/s² down)")
-            .changed()
-    {
+    if models != Models::Kinematics && ui.checkbox(&mut gravity, tr!("draw.gravity")).changed() {
         edits.push(DrawingEdit::SetGravity(gravity));
     }
     for e in edits {
@@ -239,7 +233,7 @@ fn sliders(ui: &mut egui::Ui, st: &mut AppState) {
     }
     let mut edits = Vec::new();
     ui.separator();
-    ui.strong("Sliders");
+    ui.strong(tr!("draw.sliders"));
     egui::Grid::new("drawing sliders")
         .num_columns(3)
         .show(ui, |ui| {
@@ -248,7 +242,7 @@ fn sliders(ui: &mut egui::Ui, st: &mut AppState) {
                 let name_of =
                     |g: Option<usize>| g.map_or("ground", |l| drawing.links[l].name.as_str());
                 let mut guide = s.guide;
-                egui::ComboBox::new(("guide", i), format!("guide of {pin}"))
+                egui::ComboBox::new(("guide", i), tr!("draw.guide_of", pin = pin))
                     .selected_text(name_of(guide))
                     .show_ui(ui, |ui| {
                         let choices = std::iter::once(None).chain(
@@ -292,7 +286,7 @@ fn name_cell(ui: &mut egui::Ui, b: &mut DrawingEditor, what: Named, edits: &mut 
     match &mut b.naming {
         Some((named, text)) if *named == what => {
             let r = ui.add(egui::TextEdit::singleline(text).desired_width(70.0));
-            let label = format!("new name of {current}");
+            let label = tr!("draw.new_name", current = current);
             r.widget_info(|| {
                 egui::WidgetInfo::labeled(egui::accesskit::Role::TextInput, true, &label)
             });
@@ -309,7 +303,7 @@ fn name_cell(ui: &mut egui::Ui, b: &mut DrawingEditor, what: Named, edits: &mut 
         _ => {
             if ui
                 .button(&current)
-                .on_hover_text("click to rename")
+                .on_hover_text(tr!("draw.rename_hint"))
                 .clicked()
             {
                 b.naming = Some((what, current));

@@ -36,10 +36,9 @@ pub fn section(ui: &mut egui::Ui, session: &Session, figure_height: f32) {
 
 fn stages(ui: &mut egui::Ui, session: &Session, fp: &ForcePolygons, figure_height: f32) {
     let m = session.mechanism();
-    ui.label(format!(
-        "At the scene's crank speed, from the output back to the crank. \
-         Balancing torque M_b = {}.",
-        linkage_diagram::numbers::si(fp.balancing_torque, "N·m")
+    ui.label(tr!(
+        "forces.intro",
+        torque = linkage_diagram::numbers::si(fp.balancing_torque, "N·m")
     ));
     for (i, stage) in fp.stages.iter().enumerate() {
         let title = stage_title(stage, m);
@@ -52,7 +51,7 @@ fn stages(ui: &mut egui::Ui, session: &Session, fp: &ForcePolygons, figure_heigh
         let paper = Paper::new(ui, figure_height);
         let laid = paper.lay_out(&fig, None);
         draw(&paper.painter, FORCE_UNIT, &laid, None, INK);
-        egui::CollapsingHeader::new(format!("{title}: forces"))
+        egui::CollapsingHeader::new(tr!("forces.table", stage = title))
             .id_salt(("force table", i))
             .default_open(false)
             .show(ui, |ui| {
