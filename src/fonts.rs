@@ -124,7 +124,19 @@ mod tests {
         ctx.run_ui(Default::default(), |_| {})
             .textures_delta
             .clear();
-        let shown = non_ascii_in_string_literals();
+        let mut shown = non_ascii_in_string_literals();
+        // And every word of the catalogue, in both languages.
+        let catalogue = std::fs::read_to_string(
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("locales/app.yml"),
+        )
+        .expect("the catalogue");
+        shown.extend(
+            catalogue
+                .lines()
+                .filter(|l| !l.trim_start().starts_with('#'))
+                .flat_map(str::chars)
+                .filter(|c| !c.is_ascii()),
+        );
         assert!(shown.contains(&'°'), "{shown:?}");
         for family in [FontFamily::Proportional, FontFamily::Monospace] {
             let font = eframe::egui::FontId::new(14.0, family.clone());

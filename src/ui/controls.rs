@@ -196,17 +196,29 @@ fn branches(ui: &mut egui::Ui, st: &mut AppState) {
     if !branches.is_empty() {
         ui.separator();
         ui.label(tr!("controls.branch"));
-        for (point, words, flipped) in branches {
+        for (point, branch, flipped) in branches {
             let mut on = flipped;
-            let label = tr!("controls.flip", point = point, now = words);
+            let label = tr!("controls.flip", point = point, now = branch_shown(&branch));
             let r = ui
                 .push_id(("branch", &point), |ui| ui.checkbox(&mut on, &label))
                 .inner;
-            let id = format!("flip at {point} (now {words})");
+            let english = crate::session::branch_words(&branch);
+            let id = format!("flip at {point} (now {english})");
             st.controls.note(ui, ControlKind::Branch, &id, &r);
             if r.changed() {
                 st.edit(SceneEdit::FlipBranch { point });
             }
         }
+    }
+}
+
+/// A dyad's assembly branch in the app's language.
+fn branch_shown(b: &linkage::scene::Branch) -> String {
+    use linkage::scene::Branch;
+    match b {
+        Branch::Left(a, c) => tr!("branch.left", a = a, c = c),
+        Branch::Right(a, c) => tr!("branch.right", a = a, c = c),
+        Branch::Along => tr!("branch.along"),
+        Branch::Against => tr!("branch.against"),
     }
 }

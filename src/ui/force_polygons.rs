@@ -71,7 +71,12 @@ fn table(ui: &mut egui::Ui, rows: &[ForceRow], salt: usize) {
     egui::Grid::new(("forces", salt))
         .striped(true)
         .show(ui, |ui| {
-            for head in ["force", "magnitude", "direction", "in this stage"] {
+            for head in [
+                tr!("table.force"),
+                tr!("table.magnitude"),
+                tr!("table.direction"),
+                tr!("table.in_stage"),
+            ] {
                 ui.strong(head);
             }
             ui.end_row();

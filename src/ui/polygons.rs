@@ -273,7 +273,12 @@ fn table(
         ui.label(format!("{}:", crate::session::words::group(&eq.group)));
         ui.label(crate::ui::typeset::job(&Label::of_equation(eq), 14.0, ink));
         egui::Grid::new((q, i)).striped(true).show(ui, |ui| {
-            for head in ["term", "magnitude", "direction", "known"] {
+            for head in [
+                tr!("table.term"),
+                tr!("table.magnitude"),
+                tr!("table.direction"),
+                tr!("table.known"),
+            ] {
                 ui.strong(head);
             }
             ui.end_row();
@@ -290,7 +295,13 @@ fn table(
                     let r = egui::RichText::new(text);
                     if on { r.background_color(highlight) } else { r }
                 };
-                let known = |k: bool| if k { "known" } else { "solved" };
+                let known = |k: bool| {
+                    if k {
+                        tr!("table.is_known")
+                    } else {
+                        tr!("table.solved")
+                    }
+                };
                 let row = [
                     ui.label(job),
                     ui.label(cell(numbers::si_beside(
@@ -303,10 +314,10 @@ fn table(
                         numbers::degrees(t.direction_rad.to_degrees()),
                         t.direction
                     ))),
-                    ui.label(cell(format!(
-                        "magnitude {}, direction {}",
-                        known(t.magnitude_known),
-                        known(t.direction_known)
+                    ui.label(cell(tr!(
+                        "table.known_cell",
+                        magnitude = known(t.magnitude_known),
+                        direction = known(t.direction_known)
                     ))),
                 ];
                 if row.iter().any(egui::Response::hovered) {

@@ -4,6 +4,7 @@
 use eframe::egui;
 use linkage::SceneFile;
 
+use crate::i18n::tr;
 use crate::synthesis::Design;
 use crate::ui::control_map::{ControlKind, ControlMap};
 
@@ -25,9 +26,9 @@ pub fn design_view(
     crate::ui::synthesis::figure::figure(ui, &design.figure);
     let chosen = ui
         .horizontal(|ui| {
-            let open = ui.button("Open as scene");
+            let open = ui.button(tr!("synth.open"));
             controls.note(ui, ControlKind::FileButton, "Open as scene", &open);
-            let replace = ui.button("Replace this scene");
+            let replace = ui.button(tr!("synth.replace"));
             controls.note(ui, ControlKind::FileButton, "Replace this scene", &replace);
             if open.clicked() {
                 Some(Chosen::Open(design.scene.clone()))

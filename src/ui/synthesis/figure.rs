@@ -6,6 +6,7 @@
 use eframe::egui;
 use egui_plot::{Legend, Line, Plot, PlotPoints, Points};
 
+use crate::i18n::tr;
 use crate::synthesis::function::{Desired, FunctionSpec};
 use crate::synthesis::motion::Construction;
 use crate::synthesis::{Figure, SynthInputs};
@@ -15,13 +16,13 @@ use crate::ui::synthesis::fields::{number, text_area};
 pub fn function_inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {
     ui.horizontal(|ui| {
         if ui
-            .radio(view.function_spec.is_none(), "typed points")
+            .radio(view.function_spec.is_none(), tr!("synth.typed_points"))
             .clicked()
         {
             view.function_spec = None;
         }
         if ui
-            .radio(view.function_spec.is_some(), "a function")
+            .radio(view.function_spec.is_some(), tr!("synth.a_function"))
             .clicked()
             && view.function_spec.is_none()
         {
@@ -32,25 +33,25 @@ pub fn function_inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {
         text_area(
             ui,
             &mut view.function_points,
-            "precision points: input deg, output deg",
+            &tr!("synth.precision_points"),
         );
         return;
     };
-    egui::ComboBox::from_label("function")
+    egui::ComboBox::from_label(tr!("synth.function"))
         .selected_text(spec.f.label())
         .show_ui(ui, |ui| {
             for f in Desired::ALL {
                 ui.selectable_value(&mut spec.f, f, f.label());
             }
         });
-    number(ui, &mut spec.x_range[0], "x from", 0.01);
-    number(ui, &mut spec.x_range[1], "x to", 0.01);
-    number(ui, &mut spec.input_deg[0], "crank start (deg)", 0.5);
-    number(ui, &mut spec.input_deg[1], "crank span (deg)", 0.5);
-    number(ui, &mut spec.output_deg[0], "rocker start (deg)", 0.5);
-    number(ui, &mut spec.output_deg[1], "rocker span (deg)", 0.5);
+    number(ui, &mut spec.x_range[0], &tr!("synth.x_from"), 0.01);
+    number(ui, &mut spec.x_range[1], &tr!("synth.x_to"), 0.01);
+    number(ui, &mut spec.input_deg[0], &tr!("synth.crank_start"), 0.5);
+    number(ui, &mut spec.input_deg[1], &tr!("synth.crank_span"), 0.5);
+    number(ui, &mut spec.output_deg[0], &tr!("synth.rocker_start"), 0.5);
+    number(ui, &mut spec.output_deg[1], &tr!("synth.rocker_span"), 0.5);
     ui.horizontal(|ui| {
-        let name = ui.label("Chebyshev points");
+        let name = ui.label(tr!("synth.chebyshev"));
         ui.add(egui::DragValue::new(&mut spec.points).range(3..=10))
             .labelled_by(name.id);
     });
@@ -58,11 +59,7 @@ pub fn function_inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {
 
 /// The positions tab: three to five positions and what fixes the four-bar.
 pub fn motion_inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {
-    text_area(
-        ui,
-        &mut view.poses,
-        "positions (3 to 5): x mm, y mm, angle deg",
-    );
+    text_area(ui, &mut view.poses, &tr!("synth.positions"));
     let rows = view.poses.lines().filter(|l| !l.trim().is_empty()).count();
     let choice = &mut view.motion;
     let four = |ui: &mut egui::Ui, v: &mut [f64; 4], what: &str| {
@@ -76,25 +73,17 @@ pub fn motion_inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {
         });
     };
     match rows {
-        4 => four(
-            ui,
-            &mut choice.fixed_near_mm,
-            "fixed pivots: the centre-point curve's points nearest (mm)",
-        ),
+        4 => four(ui, &mut choice.fixed_near_mm, &tr!("synth.fixed_near")),
         5 => {
             ui.horizontal(|ui| {
-                let name = ui.label("Burmester points");
+                let name = ui.label(tr!("synth.burmester"));
                 ui.add(egui::DragValue::new(&mut choice.pair[0]).range(1..=4))
                     .labelled_by(name.id);
                 ui.add(egui::DragValue::new(&mut choice.pair[1]).range(1..=4))
                     .labelled_by(name.id);
             });
         }
-        _ => four(
-            ui,
-            &mut choice.moving_mm,
-            "moving pivots in the body's frame (mm)",
-        ),
+        _ => four(ui, &mut choice.moving_mm, &tr!("synth.moving_pivots")),
     }
 }
 
@@ -105,8 +94,8 @@ pub fn figure(ui: &mut egui::Ui, figure: &Figure) {
         Figure::ErrorCurve(curve) => {
             Plot::new("structural error")
                 .height(160.0)
-                .x_axis_label("crank angle (deg)")
-                .y_axis_label("structural error (deg)")
+                .x_axis_label(tr!("synth.crank_angle_axis"))
+                .y_axis_label(tr!("synth.structural_error"))
                 // Hundredths of a degree: egui_plot's default spacing labels only
                 // 0 here, so the marks are a round step of about a quarter of the span.
                 .y_axis_min_width(44.0)
@@ -118,7 +107,7 @@ pub fn figure(ui: &mut egui::Ui, figure: &Figure) {
                 .y_axis_formatter(|mark, _| format!("{:.3}", mark.value))
                 .show(ui, |p| {
                     p.line(Line::new(
-                        "error",
+                        tr!("synth.error"),
                         curve.iter().copied().collect::<PlotPoints<'_>>(),
                     ));
                 });
@@ -139,9 +128,20 @@ fn construction(ui: &mut egui::Ui, c: &Construction) {
         .default_y_bounds(y0, y1)
         .legend(Legend::default().position(egui_plot::Corner::LeftBottom))
         .show(ui, |p| {
+            // The legend's words, in the app's language.
+            let (curve, positions, poles) = (
+                tr!("synth.curve"),
+                tr!("synth.legend_positions"),
+                tr!("synth.poles"),
+            );
+            let (burmester, four_bar, fixed) = (
+                tr!("synth.burmester"),
+                tr!("synth.four_bar"),
+                tr!("synth.fixed"),
+            );
             for seg in &c.curve {
                 p.line(
-                    Line::new("centre-point curve", seg.to_vec())
+                    Line::new(curve.as_str(), seg.to_vec())
                         .color(egui::Color32::from_rgb(120, 160, 220)),
                 );
             }
@@ -150,25 +150,25 @@ fn construction(ui: &mut egui::Ui, c: &Construction) {
             for (at, angle) in &c.positions {
                 let end = [at[0] + tick * angle.cos(), at[1] + tick * angle.sin()];
                 p.line(
-                    Line::new("positions", vec![*at, end])
+                    Line::new(positions.as_str(), vec![*at, end])
                         .color(egui::Color32::from_rgb(230, 160, 60))
                         .width(2.0),
                 );
             }
             let at: Vec<[f64; 2]> = c.positions.iter().map(|(a, _)| *a).collect();
             p.points(
-                Points::new("positions", at)
+                Points::new(positions.as_str(), at)
                     .radius(4.0)
                     .color(egui::Color32::from_rgb(230, 160, 60)),
             );
             p.points(
-                Points::new("poles", c.poles.clone())
+                Points::new(poles.as_str(), c.poles.clone())
                     .radius(3.0)
                     .color(egui::Color32::GRAY),
             );
             if !c.burmester.is_empty() {
                 p.points(
-                    Points::new("Burmester points", c.burmester.clone())
+                    Points::new(burmester.as_str(), c.burmester.clone())
                         .radius(5.0)
                         .color(egui::Color32::from_rgb(200, 80, 200)),
                 );
@@ -176,12 +176,12 @@ fn construction(ui: &mut egui::Ui, c: &Construction) {
             let [a0, b0] = c.fixed;
             let [a, b] = c.moving;
             p.line(
-                Line::new("four-bar", vec![a0, a, b, b0])
+                Line::new(four_bar.as_str(), vec![a0, a, b, b0])
                     .color(egui::Color32::from_rgb(90, 200, 120))
                     .width(2.5),
             );
             p.points(
-                Points::new("fixed pivots", vec![a0, b0])
+                Points::new(fixed.as_str(), vec![a0, b0])
                     .radius(5.0)
                     .color(egui::Color32::from_rgb(90, 200, 120)),
             );

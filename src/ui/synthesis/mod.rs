@@ -12,6 +12,7 @@ pub mod path;
 
 use eframe::egui;
 
+use crate::i18n::tr;
 use crate::session::SceneEdit;
 use crate::session::{SceneSource, Session};
 use crate::state::AppState;
@@ -92,14 +93,14 @@ fn window(
     } else {
         egui::pos2(320.0, 80.0)
     };
-    egui::Window::new("Synthesis")
+    egui::Window::new(tr!("synth.title"))
         .open(&mut open)
         .default_pos(at)
         .max_width(screen.width() - 16.0)
         .show(ctx, |ui| {
             ui.horizontal_wrapped(|ui| {
                 for kind in SynthKind::ALL {
-                    let tab = ui.selectable_label(view.inputs.kind == kind, kind.label());
+                    let tab = ui.selectable_label(view.inputs.kind == kind, kind_shown(kind));
                     st.controls
                         .note(ui, ControlKind::SynthesisTab, kind.label(), &tab);
                     if tab.clicked() {
@@ -146,7 +147,7 @@ fn tab(ui: &mut egui::Ui, st: &mut AppState, view: &mut SynthesisView) -> Option
         );
     }
     inputs(ui, &mut view.inputs);
-    let design = ui.button("Design");
+    let design = ui.button(tr!("synth.design"));
     st.controls
         .note(ui, ControlKind::FileButton, "Design", &design);
     if design.clicked() {
@@ -160,20 +161,25 @@ fn inputs(ui: &mut egui::Ui, view: &mut SynthInputs) {
     match view.kind {
         SynthKind::CrankRocker => {
             let [cd, swing, k] = &mut view.rocker;
-            number(ui, cd, "rocker CD (mm)", 1.0);
-            number(ui, swing, "swing (deg)", 0.1);
-            number(ui, k, "time ratio K", 0.01);
+            number(ui, cd, &tr!("synth.rocker_cd"), 1.0);
+            number(ui, swing, &tr!("synth.swing"), 0.1);
+            number(ui, k, &tr!("synth.time_ratio"), 0.01);
         }
         SynthKind::DieCutter => {
             let [h, k, l, rpm] = &mut view.die;
-            number(ui, h, "stroke H (mm)", 0.5);
-            number(ui, k, "time ratio K", 0.01);
-            number(ui, l, "CD = CE = L (mm)", 1.0);
-            number(ui, rpm, "crank speed (rpm)", 1.0);
+            number(ui, h, &tr!("synth.stroke"), 0.5);
+            number(ui, k, &tr!("synth.time_ratio"), 0.01);
+            number(ui, l, &tr!("synth.l"), 1.0);
+            number(ui, rpm, &tr!("synth.crank_speed"), 1.0);
         }
         SynthKind::Function => {
             crate::ui::synthesis::figure::function_inputs(ui, view);
-            number(ui, &mut view.function_ground_mm, "ground AD (mm)", 1.0);
+            number(
+                ui,
+                &mut view.function_ground_mm,
+                &tr!("synth.ground_ad"),
+                1.0,
+            );
         }
         // Shown by `synthesis_path`.
         SynthKind::Path => {}
@@ -190,5 +196,16 @@ fn result(ui: &mut egui::Ui, st: &mut AppState, view: &SynthesisView) -> Option<
             None
         }
         Some(Ok(design)) => design_view(ui, &mut st.controls, design),
+    }
+}
+
+/// A design's tab in the app's language.
+fn kind_shown(kind: SynthKind) -> String {
+    match kind {
+        SynthKind::CrankRocker => tr!("synth.tab_crank_rocker"),
+        SynthKind::DieCutter => tr!("synth.tab_die_cutter"),
+        SynthKind::Function => tr!("synth.tab_function"),
+        SynthKind::Motion => tr!("synth.tab_motion"),
+        SynthKind::Path => tr!("synth.tab_path"),
     }
 }

@@ -9,6 +9,7 @@ use eframe::egui;
 use egui_plot::{Line, Plot, PlotPoint, PlotPoints, Points, Text};
 use linkage::synthesis::path::{PathDesign, PathLinkage};
 
+use crate::i18n::tr;
 use crate::synthesis::path_inputs::{Member, PathInputs, design_of, member_of, turns_with};
 use crate::synthesis::path_job::PathJob;
 use crate::ui::control_map::{ControlKind, ControlMap};
@@ -69,13 +70,7 @@ fn targets(
     inputs: &mut PathInputs,
     tab: &mut PathTab,
 ) {
-    if ui
-        .checkbox(
-            &mut inputs.timed,
-            "timed: a crank angle at each target (third column)",
-        )
-        .changed()
-    {
+    if ui.checkbox(&mut inputs.timed, tr!("path.timed")).changed() {
         tab.csv = inputs.to_csv();
     }
     // Live, the best so far; once stopped, the four-bar chosen in the list.
@@ -94,11 +89,11 @@ fn targets(
         tab.csv_error = None;
     }
     let label = if inputs.timed {
-        "targets: x mm, y mm, crank deg (click the canvas to add, drag to move)"
+        tr!("path.targets_timed")
     } else {
-        "targets: x mm, y mm (click the canvas to add, drag to move)"
+        tr!("path.targets")
     };
-    ui.label(label);
+    ui.label(&label);
     // Scrolled past six rows, so that twenty targets leave Search in sight.
     let r = egui::ScrollArea::vertical()
         .id_salt("path targets text")
@@ -113,7 +108,7 @@ fn targets(
         })
         .inner;
     r.widget_info(|| {
-        egui::WidgetInfo::labeled(egui::accesskit::Role::MultilineTextInput, true, label)
+        egui::WidgetInfo::labeled(egui::accesskit::Role::MultilineTextInput, true, &label)
     });
     if r.changed() {
         tab.csv_error = inputs.read_csv(&tab.csv).err();
@@ -121,7 +116,7 @@ fn targets(
     if let Some(why) = &tab.csv_error {
         ui.colored_label(ui.visuals().error_fg_color, why.to_string());
     }
-    let clear = ui.button("Clear targets");
+    let clear = ui.button(tr!("path.clear"));
     controls.note(ui, ControlKind::FileButton, "Clear targets", &clear);
     if clear.clicked() {
         inputs.targets.clear();
@@ -236,27 +231,27 @@ fn linkage_lines(d: &PathLinkage) -> Option<PlotPoints<'static>> {
 
 fn constraints(ui: &mut egui::Ui, inputs: &mut PathInputs) {
     ui.horizontal(|ui| {
-        ui.checkbox(&mut inputs.crank_turns, "crank turns fully");
-        ui.checkbox(&mut inputs.one_branch, "targets on one branch");
+        ui.checkbox(&mut inputs.crank_turns, tr!("path.crank_turns"));
+        ui.checkbox(&mut inputs.one_branch, tr!("path.one_branch"));
         ui.add_enabled(
             !inputs.timed,
-            egui::Checkbox::new(&mut inputs.any_order, "targets in any order"),
+            egui::Checkbox::new(&mut inputs.any_order, tr!("path.any_order")),
         );
     });
     ui.horizontal(|ui| {
-        let name = ui.label("least transmission angle (deg)");
+        let name = ui.label(tr!("path.least_mu"));
         ui.add(
             egui::DragValue::new(&mut inputs.min_transmission_deg)
                 .range(0.0..=89.0)
                 .speed(0.5),
         )
         .labelled_by(name.id);
-        let name = ui.label("seed");
+        let name = ui.label(tr!("path.seed"));
         ui.add(egui::DragValue::new(&mut inputs.seed))
             .labelled_by(name.id);
     });
     ui.horizontal(|ui| {
-        let name = ui.label("tolerance (share of the targets' size)");
+        let name = ui.label(tr!("path.tolerance"));
         ui.add(
             egui::DragValue::new(&mut inputs.tolerance)
                 .range(1e-9..=0.1)
@@ -275,7 +270,7 @@ fn search_buttons(
 ) {
     let running = tab.job.as_ref().is_some_and(PathJob::is_running);
     ui.horizontal(|ui| {
-        let search = ui.add_enabled(!running, egui::Button::new("Search"));
+        let search = ui.add_enabled(!running, egui::Button::new(tr!("path.search")));
         controls.note(ui, ControlKind::FileButton, "Search", &search);
         if search.clicked() {
             match inputs.search() {
@@ -288,9 +283,13 @@ fn search_buttons(
             }
         }
         if let Some(job) = tab.job.as_mut() {
-            let label = if running { "Stop" } else { "Continue" };
+            let (id, label) = if running {
+                ("Stop", tr!("path.stop"))
+            } else {
+                ("Continue", tr!("path.continue"))
+            };
             let b = ui.button(label);
-            controls.note(ui, ControlKind::FileButton, label, &b);
+            controls.note(ui, ControlKind::FileButton, id, &b);
             if b.clicked() && running {
                 job.stop();
             } else if b.clicked() {
@@ -304,15 +303,21 @@ fn search_buttons(
     if let Some(job) = &tab.job {
         let p = job.snapshot().progress;
         let best = if p.best_relative_error.is_finite() {
-            format!("best miss {:.1e} of the size", p.best_relative_error)
+            tr!("path.best", miss = format!("{:.1e}", p.best_relative_error))
         } else {
-            "no closing linkage yet".into()
+            tr!("path.none_yet")
         };
-        ui.add(egui::ProgressBar::new(p.fraction() as f32).text(format!(
-            "{} evaluations, {best}, {} within tolerance{}",
-            p.evaluations,
-            p.solutions,
-            if p.done { ", done" } else { "" }
+        let done = if p.done {
+            tr!("path.done")
+        } else {
+            String::new()
+        };
+        ui.add(egui::ProgressBar::new(p.fraction() as f32).text(tr!(
+            "path.progress",
+            evaluations = p.evaluations,
+            best = best,
+            solutions = p.solutions,
+            done = done
         )));
     }
 }
@@ -324,21 +329,21 @@ fn designs(ui: &mut egui::Ui, controls: &mut ControlMap, tab: &mut PathTab) -> O
     }
     ui.separator();
     for (i, d) in found.iter().enumerate() {
-        let text = format!(
-            "{}: miss {:.1e} of the size, {}",
-            i + 1,
-            d.relative_error,
-            summary(&d.linkage)
+        let text = tr!(
+            "path.design",
+            n = i + 1,
+            miss = format!("{:.1e}", d.relative_error),
+            summary = summary(&d.linkage)
         );
         if ui.selectable_label(tab.chosen == (i, 0), text).clicked() {
             tab.chosen = (i, 0);
         }
         for (k, c) in d.cognates.iter().enumerate() {
-            let text = format!(
-                "    cognate {} ({}): {}",
-                k + 1,
-                turns_with(c.turns_with, false),
-                summary(&c.linkage)
+            let text = tr!(
+                "path.cognate",
+                n = k + 1,
+                turns = turns_with(c.turns_with, false),
+                summary = summary(&c.linkage)
             );
             let row = ui.selectable_label(tab.chosen == (i, k + 1), text);
             controls.note(
@@ -365,9 +370,9 @@ fn summary(l: &PathLinkage) -> String {
         .min_transmission_deg
         .map_or_else(String::new, |m| format!(", μ ≥ {m:.0}°"));
     let crank = if l.crank_turns {
-        "crank turns"
+        tr!("path.crank_turns_short")
     } else {
-        "crank rocks"
+        tr!("path.crank_rocks")
     };
     format!("{}, {crank}{mu}", l.grashof)
 }

@@ -320,9 +320,10 @@ impl Session {
         self.scene().models
     }
 
-    /// The assembly branches of the chain, by the point of each dyad: (point, branch
-    /// in words, whether it differs from the scene as opened).
-    pub fn branches(&self) -> Vec<(String, String, bool)> {
+    /// The assembly branches of the chain, by the point of each dyad: (point, its
+    /// branch, whether it differs from the scene as opened). The app words the
+    /// branch in the user's language ([`branch_words`] in English).
+    pub fn branches(&self) -> Vec<(String, linkage::scene::Branch, bool)> {
         let m = self.mechanism();
         m.branches
             .iter()
@@ -333,7 +334,7 @@ impl Session {
                     .branches
                     .get(&name)
                     .is_some_and(|orig| orig != b);
-                (name, branch_words(b), flipped)
+                (name, b.clone(), flipped)
             })
             .collect()
     }
@@ -411,7 +412,8 @@ impl Session {
     }
 }
 
-fn branch_words(b: &linkage::scene::Branch) -> String {
+/// A branch in English words ("right of B->D", "ahead along the guide").
+pub fn branch_words(b: &linkage::scene::Branch) -> String {
     use linkage::scene::Branch;
     match b {
         Branch::Left(a, c) => format!("left of {a}->{c}"),
