@@ -86,15 +86,33 @@ pub fn language() -> Language {
     CURRENT.with(Cell::get)
 }
 
+/// The catalogue's text for `key` in this thread's language. Not inlined: the
+/// app calls it from some 300 places, and the web demo's download carries each.
+#[doc(hidden)]
+#[inline(never)]
+pub fn text(key: &str) -> String {
+    crate::_rust_i18n_translate(language().code(), key).into_owned()
+}
+
+/// [`text`] with each `%{name}` replaced by its value.
+#[doc(hidden)]
+#[inline(never)]
+pub fn text_with(key: &str, names: &[&str], values: &[String]) -> String {
+    rust_i18n::replace_patterns(&text(key), names, values)
+}
+
 /// The catalogue's text for `key` in this thread's language, as a `String`, with
 /// `%{name}` replaced by `name = value` (any `Display`).
 macro_rules! tr {
     ($key:literal) => {
-        rust_i18n::t!($key, locale = $crate::i18n::language().code()).into_owned()
+        $crate::i18n::text($key)
     };
     ($key:literal, $($name:ident = $value:expr),+ $(,)?) => {
-        rust_i18n::t!($key, locale = $crate::i18n::language().code(), $($name = $value),+)
-            .into_owned()
+        $crate::i18n::text_with(
+            $key,
+            &[$(stringify!($name)),+],
+            &[$(($value).to_string()),+],
+        )
     };
 }
 pub(crate) use tr;
