@@ -16,6 +16,10 @@
 
 use std::cell::Cell;
 
+// The catalogue of the app's words (locales/app.yml), compiled in here; English
+// where a key lacks a language.
+rust_i18n::i18n!("locales", fallback = "en");
+
 /// A language the app speaks.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Language {
@@ -91,7 +95,7 @@ pub fn language() -> Language {
 #[doc(hidden)]
 #[inline(never)]
 pub fn text(key: &str) -> String {
-    crate::_rust_i18n_translate(language().code(), key).into_owned()
+    _rust_i18n_translate(language().code(), key).into_owned()
 }
 
 /// [`text`] with each `%{name}` replaced by its value.

@@ -3,10 +3,6 @@
 //! The same crate builds the desktop app (`src/main.rs`) and the browser demo
 //! (wasm32, started by [`start_web`]).
 
-// The catalogue of the app's words (locales/app.yml), compiled in; English where a
-// key lacks a language.
-rust_i18n::i18n!("locales", fallback = "en");
-
 mod app;
 mod apply;
 pub mod command;
