@@ -11,7 +11,7 @@ scene="$PWD/assets/scenes/quick_return.ron"
 # Runs inside Xvfb: start the app, drive the dialog, wait for the app's log line.
 drive() {
     DBUS_SESSION_BUS_ADDRESS=unix:path=/nonexistent/bus \
-        "${CARGO_TARGET_DIR:-target}/debug/linkage-lab" --scene slider_crank >"$log" 2>&1 &
+        "${CARGO_TARGET_DIR:-target}/debug/linkage-lab" --scene slider_crank --lang en >"$log" 2>&1 &
     local app=$!
     trap 'kill $app 2>/dev/null || true' RETURN
     local win

@@ -25,16 +25,16 @@ pub enum FileAction {
 
 impl FileAction {
     /// The dialog's title.
-    pub fn title(self) -> &'static str {
+    pub fn title(self) -> String {
         match self {
-            Self::Open => "Open scene file",
-            Self::SaveScene => "Save scene file",
-            Self::ExportCsv => "Export sweep CSV",
-            Self::ExportSheet => "Export diagram sheet (SVG)",
-            Self::ExportSheetPng => "Export diagram sheet (PNG)",
-            Self::CamCsv(_) => "Export cam table (CSV)",
-            Self::CamSvg(_) => "Export cam profile (SVG)",
-            Self::CamDxf(_) => "Export cam profile (DXF)",
+            Self::Open => crate::i18n::tr!("action.open"),
+            Self::SaveScene => crate::i18n::tr!("action.save"),
+            Self::ExportCsv => crate::i18n::tr!("action.csv"),
+            Self::ExportSheet => crate::i18n::tr!("action.svg"),
+            Self::ExportSheetPng => crate::i18n::tr!("action.png"),
+            Self::CamCsv(_) => crate::i18n::tr!("action.cam_csv"),
+            Self::CamSvg(_) => crate::i18n::tr!("action.cam_svg"),
+            Self::CamDxf(_) => crate::i18n::tr!("action.cam_dxf"),
         }
     }
 

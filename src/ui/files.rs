@@ -411,7 +411,7 @@ pub fn open_text(st: &mut AppState, name: String, text: &str) {
     match Session::open_text(SceneSource::File(name.clone()), text) {
         Ok(s) => {
             st.open(s);
-            report(st, log::Level::Info, format!("opened {name}"));
+            report(st, log::Level::Info, tr!("file.opened", name = name));
         }
         Err(e) => report(st, log::Level::Warn, format!("{name}: {e}")),
     }
@@ -431,7 +431,7 @@ pub fn drop_hint(ctx: &egui::Context) {
     painter.text(
         screen.center(),
         egui::Align2::CENTER_CENTER,
-        "Drop a scene file (.ron) to open it",
+        tr!("file.drop_hint"),
         egui::FontId::proportional(24.0),
         egui::Color32::WHITE,
     );
@@ -446,7 +446,11 @@ fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {
     match action {
         FileAction::Open => match std::fs::read_to_string(path) {
             Ok(text) => open_text(st, name, &text),
-            Err(e) => report(st, log::Level::Warn, format!("cannot read {shown}: {e}")),
+            Err(e) => report(
+                st,
+                log::Level::Warn,
+                tr!("file.cannot_read", path = shown, why = e),
+            ),
         },
         _ => {
             let written = contents(st, action)
@@ -456,9 +460,13 @@ fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {
                     if action == FileAction::SaveScene {
                         st.session.mark_saved();
                     }
-                    report(st, log::Level::Info, format!("wrote {shown}"));
+                    report(st, log::Level::Info, tr!("file.wrote", path = shown));
                 }
-                Err(e) => report(st, log::Level::Warn, format!("cannot write {shown}: {e}")),
+                Err(e) => report(
+                    st,
+                    log::Level::Warn,
+                    tr!("file.cannot_write", path = shown, why = e),
+                ),
             }
         }
     }

@@ -7,7 +7,7 @@ use crate::i18n::tr;
 use eframe::egui;
 use linkage::force_polygon::ForcePolygons;
 use linkage_diagram::force_figure::{
-    FORCE_UNIT, ForceFigure, ForceRow, force_rows, row_cells, stage_equation, stage_title,
+    FORCE_UNIT, ForceFigure, ForceRow, force_rows, row_cells, stage_equation,
 };
 use linkage_model::session::Session;
 
@@ -41,7 +41,7 @@ fn stages(ui: &mut egui::Ui, session: &Session, fp: &ForcePolygons, figure_heigh
         torque = linkage_diagram::numbers::si(fp.balancing_torque, "N·m")
     ));
     for (i, stage) in fp.stages.iter().enumerate() {
-        let title = stage_title(stage, m);
+        let title = crate::ui::words::stage_title(stage, m);
         ui.label(egui::RichText::new(&title).strong());
         let fig = ForceFigure::new(stage, m);
         if fig.arrows.is_empty() {

@@ -34,3 +34,4 @@ pub mod synthesis;
 pub mod timing_plot;
 pub mod typeset;
 pub mod viewport;
+pub mod words;

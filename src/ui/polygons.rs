@@ -270,7 +270,7 @@ fn table(
     let highlight = ui.visuals().selection.bg_fill;
     let mut hovered = None;
     for (i, eq) in equations.iter().filter(|e| e.kind == q).enumerate() {
-        ui.label(format!("{}:", crate::session::words::group(&eq.group)));
+        ui.label(format!("{}:", crate::ui::words::group(&eq.group)));
         ui.label(crate::ui::typeset::job(&Label::of_equation(eq), 14.0, ink));
         egui::Grid::new((q, i)).striped(true).show(ui, |ui| {
             for head in [

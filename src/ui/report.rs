@@ -5,7 +5,7 @@ use eframe::egui;
 
 use linkage::analysis::Report;
 use linkage::scene::LengthUnit;
-use linkage_model::session::words::{self, length};
+use linkage_model::session::words::length;
 
 use crate::i18n::tr;
 use crate::session::derived::Shown;
@@ -149,7 +149,7 @@ fn items(r: &Report, unit: LengthUnit) -> Vec<(String, String)> {
             tr!(
                 "report.mu_where",
                 at = format!("{:.2}", t.at.to_degrees()),
-                group = words::group(&t.group),
+                group = crate::ui::words::group(&t.group),
                 max = format!("{:.2}", t.max.to_degrees()),
                 at_max = format!("{:.2}", t.at_max.to_degrees())
             ),
@@ -206,7 +206,7 @@ fn branch_point_line(b: &linkage::branch_points::BranchPoint) -> String {
     format!(
         "crank {:.2}°: {}{} (the chain may go on in either mode)",
         b.input_rad.to_degrees(),
-        words::group(&b.group),
+        crate::ui::words::group(&b.group),
         pairs.concat()
     )
 }
