@@ -30,28 +30,18 @@ pub fn dyad(d: &DyadLabel) -> String {
 
 /// A force polygon's stage: its group and its links' numbers, or the crank.
 pub fn stage_title(stage: &StagePolygon, m: &Mechanism) -> String {
-    let numbers: Vec<String> = stage
-        .links
-        .iter()
-        .map(|&l| linkage::force_polygon::link_number(m, l).to_string())
-        .collect();
+    let numbers = linkage_diagram::force_figure::stage_numbers(stage, m);
     match &stage.stage {
         Stage::Group { dyad: d, .. } if d.kind != DyadKind::CamFollower => {
-            tr!("group.stage", group = dyad(d), numbers = numbers.join(", "))
+            tr!("group.stage", group = dyad(d), numbers = numbers)
         }
         // A cam's follower is one link.
-        Stage::Group { dyad: d, .. } => {
-            tr!(
-                "group.stage_one",
-                group = dyad(d),
-                number = numbers.join("")
-            )
-        }
+        Stage::Group { dyad: d, .. } => tr!("group.stage_one", group = dyad(d), number = numbers),
         Stage::Crank { link } => {
             tr!(
                 "group.stage_one",
                 group = m.links[*link].name,
-                number = numbers.join("")
+                number = numbers
             )
         }
     }

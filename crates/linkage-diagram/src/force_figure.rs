@@ -123,11 +123,7 @@ impl Figure for ForceFigure {
 /// The stage's title in the words of the drawing: "coupler and rocker, joined at C
 /// (links 3, 4)", "crank (link 2)"; the group's kind (RRR, RRP) is the solver's.
 pub fn stage_title(stage: &StagePolygon, m: &Mechanism) -> String {
-    let numbers: Vec<String> = stage
-        .links
-        .iter()
-        .map(|&l| linkage::force_polygon::link_number(m, l).to_string())
-        .collect();
+    let numbers = stage_numbers(stage, m);
     match &stage.stage {
         Stage::Group { dyad, .. } => {
             let noun = if dyad.kind == DyadKind::CamFollower {
@@ -135,10 +131,20 @@ pub fn stage_title(stage: &StagePolygon, m: &Mechanism) -> String {
             } else {
                 "links"
             };
-            format!("{} ({noun} {})", dyad_words(dyad), numbers.join(", "))
+            format!("{} ({noun} {numbers})", dyad_words(dyad))
         }
-        Stage::Crank { link } => format!("{} (link {})", m.links[*link].name, numbers.join("")),
+        Stage::Crank { link } => format!("{} (link {numbers})", m.links[*link].name),
     }
+}
+
+/// The numbers of a stage's links as the drawing numbers them: "3, 4", or "2".
+pub fn stage_numbers(stage: &StagePolygon, m: &Mechanism) -> String {
+    let numbers: Vec<String> = stage
+        .links
+        .iter()
+        .map(|&l| linkage::force_polygon::link_number(m, l).to_string())
+        .collect();
+    numbers.join(", ")
 }
 
 /// A dyad by its links and joint, as the user knows it: "coupler and rocker, joined
