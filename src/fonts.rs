@@ -91,25 +91,12 @@ mod tests {
     /// the app and the crates whose text it shows: read from the sources, so that a
     /// new symbol in a label is checked without being listed here.
     fn non_ascii_in_string_literals() -> std::collections::BTreeSet<char> {
-        let root = env!("CARGO_MANIFEST_DIR");
-        let mut dirs: Vec<std::path::PathBuf> =
-            ["src", "crates/linkage/src", "crates/linkage-diagram/src"]
-                .iter()
-                .map(|d| std::path::Path::new(root).join(d))
-                .collect();
         let mut found = std::collections::BTreeSet::new();
-        while let Some(dir) = dirs.pop() {
-            for entry in std::fs::read_dir(&dir).expect("source dir").flatten() {
-                let path = entry.path();
-                if path.is_dir() {
-                    dirs.push(path);
-                } else if path.extension().is_some_and(|e| e == "rs") {
-                    let text = std::fs::read_to_string(&path).expect("source");
-                    for line in text.lines().filter(|l| !l.trim_start().starts_with("//")) {
-                        if let (Some(a), Some(b)) = (line.find('"'), line.rfind('"')) {
-                            found.extend(line[a..b].chars().filter(|c| !c.is_ascii()));
-                        }
-                    }
+        let dirs = ["src", "crates/linkage/src", "crates/linkage-diagram/src"];
+        for (_, text) in crate::test_sources::rust_sources(&dirs) {
+            for line in text.lines().filter(|l| !l.trim_start().starts_with("//")) {
+                if let (Some(a), Some(b)) = (line.find('"'), line.rfind('"')) {
+                    found.extend(line[a..b].chars().filter(|c| !c.is_ascii()));
                 }
             }
         }

@@ -193,25 +193,7 @@ mod catalogue {
 
     /// Every `.rs` file under `src/`, with its text.
     fn sources() -> Vec<(String, String)> {
-        let mut dirs = vec![Path::new(ROOT).join("src")];
-        let mut out = Vec::new();
-        while let Some(dir) = dirs.pop() {
-            for entry in std::fs::read_dir(&dir).expect("source dir").flatten() {
-                let path = entry.path();
-                if path.is_dir() {
-                    dirs.push(path);
-                } else if path.extension().is_some_and(|e| e == "rs") {
-                    let name = path
-                        .strip_prefix(ROOT)
-                        .expect("under the root")
-                        .to_string_lossy()
-                        .into_owned();
-                    out.push((name, std::fs::read_to_string(&path).expect("source")));
-                }
-            }
-        }
-        out.sort();
-        out
+        crate::test_sources::rust_sources(&["src"])
     }
 
     /// The keys `tr!` is called with in `text` (the key may start the next line).

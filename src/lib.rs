@@ -15,6 +15,8 @@ pub mod language_pref;
 pub mod render;
 pub mod start;
 pub mod state;
+#[cfg(test)]
+mod test_sources;
 pub mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;
