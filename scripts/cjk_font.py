@@ -5,8 +5,9 @@
 Which characters: the 3755 hanzi of GB 2312's first level (the common characters a
 name or a note is written in; listed by decoding the standard's rows 16 to 55, so
 the list needs no download), CJK punctuation and full-width forms, and every CJK
-character found in the repository's catalogues, scenes, templates and in the design
-glossary beside it (so a word the app says is never missing).
+character found in the repository's catalogues (the app's and the sheets'), scenes,
+templates and in the design glossary beside it (so a word the app or a sheet says is
+never missing), and the arrows and signs the tables write directions with.
 
 Why a subset: the whole face is 16 MB; the app embeds this one on the desktop and
 the web demo fetches it only when Chinese text is shown.
@@ -28,7 +29,7 @@ SC_INDEX = 2
 OUT = ROOT / "assets" / "fonts" / "NotoSansSC-Subset.otf"
 CJK = re.compile(r"[\u2e80-\u9fff\uff00-\uffef\u3000-\u303f]")
 # Where Chinese text is written: catalogues, scenes, templates, the glossary.
-TEXT_GLOBS = ["locales/*", "assets/scenes/*.ron", "assets/templates/*.ron",
+TEXT_GLOBS = ["locales/*", "crates/*/locales/*", "assets/scenes/*.ron", "assets/templates/*.ron",
               "assets/cams/*.ron", "src/**/*.rs", "crates/*/src/**/*.rs"]
 
 
@@ -60,6 +61,14 @@ def main():
     chars = set(gb2312_level_one()) | repository_text()
     chars |= {chr(c) for c in range(0x3000, 0x3040)}  # CJK punctuation
     chars |= {chr(c) for c in range(0xFF01, 0xFF5F)}  # full-width forms
+    # The tables' direction signs (⊥CD, ∥导路, C→D), which the Latin face lacks.
+    chars |= set("→←↑↓⊥∥×")
+    # Latin, Latin-1, Greek and the sheets' signs: a text that holds Chinese is set in
+    # this face alone (a run shaped in two faces loses its Chinese in resvg where the
+    # Latin face joins letters into a ligature, as "fi" in "profile").
+    chars |= {chr(c) for c in range(0x20, 0x7F)} | {chr(c) for c in range(0xA0, 0x100)}
+    chars |= {chr(c) for c in range(0x391, 0x3CA)}
+    chars |= set("−–—‘’“”…′″·•°±µ²³ⁿᵗ√∞≈≤≥")
     face = TTCollection(str(SOURCE)).fonts[SC_INDEX]
     options = subset.Options()
     options.layout_features = ["*"]

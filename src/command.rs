@@ -8,6 +8,7 @@
 use linkage::drawing::Drawing;
 
 use crate::drawing::edit::DrawingEdit;
+use crate::i18n::tr;
 use crate::session::{SceneEdit, Session};
 
 /// One change of the model a panel asks for.
@@ -49,8 +50,8 @@ impl Waiting {
     /// What the change does, for the question ("Open \"Die cutter\"").
     pub fn describe(&self) -> String {
         match self {
-            Self::Open(s) => format!("Open \"{}\"", s.scene().name),
-            Self::Drawing => "Start a new drawing".to_owned(),
+            Self::Open(s) => tr!("unsaved.open_scene", name = s.scene().name),
+            Self::Drawing => tr!("unsaved.new_drawing"),
         }
     }
 }

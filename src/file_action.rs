@@ -13,8 +13,16 @@ pub enum FileAction {
     ExportCsv,
     /// Write the sheet of the current position (pose, polygons, tables) as SVG.
     ExportSheet,
-    /// The same sheet as PNG.
+    /// The same sheet as PNG, a picture per page.
     ExportSheetPng,
+    /// The same sheet as one PDF (in the browser: its print dialog, to save as PDF).
+    ExportSheetPdf,
+    /// The course sheet (its window's choices) as SVG, a file per page.
+    CourseSvg,
+    /// The course sheet as PNG, a picture per page.
+    CoursePng,
+    /// The course sheet as one PDF.
+    CoursePdf,
     /// Write a cam joint (by its index) over its turn as CSV.
     CamCsv(usize),
     /// Write a cam joint's profile sheet as SVG.
@@ -32,6 +40,10 @@ impl FileAction {
             Self::ExportCsv => crate::i18n::tr!("action.csv"),
             Self::ExportSheet => crate::i18n::tr!("action.svg"),
             Self::ExportSheetPng => crate::i18n::tr!("action.png"),
+            Self::ExportSheetPdf => crate::i18n::tr!("action.pdf"),
+            Self::CourseSvg | Self::CoursePng | Self::CoursePdf => {
+                crate::i18n::tr!("action.course", format = self.file_type().1)
+            }
             Self::CamCsv(_) => crate::i18n::tr!("action.cam_csv"),
             Self::CamSvg(_) => crate::i18n::tr!("action.cam_svg"),
             Self::CamDxf(_) => crate::i18n::tr!("action.cam_dxf"),
@@ -43,8 +55,9 @@ impl FileAction {
         match self {
             Self::Open | Self::SaveScene => ("Linkage scene", "ron"),
             Self::ExportCsv | Self::CamCsv(_) => ("CSV table", "csv"),
-            Self::ExportSheet | Self::CamSvg(_) => ("SVG drawing", "svg"),
-            Self::ExportSheetPng => ("PNG picture", "png"),
+            Self::ExportSheet | Self::CamSvg(_) | Self::CourseSvg => ("SVG drawing", "svg"),
+            Self::ExportSheetPng | Self::CoursePng => ("PNG picture", "png"),
+            Self::ExportSheetPdf | Self::CoursePdf => ("PDF document", "pdf"),
             Self::CamDxf(_) => ("DXF drawing", "dxf"),
         }
     }

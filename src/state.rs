@@ -141,6 +141,45 @@ pub struct AppState {
     /// Whether the language chosen is kept for the next run
     /// ([`crate::StartOptions::remember_choices`]).
     pub remember_choices: bool,
+    /// The course sheet's window and its choices.
+    pub course: CourseOptions,
+}
+
+/// The course sheet's choices, as its window holds them.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CourseOptions {
+    /// Whether its window is open.
+    pub open: bool,
+    /// Positions over the crank's range (12, as the course asks).
+    pub positions: usize,
+    /// The positions drawn with their polygons, as typed ("1, 7").
+    pub chosen: String,
+}
+
+impl Default for CourseOptions {
+    fn default() -> Self {
+        Self {
+            open: false,
+            positions: linkage_diagram::course::DEFAULT_POSITIONS,
+            chosen: "1, 7".into(),
+        }
+    }
+}
+
+impl CourseOptions {
+    /// The chosen positions' numbers, or what is wrong with the text (with the
+    /// valid range).
+    pub fn chosen_numbers(&self) -> Result<Vec<usize>, String> {
+        let last = self.positions.saturating_sub(1);
+        self.chosen
+            .split(|c: char| c == ',' || c == '，' || c.is_whitespace())
+            .filter(|t| !t.is_empty())
+            .map(|t| match t.parse::<usize>() {
+                Ok(n) if n <= last => Ok(n),
+                _ => Err(crate::i18n::tr!("course.bad_chosen", text = t, last = last)),
+            })
+            .collect()
+    }
 }
 
 impl AppState {
@@ -170,6 +209,7 @@ impl AppState {
             },
             language: crate::i18n::Language::English,
             remember_choices: false,
+            course: CourseOptions::default(),
         }
     }
 }

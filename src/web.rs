@@ -401,6 +401,63 @@ fn draw_and_download(
     canvas.to_blob(done.unchecked_ref())
 }
 
+/// Prints `sheet`'s A4 pages through the browser's own print dialog, where the user
+/// saves them as one PDF (text stays text, the browser embeds the fonts): a hidden
+/// frame holds the pages, each an A4 box, and prints itself once loaded. The PDF
+/// writer of the desktop app (krilla) would add to every English user's first
+/// download; the browser already has one.
+pub fn print_pages(sheet: &linkage_diagram::pages::Sheet) -> Result<(), String> {
+    let err = |e: JsValue| format!("printing failed: {e:?}");
+    let document = web_sys::window()
+        .and_then(|w| w.document())
+        .ok_or("no document")?;
+    let body = document.body().ok_or("no page body")?;
+    let frame: web_sys::HtmlIFrameElement = document
+        .create_element("iframe")
+        .and_then(|e| e.dyn_into().map_err(JsValue::from))
+        .map_err(err)?;
+    frame
+        .set_attribute(
+            "style",
+            "position:fixed;width:0;height:0;border:0;left:-10px",
+        )
+        .map_err(err)?;
+    frame.set_srcdoc(&print_document(sheet));
+    let printed = frame.clone();
+    let onload = Closure::once_into_js(move || {
+        if let Some(w) = printed.content_window()
+            && let Err(e) = w.print()
+        {
+            log::warn!("printing failed: {e:?}");
+        }
+    });
+    frame.set_onload(Some(onload.unchecked_ref()));
+    body.append_child(&frame).map_err(err)?;
+    Ok(())
+}
+
+/// The pages as one HTML document for print: A4 paper, no margins (each page has
+/// its own), a page break after each.
+fn print_document(sheet: &linkage_diagram::pages::Sheet) -> String {
+    let pages: String = sheet
+        .pages
+        .iter()
+        .map(|p| {
+            // The XML declaration belongs to a file, not to inline SVG.
+            let svg = p.split_once("?>").map_or(p.as_str(), |(_, rest)| rest);
+            format!("<div class=\"page\">{svg}</div>")
+        })
+        .collect();
+    let title = sheet.title.replace('&', "&amp;").replace('<', "&lt;");
+    format!(
+        "<!doctype html><html><head><meta charset=\"utf-8\"><title>{title}</title><style>\
+         @page {{ size: A4; margin: 0 }} html, body {{ margin: 0 }} \
+         .page {{ width: 210mm; height: 297mm; overflow: hidden; break-after: page }} \
+         .page svg {{ display: block; width: 210mm; height: 297mm }}</style></head>\
+         <body>{pages}</body></html>"
+    )
+}
+
 /// A file the user picked, read as text, waiting for the next frame to take it.
 pub type Upload = Rc<RefCell<Option<(String, String)>>>;
 

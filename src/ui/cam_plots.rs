@@ -7,6 +7,7 @@
 use eframe::egui;
 use egui_plot::{HLine, Line, PlotPoints, Points, VLine};
 
+use crate::i18n::tr;
 use crate::session::Session;
 use crate::session::cam_curves::CamCurves;
 use crate::ui::plot_axes::{self, Axis, Unit};
@@ -87,10 +88,11 @@ pub fn limit_plots(ui: &mut egui::Ui, s: &Session) {
     let length = s.scene().length_unit;
     let pressure = series(c, |p| p.pressure_angle_rad.to_degrees());
     let radius = series(c, |p| p.profile_radius_m / length.to_metres());
-    let pressure_name = format!("pressure angle, limit ±{limit:.0}°");
+    let pressure_name = tr!("cam.pressure_axis", limit = format!("{limit:.0}"));
     let pressure_axis = Axis::new(&pressure_name, Unit::Fixed("deg"));
+    let radius_name = tr!("cam.radius_axis");
     let radius_axis = Axis::new(
-        "profile radius of curvature",
+        &radius_name,
         Unit::Fixed(crate::session::unit_label_of(length)),
     );
     crate::ui::plot_layout::side_by_side(ui, 2, |ui, i, height| {

@@ -9,6 +9,7 @@ use linkage::Mechanism;
 use linkage::instant_centres::{Centre, FoundBy, InstantCentres, instant_centres};
 use linkage_diagram::pose_figure::{centre_label, link_number};
 
+use crate::i18n::tr;
 use crate::render::view::Camera;
 use crate::state::AppState;
 use crate::ui::typeset::galley;
@@ -31,14 +32,14 @@ pub fn overlay(painter: &egui::Painter, rect: Rect, st: &AppState, camera: &Came
                     let g = galley(painter, &label, 13.0, CENTRE_COLOUR);
                     painter.galley(at + Vec2::new(5.0, 2.0), g, CENTRE_COLOUR);
                 } else {
-                    off.push(format!("{}: off the view", label.text()));
+                    off.push(tr!("centres.off_view", label = label.text()));
                 }
             }
             Centre::At(_) => {}
-            Centre::AtInfinity(d) => off.push(format!(
-                "{}: at infinity, direction {:.1}°",
-                label.text(),
-                d[1].atan2(d[0]).to_degrees()
+            Centre::AtInfinity(d) => off.push(tr!(
+                "centres.at_infinity",
+                label = label.text(),
+                deg = format!("{:.1}", d[1].atan2(d[0]).to_degrees())
             )),
         }
     }

@@ -330,7 +330,11 @@ fn draw(
     painter.text(
         rect.left_top() + egui::vec2(8.0, 8.0),
         Align2::LEFT_TOP,
-        format!("{}: {}", b.tool.label(), b.tool.hint()),
+        format!(
+            "{}: {}",
+            crate::ui::words::tool_name(b.tool),
+            crate::ui::words::tool_hint(b.tool)
+        ),
         FontId::proportional(12.0),
         Color32::DARK_GRAY,
     );

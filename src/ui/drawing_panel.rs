@@ -23,7 +23,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     let mut chosen = None;
     ui.horizontal_wrapped(|ui| {
         for tool in Tool::ALL {
-            let r = ui.selectable_label(b.tool == tool, tool.label());
+            let r = ui.selectable_label(b.tool == tool, crate::ui::words::tool_name(tool));
             st.controls
                 .note(ui, ControlKind::DrawTool, tool.label(), &r);
             if r.clicked() {
@@ -31,7 +31,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             }
         }
     });
-    ui.label(egui::RichText::new(b.tool.hint()).weak());
+    ui.label(egui::RichText::new(crate::ui::words::tool_hint(b.tool)).weak());
     ui.separator();
     status(ui, st);
     ui.separator();

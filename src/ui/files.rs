@@ -9,6 +9,7 @@ use eframe::egui;
 pub use crate::file_action::FileAction;
 use crate::session::{SceneSource, Session};
 use crate::state::AppState;
+use linkage_diagram::pages::Sheet;
 
 /// File dialog, prompt and upload state.
 #[derive(Default)]
@@ -65,6 +66,7 @@ impl Files {
                 FileAction::ExportSheet,
             ),
             ("PNG…", tr!("file.png"), FileAction::ExportSheetPng),
+            ("PDF…", tr!("file.pdf"), FileAction::ExportSheetPdf),
         ] {
             let button = ui.button(text);
             st.controls.note(
@@ -175,7 +177,7 @@ impl Files {
 
     /// Opens the system's dialog for `action`; its answer comes back in a later frame.
     #[cfg(not(target_arch = "wasm32"))]
-    fn start(
+    pub(crate) fn start(
         &mut self,
         ctx: &egui::Context,
         st: &mut AppState,
@@ -209,7 +211,7 @@ impl Files {
     }
 
     #[cfg(target_arch = "wasm32")]
-    fn start(
+    pub(crate) fn start(
         &mut self,
         ctx: &egui::Context,
         st: &mut AppState,
@@ -220,19 +222,38 @@ impl Files {
             FileAction::Open => {
                 crate::web::pick_file(&self.upload, ctx).map_err(WriteError::Browser)
             }
-            FileAction::ExportSheetPng => {
-                crate::web::download_svg_as_png(&default_name(st, action), &sheet(st), SHEET_DPI)
-                    .map_err(WriteError::Browser)
+            FileAction::ExportSheetPng | FileAction::CoursePng => {
+                let name = std::path::PathBuf::from(default_name(st, action));
+                pages_of(st, action).and_then(|sheet| {
+                    sheet.pages.iter().enumerate().try_for_each(|(i, page)| {
+                        let file = page_name(&name, i);
+                        crate::web::download_svg_as_png(&file, page, SHEET_DPI)
+                            .map_err(WriteError::Browser)
+                    })
+                })
+            }
+            FileAction::ExportSheetPdf | FileAction::CoursePdf => {
+                let printed = pages_of(st, action)
+                    .and_then(|sheet| crate::web::print_pages(&sheet).map_err(WriteError::Browser));
+                if printed.is_ok() {
+                    st.status = Some(tr!("file.print_hint"));
+                }
+                printed
             }
             _ => {
                 let mime = match action {
                     FileAction::ExportCsv | FileAction::CamCsv(_) => "text/csv",
-                    FileAction::ExportSheet | FileAction::CamSvg(_) => "image/svg+xml",
+                    FileAction::ExportSheet | FileAction::CamSvg(_) | FileAction::CourseSvg => {
+                        "image/svg+xml"
+                    }
                     _ => "text/plain",
                 };
-                contents(st, action).and_then(|bytes| {
-                    crate::web::download(&default_name(st, action), mime, &bytes)
-                        .map_err(WriteError::Browser)
+                let name = std::path::PathBuf::from(default_name(st, action));
+                contents(st, action).and_then(|files| {
+                    files.iter().enumerate().try_for_each(|(i, bytes)| {
+                        crate::web::download(&page_name(&name, i), mime, bytes)
+                            .map_err(WriteError::Browser)
+                    })
                 })
             }
         };
@@ -282,13 +303,18 @@ fn default_name(st: &AppState, action: FileAction) -> String {
     match action {
         FileAction::Open | FileAction::SaveScene => format!("{stem}.ron"),
         FileAction::ExportCsv => format!("{stem}_sweep.csv"),
-        FileAction::ExportSheet | FileAction::ExportSheetPng => format!(
-            "{stem}_at_{:.0}deg.{}",
-            st.session.input_rad().to_degrees(),
-            action.file_type().1
-        ),
+        FileAction::ExportSheet | FileAction::ExportSheetPng | FileAction::ExportSheetPdf => {
+            format!(
+                "{stem}_at_{:.0}deg.{}",
+                st.session.input_rad().to_degrees(),
+                action.file_type().1
+            )
+        }
         FileAction::CamCsv(i) | FileAction::CamSvg(i) | FileAction::CamDxf(i) => {
             format!("{stem}_cam{}.{}", i + 1, action.file_type().1)
+        }
+        FileAction::CourseSvg | FileAction::CoursePng | FileAction::CoursePdf => {
+            format!("{stem}_course.{}", action.file_type().1)
         }
     }
 }
@@ -299,7 +325,7 @@ enum WriteError {
     /// The scene or its sweep could not be made.
     #[error(transparent)]
     Solver(#[from] linkage::LinkageError),
-    /// The sheet could not be rasterised (resvg's own words).
+    /// The sheet could not be rasterised or printed (resvg's or krilla's own words).
     #[cfg(not(target_arch = "wasm32"))]
     #[error("{0}")]
     Png(String),
@@ -310,6 +336,9 @@ enum WriteError {
     /// Open reads; it writes nothing.
     #[error("nothing to write when opening")]
     Opening,
+    /// The course sheet's positions to draw, mistyped (the words say the range).
+    #[error("{0}")]
+    Course(String),
     /// The scene has no cam joint of that number (an edit took it away).
     #[error("the scene has no cam joint {0}")]
     NoCam(usize),
@@ -325,32 +354,48 @@ enum WriteError {
     #[cfg(target_arch = "wasm32")]
     #[error("{0}")]
     Browser(String),
-    /// In the browser the page rasterises the sheet, not the app.
+    /// In the browser the page rasterises and prints the sheet, not the app.
     #[cfg(target_arch = "wasm32")]
-    #[error("in the browser the PNG is drawn by the page")]
+    #[error("in the browser the page draws the PNG and the PDF")]
     PngInBrowser,
 }
 
-/// The bytes an action writes, or why there are none.
-fn contents(st: &AppState, action: FileAction) -> Result<Vec<u8>, WriteError> {
+/// The files an action writes (a sheet's SVG and PNG: a file per page), or why
+/// there are none.
+fn contents(st: &AppState, action: FileAction) -> Result<Vec<Vec<u8>>, WriteError> {
+    let one = |bytes: Vec<u8>| vec![bytes];
     match action {
-        FileAction::SaveScene => Ok(st.session.to_ron()?.into_bytes()),
-        FileAction::ExportCsv => Ok(st.session.sweep_csv()?.into_bytes()),
-        FileAction::ExportSheet => Ok(sheet(st).into_bytes()),
-        FileAction::ExportSheetPng => sheet_png(st),
+        FileAction::SaveScene => Ok(one(st.session.to_ron()?.into_bytes())),
+        FileAction::ExportCsv => Ok(one(st.session.sweep_csv()?.into_bytes())),
+        FileAction::ExportSheet | FileAction::CourseSvg => Ok(pages_of(st, action)?
+            .pages
+            .into_iter()
+            .map(String::into_bytes)
+            .collect()),
+        FileAction::ExportSheetPng | FileAction::CoursePng => sheet_png(st, action),
+        FileAction::ExportSheetPdf | FileAction::CoursePdf => sheet_pdf(st, action).map(one),
         FileAction::CamCsv(i) => st
             .session
             .cam_csv(i)
-            .map(String::into_bytes)
+            .map(|t| one(t.into_bytes()))
             .ok_or(WriteError::NoCam(i + 1)),
         FileAction::CamSvg(i) => st
             .session
-            .cam_svg(i)
-            .map(String::into_bytes)
+            .cam_svg(i, crate::ui::words::lang())
+            .map(|t| one(t.into_bytes()))
             .ok_or(WriteError::NoCam(i + 1)),
-        FileAction::CamDxf(i) => cam_dxf(st, i),
+        FileAction::CamDxf(i) => cam_dxf(st, i).map(one),
         FileAction::Open => Err(WriteError::Opening),
     }
+}
+
+/// The file of page `index` of a sheet saved as `path`: `path` itself for the
+/// first, `name-2.svg` … for the others.
+#[cfg(target_arch = "wasm32")]
+fn page_name(path: &std::path::Path, index: usize) -> String {
+    linkage_diagram::pages::page_path(path, index)
+        .to_string_lossy()
+        .into_owned()
 }
 
 /// Cam joint `i`'s profile, pitch curve and base circle as DXF.
@@ -374,8 +419,24 @@ fn cam_dxf(_: &AppState, _: usize) -> Result<Vec<u8>, WriteError> {
 }
 
 /// The sheet of the current position, instant centres as the view shows them.
-fn sheet(st: &AppState) -> String {
-    st.session.sheet_svg(st.view.layers.centres)
+fn sheet(st: &AppState) -> Sheet {
+    st.session
+        .sheet(st.view.layers.centres, crate::ui::words::lang())
+}
+
+/// The pages `action` exports: the position's sheet, or the course sheet of its
+/// window's choices.
+fn pages_of(st: &AppState, action: FileAction) -> Result<Sheet, WriteError> {
+    match action {
+        FileAction::CourseSvg | FileAction::CoursePng | FileAction::CoursePdf => {
+            let chosen = st.course.chosen_numbers().map_err(WriteError::Course)?;
+            let lang = crate::ui::words::lang();
+            Ok(st
+                .session
+                .course_sheet(st.course.positions, &chosen, lang)?)
+        }
+        _ => Ok(sheet(st)),
+    }
 }
 
 /// Resolution of the exported PNG sheet: 150 dpi, print quality for A4.
@@ -384,18 +445,32 @@ pub const SHEET_DPI: f32 = 150.0;
 /// The sheet rendered by resvg with the app's font (the browser rasterises the SVG
 /// itself instead: `crate::web::download_svg_as_png`).
 #[cfg(not(target_arch = "wasm32"))]
-fn sheet_png(st: &AppState) -> Result<Vec<u8>, WriteError> {
-    linkage_diagram::png::render(
-        &sheet(st),
-        SHEET_DPI,
-        epaint_default_fonts::UBUNTU_LIGHT,
-        "Ubuntu",
-    )
-    .map_err(WriteError::Png)
+fn sheet_png(st: &AppState, action: FileAction) -> Result<Vec<Vec<u8>>, WriteError> {
+    let font = epaint_default_fonts::UBUNTU_LIGHT;
+    pages_of(st, action)?
+        .pages
+        .iter()
+        .map(|page| linkage_diagram::png::render(page, SHEET_DPI, font, "Ubuntu"))
+        .collect::<Result<_, _>>()
+        .map_err(WriteError::Png)
 }
 
 #[cfg(target_arch = "wasm32")]
-fn sheet_png(_st: &AppState) -> Result<Vec<u8>, WriteError> {
+fn sheet_png(_st: &AppState, _action: FileAction) -> Result<Vec<Vec<u8>>, WriteError> {
+    Err(WriteError::PngInBrowser)
+}
+
+/// The sheet as one PDF, its text set in the app's own face.
+#[cfg(not(target_arch = "wasm32"))]
+fn sheet_pdf(st: &AppState, action: FileAction) -> Result<Vec<u8>, WriteError> {
+    let font = epaint_default_fonts::UBUNTU_LIGHT;
+    let lang = crate::ui::words::lang().code();
+    let pages = pages_of(st, action)?;
+    linkage_diagram::pdf::document(&pages, font, "Ubuntu", lang).map_err(WriteError::Png)
+}
+
+#[cfg(target_arch = "wasm32")]
+fn sheet_pdf(_st: &AppState, _action: FileAction) -> Result<Vec<u8>, WriteError> {
     Err(WriteError::PngInBrowser)
 }
 
@@ -453,14 +528,24 @@ fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {
             ),
         },
         _ => {
-            let written = contents(st, action)
-                .and_then(|t| std::fs::write(path, t).map_err(WriteError::File));
+            let written = contents(st, action).and_then(|files| {
+                for (i, bytes) in files.iter().enumerate() {
+                    let file = linkage_diagram::pages::page_path(path, i);
+                    std::fs::write(file, bytes).map_err(WriteError::File)?;
+                }
+                Ok(files.len())
+            });
             match written {
-                Ok(()) => {
+                Ok(count) => {
                     if action == FileAction::SaveScene {
                         st.session.mark_saved();
                     }
-                    report(st, log::Level::Info, tr!("file.wrote", path = shown));
+                    let message = if count > 1 {
+                        tr!("file.wrote_pages", path = shown, count = count)
+                    } else {
+                        tr!("file.wrote", path = shown)
+                    };
+                    report(st, log::Level::Info, message);
                 }
                 Err(e) => report(
                     st,

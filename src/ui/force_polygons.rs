@@ -7,7 +7,8 @@ use crate::i18n::tr;
 use eframe::egui;
 use linkage::force_polygon::ForcePolygons;
 use linkage_diagram::force_figure::{
-    FORCE_UNIT, ForceFigure, ForceRow, force_rows, row_cells, stage_equation,
+    FORCE_UNIT, ForceFigure, ForceRow, RowScale, force_rows, row_cells, row_scale, sense,
+    stage_equation,
 };
 use linkage_model::session::Session;
 
@@ -61,12 +62,12 @@ fn stages(ui: &mut egui::Ui, session: &Session, fp: &ForcePolygons, figure_heigh
                     14.0,
                     ink,
                 ));
-                table(ui, &force_rows(stage, m), i);
+                table(ui, &force_rows(stage, m), row_scale(m, fp), i);
             });
     }
 }
 
-fn table(ui: &mut egui::Ui, rows: &[ForceRow], salt: usize) {
+fn table(ui: &mut egui::Ui, rows: &[ForceRow], scale: RowScale, salt: usize) {
     let ink = ui.visuals().text_color();
     egui::Grid::new(("forces", salt))
         .striped(true)
@@ -82,10 +83,13 @@ fn table(ui: &mut egui::Ui, rows: &[ForceRow], salt: usize) {
             ui.end_row();
             for r in rows {
                 ui.label(crate::ui::typeset::job(&r.label, 14.0, ink));
-                let (magnitude, direction) = row_cells(r);
+                let (magnitude, direction) = row_cells(r, scale);
                 ui.label(magnitude);
-                ui.label(direction);
-                ui.label(r.status);
+                match sense(r, scale) {
+                    Some(s) => ui.label(crate::ui::words::sense(s)),
+                    None => ui.label(direction),
+                };
+                ui.label(crate::ui::words::row_status(r.status));
                 ui.end_row();
             }
         });

@@ -7,6 +7,7 @@ pub mod centres;
 pub mod construction;
 pub mod control_map;
 pub mod controls;
+pub mod course_window;
 pub mod drawing_bodies;
 pub mod drawing_canvas;
 pub mod drawing_drive;

@@ -269,6 +269,7 @@ fn table(
     let ink = ui.visuals().text_color();
     let highlight = ui.visuals().selection.bg_fill;
     let mut hovered = None;
+    let scale = linkage_diagram::polygon_figure::largest_of_kind(equations, q);
     for (i, eq) in equations.iter().filter(|e| e.kind == q).enumerate() {
         ui.label(format!("{}:", crate::ui::words::group(&eq.group)));
         ui.label(crate::ui::typeset::job(&Label::of_equation(eq), 14.0, ink));
@@ -282,7 +283,6 @@ fn table(
                 ui.strong(head);
             }
             ui.end_row();
-            let scale = linkage_diagram::polygon_figure::largest_term(eq);
             for t in eq.lhs.iter().chain(&eq.rhs) {
                 let on = marked == Some(&t.symbol);
                 let mut job = crate::ui::typeset::job(&Label::of_symbol(&t.symbol), 14.0, ink);
@@ -312,7 +312,7 @@ fn table(
                     ui.label(cell(format!(
                         "{} ({})",
                         numbers::degrees(t.direction_rad.to_degrees()),
-                        t.direction
+                        crate::ui::words::direction(&t.direction)
                     ))),
                     ui.label(cell(tr!(
                         "table.known_cell",

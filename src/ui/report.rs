@@ -160,11 +160,11 @@ fn items(r: &Report, unit: LengthUnit) -> Vec<(String, String)> {
             .toggles
             .iter()
             .map(|t| {
-                format!(
-                    "crank {:.2}°: {} ({})",
-                    t.input_rad.to_degrees(),
-                    t.ratio,
-                    joined(&t.collinear_joints)
+                tr!(
+                    "report.toggle_line",
+                    deg = format!("{:.2}", t.input_rad.to_degrees()),
+                    ratio = ratio_words(t.ratio),
+                    joints = joined(&t.collinear_joints)
                 )
             })
             .collect();
@@ -201,14 +201,22 @@ fn branch_point_line(b: &linkage::branch_points::BranchPoint) -> String {
     let pairs: Vec<String> = b
         .coincident_joints
         .iter()
-        .map(|[p, q]| format!(", {p} on {q}"))
+        .map(|[p, q]| tr!("report.coincident", p = p, q = q))
         .collect();
-    format!(
-        "crank {:.2}°: {}{} (the chain may go on in either mode)",
-        b.input_rad.to_degrees(),
-        crate::ui::words::group(&b.group),
-        pairs.concat()
+    tr!(
+        "report.branch_line",
+        deg = format!("{:.2}", b.input_rad.to_degrees()),
+        group = crate::ui::words::group(&b.group),
+        pairs = pairs.concat()
     )
+}
+
+/// What a toggle's velocity ratio means, in the user's words.
+fn ratio_words(ratio: linkage::analysis::ToggleRatio) -> String {
+    match ratio {
+        linkage::analysis::ToggleRatio::Zero => tr!("report.ratio_zero"),
+        linkage::analysis::ToggleRatio::Infinite => tr!("report.ratio_infinite"),
+    }
 }
 
 fn limits_of(r: &linkage::analysis::Report, output: &str) -> String {
@@ -216,7 +224,13 @@ fn limits_of(r: &linkage::analysis::Report, output: &str) -> String {
         .limit_positions
         .iter()
         .filter(|l| l.output == output)
-        .map(|l| format!("{} at crank {:.3}°", l.kind, l.input_rad.to_degrees()))
+        .map(|l| {
+            let deg = format!("{:.3}", l.input_rad.to_degrees());
+            match l.kind {
+                linkage::analysis::Extreme::Max => tr!("report.limit_max", deg = deg),
+                linkage::analysis::Extreme::Min => tr!("report.limit_min", deg = deg),
+            }
+        })
         .collect();
     if lines.is_empty() {
         tr!("report.no_limits")

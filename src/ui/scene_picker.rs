@@ -29,6 +29,7 @@ pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &
         }
     });
     files.prompt_window(ui.ctx(), st);
+    crate::ui::course_window::window(ui.ctx(), st, files, frame);
     discard_question(ui.ctx(), st);
 }
 
@@ -43,6 +44,7 @@ fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &efr
         // The file buttons come before the scene's name, whose width varies, so that
         // they stay in place whichever scene is open.
         files.ui(ui, st, frame);
+        crate::ui::course_window::button(ui, st);
         scene_picker(ui, st, 300.0);
         new_menu(ui, st);
         synthesis_button(ui, st);
@@ -81,6 +83,7 @@ fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &
     ui.horizontal(|ui| {
         let menu = ui.menu_button(tr!("top.menu"), |ui| {
             files.ui(ui, st, frame);
+            crate::ui::course_window::button(ui, st);
             new_menu(ui, st);
             synthesis_button(ui, st);
             if ui.button(tr!("top.reset_edits")).clicked() {

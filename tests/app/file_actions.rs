@@ -235,7 +235,10 @@ fn sheet_as_the_cli_draws_it(key: &str, input_rad: f64, centres: bool) -> String
         forces: true,
         ..Default::default()
     };
-    linkage_diagram::svg::sheet(&position, parts)
+    let lang = linkage_diagram::words::Lang::English;
+    linkage_diagram::svg::sheet(&position, parts, lang)
+        .pages
+        .concat()
 }
 
 #[test]
@@ -251,13 +254,22 @@ fn export_diagram_writes_the_sheet_the_cli_draws() {
         asked[0].suggested_name,
         format!("die_cutter_at_{:.0}deg.svg", input.to_degrees())
     );
-    let text = std::fs::read_to_string(&path).expect("the sheet was written");
+    // A page a file: sheet.svg, sheet-2.svg, …
+    let pages: Vec<String> = (0..)
+        .map(|i| linkage_diagram::pages::page_path(&path, i))
+        .map_while(|p| std::fs::read_to_string(p).ok())
+        .collect();
     assert!(
-        text.starts_with("<?xml") && text.contains("<svg"),
-        "{}",
-        &text[..80]
+        pages.len() > 1,
+        "the die cutter's sheet takes more than a page"
     );
-    assert_eq!(text, sheet_as_the_cli_draws_it("die_cutter", input, false));
+    for page in &pages {
+        assert!(page.starts_with("<?xml") && page.contains("height=\"297.0mm\""));
+    }
+    assert_eq!(
+        pages.concat(),
+        sheet_as_the_cli_draws_it("die_cutter", input, false)
+    );
     std::fs::remove_dir_all(dir).expect("clean up");
 }
 
@@ -271,7 +283,9 @@ fn every_scene_exports_the_sheet_the_cli_draws_with_instant_centres() {
         });
         assert!(s.message().is_none(), "{}: {:?}", scene.key, s.message());
         assert_eq!(
-            s.sheet_svg(true),
+            s.sheet(true, linkage_diagram::words::Lang::English)
+                .pages
+                .concat(),
             sheet_as_the_cli_draws_it(scene.key, s.input_rad(), true),
             "{}",
             scene.key
@@ -297,6 +311,80 @@ fn png_export_writes_the_sheet_rendered_at_150_dpi() {
     let width = u32::from_be_bytes([bytes[16], bytes[17], bytes[18], bytes[19]]);
     // A4 is 210 mm wide: 1240 px at 150 dpi.
     assert!((1239..=1241).contains(&width), "{width} px wide");
+    std::fs::remove_dir_all(dir).expect("clean up");
+}
+
+/// The PDF of the sheet: A4 pages, one a page of the SVG sheet, text kept as text.
+#[test]
+fn pdf_export_writes_every_page_of_the_sheet() {
+    let dir = scratch("sheet-pdf");
+    let path = dir.join("sheet.pdf");
+    let (mut h, dialog) = harness_answering(PathAnswer::Chosen(path.clone()));
+    click(&mut h, "PDF…");
+    let asked = dialog.asked.lock().expect("not poisoned").clone();
+    assert_eq!(asked[0].action, FileAction::ExportSheetPdf);
+    let bytes = std::fs::read(&path).expect("the PDF was written");
+    assert!(bytes.starts_with(b"%PDF-"));
+    let pages = h
+        .state()
+        .state
+        .session
+        .sheet(false, linkage_diagram::words::Lang::English)
+        .pages
+        .len();
+    let text = String::from_utf8_lossy(&bytes);
+    assert!(text.contains(&format!("/Count {pages}")), "{pages} pages");
+    std::fs::remove_dir_all(dir).expect("clean up");
+}
+
+/// The course sheet's window: the positions and the chosen ones typed, a mistyped
+/// one refused with the range, and the PDF written with the sheet's pages.
+#[test]
+fn the_course_sheet_window_exports_the_sheet_asked_for() {
+    let dir = scratch("course-pdf");
+    let path = dir.join("course.pdf");
+    let (mut h, dialog) = harness_answering(PathAnswer::Chosen(path.clone()));
+    click(&mut h, "Course sheet…");
+    assert!(h.state().state.course.open);
+    h.state_mut().state.course.chosen = "2, 40".into();
+    h.run();
+    let refused = h.state().state.course.chosen_numbers();
+    assert!(
+        refused.as_ref().is_err_and(|why| why.contains("0 to 11")),
+        "{refused:?}"
+    );
+    h.state_mut().state.course.positions = 6;
+    h.state_mut().state.course.chosen = "1, 4".into();
+    h.run();
+    // The top bar's PDF… is the position's sheet; the window's is the course's.
+    h.get_all_by_role_and_label(Role::Button, "PDF…")
+        .last()
+        .expect("the window's PDF button")
+        .click();
+    h.run();
+    let asked = dialog.asked.lock().expect("not poisoned").clone();
+    let course = asked.iter().find(|a| a.action == FileAction::CoursePdf);
+    let course = course.expect("the course sheet's dialog");
+    assert!(
+        course.suggested_name.ends_with("_course.pdf"),
+        "{}",
+        course.suggested_name
+    );
+    let bytes = std::fs::read(&path).expect("the PDF was written");
+    let pages = h
+        .state()
+        .state
+        .session
+        .course_sheet(6, &[1, 4], linkage_diagram::words::Lang::English)
+        .expect("the sheet")
+        .pages
+        .len();
+    assert!(
+        pages >= 3,
+        "plan and diagrams, two positions' polygons, forces"
+    );
+    let text = String::from_utf8_lossy(&bytes);
+    assert!(text.contains(&format!("/Count {pages}")), "{pages} pages");
     std::fs::remove_dir_all(dir).expect("clean up");
 }
 

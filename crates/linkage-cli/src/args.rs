@@ -3,6 +3,8 @@
 
 use std::path::PathBuf;
 
+use linkage_diagram::words::Lang;
+
 use clap::{Parser, Subcommand, ValueEnum};
 
 use crate::counts;
@@ -147,6 +149,9 @@ pub(crate) enum Command {
         /// SVG here.
         #[arg(long)]
         svg: Option<PathBuf>,
+        /// The sheet's language: en or zh-CN (简体中文).
+        #[arg(long, default_value = "en", value_parser = sheet_lang)]
+        lang: Lang,
     },
     /// Input torque (Newton-Euler and virtual work), joint reactions and force
     /// amplification over one input cycle at the scene's crank speed.
@@ -410,15 +415,23 @@ pub(crate) struct DiagramArgs {
     pub(crate) what: Vec<Part>,
 }
 
-/// Where a sheet goes: SVG and PNG files, or the SVG to standard output.
+/// Where a sheet goes: SVG, PNG and PDF files, or a one-page sheet's SVG to
+/// standard output.
 #[derive(clap::Args, Debug)]
 pub(crate) struct SheetOut {
-    /// Write the SVG here (without --svg or --png it goes to standard output).
+    /// Write the SVG here, a file per A4 page: FILE, then FILE-2, FILE-3 … (without
+    /// --svg, --png or --pdf a one-page sheet goes to standard output).
     #[arg(long)]
     pub(crate) svg: Option<PathBuf>,
-    /// Write a PNG here, rendered from the SVG.
+    /// Write a PNG here, rendered from the SVG, a file per page as for --svg.
     #[arg(long)]
     pub(crate) png: Option<PathBuf>,
+    /// Write the sheet as one PDF here: every page, text selectable, fonts embedded.
+    #[arg(long)]
+    pub(crate) pdf: Option<PathBuf>,
+    /// The sheet's language: en or zh-CN (简体中文).
+    #[arg(long, default_value = "en", value_parser = sheet_lang)]
+    pub(crate) lang: Lang,
     /// PNG resolution, dots per inch (the sheet is A4 wide).
     #[arg(long, default_value_t = 150.0)]
     pub(crate) dpi: f32,
@@ -558,4 +571,14 @@ pub enum MethodArg {
     Dp5,
     /// Adaptive Dormand–Prince 8(5,3), --rtol/--atol.
     Dop853,
+}
+
+/// A sheet's language from `--lang`: English (en) or Simplified Chinese (zh-CN, zh).
+fn sheet_lang(text: &str) -> Result<Lang, String> {
+    let lower = text.trim().to_ascii_lowercase();
+    match lower.as_str() {
+        "en" | "en-us" | "en-gb" | "english" => Ok(Lang::English),
+        _ if Lang::from_tag(&lower) == Lang::Chinese => Ok(Lang::Chinese),
+        _ => Err(format!("{text:?} is not a sheet language: en or zh-CN")),
+    }
 }

@@ -49,6 +49,7 @@ pub fn run(
     samples: usize,
     format: CamFormat,
     [dxf, svg]: [Option<&Path>; 2],
+    lang: linkage_diagram::words::Lang,
 ) -> Result<String> {
     if !(4..=1_000_000).contains(&samples) {
         return Err(CliError::refused(format!(
@@ -61,13 +62,17 @@ pub fn run(
         write_dxf(out, &d, &points)?;
     }
     if let Some(out) = svg {
-        let sheet = linkage_diagram::svg_cam::cam_sheet(&linkage_diagram::svg_cam::CamSheet {
-            title: &d.name,
-            points: &points,
-            base_radius_m: d.cam.base_radius_m,
-            pressure_limit_rad: pressure_limit(&d),
-        });
-        std::fs::write(out, sheet).map_err(|source| CliError::Write {
+        let sheet = linkage_diagram::svg_cam::cam_sheet(
+            &linkage_diagram::svg_cam::CamSheet {
+                title: &d.name,
+                points: &points,
+                base_radius_m: d.cam.base_radius_m,
+                pressure_limit_rad: pressure_limit(&d),
+            },
+            lang,
+        );
+        // The cam sheet is one page.
+        std::fs::write(out, sheet.first_page()).map_err(|source| CliError::Write {
             path: out.to_path_buf(),
             source,
         })?;

@@ -26,5 +26,5 @@ pub fn run(scene: &SceneArgs, args: &CourseArgs) -> Result<String> {
     };
     let sheet =
         CourseSheet::compute(&mut k, args.positions, &chosen).map_err(|e| describe(scene, e))?;
-    write_sheet(course_sheet(&sheet), &args.out)
+    write_sheet(course_sheet(&sheet, args.out.lang), &args.out)
 }

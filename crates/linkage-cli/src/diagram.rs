@@ -8,6 +8,7 @@ use linkage::force_polygon::{ForcePolygons, force_polygons};
 use linkage::instant_centres::instant_centres;
 use linkage::kinetostatics::Kinetostatics;
 use linkage::polygon::polygons;
+use linkage_diagram::pages::{Sheet, page_path};
 use linkage_diagram::svg::{Parts, Position, sheet};
 
 use crate::args::{DEFAULT_PARTS, DiagramArgs, Part, SceneArgs, SheetOut};
@@ -57,8 +58,7 @@ pub fn run(scene: &SceneArgs, args: &DiagramArgs) -> Result<String> {
         centres: Some(&centres),
         forces: forces.as_ref(),
     };
-    let svg = sheet(&position, parts);
-    write_sheet(svg, &args.out)
+    write_sheet(sheet(&position, parts, args.out.lang), &args.out)
 }
 
 /// The force polygons at `input_rad`.
@@ -79,30 +79,51 @@ pub fn check_dpi(out: &SheetOut) -> Result<()> {
     }
 }
 
-/// Writes `svg` (and its PNG) where `out` says; returns what goes to standard output
-/// (the SVG when no file was named).
-pub fn write_sheet(svg: String, out: &SheetOut) -> Result<String> {
+/// Writes `sheet`'s pages (SVG, PNG, PDF) where `out` says; returns what goes to
+/// standard output: a one-page sheet's SVG when no file was named.
+///
+/// # Errors
+/// A file that cannot be written, or a sheet of several pages with no file named.
+pub fn write_sheet(sheet: Sheet, out: &SheetOut) -> Result<String> {
     let write = |path: &std::path::Path, bytes: &[u8]| {
         std::fs::write(path, bytes).map_err(|source| CliError::Write {
             path: path.to_path_buf(),
             source,
         })
     };
-    if let Some(path) = &out.svg {
-        write(path, svg.as_bytes())?;
+    for (i, page) in sheet.pages.iter().enumerate() {
+        if let Some(path) = &out.svg {
+            write(&page_path(path, i), page.as_bytes())?;
+        }
+        if let Some(path) = &out.png {
+            write(&page_path(path, i), &render_png(page, out.dpi)?)?;
+        }
     }
-    if let Some(path) = &out.png {
-        write(path, &render_png(&svg, out.dpi)?)?;
+    if let Some(path) = &out.pdf {
+        let lang = out.lang.code();
+        let pdf = linkage_diagram::pdf::document(&sheet, SHEET_FONT, SHEET_FAMILY, lang)
+            .map_err(CliError::Plot)?;
+        write(path, &pdf)?;
     }
-    Ok(if out.svg.is_none() && out.png.is_none() {
-        svg
-    } else {
-        String::new()
-    })
+    if out.svg.is_some() || out.png.is_some() || out.pdf.is_some() {
+        return Ok(String::new());
+    }
+    match &sheet.pages[..] {
+        [one] => Ok(one.clone()),
+        pages => Err(CliError::refused(format!(
+            "the sheet has {} A4 pages: write them with --pdf FILE, or --svg FILE \
+             (FILE, FILE-2, …)",
+            pages.len()
+        ))),
+    }
 }
+
+/// The face the sheets' Latin text is set in: the app's own.
+const SHEET_FONT: &[u8] = epaint_default_fonts::UBUNTU_LIGHT;
+/// Its family name.
+const SHEET_FAMILY: &str = "Ubuntu";
 
 /// The SVG rendered at `dpi`, as PNG bytes, with the app's own font.
 pub fn render_png(svg: &str, dpi: f32) -> Result<Vec<u8>> {
-    linkage_diagram::png::render(svg, dpi, epaint_default_fonts::UBUNTU_LIGHT, "Ubuntu")
-        .map_err(CliError::Plot)
+    linkage_diagram::png::render(svg, dpi, SHEET_FONT, SHEET_FAMILY).map_err(CliError::Plot)
 }

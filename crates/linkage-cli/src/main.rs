@@ -80,7 +80,14 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
             format,
             dxf,
             svg,
-        } => cam::run(&file, samples, format, [dxf.as_deref(), svg.as_deref()]),
+            lang,
+        } => cam::run(
+            &file,
+            samples,
+            format,
+            [dxf.as_deref(), svg.as_deref()],
+            lang,
+        ),
         Command::CourseSheet { scene, args } => course::run(&scene, &args),
         Command::Timing {
             scene,

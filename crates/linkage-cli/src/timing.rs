@@ -25,7 +25,7 @@ pub fn run(scene: &SceneArgs, samples: usize, format: Format, out: &SheetOut) ->
         check_finite(&lane.share, &lane.name)?;
     }
     if out.svg.is_some() || out.png.is_some() {
-        write_sheet(timing_sheet(&k.mechanism().name, &d), out)?;
+        write_sheet(timing_sheet(&k.mechanism().name, &d, out.lang), out)?;
     }
     match format {
         Format::Csv => rows_csv(&d),

@@ -43,18 +43,35 @@ fn chinese_names_come_back_as_written() {
     );
 }
 
+/// In both languages: the English sheet with the Chinese names, and the Chinese
+/// sheet (`--lang zh-CN`).
 #[test]
 fn the_sheet_draws_every_chinese_character() {
-    let svg = ok(&["diagram", &example(), "--input-deg", "30"]);
-    assert!(
-        svg.contains("对心曲柄滑块机构"),
-        "the title names the scene"
-    );
-    let undrawn = linkage_diagram::png::undrawn_characters(
-        &svg,
-        epaint_default_fonts::UBUNTU_LIGHT,
-        "Ubuntu",
-    )
-    .expect("parses");
-    assert!(undrawn.is_empty(), "drawn as boxes: {undrawn:?}");
+    for lang in ["en", "zh-CN"] {
+        let args = ["diagram", &example(), "--input-deg", "30", "--lang", lang];
+        let (code, pages, err) = common::run_sheet(&args);
+        assert_eq!(code, Some(0), "{err}");
+        assert!(
+            pages[0].contains("对心曲柄滑块机构"),
+            "the title names the scene"
+        );
+        for page in &pages {
+            let undrawn = linkage_diagram::png::undrawn_characters(
+                page,
+                epaint_default_fonts::UBUNTU_LIGHT,
+                "Ubuntu",
+            )
+            .expect("parses");
+            assert!(undrawn.is_empty(), "{lang}: drawn as boxes: {undrawn:?}");
+        }
+    }
+    let (_, zh, _) = common::run_sheet(&[
+        "diagram",
+        &example(),
+        "--input-deg",
+        "30",
+        "--lang",
+        "zh-CN",
+    ]);
+    assert!(zh.concat().contains("速度多边形"), "the Chinese sheet");
 }

@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{run_linkage, scene};
+use common::{run_linkage, run_sheet, scene};
 
 fn scene_files() -> Vec<String> {
     let dir = scene("");
@@ -38,6 +38,12 @@ fn texts(tree: &resvg::usvg::Tree) -> Vec<String> {
     out
 }
 
+/// The texts of every page.
+fn texts_of(pages: &[String]) -> Vec<String> {
+    assert!(!pages.is_empty(), "no page written");
+    pages.iter().flat_map(|p| texts(&parse(p))).collect()
+}
+
 fn parse(svg: &str) -> resvg::usvg::Tree {
     let mut opt = resvg::usvg::Options::default();
     opt.fontdb_mut()
@@ -62,7 +68,7 @@ fn every_scene_gives_a_sheet_that_parses_with_its_text_and_a_png() {
             mid.to_degrees()
         };
         let png = dir.join("sheet.png");
-        let (code, svg, err) = run_linkage(&[
+        let (code, svg, err) = run_sheet(&[
             "diagram",
             &file,
             "--input-deg",
@@ -71,8 +77,7 @@ fn every_scene_gives_a_sheet_that_parses_with_its_text_and_a_png() {
             "pose,velocity,acceleration,centres,table",
         ]);
         assert_eq!(code, Some(0), "{file}: {err}");
-        let tree = parse(&svg);
-        let texts = texts(&tree);
+        let texts = texts_of(&svg);
         for part in ["Velocity polygon", "Acceleration polygon", " m/s"] {
             assert!(
                 texts.iter().any(|t| t.contains(part)),
@@ -120,9 +125,9 @@ fn every_scene_gives_a_sheet_that_parses_with_its_text_and_a_png() {
 fn a_sheet_holds_only_the_parts_asked_for() {
     let file = scene("slider_crank.ron");
     let (code, svg, err) =
-        run_linkage(&["diagram", &file, "--input-deg", "30", "--what", "velocity"]);
+        run_sheet(&["diagram", &file, "--input-deg", "30", "--what", "velocity"]);
     assert_eq!(code, Some(0), "{err}");
-    let texts = texts(&parse(&svg));
+    let texts = texts_of(&svg);
     assert!(texts.iter().any(|t| t == "Velocity polygon"));
     assert!(
         !texts
@@ -161,9 +166,9 @@ fn bad_arguments_are_refused_by_name() {
 
 #[test]
 fn the_default_sheet_draws_force_polygons_where_the_scene_has_forces() {
-    let (code, svg, err) = run_linkage(&["diagram", &scene("die_cutter.ron"), "--input-deg", "60"]);
+    let (code, svg, err) = run_sheet(&["diagram", &scene("die_cutter.ron"), "--input-deg", "60"]);
     assert_eq!(code, Some(0), "{err}");
-    let drawn = texts(&parse(&svg));
+    let drawn = texts_of(&svg);
     assert!(drawn.iter().any(|t| t == "Force polygons"), "{drawn:?}");
     assert!(
         drawn
@@ -174,9 +179,9 @@ fn the_default_sheet_draws_force_polygons_where_the_scene_has_forces() {
     // A kinematics-only scene: the default sheet leaves them out; asked for by name,
     // they are refused with the cause.
     let file = scene("slider_crank.ron");
-    let (code, svg, err) = run_linkage(&["diagram", &file, "--input-deg", "30"]);
+    let (code, svg, err) = run_sheet(&["diagram", &file, "--input-deg", "30"]);
     assert_eq!(code, Some(0), "{err}");
-    assert!(!texts(&parse(&svg)).iter().any(|t| t == "Force polygons"));
+    assert!(!texts_of(&svg).iter().any(|t| t == "Force polygons"));
     let (code, _, err) = run_linkage(&["diagram", &file, "--input-deg", "30", "--what", "forces"]);
     assert_ne!(code, Some(0));
     assert!(err.contains("kinematics only"), "{err}");
@@ -191,9 +196,9 @@ fn the_course_sheet_of_the_quick_return_holds_what_a_course_asks_for() {
         "{}/../../docs/examples/quick_return_cutting.ron",
         env!("CARGO_MANIFEST_DIR")
     );
-    let (code, svg, err) = run_linkage(&["course-sheet", &file, "--chosen", "2", "8"]);
+    let (code, svg, err) = run_sheet(&["course-sheet", &file, "--chosen", "2", "8"]);
     assert_eq!(code, Some(0), "{err}");
-    let drawn = texts(&parse(&svg));
+    let drawn = texts_of(&svg);
     for want in [
         "Plan of positions",
         "ram displacement (m)",

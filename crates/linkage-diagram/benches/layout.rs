@@ -9,6 +9,7 @@ use linkage::polygon::{Quantity, polygons};
 use linkage::{Kinematics, Mechanism};
 use linkage_diagram::layout::Sizes;
 use linkage_diagram::svg::{Parts, Position, sheet};
+use linkage_diagram::words::Lang;
 use linkage_diagram::{Label, PolygonFigure, Rect, layout_polygon};
 
 fn kinematics(file: &str) -> Kinematics {
@@ -51,7 +52,7 @@ fn bench(c: &mut Criterion) {
             forces: None,
         };
         c.bench_function(&format!("{file}/sheet svg"), |b| {
-            b.iter(|| std::hint::black_box(sheet(&position, Parts::default())));
+            b.iter(|| std::hint::black_box(sheet(&position, Parts::default(), Lang::English)));
         });
     }
 }

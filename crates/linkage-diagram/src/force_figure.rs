@@ -4,8 +4,7 @@
 //! diagonal — in newtons, laid out by the same code as the velocity polygons.
 
 use linkage::Mechanism;
-use linkage::dyad::{DyadKind, DyadLabel};
-use linkage::force_polygon::{CoupleTerm, ForceVector, Stage, StagePolygon, SymbolParts};
+use linkage::force_polygon::{CoupleTerm, ForcePolygons, ForceVector, StagePolygon, SymbolParts};
 
 use crate::figure::{ArrowStyle, Figure, Vertex};
 use crate::geometry::Pt;
@@ -120,23 +119,6 @@ impl Figure for ForceFigure {
     }
 }
 
-/// The stage's title in the words of the drawing: "coupler and rocker, joined at C
-/// (links 3, 4)", "crank (link 2)"; the group's kind (RRR, RRP) is the solver's.
-pub fn stage_title(stage: &StagePolygon, m: &Mechanism) -> String {
-    let numbers = stage_numbers(stage, m);
-    match &stage.stage {
-        Stage::Group { dyad, .. } => {
-            let noun = if dyad.kind == DyadKind::CamFollower {
-                "link"
-            } else {
-                "links"
-            };
-            format!("{} ({noun} {numbers})", dyad_words(dyad))
-        }
-        Stage::Crank { link } => format!("{} (link {numbers})", m.links[*link].name),
-    }
-}
-
 /// The numbers of a stage's links as the drawing numbers them: "3, 4", or "2".
 pub fn stage_numbers(stage: &StagePolygon, m: &Mechanism) -> String {
     let numbers: Vec<String> = stage
@@ -145,17 +127,6 @@ pub fn stage_numbers(stage: &StagePolygon, m: &Mechanism) -> String {
         .map(|&l| linkage::force_polygon::link_number(m, l).to_string())
         .collect();
     numbers.join(", ")
-}
-
-/// A dyad by its links and joint, as the user knows it: "coupler and rocker, joined
-/// at C", or a cam's follower "follower, on the cam at F"; never the solver's kind.
-pub fn dyad_words(dyad: &DyadLabel) -> String {
-    let [a, b] = &dyad.links;
-    if dyad.kind == DyadKind::CamFollower {
-        format!("{a}, on the cam at {}", dyad.inner_point)
-    } else {
-        format!("{a} and {b}, joined at {}", dyad.inner_point)
-    }
 }
 
 /// One row of a stage's force table.
@@ -167,17 +138,74 @@ pub struct ForceRow {
     pub magnitude: f64,
     /// Its direction, degrees from +x (a couple: its sign, +1 counter-clockwise).
     pub direction_deg: f64,
-    /// "known", "solved", "direction known" — how the stage treats it.
-    pub status: &'static str,
+    /// How the stage treats it: known, solved, or its direction known.
+    pub status: RowStatus,
     /// A couple, not a force.
     pub couple: bool,
 }
 
+/// How a stage treats a force or couple of its table.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RowStatus {
+    /// Given (a load, or found by an earlier stage).
+    Known,
+    /// Its line of action known, its magnitude found here.
+    DirectionKnown,
+    /// Found here, magnitude and direction.
+    Solved,
+}
+
+impl RowStatus {
+    /// The sheet's English words.
+    pub fn words(self) -> &'static str {
+        match self {
+            Self::Known => "known",
+            Self::DirectionKnown => "direction known",
+            Self::Solved => "solved",
+        }
+    }
+}
+
+/// A couple's sense of turning.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Sense {
+    /// A zero couple.
+    None,
+    /// Counter-clockwise (positive).
+    CounterClockwise,
+    /// Clockwise (negative).
+    Clockwise,
+}
+
+impl Sense {
+    /// The sheet's English words.
+    pub fn words(self) -> &'static str {
+        match self {
+            Self::None => "none",
+            Self::CounterClockwise => "counter-clockwise",
+            Self::Clockwise => "clockwise",
+        }
+    }
+}
+
+/// A couple row's sense of turning (`None` for a force row; [`Sense::None`] for a
+/// couple that is the round-off of `scale`).
+pub fn sense(r: &ForceRow, scale: RowScale) -> Option<Sense> {
+    let sense = if r.magnitude <= scale.couple_n_m * crate::numbers::ROUND_OFF {
+        Sense::None
+    } else if r.direction_deg > 0.0 {
+        Sense::CounterClockwise
+    } else {
+        Sense::Clockwise
+    };
+    r.couple.then_some(sense)
+}
+
 fn force_row(f: &ForceVector, m: &Mechanism) -> ForceRow {
     let status = match (f.magnitude_known, f.direction_known) {
-        (true, _) => "known",
-        (false, true) => "direction known",
-        (false, false) => "solved",
+        (true, _) => RowStatus::Known,
+        (false, true) => RowStatus::DirectionKnown,
+        (false, false) => RowStatus::Solved,
     };
     ForceRow {
         label: parts_label(&f.symbol.parts(m)),
@@ -189,7 +217,11 @@ fn force_row(f: &ForceVector, m: &Mechanism) -> ForceRow {
 }
 
 fn couple_row(c: &CoupleTerm, m: &Mechanism) -> ForceRow {
-    let status = if c.known { "known" } else { "solved" };
+    let status = if c.known {
+        RowStatus::Known
+    } else {
+        RowStatus::Solved
+    };
     ForceRow {
         label: parts_label(&c.symbol.parts(m)),
         magnitude: c.moment.abs(),
@@ -211,18 +243,51 @@ pub fn force_rows(stage: &StagePolygon, m: &Mechanism) -> Vec<ForceRow> {
         .collect()
 }
 
-/// A row's magnitude and direction as shown: `12.5000 N`, `99.50°` (0° to 360°
-/// from +x); a couple's sense in words.
-pub fn row_cells(r: &ForceRow) -> (String, String) {
-    if r.couple {
-        let sense = if r.magnitude == 0.0 {
-            "none"
-        } else if r.direction_deg > 0.0 {
-            "counter-clockwise"
-        } else {
-            "clockwise"
-        };
-        (crate::numbers::si(r.magnitude, "N·m"), sense.to_string())
+/// The sizes a table's values are the round-off of: its largest force, and its
+/// largest force times the mechanism's longest link (or the balancing torque, if
+/// larger) for the couples.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RowScale {
+    /// N.
+    pub force_n: f64,
+    /// N·m.
+    pub couple_n_m: f64,
+}
+
+/// The scale of `fp`'s tables.
+pub fn row_scale(m: &Mechanism, fp: &ForcePolygons) -> RowScale {
+    let force_n = fp
+        .stages
+        .iter()
+        .flat_map(|s| s.polygon.iter().chain(&s.inner))
+        .map(|f| f.force.norm())
+        .fold(0.0, f64::max);
+    let longest = m
+        .links
+        .iter()
+        .flat_map(|l| {
+            l.points
+                .iter()
+                .flat_map(move |(_, a)| l.points.iter().map(move |(_, b)| (a - b).norm()))
+        })
+        .fold(0.0, f64::max);
+    RowScale {
+        force_n,
+        couple_n_m: (force_n * longest).max(fp.balancing_torque.abs()),
+    }
+}
+
+/// A row's magnitude and direction as shown: `12.5 N`, `99.5°` (0° to 360° from
+/// +x), a round-off of `scale` as 0; a couple's sense in words.
+pub fn row_cells(r: &ForceRow, scale: RowScale) -> (String, String) {
+    use crate::numbers::{ROUND_OFF, si, si_beside};
+    if let Some(sense) = sense(r, scale) {
+        (
+            si_beside(r.magnitude, scale.couple_n_m, "N·m"),
+            sense.words().into(),
+        )
+    } else if r.magnitude <= scale.force_n * ROUND_OFF {
+        (si(0.0, "N"), String::new())
     } else {
         // Rounded first, so that −0.01° reads 0°, not 360°.
         let deg = (r.direction_deg * 10.0).round() / 10.0;

@@ -95,7 +95,8 @@ impl Label {
         self.runs.iter().map(|r| r.text.as_str()).collect()
     }
 
-    /// Width and height, in pixels at `font_px`, by an average advance of 0.58 em:
+    /// Width and height, in pixels at `font_px`, by an average advance of 0.58 em (a
+    /// Chinese character 1 em, [`em_width`]):
     /// for places without a font engine (the SVG sheet, the CLI, the layout tests).
     /// Generous for the narrow letters of labels, so boxes measured this way hold the
     /// text set in a sans-serif face.
@@ -109,11 +110,21 @@ impl Label {
                 } else {
                     SCRIPT_SCALE
                 };
-                0.58 * font_px * scale * r.text.chars().count() as f64
+                font_px * scale * r.text.chars().map(em_width).sum::<f64>()
             })
             .sum();
         let scripted = self.runs.iter().any(|r| r.script != Script::Base);
-        [width, font_px * if scripted { 1.45 } else { 1.2 }]
+        [width, font_px * if scripted { 1.6 } else { 1.2 }]
+    }
+}
+
+/// A character's approximate advance in ems: a CJK character (and a full-width
+/// form) is a square, a Latin one a little over half of it.
+pub fn em_width(c: char) -> f64 {
+    if ('\u{2E80}'..='\u{FFEF}').contains(&c) {
+        1.0
+    } else {
+        0.58
     }
 }
 

@@ -34,6 +34,9 @@ pub mod geometry;
 pub mod label;
 pub mod layout;
 pub mod numbers;
+pub mod pages;
+#[cfg(feature = "pdf")]
+pub mod pdf;
 pub mod placement;
 #[cfg(feature = "png")]
 pub mod png;
@@ -45,7 +48,9 @@ pub mod svg_cam;
 pub mod svg_course;
 mod svg_draw;
 mod svg_forces;
+mod svg_plan;
 pub mod svg_timing;
+pub mod words;
 
 pub use force_figure::ForceFigure;
 pub use geometry::{Pt, Rect};

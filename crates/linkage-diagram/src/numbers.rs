@@ -94,8 +94,12 @@ pub fn unit_symbol(unit: linkage::scene::LengthUnit) -> &'static str {
     }
 }
 
-/// An angle in degrees to four significant digits, with the degree sign ("42.58°").
+/// An angle in degrees to four significant digits, with the degree sign ("42.58°");
+/// the round-off of a turn (below 360° × [`ROUND_OFF`]) as 0°.
 pub fn degrees(deg: f64) -> String {
+    if deg.abs() <= 360.0 * ROUND_OFF {
+        return "0°".into();
+    }
     format!("{}°", significant(deg, 4))
 }
 
@@ -124,6 +128,7 @@ mod tests {
         assert_eq!(degrees(42.5815), "42.58°");
         assert_eq!(degrees(-179.94), "-179.9°");
         assert_eq!(degrees(0.0), "0°");
+        assert_eq!(degrees(-1.053e-14), "0°");
     }
 
     #[test]

@@ -26,6 +26,9 @@ pub struct Placed {
     pub collides: bool,
 }
 
+/// The free space kept round a placed label, pixels.
+const LABEL_GAP: f64 = 1.5;
+
 /// Radius of a vertex's dot, pixels.
 pub const DOT_PX: f64 = 2.5;
 
@@ -142,7 +145,9 @@ impl Obstacles {
                 true,
             ),
         };
-        self.hard.push(rect);
+        // A gap between labels: the measure is approximate, and glyphs set in a real
+        // face may reach a pixel past it.
+        self.hard.push(rect.expand(LABEL_GAP));
         Placed {
             rect,
             leader: leader.map(|a| [nearest_on(&rect, a), a]),

@@ -36,14 +36,14 @@ pub fn render(svg: &str, dpi: f32, font: &[u8], family: &str) -> Result<Vec<u8>,
 
 /// Whether `text` holds a character of the Chinese face's ranges (CJK radicals to
 /// the full-width forms).
-fn has_cjk(text: &str) -> bool {
+pub(crate) fn has_cjk(text: &str) -> bool {
     text.chars().any(|c| ('\u{2E80}'..='\u{FFEF}').contains(&c))
 }
 
 /// resvg's options with `font` as the sans-serif face, and [`CJK_FONT`] beside it
 /// when `cjk`: usvg falls back, glyph by glyph, to a loaded face that has the
 /// character.
-fn options(font: &[u8], family: &str, cjk: bool) -> resvg::usvg::Options<'static> {
+pub(crate) fn options(font: &[u8], family: &str, cjk: bool) -> resvg::usvg::Options<'static> {
     let mut opt = resvg::usvg::Options::default();
     opt.fontdb_mut().load_font_data(font.to_vec());
     if cjk {
@@ -84,6 +84,71 @@ fn collect_undrawn(group: &resvg::usvg::Group, out: &mut Vec<String>) {
                             .map(|g| g.text.clone()),
                     );
                 }
+            }
+            _ => {}
+        }
+    }
+}
+
+/// A text of a sheet as drawn: its characters and the box its glyphs cover on the
+/// page, px.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TextBox {
+    /// The text.
+    pub text: String,
+    /// The box of its glyphs' outlines, in the page's coordinates.
+    pub rect: crate::geometry::Rect,
+}
+
+/// The faces sheets are drawn in (a Latin face and [`CJK_FONT`]), loaded once for
+/// many pages: parsing the Chinese face is most of a page's cost.
+pub struct Faces {
+    options: resvg::usvg::Options<'static>,
+}
+
+impl Faces {
+    /// The sans-serif face `font` (family `family`) with the Chinese face beside it.
+    pub fn new(font: &[u8], family: &str) -> Self {
+        Self {
+            options: options(font, family, true),
+        }
+    }
+
+    /// `svg` parsed and laid out with these faces.
+    ///
+    /// # Errors
+    /// An SVG that does not parse.
+    pub fn tree(&self, svg: &str) -> Result<resvg::usvg::Tree, String> {
+        resvg::usvg::Tree::from_str(svg, &self.options)
+            .map_err(|e| format!("the SVG does not parse: {e}"))
+    }
+
+    /// Every text of `svg` with the box it is drawn in: what a test of a sheet's
+    /// legibility measures (no text over another, none past the page).
+    ///
+    /// # Errors
+    /// An SVG that does not parse.
+    pub fn text_boxes(&self, svg: &str) -> Result<Vec<TextBox>, String> {
+        let mut boxes = Vec::new();
+        collect_boxes(self.tree(svg)?.root(), &mut boxes);
+        Ok(boxes)
+    }
+}
+
+fn collect_boxes(group: &resvg::usvg::Group, out: &mut Vec<TextBox>) {
+    for node in group.children() {
+        match node {
+            resvg::usvg::Node::Group(g) => collect_boxes(g, out),
+            resvg::usvg::Node::Text(t) => {
+                let b = t.abs_bounding_box();
+                let text: String = t.chunks().iter().map(|c| c.text()).collect();
+                out.push(TextBox {
+                    text,
+                    rect: crate::geometry::Rect {
+                        min: [f64::from(b.left()), f64::from(b.top())],
+                        max: [f64::from(b.right()), f64::from(b.bottom())],
+                    },
+                });
             }
             _ => {}
         }

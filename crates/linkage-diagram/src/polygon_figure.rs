@@ -195,6 +195,17 @@ pub fn largest_term(eq: &VectorEquation) -> f64 {
         .fold(0.0, f64::max)
 }
 
+/// The largest term of the position's equations of kind `quantity`: the size its
+/// tables' values are the round-off of. Not one equation's own largest term: in a
+/// dwell every term of the follower's equation is round-off.
+pub fn largest_of_kind(equations: &[VectorEquation], quantity: Quantity) -> f64 {
+    equations
+        .iter()
+        .filter(|e| e.kind == quantity)
+        .map(largest_term)
+        .fold(0.0, f64::max)
+}
+
 /// An absolute term (`v_B`, `a_C`: a joint's whole motion relative to the frame) is
 /// drawn from the pole with the joints' vectors, not again in a chain.
 fn is_absolute(symbol: &Symbol, joints: &[&(String, Pt)]) -> bool {

@@ -30,7 +30,9 @@ pub struct CentreMark {
 /// The pose of a mechanism as a figure.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct PoseFigure {
-    /// Per moving link, the outline through its joints (two points for a binary link).
+    /// Per moving link in the scene's order (the i-th is numbered i + 2, as
+    /// [`link_number`] numbers it), the outline through its joints (two points for a
+    /// binary link).
     pub links: Vec<Vec<Pt>>,
     /// Pivots on the frame.
     pub ground_pivots: Vec<Pt>,

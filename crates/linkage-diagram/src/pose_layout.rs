@@ -6,7 +6,7 @@ use linkage::instant_centres::Centre;
 use crate::geometry::{Pt, Rect};
 use crate::label::Label;
 use crate::layout::{Fit, ScaleBar, Sizes};
-use crate::placement::{Obstacles, Placed, place_vertex_label};
+use crate::placement::{Obstacles, Placed, place_arrow_label, place_vertex_label};
 use crate::pose_figure::PoseFigure;
 
 /// A placed label of the pose.
@@ -37,6 +37,9 @@ pub struct LaidPose {
     pub centres: Vec<Pt>,
     /// Joint names, then the centres' labels.
     pub labels: Vec<PoseLabel>,
+    /// The moving links' numbers (2, 3, …: the frame is 1), the numbers the force
+    /// tables and the instant centres name them by, beside each link.
+    pub link_numbers: Vec<PoseLabel>,
     /// Centres not drawn: at infinity (with their direction), or far off the figure.
     pub centres_off: Vec<(Label, Centre)>,
     /// The scale bar, metres.
@@ -113,6 +116,29 @@ fn place_labels(
         .collect()
 }
 
+/// Each moving link's number (2 for the first: the frame is 1) beside its first
+/// side, or by its one joint.
+fn number_links(
+    links: &[Vec<Pt>],
+    measure: &dyn Fn(&Label) -> [f64; 2],
+    obstacles: &mut Obstacles,
+) -> Vec<PoseLabel> {
+    links
+        .iter()
+        .enumerate()
+        .filter_map(|(i, l)| {
+            let label = Label::plain((i + 2).to_string());
+            let size = measure(&label);
+            let placed = match l[..] {
+                [a, b, ..] => place_arrow_label(a, b, size, obstacles),
+                [a] => place_vertex_label(a, [1.0, -1.0], size, obstacles),
+                [] => return None,
+            };
+            Some(PoseLabel { label, placed })
+        })
+        .collect()
+}
+
 /// Lays the pose out in `pane`.
 pub fn layout_pose(
     fig: &PoseFigure,
@@ -174,6 +200,7 @@ pub fn layout_pose(
             .zip(centres.iter().copied()),
     );
     let labels = place_labels(named, px(mech.centre()), measure, &mut obstacles);
+    let link_numbers = number_links(&links, measure, &mut obstacles);
     LaidPose {
         pane,
         px_per_m: s,
@@ -183,6 +210,7 @@ pub fn layout_pose(
         sliders,
         centres,
         labels,
+        link_numbers,
         centres_off,
         scale_bar: Some(fitted.scale_bar(size, pane, sizes)),
     }

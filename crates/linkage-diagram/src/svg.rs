@@ -13,13 +13,15 @@ use crate::geometry::Rect;
 use crate::label::{Label, Script};
 use crate::layout::{Sizes, layout_polygon};
 use crate::numbers::{degrees, si, si_beside, significant};
+use crate::pages::{Pages, Sheet, heading};
 use crate::polygon_figure::{self, PolygonFigure, unit};
 use crate::pose_figure::PoseFigure;
 use crate::pose_layout::{LaidPose, layout_pose};
 use crate::svg_draw::{
-    FONT, MARGIN, PAGE_H, PAGE_W, circle, document, frame, label_at, leaders_and_label, line,
-    measure, polygon, polygon_shape, scale_bar, text_at, titled_pane,
+    FONT, MARGIN, PAGE_W, circle, frame, label_at, leaders_and_label, line, measure, polygon,
+    polygon_shape, scale_bar, text_at, titled_pane,
 };
+use crate::words::{self, Lang, sw};
 
 /// Which parts the sheet holds.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -66,31 +68,53 @@ pub struct Position<'a> {
     pub forces: Option<&'a ForcePolygons>,
 }
 
-/// The sheet of `pos` with `parts`, as SVG text.
-pub fn sheet(pos: &Position<'_>, parts: Parts) -> String {
+/// The sheet of `pos` with `parts` in `lang`, on as many A4 pages as it needs.
+pub fn sheet(pos: &Position<'_>, parts: Parts, lang: Lang) -> Sheet {
     let sizes = Sizes {
         font_px: FONT,
         ..Sizes::default()
     };
-    let width = PAGE_W - 2.0 * MARGIN;
-    let mut body = String::new();
-    let mut y = MARGIN;
     let m = pos.mechanism;
     let s = pos.solution;
-    let title = format!(
-        "{} at input {}, ω = {} rad/s",
-        m.name,
-        degrees(s.input_rad.to_degrees()),
-        significant(s.input_speed_rad_s, 4)
+    let title = sw!(
+        lang,
+        "sheet.position_title",
+        name = m.name,
+        input = degrees(s.input_rad.to_degrees()),
+        omega = significant(s.input_speed_rad_s, 4)
     );
-    text_at(&mut body, [MARGIN, y + 14.0], &title, 16.0, "bold");
-    y += 30.0;
+    let mut pages = Pages::new(&title);
+    heading(&mut pages, &title, 16.0);
     if parts.pose {
         let centres = if parts.centres { pos.centres } else { None };
         let fig = PoseFigure::new(m, s, centres);
-        let pane = Rect::from_min_size([MARGIN, y], width, 360.0);
-        y = pose(&mut body, &layout_pose(&fig, pane, sizes, &measure)) + 10.0;
+        let top = pages.place(POSE_H + 10.0);
+        let pane = Rect::from_min_size([MARGIN, top], WIDTH, POSE_H);
+        pose(&mut pages, &layout_pose(&fig, pane, sizes, &measure), lang);
     }
+    polygons(&mut pages, pos, parts, sizes, lang);
+    if parts.table {
+        for q in [Quantity::Velocity, Quantity::Acceleration] {
+            table(&mut pages, pos.equations, q, lang);
+        }
+    }
+    if parts.forces
+        && let Some(fp) = pos.forces
+    {
+        crate::svg_forces::forces(&mut pages, m, fp, sizes, lang);
+    }
+    pages.finish()
+}
+
+/// The pose pane's height, px.
+const POSE_H: f64 = 360.0;
+/// A polygon pane's height, px.
+const POLYGON_H: f64 = 320.0;
+/// The width between the margins, px.
+const WIDTH: f64 = PAGE_W - 2.0 * MARGIN;
+
+/// The velocity and acceleration polygons asked for, side by side.
+fn polygons(pages: &mut Pages, pos: &Position<'_>, parts: Parts, sizes: Sizes, lang: Lang) {
     let quantities: Vec<Quantity> = [
         (parts.velocity, Quantity::Velocity),
         (parts.acceleration, Quantity::Acceleration),
@@ -98,36 +122,29 @@ pub fn sheet(pos: &Position<'_>, parts: Parts) -> String {
     .into_iter()
     .filter_map(|(on, q)| on.then_some(q))
     .collect();
-    if !quantities.is_empty() {
-        let w = (width - 10.0 * (quantities.len() - 1) as f64) / quantities.len() as f64;
-        for (i, &q) in quantities.iter().enumerate() {
-            let fig = PolygonFigure::of_position(q, m, s, pos.equations);
-            let pane = Rect::from_min_size([MARGIN + i as f64 * (w + 10.0), y], w, 320.0);
-            // The figure keeps clear of the pane's title.
-            let below_title = titled_pane(&mut body, &pane, polygon_figure::title(q), 13.0);
-            polygon(
-                &mut body,
-                fig.unit(),
-                &layout_polygon(&fig, below_title, sizes, &measure),
-            );
-        }
-        y += 330.0;
+    if quantities.is_empty() {
+        return;
     }
-    if parts.table {
-        for q in [Quantity::Velocity, Quantity::Acceleration] {
-            y = table(&mut body, pos.equations, q, y);
-        }
+    let top = pages.place(POLYGON_H + 10.0);
+    let w = (WIDTH - 10.0 * (quantities.len() - 1) as f64) / quantities.len() as f64;
+    for (i, &q) in quantities.iter().enumerate() {
+        let fig = PolygonFigure::of_position(q, pos.mechanism, pos.solution, pos.equations);
+        let pane = Rect::from_min_size([MARGIN + i as f64 * (w + 10.0), top], w, POLYGON_H);
+        // The figure keeps clear of the pane's title.
+        let title = words::polygon_title(lang, q);
+        let below_title = titled_pane(pages.out(), &pane, &title, 13.0);
+        polygon(
+            pages.out(),
+            fig.unit(),
+            &layout_polygon(&fig, below_title, sizes, &measure),
+            lang,
+        );
     }
-    if parts.forces
-        && let Some(fp) = pos.forces
-    {
-        y = crate::svg_forces::forces(&mut body, m, fp, y + 10.0, sizes);
-    }
-    document(&title, &body, PAGE_H.max(y + MARGIN))
 }
 
-/// Draws the pose; the centres not drawn are listed below it. Returns the y below.
-fn pose(out: &mut String, laid: &LaidPose) -> f64 {
+/// Draws the pose; the centres not drawn are listed below it, a line each.
+fn pose(pages: &mut Pages, laid: &LaidPose, lang: Lang) {
+    let out = pages.out();
     frame(out, &laid.pane);
     for l in &laid.links {
         if l.len() > 2 {
@@ -160,20 +177,24 @@ fn pose(out: &mut String, laid: &LaidPose) -> f64 {
     for l in &laid.labels {
         leaders_and_label(out, &l.label, &l.placed.rect, l.placed.leader, "#000000");
     }
+    for l in &laid.link_numbers {
+        leaders_and_label(out, &l.label, &l.placed.rect, l.placed.leader, "#1e5aaa");
+    }
     if let Some(bar) = &laid.scale_bar {
         scale_bar(out, bar, "m");
     }
-    let mut y = laid.pane.max[1];
     for (label, centre) in &laid.centres_off {
         let note = match centre {
-            Centre::AtInfinity(d) => format!(
-                ": at infinity, direction {}",
-                degrees(d[1].atan2(d[0]).to_degrees())
+            Centre::AtInfinity(d) => sw!(
+                lang,
+                "sheet.centre_at_infinity",
+                deg = degrees(d[1].atan2(d[0]).to_degrees())
             ),
-            Centre::At(p) => format!(
-                ": at ({}, {}), off the figure",
-                si(p[0], "m"),
-                si(p[1], "m")
+            Centre::At(p) => sw!(
+                lang,
+                "sheet.centre_off",
+                x = si(p[0], "m"),
+                y = si(p[1], "m")
             ),
         };
         let mut text = label.clone();
@@ -181,19 +202,29 @@ fn pose(out: &mut String, laid: &LaidPose) -> f64 {
             text: note,
             script: Script::Base,
         });
-        y += 16.0;
-        label_at(out, &text, [laid.pane.min[0], y - 1.05 * FONT], "#000000");
+        let top = pages.place(20.0);
+        label_at(pages.out(), &text, [MARGIN, top], "#000000");
     }
-    y
 }
 
-/// The table of `quantity`'s equations from `y` on; returns the y below it.
-fn table(out: &mut String, equations: &[VectorEquation], quantity: Quantity, mut y: f64) -> f64 {
-    let row = 1.5 * FONT;
+/// The table of `quantity`'s equations, an equation's rows kept on one page.
+fn table(pages: &mut Pages, equations: &[VectorEquation], quantity: Quantity, lang: Lang) {
+    // Taller than a line: a symbol with sub- and superscripts spans 1.55 em, a line
+    // of Chinese 1.45 em.
+    let row = 1.75 * FONT;
     let columns = [0.0, 80.0, 190.0, 270.0, 470.0];
+    let scale = polygon_figure::largest_of_kind(equations, quantity);
     for eq in equations.iter().filter(|e| e.kind == quantity) {
+        let terms = eq.lhs.len() + eq.rhs.len();
+        let mut y = pages.place(row * (3 + terms) as f64 + 0.5 * row);
+        let out = pages.out();
         y += row;
-        text_at(out, [MARGIN, y], &format!("{}:", eq.group), FONT, "bold");
+        let group = sw!(
+            lang,
+            "table.group_heading",
+            group = words::group(lang, &eq.group)
+        );
+        text_at(out, [MARGIN, y], &group, FONT, "bold");
         y += row;
         label_at(
             out,
@@ -202,28 +233,32 @@ fn table(out: &mut String, equations: &[VectorEquation], quantity: Quantity, mut
             "#000000",
         );
         y += row;
-        for (x, head) in columns
-            .iter()
-            .zip(["term", "magnitude", "direction", "along", "known"])
-        {
+        let heads = [
+            sw!(lang, "table.term"),
+            sw!(lang, "table.magnitude"),
+            sw!(lang, "table.direction"),
+            sw!(lang, "table.along"),
+            sw!(lang, "table.known"),
+        ];
+        for (x, head) in columns.iter().zip(&heads) {
             text_at(out, [MARGIN + x, y], head, FONT, "bold");
         }
-        let scale = polygon_figure::largest_term(eq);
         for t in eq.lhs.iter().chain(&eq.rhs) {
             let cells = [
                 si_beside(t.magnitude, scale, unit(quantity)),
                 degrees(t.direction_rad.to_degrees()),
-                t.direction.clone(),
-                format!(
-                    "magnitude {}, direction {}",
-                    known(t.magnitude_known),
-                    known(t.direction_known)
+                words::direction(lang, &t.direction),
+                sw!(
+                    lang,
+                    "table.known_cell",
+                    magnitude = words::known(lang, t.magnitude_known),
+                    direction = words::known(lang, t.direction_known)
                 ),
             ];
             label_at(
                 out,
                 &Label::of_symbol(&t.symbol),
-                [MARGIN, y + 0.45 * FONT],
+                [MARGIN, y + row - 1.05 * FONT],
                 "#000000",
             );
             y += row;
@@ -232,9 +267,4 @@ fn table(out: &mut String, equations: &[VectorEquation], quantity: Quantity, mut
             }
         }
     }
-    y
-}
-
-fn known(k: bool) -> &'static str {
-    if k { "known" } else { "solved" }
 }

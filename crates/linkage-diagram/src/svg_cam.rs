@@ -12,9 +12,11 @@ use linkage::cam::CamPoint;
 use crate::geometry::{Pt, Rect};
 use crate::layout::ScaleBar;
 use crate::numbers::{degrees, si};
+use crate::pages::{Pages, Sheet};
 use crate::svg_draw::{
-    MARGIN, PAGE_W, circle, document, line, polygon_shape, scale_bar, text_at, titled_pane,
+    MARGIN, PAGE_W, circle, fit_text, line, polygon_shape, scale_bar, text_at, titled_pane,
 };
+use crate::words::{Lang, sw};
 
 const PROFILE: &str = "#222222";
 const PITCH: &str = "#2f5f9e";
@@ -33,13 +35,15 @@ pub struct CamSheet<'a> {
     pub pressure_limit_rad: f64,
 }
 
-/// The sheet.
-pub fn cam_sheet(c: &CamSheet<'_>) -> String {
+/// The sheet in `lang`: one A4 page.
+pub fn cam_sheet(c: &CamSheet<'_>, lang: Lang) -> Sheet {
     let side = PAGE_W - 2.0 * MARGIN;
-    let height = 2.0 * MARGIN + side + 80.0;
-    let mut body = String::new();
-    let pane = Rect::from_min_size([MARGIN, MARGIN], side, side + 40.0);
-    let inner = titled_pane(&mut body, &pane, &format!("Cam profile: {}", c.title), 14.0);
+    let mut pages = Pages::new(c.title);
+    let top = pages.place(side + 40.0);
+    let body = pages.out();
+    let pane = Rect::from_min_size([MARGIN, top], side, side + 40.0);
+    let title = fit_text(&sw!(lang, "cam.title", title = c.title), side - 12.0, 14.0);
+    let inner = titled_pane(body, &pane, &title, 14.0);
     let reach = c
         .points
         .iter()
@@ -54,7 +58,7 @@ pub fn cam_sheet(c: &CamSheet<'_>) -> String {
         inner.min[1] + 0.5 * (inner.height() - 40.0),
     ];
     let px = |[x, y]: [f64; 2]| -> Pt { [centre[0] + x * scale, centre[1] - y * scale] };
-    draw_cam(&mut body, c, &px, scale, centre);
+    draw_cam(body, c, &px, scale, centre);
     // A round length near half the cam's radius (round_scale takes a quarter).
     let bar_mm = crate::layout::round_scale(2.0 * reach * 1e3);
     let from = [inner.min[0] + 12.0, inner.max[1] - 50.0];
@@ -63,9 +67,9 @@ pub fn cam_sheet(c: &CamSheet<'_>) -> String {
         from,
         to: [from[0] + bar_mm * 1e-3 * scale, from[1]],
     };
-    scale_bar(&mut body, &bar, "m");
-    figures(&mut body, c, [inner.min[0] + 12.0, inner.max[1] - 24.0]);
-    document(c.title, &body, height)
+    scale_bar(body, &bar, "m");
+    figures(body, c, [inner.min[0] + 12.0, inner.max[1] - 24.0], lang);
+    pages.finish()
 }
 
 /// The pitch curve dashed, the profile, the base circle, the centre, the marks.
@@ -118,22 +122,23 @@ fn draw_cam(out: &mut String, c: &CamSheet<'_>, px: &dyn Fn([f64; 2]) -> Pt, sca
 }
 
 /// The largest pressure angle and the least radii, and the legend.
-fn figures(out: &mut String, c: &CamSheet<'_>, at: Pt) {
+fn figures(out: &mut String, c: &CamSheet<'_>, at: Pt, lang: Lang) {
     let largest = c
         .points
         .iter()
         .map(|p| p.pressure_angle_rad.abs())
         .fold(0.0, f64::max);
     let least = |f: fn(&CamPoint) -> f64| c.points.iter().map(f).fold(f64::INFINITY, f64::min);
-    let text = format!(
-        "base circle {}; largest pressure angle {} (limit {}); least radius of curvature: pitch {}, profile {}",
-        si(c.base_radius_m, "m"),
-        degrees(largest.to_degrees()),
-        degrees(c.pressure_limit_rad.to_degrees()),
-        si(least(|p| p.pitch_radius_m), "m"),
-        si(least(|p| p.profile_radius_m), "m"),
+    let text = sw!(
+        lang,
+        "cam.figures",
+        base = si(c.base_radius_m, "m"),
+        pressure = degrees(largest.to_degrees()),
+        limit = degrees(c.pressure_limit_rad.to_degrees()),
+        pitch = si(least(|p| p.pitch_radius_m), "m"),
+        profile = si(least(|p| p.profile_radius_m), "m"),
     );
     text_at(out, at, &text, 10.0, "normal");
-    let legend = "profile solid, pitch curve dashed, base circle grey; red: pressure angle past the limit or undercut";
-    text_at(out, [at[0], at[1] + 14.0], legend, 10.0, "normal");
+    let legend = sw!(lang, "cam.legend");
+    text_at(out, [at[0], at[1] + 14.0], &legend, 10.0, "normal");
 }

@@ -2,8 +2,7 @@
 //! the start in the links' colour, each numbered at its output point), the output's
 //! displacement, velocity and acceleration diagrams against the crank angle with the
 //! positions marked, the velocity and acceleration polygons at the chosen positions,
-//! and the force polygons at the first of them — one sheet, A4 wide, as long as it
-//! needs.
+//! and the force polygons at the first of them, on A4 pages.
 
 use std::fmt::Write as _;
 
@@ -11,214 +10,116 @@ use linkage::{Mechanism, Solution};
 
 use crate::course::{ChosenPosition, CourseSheet, OutputSeries};
 use crate::geometry::{Pt, Rect};
-use crate::layout::{Fit, Sizes, layout_polygon, round_scale};
-use crate::polygon_figure::{PolygonFigure, title};
+use crate::layout::{Sizes, layout_polygon};
+use crate::pages::{Pages, Sheet, heading};
+use crate::polygon_figure::PolygonFigure;
 use crate::svg_draw::{
-    FONT, MARGIN, PAGE_W, TITLE_H, document, frame, line, measure, polygon, text_at, titled_pane,
+    FONT, MARGIN, PAGE_W, frame, line, measure, polygon, text_at, text_at_end, titled_pane,
 };
+use crate::words::{self, Lang, sw};
 use linkage::polygon::Quantity;
 
-const PLAN_H: f64 = 380.0;
+const PLAN_H: f64 = 520.0;
 const CHART_H: f64 = 150.0;
 const POLYGON_H: f64 = 300.0;
+const HEADING_H: f64 = 24.0;
 const BLUE: &str = "#1e5aaa";
-const GREY: &str = "#9a9a9a";
 
-/// The sheet as SVG text.
-pub fn course_sheet(c: &CourseSheet) -> String {
+/// The sheet in `lang`, on as many A4 pages as it needs: the plan and the diagrams
+/// on the first, each chosen position's polygons whole on a page.
+pub fn course_sheet(c: &CourseSheet, lang: Lang) -> Sheet {
     let sizes = Sizes {
         font_px: FONT,
         ..Sizes::default()
     };
-    let width = PAGE_W - 2.0 * MARGIN;
     let m = &c.mechanism;
-    let mut body = String::new();
-    let title = format!(
-        "{}: {} positions, ω = {} rad/s",
-        m.name,
-        c.positions.len(),
-        crate::numbers::significant(m.driver.speed_rad_s, 4)
+    let title = sw!(
+        lang,
+        "sheet.course_title",
+        name = m.name,
+        count = c.positions.len(),
+        omega = crate::numbers::significant(m.driver.speed_rad_s, 4)
     );
-    text_at(&mut body, [MARGIN, MARGIN + 14.0], &title, 16.0, "bold");
-    let mut y = MARGIN + 30.0;
-    plan(
-        &mut body,
-        m,
-        &c.positions,
-        Rect::from_min_size([MARGIN, y], width, PLAN_H),
-        sizes,
-    );
-    y += PLAN_H + 10.0;
+    let mut pages = Pages::new(&title);
+    heading(&mut pages, &title, 16.0);
+    let top = pages.place(PLAN_H + 10.0);
+    let pane = Rect::from_min_size([MARGIN, top], WIDTH, PLAN_H);
+    let plan_title = sw!(lang, "course.plan");
+    crate::svg_plan::plan(pages.out(), m, &c.positions, pane, sizes, &plan_title);
     if let Some(o) = &c.output {
-        y = diagrams(&mut body, o, &c.positions, y);
+        diagrams(&mut pages, o, &c.positions, lang);
     }
     for chosen in &c.chosen {
-        y = chosen_polygons(&mut body, m, &c.positions[chosen.number], chosen, y, sizes);
+        let s = &c.positions[chosen.number];
+        chosen_polygons(&mut pages, m, s, chosen, sizes, lang);
     }
     if let (Some(fp), Some(first)) = (&c.forces, c.chosen.first()) {
-        let heading = format!(
-            "Position {}: forces at the scene's crank speed",
-            first.number
-        );
-        text_at(&mut body, [MARGIN, y + 14.0], &heading, 14.0, "bold");
-        y = crate::svg_forces::forces(&mut body, m, fp, y + 22.0, sizes);
+        pages.keep(2.0 * 30.0 + 310.0);
+        let text = sw!(lang, "course.position_forces", n = first.number);
+        heading(&mut pages, &text, 14.0);
+        crate::svg_forces::forces(&mut pages, m, fp, sizes, lang);
     }
-    document(&title, &body, y + MARGIN)
+    pages.finish()
 }
 
-/// The output's s, v and a diagrams from `y` on; returns the y below.
-fn diagrams(body: &mut String, o: &OutputSeries, positions: &[Solution], mut y: f64) -> f64 {
-    let width = PAGE_W - 2.0 * MARGIN;
+/// The width between the margins, px.
+const WIDTH: f64 = PAGE_W - 2.0 * MARGIN;
+
+/// The output's s, v and a diagrams.
+fn diagrams(pages: &mut Pages, o: &OutputSeries, positions: &[Solution], lang: Lang) {
     let marks: Vec<f64> = positions.iter().map(|s| s.input_rad.to_degrees()).collect();
-    let units = o.units();
-    for (i, (what, data)) in [
-        ("displacement", &o.s),
-        ("velocity", &o.v),
-        ("acceleration", &o.a),
-    ]
-    .into_iter()
-    .enumerate()
-    {
-        let pane = Rect::from_min_size([MARGIN, y], width, CHART_H);
-        let label = format!("{} {what} ({})", o.name, units[i]);
-        chart(body, pane, &label, data, &marks);
-        y += CHART_H + 8.0;
+    let [s, v, a] = o.units();
+    let charts = [
+        (
+            sw!(lang, "course.displacement", name = o.name, unit = s),
+            &o.s,
+        ),
+        (sw!(lang, "course.velocity", name = o.name, unit = v), &o.v),
+        (
+            sw!(lang, "course.acceleration", name = o.name, unit = a),
+            &o.a,
+        ),
+    ];
+    let note = sw!(lang, "course.against_crank");
+    for (label, data) in charts {
+        let top = pages.place(CHART_H + 8.0);
+        let pane = Rect::from_min_size([MARGIN, top], WIDTH, CHART_H);
+        chart(pages.out(), pane, [&label, &note], data, &marks);
     }
-    y
 }
 
-/// A chosen position's velocity and acceleration polygons from `y` on; returns the
-/// y below.
+/// A chosen position's velocity and acceleration polygons under their heading, on
+/// one page.
 fn chosen_polygons(
-    body: &mut String,
+    pages: &mut Pages,
     m: &Mechanism,
     s: &Solution,
     chosen: &ChosenPosition,
-    mut y: f64,
     sizes: Sizes,
-) -> f64 {
-    let width = PAGE_W - 2.0 * MARGIN;
-    let heading = format!(
-        "Position {} (crank at {}): polygons",
-        chosen.number,
-        crate::numbers::degrees(s.input_rad.to_degrees())
+    lang: Lang,
+) {
+    let text = sw!(
+        lang,
+        "course.position_polygons",
+        n = chosen.number,
+        deg = crate::numbers::degrees(s.input_rad.to_degrees())
     );
-    text_at(body, [MARGIN, y + 14.0], &heading, 14.0, "bold");
-    y += 22.0;
-    let w = (width - 10.0) / 2.0;
+    // The heading stays with its polygons.
+    let top = pages.place(HEADING_H + POLYGON_H + 10.0);
+    text_at(pages.out(), [MARGIN, top + 16.0], &text, 14.0, "bold");
+    let y = top + HEADING_H;
+    let w = (WIDTH - 10.0) / 2.0;
     for (i, q) in [Quantity::Velocity, Quantity::Acceleration]
         .into_iter()
         .enumerate()
     {
         let pane = Rect::from_min_size([MARGIN + i as f64 * (w + 10.0), y], w, POLYGON_H);
-        let below = titled_pane(body, &pane, title(q), 12.0);
+        let out = pages.out();
+        let below = titled_pane(out, &pane, &words::polygon_title(lang, q), 12.0);
         let fig = PolygonFigure::of_position(q, m, s, &chosen.equations);
-        polygon(
-            body,
-            fig.unit(),
-            &layout_polygon(&fig, below, sizes, &measure),
-        );
+        let laid = layout_polygon(&fig, below, sizes, &measure);
+        polygon(out, fig.unit(), &laid, lang);
     }
-    y += POLYGON_H + 10.0;
-    y
-}
-
-/// The point each position is numbered at: the crank pin (the driver's point
-/// farthest from its pivot), which the textbook numbers 0, 1, … round its circle.
-fn tip(m: &Mechanism, s: &Solution) -> Option<Pt> {
-    let crank = &m.links[m.driver.link];
-    let rv = &m.revolutes[m.driver.pivot];
-    let pivot = if rv.a == m.driver.link {
-        rv.a_local
-    } else {
-        rv.b_local
-    };
-    let local = crank
-        .points
-        .iter()
-        .map(|(_, p)| *p)
-        .max_by(|a, b| (a - pivot).norm().total_cmp(&(b - pivot).norm()))?;
-    let at = s.links[m.driver.link].point(&local).position;
-    Some([at.x, at.y])
-}
-
-/// Every position's links, the start drawn strong, each numbered.
-fn plan(out: &mut String, m: &Mechanism, positions: &[Solution], pane: Rect, sizes: Sizes) {
-    frame(out, &pane);
-    text_at(
-        out,
-        [pane.min[0] + 6.0, pane.min[1] + 15.0],
-        "Plan of positions",
-        12.0,
-        "bold",
-    );
-    let outline = |s: &Solution| -> Vec<Vec<Pt>> {
-        m.moving_links()
-            .map(|l| {
-                m.links[l]
-                    .points
-                    .iter()
-                    .map(|(_, local)| {
-                        let p = s.links[l].point(local).position;
-                        [p.x, p.y]
-                    })
-                    .collect()
-            })
-            .collect()
-    };
-    let all: Vec<Vec<Vec<Pt>>> = positions.iter().map(outline).collect();
-    let Some(units) = Rect::around(all.iter().flatten().flatten().copied()) else {
-        return;
-    };
-    let inner = Rect {
-        min: [pane.min[0], pane.min[1] + TITLE_H],
-        max: pane.max,
-    };
-    let fit = Fit::new(units, inner, sizes);
-    for (i, links) in all.iter().enumerate().rev() {
-        let (colour, width) = if i == 0 { (BLUE, 2.5) } else { (GREY, 0.8) };
-        for l in links {
-            let px: Vec<Pt> = l.iter().map(|&p| fit.px(p)).collect();
-            for pair in px.windows(2) {
-                line(out, pair[0], pair[1], colour, width, false);
-            }
-            if px.len() > 2 {
-                line(out, px[px.len() - 1], px[0], colour, width, false);
-            }
-        }
-        if let Some(t) = tip(m, &positions[i]) {
-            let at = fit.px(t);
-            text_at(
-                out,
-                [at[0] + 4.0, at[1] - 4.0],
-                &i.to_string(),
-                11.0,
-                "normal",
-            );
-        }
-    }
-    for (_, local) in &m.links[m.ground].points {
-        let p = fit.px([local.x, local.y]);
-        let _ = writeln!(
-            out,
-            "<polygon points=\"{:.1},{:.1} {:.1},{:.1} {:.1},{:.1}\" fill=\"#cccccc\" stroke=\"#333333\"/>",
-            p[0],
-            p[1],
-            p[0] - 6.0,
-            p[1] + 10.0,
-            p[0] + 6.0,
-            p[1] + 10.0
-        );
-    }
-    let bar = fit.scale_bar(units.width().max(units.height()), inner, sizes);
-    line(out, bar.from, bar.to, "#000000", 2.0, false);
-    text_at(
-        out,
-        [bar.to[0] + 6.0, bar.to[1] + 4.0],
-        &crate::numbers::si(bar.value, "m"),
-        FONT,
-        "normal",
-    );
 }
 
 /// A chart's mapping from (crank angle, value) to pixels.
@@ -239,7 +140,7 @@ impl Axes {
 }
 
 /// A line chart of `data` (crank angle on x) with the positions at `marks` numbered.
-fn chart(out: &mut String, pane: Rect, label: &str, data: &[[f64; 2]], marks: &[f64]) {
+fn chart(out: &mut String, pane: Rect, [label, note]: [&str; 2], data: &[[f64; 2]], marks: &[f64]) {
     frame(out, &pane);
     text_at(
         out,
@@ -248,14 +149,7 @@ fn chart(out: &mut String, pane: Rect, label: &str, data: &[[f64; 2]], marks: &[
         12.0,
         "bold",
     );
-    let note = "against the crank angle; positions numbered";
-    text_at(
-        out,
-        [pane.max[0] - 200.0, pane.min[1] + 14.0],
-        note,
-        10.0,
-        "normal",
-    );
+    text_at_end(out, [pane.max[0] - 6.0, pane.min[1] + 14.0], note, 10.0);
     let Some(extent) = Rect::around(data.iter().copied()) else {
         return;
     };
@@ -276,7 +170,7 @@ fn chart(out: &mut String, pane: Rect, label: &str, data: &[[f64; 2]], marks: &[
 /// Grid lines at a round step of the value, labelled.
 fn value_ticks(out: &mut String, axes: &Axes, pane: Rect) {
     let [y0, y1] = axes.y;
-    let step = round_scale(y1 - y0);
+    let step = tick_step(y1 - y0);
     if step <= 0.0 {
         return;
     }
@@ -302,6 +196,21 @@ fn value_ticks(out: &mut String, axes: &Axes, pane: Rect) {
         text_at(out, [pane.min[0] + 4.0, p[1] + 4.0], &tick, 10.0, "normal");
         v += step;
     }
+}
+
+/// The step of a chart's value ticks: the least of 1, 2 or 5 × 10^k that makes at
+/// most five steps over `extent`, so that the ticks' numbers keep a line apart.
+fn tick_step(extent: f64) -> f64 {
+    if !(extent.is_finite() && extent > 0.0) {
+        return 0.0;
+    }
+    let least = extent / 5.0;
+    let decade = 10f64.powf(least.log10().floor());
+    [1.0, 2.0, 5.0, 10.0]
+        .into_iter()
+        .map(|m| m * decade)
+        .find(|&v| v >= least)
+        .unwrap_or(10.0 * decade)
 }
 
 /// A line and the number at each position's crank angle.

@@ -8,6 +8,7 @@ use std::fmt::Write as _;
 use crate::geometry::{Pt, Rect};
 use crate::label::{Label, SCRIPT_SCALE, Script};
 use crate::layout::{LaidPolygon, ScaleBar};
+use crate::words::Lang;
 
 /// A4 width in CSS pixels (210 mm at 96 per inch).
 pub(crate) const PAGE_W: f64 = 793.7;
@@ -19,6 +20,23 @@ pub(crate) const FONT: f64 = 12.0;
 /// Label sizes on the sheet: the approximate measure, as no font engine is at hand.
 pub(crate) fn measure(label: &Label) -> [f64; 2] {
     label.approximate_size(FONT)
+}
+
+/// `text` cut with an ellipsis where it would run past `width` px at `size` px (the
+/// approximate measure).
+pub(crate) fn fit_text(text: &str, width: f64, size: f64) -> String {
+    let wide = |t: &str| Label::plain(t).approximate_size(size)[0] > width;
+    if !wide(text) {
+        return text.to_owned();
+    }
+    let mut kept = String::new();
+    for c in text.chars() {
+        if wide(&format!("{kept}{c}…")) {
+            break;
+        }
+        kept.push(c);
+    }
+    kept + "…"
 }
 
 /// A whole SVG document `height` px tall (A4 wide, sized in millimetres) around
@@ -59,6 +77,19 @@ pub(crate) fn hex([r, g, b]: [u8; 3]) -> String {
     format!("#{r:02x}{g:02x}{b:02x}")
 }
 
+/// The face of a text that holds Chinese: the Chinese face for all of it, Latin
+/// letters too, as a textbook sets a Chinese line. (resvg shapes a run in the first
+/// face and takes the characters it lacks from the next; where the Latin face joins
+/// letters into a ligature, as "fi", the run loses its Chinese.) Nothing for a text
+/// without Chinese, which takes the sheet's face.
+pub(crate) fn family(t: &str) -> &'static str {
+    if t.chars().any(|c| ('\u{2E80}'..='\u{FFEF}').contains(&c)) {
+        " font-family=\"Noto Sans CJK SC, Noto Sans SC, Microsoft YaHei, PingFang SC, sans-serif\""
+    } else {
+        ""
+    }
+}
+
 pub(crate) fn escape(t: &str) -> String {
     t.replace('&', "&amp;")
         .replace('<', "&lt;")
@@ -68,9 +99,22 @@ pub(crate) fn escape(t: &str) -> String {
 pub(crate) fn text_at(out: &mut String, at: Pt, t: &str, size: f64, weight: &str) {
     let _ = writeln!(
         out,
-        "<text x=\"{:.1}\" y=\"{:.1}\" font-size=\"{size}\" font-weight=\"{weight}\">{}</text>",
+        "<text x=\"{:.1}\" y=\"{:.1}\" font-size=\"{size}\" font-weight=\"{weight}\"{}>{}</text>",
         at[0],
         at[1],
+        family(t),
+        escape(t)
+    );
+}
+
+/// `t` in `size` px ending at `at` (right-aligned), in grey: a pane's note.
+pub(crate) fn text_at_end(out: &mut String, at: Pt, t: &str, size: f64) {
+    let _ = writeln!(
+        out,
+        "<text x=\"{:.1}\" y=\"{:.1}\" font-size=\"{size}\" fill=\"#555555\" text-anchor=\"end\"{}>{}</text>",
+        at[0],
+        at[1],
+        family(t),
         escape(t)
     );
 }
@@ -81,8 +125,9 @@ pub(crate) fn label_at(out: &mut String, label: &Label, min: Pt, colour: &str) {
     let baseline = min[1] + FONT * if scripted { 1.05 } else { 0.92 };
     let _ = write!(
         out,
-        "<text x=\"{:.1}\" y=\"{baseline:.1}\" font-size=\"{FONT}\" fill=\"{colour}\">",
-        min[0]
+        "<text x=\"{:.1}\" y=\"{baseline:.1}\" font-size=\"{FONT}\" fill=\"{colour}\"{}>",
+        min[0],
+        family(&label.text())
     );
     for r in &label.runs {
         let t = escape(&r.text);
@@ -191,15 +236,11 @@ pub(crate) const TITLE_H: f64 = 20.0;
 
 /// A laid-out polygon (velocity, acceleration or force) with its scale bar in
 /// `unit`.
-pub(crate) fn polygon(out: &mut String, unit: &str, laid: &LaidPolygon) {
+pub(crate) fn polygon(out: &mut String, unit: &str, laid: &LaidPolygon, lang: Lang) {
     if laid.px_per_unit <= 0.0 {
-        text_at(
-            out,
-            laid.pane.centre(),
-            "at rest: the polygon is a point",
-            FONT,
-            "normal",
-        );
+        let at = [laid.pane.min[0] + 6.0, laid.pane.centre()[1]];
+        let note = crate::words::sw!(lang, "sheet.at_rest");
+        text_at(out, at, &note, FONT, "normal");
         return;
     }
     for a in &laid.arrows {

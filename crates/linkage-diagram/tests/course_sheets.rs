@@ -8,6 +8,7 @@ mod common;
 use linkage::Kinematics;
 use linkage_diagram::course::CourseSheet;
 use linkage_diagram::svg_course::course_sheet;
+use linkage_diagram::words::Lang;
 
 #[test]
 fn every_scene_gets_a_course_sheet_with_its_positions_on_its_diagrams() {
@@ -27,11 +28,11 @@ fn every_scene_gets_a_course_sheet_with_its_positions_on_its_diagrams() {
             let sheet = CourseSheet::compute(&mut k, count, &[1, count - 1])
                 .unwrap_or_else(|e| panic!("{file}: {e}"));
             assert_eq!(sheet.positions.len(), count);
-            let svg = course_sheet(&sheet);
+            let svg = course_sheet(&sheet, Lang::English).pages.concat();
             assert!(!svg.contains("NaN") && !svg.contains("inf"), "{file}");
             for n in 0..count {
                 assert!(
-                    svg.contains(&format!(">{n}</text>")),
+                    svg.contains(&format!("<tspan>{n}</tspan></text>")),
                     "{file}: position {n}"
                 );
             }

@@ -14,6 +14,7 @@ use linkage::polygon::polygons;
 use linkage_diagram::course::CourseSheet;
 use linkage_diagram::svg::{Parts, Position, sheet};
 use linkage_diagram::svg_course::course_sheet;
+use linkage_diagram::words::Lang;
 
 /// The text a reader sees: what lies between `>` and `<` in the SVG, outside tags.
 fn texts(svg: &str) -> Vec<String> {
@@ -118,10 +119,17 @@ fn every_sheet_writes_four_significant_digits_at_most() {
                 forces: true,
                 ..Parts::default()
             };
-            check(&sheet(&position, parts), &what);
+            for lang in Lang::ALL {
+                check(&sheet(&position, parts, lang).pages.concat(), &what);
+            }
         }
         let course = CourseSheet::compute(&mut k, 12, &[1, 11]).expect("course sheet");
-        check(&course_sheet(&course), &format!("{file}: course sheet"));
+        for lang in Lang::ALL {
+            check(
+                &course_sheet(&course, lang).pages.concat(),
+                &format!("{file}: course sheet"),
+            );
+        }
     }
 }
 

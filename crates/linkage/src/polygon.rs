@@ -8,7 +8,7 @@ mod cam;
 mod parts;
 mod terms;
 
-pub use parts::{Component, Quantity, Symbol, Term, VectorEquation};
+pub use parts::{Component, Quantity, Symbol, Term, TermDirection, VectorEquation};
 
 use crate::model::Mechanism;
 use crate::motion::Solution;

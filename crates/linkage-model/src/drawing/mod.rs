@@ -52,7 +52,8 @@ impl Tool {
         Tool::Delete,
     ];
 
-    /// The tool's button label.
+    /// The tool's id in English (the control map's name; the app words it in the
+    /// user's language).
     pub fn label(self) -> &'static str {
         match self {
             Tool::Pivot => "Pivot",
@@ -64,35 +65,6 @@ impl Tool {
             Tool::Damper => "Damper",
             Tool::Force => "Force",
             Tool::Delete => "Delete",
-        }
-    }
-
-    /// What to do with it, in a line.
-    pub fn hint(self) -> &'static str {
-        match self {
-            Tool::Pivot => "click to place a ground pivot, or on a point to fix it",
-            Tool::Link => {
-                "click two points (or empty places) to join them; click a link, then a \
-                 place, to add a point to it"
-            }
-            Tool::Slider => {
-                "click a point to put a slider block there, on a horizontal ground guide \
-                 (the panel turns the guide or puts it on a link)"
-            }
-            Tool::Driver => "click the link that turns about a ground pivot: the input",
-            Tool::Move => {
-                "drag a point; it snaps to the 10 mm grid and into line with other points"
-            }
-            Tool::Spring => {
-                "click two points to join them by a spring (1000 N/m, unstretched as \
-                 drawn; the panel sets both)"
-            }
-            Tool::Damper => "click two points to join them by a damper (10 N s/m)",
-            Tool::Force => "click a point to put a force on it (100 N down; the panel sets it)",
-            Tool::Delete => {
-                "click a point or a link to delete it; springs, dampers and forces go in \
-                 the panel"
-            }
         }
     }
 }

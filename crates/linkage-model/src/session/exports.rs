@@ -1,7 +1,8 @@
 //! What the session writes for the user: the sweep as CSV and the sheet of the
-//! current position as SVG, and a cam joint as CSV and its profile as SVG.
+//! current position as A4 pages of SVG, and a cam joint as CSV and its profile as SVG.
 
 use linkage_diagram::cycle_table::{CycleTable, DEFAULT_STEP_DEG};
+use linkage_diagram::words::Lang;
 
 use super::Session;
 
@@ -18,9 +19,9 @@ impl Session {
     }
 
     /// The sheet of the current position (pose, polygons, tables; instant centres if
-    /// `centres`; the force polygons where the scene has them) as SVG: what `linkage
-    /// diagram` writes for the same scene and input.
-    pub fn sheet_svg(&self, centres: bool) -> String {
+    /// `centres`; the force polygons where the scene has them) as A4 pages of SVG:
+    /// what `linkage diagram` writes for the same scene and input.
+    pub fn sheet(&self, centres: bool, lang: Lang) -> linkage_diagram::pages::Sheet {
         let m = self.mechanism();
         let pose = self.pose();
         let found = linkage::instant_centres::instant_centres(m, pose);
@@ -36,7 +37,7 @@ impl Session {
             forces: true,
             ..Default::default()
         };
-        linkage_diagram::svg::sheet(&position, parts)
+        linkage_diagram::svg::sheet(&position, parts, lang)
     }
 }
 
@@ -61,23 +62,49 @@ impl Session {
 
     /// Cam joint `index`'s profile sheet as SVG (as `linkage cam --svg` draws one);
     /// `None` without that joint.
-    pub fn cam_svg(&self, index: usize) -> Option<String> {
+    pub fn cam_svg(&self, index: usize, lang: Lang) -> Option<String> {
         let c = self.curves().cams.get(index)?;
         let m = self.mechanism();
         let joint = m.cams.get(index)?;
         // The links by the names the user gave them, not the joint's own id
         // ("crank/bell_crank").
-        let title = format!(
-            "{}: cam on {}, follower {}",
-            m.name, m.links[joint.cam].name, m.links[joint.follower].name
+        let title = linkage_diagram::words::cam_joint_title(
+            lang,
+            &m.name,
+            &m.links[joint.cam].name,
+            &m.links[joint.follower].name,
         );
-        Some(linkage_diagram::svg_cam::cam_sheet(
+        let sheet = linkage_diagram::svg_cam::cam_sheet(
             &linkage_diagram::svg_cam::CamSheet {
                 title: &title,
                 points: &c.points,
                 base_radius_m: c.base_radius_m,
                 pressure_limit_rad: c.pressure_limit_rad,
             },
-        ))
+            lang,
+        );
+        // One page: the profile fits A4 by construction.
+        Some(sheet.first_page().to_owned())
+    }
+}
+
+impl Session {
+    /// The course sheet of the current mechanism in `lang`: `count` positions from
+    /// the start of its range, polygons at the positions numbered `chosen` (and the
+    /// force polygons at the first where the scene has force data), on A4 pages, as
+    /// `linkage course-sheet` draws it.
+    ///
+    /// # Errors
+    /// Fewer than 2 positions, a chosen number past the last position, or a position
+    /// that does not solve.
+    pub fn course_sheet(
+        &self,
+        count: usize,
+        chosen: &[usize],
+        lang: Lang,
+    ) -> Result<linkage_diagram::pages::Sheet, linkage::LinkageError> {
+        let mut k = self.kinematics().clone();
+        let sheet = linkage_diagram::course::CourseSheet::compute(&mut k, count, chosen)?;
+        Ok(linkage_diagram::svg_course::course_sheet(&sheet, lang))
     }
 }

@@ -24,7 +24,9 @@ pub fn unit_label_of(unit: linkage::scene::LengthUnit) -> &'static str {
 /// in the words of the force polygons' titles, not by the solver's dyad kind.
 pub fn group(label: &GroupLabel) -> String {
     match label {
-        GroupLabel::Dyad(d) => linkage_diagram::force_figure::dyad_words(d),
+        GroupLabel::Dyad(d) => {
+            linkage_diagram::words::dyad(linkage_diagram::words::Lang::English, d)
+        }
         GroupLabel::Numbered(g) => format!("group {g}"),
     }
 }

@@ -127,8 +127,62 @@ pub struct Term {
     pub magnitude_known: bool,
     /// Direction known before the group is solved.
     pub direction_known: bool,
-    /// The direction in words (`perp CD`, `along guide`, `C to D`).
-    pub direction: String,
+    /// Its direction as the table states it (in JSON as English words: `perp CD`,
+    /// `along guide`, `C to D`).
+    #[serde(serialize_with = "direction_text")]
+    pub direction: TermDirection,
+}
+
+/// The direction a polygon's table gives a term, as data: each edge words it in
+/// its reader's language (the sheets and the app through their catalogues).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum TermDirection {
+    /// From point `from` towards point `to` (a normal acceleration).
+    Towards {
+        /// Where it starts.
+        from: String,
+        /// Where it points.
+        to: String,
+    },
+    /// Perpendicular to the line through points `a` and `b`.
+    Perpendicular {
+        /// One point of the line.
+        a: String,
+        /// The other.
+        b: String,
+    },
+    /// Known from the groups solved before (a point's motion).
+    Known,
+    /// Known: the motion of the point of link `guide` that lies at `point`.
+    GuidePoint {
+        /// The guide link's name.
+        guide: String,
+        /// The point it lies under.
+        point: String,
+    },
+    /// The Coriolis term's: 2 ω of the guide × the relative velocity.
+    Coriolis,
+    /// Along the slider's guide.
+    AlongGuide,
+}
+
+/// The English words: `C to D`, `perp CD`, `known`, `along guide`.
+impl fmt::Display for TermDirection {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Towards { from, to } => write!(f, "{from} to {to}"),
+            Self::Perpendicular { a, b } => write!(f, "perp {a}{b}"),
+            Self::Known => f.write_str("known"),
+            Self::GuidePoint { guide, point } => write!(f, "known ({guide} point at {point})"),
+            Self::Coriolis => f.write_str("Coriolis: 2 omega_guide x v_rel"),
+            Self::AlongGuide => f.write_str("along guide"),
+        }
+    }
+}
+
+/// In JSON a direction is its English words, as scripts reading `linkage at` expect.
+fn direction_text<S: Serializer>(d: &TermDirection, out: S) -> Result<S::Ok, S::Error> {
+    out.collect_str(d)
 }
 
 /// One vector equation: sum of `lhs` = sum of `rhs`.

@@ -1,7 +1,7 @@
 //! The terms of a point's motion as the polygons write them: a point known from its
 //! link's pivot, a point relative to another of its link, a point riding a guide.
 
-use super::parts::{Component, Quantity, Symbol, Term, VectorEquation};
+use super::parts::{Component, Quantity, Symbol, Term, TermDirection, VectorEquation};
 use crate::dyad::GroupLabel;
 use crate::ids::LinkId;
 use crate::model::Mechanism;
@@ -12,7 +12,7 @@ pub(super) fn term(
     v: Vec2,
     magnitude_known: bool,
     direction_known: bool,
-    direction: String,
+    direction: TermDirection,
 ) -> Term {
     Term {
         symbol,
@@ -74,14 +74,20 @@ pub(super) fn known_point(
                         -r * l.omega_rad_s.powi(2),
                         true,
                         true,
-                        format!("{name} to {o}"),
+                        TermDirection::Towards {
+                            from: name.to_string(),
+                            to: o.to_string(),
+                        },
                     ),
                     term(
                         Symbol::new(true, name, None, Component::Tangential),
                         perp(&r) * l.alpha_rad_s2,
                         true,
                         true,
-                        format!("perp {o}{name}"),
+                        TermDirection::Perpendicular {
+                            a: o.to_string(),
+                            b: name.to_string(),
+                        },
                     ),
                 ]
             } else {
@@ -90,7 +96,10 @@ pub(super) fn known_point(
                     p.velocity,
                     true,
                     true,
-                    format!("perp {o}{name}"),
+                    TermDirection::Perpendicular {
+                        a: o.to_string(),
+                        b: name.to_string(),
+                    },
                 )]
             }
         }
@@ -101,7 +110,7 @@ pub(super) fn known_point(
                 v,
                 true,
                 true,
-                "known".into(),
+                TermDirection::Known,
             )]
         }
     }
@@ -126,14 +135,20 @@ pub(super) fn relative(
                 -r * omega * omega,
                 true,
                 true,
-                format!("{m_name} to {a_name}"),
+                TermDirection::Towards {
+                    from: m_name.to_string(),
+                    to: a_name.to_string(),
+                },
             ),
             term(
                 Symbol::new(true, m_name, about, Component::Tangential),
                 perp(&r) * alpha,
                 false,
                 true,
-                format!("perp {m_name}{a_name}"),
+                TermDirection::Perpendicular {
+                    a: m_name.to_string(),
+                    b: a_name.to_string(),
+                },
             ),
         ]
     } else {
@@ -142,7 +157,10 @@ pub(super) fn relative(
             perp(&r) * omega,
             false,
             true,
-            format!("perp {m_name}{a_name}"),
+            TermDirection::Perpendicular {
+                a: m_name.to_string(),
+                b: a_name.to_string(),
+            },
         )]
     }
 }
@@ -172,14 +190,17 @@ pub(super) fn riding(
                 on.acceleration,
                 true,
                 true,
-                format!("known ({} point at {m_name})", m.links[guide].name),
+                TermDirection::GuidePoint {
+                    guide: m.links[guide].name.clone(),
+                    point: m_name.to_string(),
+                },
             ));
             t.push(term(
                 Symbol::new(true, m_name, about, Component::Coriolis),
                 coriolis,
                 true,
                 true,
-                "Coriolis: 2 omega_guide x v_rel".into(),
+                TermDirection::Coriolis,
             ));
         }
         let component = if fixed {
@@ -192,7 +213,7 @@ pub(super) fn riding(
             pm.acceleration - on.acceleration - coriolis,
             false,
             true,
-            "along guide".into(),
+            TermDirection::AlongGuide,
         ));
     } else {
         if !fixed {
@@ -201,7 +222,10 @@ pub(super) fn riding(
                 on.velocity,
                 true,
                 true,
-                format!("known ({} point at {m_name})", m.links[guide].name),
+                TermDirection::GuidePoint {
+                    guide: m.links[guide].name.clone(),
+                    point: m_name.to_string(),
+                },
             ));
         }
         t.push(term(
@@ -209,7 +233,7 @@ pub(super) fn riding(
             v_rel,
             false,
             true,
-            "along guide".into(),
+            TermDirection::AlongGuide,
         ));
     }
     t

@@ -1,0 +1,162 @@
+//! Every sheet is print-ready: every page is A4 (210 × 297 mm), and on every page no
+//! text is drawn over another text or past the page's margins. The texts' boxes are
+//! measured as resvg lays them out with the sheets' own faces (the app's Latin face
+//! and the Chinese one), not by the approximate measure the layout used; checked on
+//! every shipped scene and example (the Chinese-named one among them), at inputs
+//! over its range (position sheets with every part, instant centres and force
+//! polygons) and its course sheet, in English and in Chinese.
+#![cfg(feature = "png")]
+
+mod common;
+
+use linkage::Kinematics;
+use linkage::force_polygon::force_polygons;
+use linkage::instant_centres::instant_centres;
+use linkage::kinetostatics::Kinetostatics;
+use linkage::polygon::polygons;
+use linkage_diagram::Rect;
+use linkage_diagram::course::CourseSheet;
+use linkage_diagram::pages::Sheet;
+use linkage_diagram::png::{Faces, TextBox};
+use linkage_diagram::svg::{Parts, Position, sheet};
+use linkage_diagram::svg_course::course_sheet;
+use linkage_diagram::words::Lang;
+
+const FONT: &[u8] = epaint_default_fonts::UBUNTU_LIGHT;
+/// A4 in the sheets' units (CSS px, 96 to the inch).
+const PAGE: [f64; 2] = [793.7, 1122.5];
+/// The margin no text may enter but the foot, px (the sheets keep 40).
+const EDGE: f64 = 15.0;
+/// Overlap allowed between two boxes, px: glyph outlines of neighbouring lines may
+/// touch by antialiasing's width.
+const SLACK: f64 = 0.5;
+
+/// The problems on one page: texts past the edge, texts over texts.
+fn problems(page: &str) -> Vec<String> {
+    thread_local! {
+        static FACES: Faces = Faces::new(FONT, "Ubuntu");
+    }
+    let boxes = FACES.with(|f| f.text_boxes(page)).expect("the page parses");
+    let inside = Rect {
+        min: [EDGE, EDGE],
+        max: [PAGE[0] - EDGE, PAGE[1] - EDGE],
+    };
+    let mut found: Vec<String> = boxes
+        .iter()
+        .filter(|b| !inside.contains_rect(&b.rect))
+        .map(|b| format!("{:?} runs past the page's margin at {:?}", b.text, b.rect))
+        .collect();
+    for (i, a) in boxes.iter().enumerate() {
+        for b in &boxes[i + 1..] {
+            if overlap(a, b) {
+                found.push(format!(
+                    "{:?} at {:?} overlaps {:?} at {:?}",
+                    a.text, a.rect, b.text, b.rect
+                ));
+            }
+        }
+    }
+    found
+}
+
+fn overlap(a: &TextBox, b: &TextBox) -> bool {
+    let w = a.rect.max[0].min(b.rect.max[0]) - a.rect.min[0].max(b.rect.min[0]);
+    let h = a.rect.max[1].min(b.rect.max[1]) - a.rect.min[1].max(b.rect.min[1]);
+    w > SLACK && h > SLACK
+}
+
+/// Every page is A4 and clean; returns the problems, each named by `what`.
+fn check(sheet: &Sheet, what: &str, out: &mut Vec<String>) {
+    for (i, page) in sheet.pages.iter().enumerate() {
+        let a4 = page.contains("width=\"210.0mm\" height=\"297.0mm\"");
+        if !a4 {
+            out.push(format!("{what}, page {}: not A4", i + 1));
+        }
+        out.extend(
+            problems(page)
+                .into_iter()
+                .map(|p| format!("{what}, page {}: {p}", i + 1)),
+        );
+    }
+}
+
+/// Every scene file and every example.
+fn all_scenes() -> Vec<(String, linkage::Mechanism)> {
+    let mut scenes = common::scenes();
+    let examples = format!("{}/../../docs/examples", env!("CARGO_MANIFEST_DIR"));
+    let mut files: Vec<_> = std::fs::read_dir(&examples)
+        .expect("examples")
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| p.extension().is_some_and(|x| x == "ron"))
+        .collect();
+    files.sort();
+    for p in files {
+        let text = std::fs::read_to_string(&p).expect("readable");
+        if let Ok(m) = linkage::Mechanism::from_ron(&text) {
+            scenes.push((p.display().to_string(), m));
+        }
+    }
+    scenes
+}
+
+fn position_sheet(k: &mut Kinematics, x: f64, lang: Lang) -> Option<Sheet> {
+    let forces = Kinetostatics::new(k)
+        .and_then(|mut ks| force_polygons(k, &mut ks, x))
+        .ok();
+    let s = k.solve(x).ok()?;
+    let equations = polygons(k, &s);
+    let centres = instant_centres(k.mechanism(), &s);
+    let position = Position {
+        mechanism: k.mechanism(),
+        solution: &s,
+        equations: &equations,
+        centres: Some(&centres),
+        forces: forces.as_ref(),
+    };
+    let parts = Parts {
+        centres: true,
+        forces: true,
+        ..Parts::default()
+    };
+    Some(sheet(&position, parts, lang))
+}
+
+#[test]
+fn every_page_of_every_sheet_is_a4_with_no_text_over_text() {
+    let mut found = Vec::new();
+    for (file, m) in all_scenes() {
+        let mut k = Kinematics::new(m).expect("kinematics");
+        for lang in Lang::ALL {
+            for x in common::inputs(&k, 3) {
+                if let Some(sheet) = position_sheet(&mut k, x, lang) {
+                    let what = format!("{file} at {:.1}° ({})", x.to_degrees(), lang.code());
+                    check(&sheet, &what, &mut found);
+                }
+            }
+            let course = CourseSheet::compute(&mut k, 12, &[1, 7]).expect("course sheet");
+            let what = format!("{file}: course sheet ({})", lang.code());
+            check(&course_sheet(&course, lang), &what, &mut found);
+        }
+    }
+    assert!(
+        found.is_empty(),
+        "{} problems:\n{}",
+        found.len(),
+        found.join("\n")
+    );
+}
+
+/// The check finds what it is for: two texts drawn on one spot, and a text past
+/// the page's edge.
+#[test]
+fn the_check_sees_an_overlap_and_a_text_off_the_page() {
+    let page = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"210.0mm\" height=\"297.0mm\" \
+                viewBox=\"0 0 793.7 1122.5\">\
+                <text x=\"100\" y=\"100\" font-size=\"12\">counter-clockwise</text>\
+                <text x=\"150\" y=\"102\" font-size=\"12\">solved</text>\
+                <text x=\"760\" y=\"300\" font-size=\"12\">cut at the edge</text></svg>";
+    let found = problems(page);
+    assert_eq!(found.len(), 2, "{found:#?}");
+    assert!(found.iter().any(|p| p.contains("overlaps")));
+    assert!(found.iter().any(|p| p.contains("past the page")));
+}
