@@ -23,6 +23,8 @@ pub enum FileAction {
     CoursePng,
     /// The course sheet as one PDF.
     CoursePdf,
+    /// The course-design report (its window's choices) as one PDF.
+    ReportPdf,
     /// Write a cam joint (by its index) over its turn as CSV.
     CamCsv(usize),
     /// Write a cam joint's profile sheet as SVG.
@@ -44,6 +46,7 @@ impl FileAction {
             Self::CourseSvg | Self::CoursePng | Self::CoursePdf => {
                 crate::i18n::tr!("action.course", format = self.file_type().1)
             }
+            Self::ReportPdf => crate::i18n::tr!("action.report"),
             Self::CamCsv(_) => crate::i18n::tr!("action.cam_csv"),
             Self::CamSvg(_) => crate::i18n::tr!("action.cam_svg"),
             Self::CamDxf(_) => crate::i18n::tr!("action.cam_dxf"),
@@ -57,7 +60,7 @@ impl FileAction {
             Self::ExportCsv | Self::CamCsv(_) => ("CSV table", "csv"),
             Self::ExportSheet | Self::CamSvg(_) | Self::CourseSvg => ("SVG drawing", "svg"),
             Self::ExportSheetPng | Self::CoursePng => ("PNG picture", "png"),
-            Self::ExportSheetPdf | Self::CoursePdf => ("PDF document", "pdf"),
+            Self::ExportSheetPdf | Self::CoursePdf | Self::ReportPdf => ("PDF document", "pdf"),
             Self::CamDxf(_) => ("DXF drawing", "dxf"),
         }
     }

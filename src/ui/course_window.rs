@@ -49,6 +49,15 @@ pub fn window(ctx: &egui::Context, st: &mut AppState, files: &mut Files, frame: 
                 ui.colored_label(ui.visuals().warn_fg_color, why);
             }
             ui.horizontal(|ui| {
+                let r = ui.add_enabled(check.is_ok(), egui::Button::new(tr!("course.report")));
+                let r = r.on_hover_text(tr!("course.report_hint"));
+                st.controls
+                    .note(ui, ControlKind::FileButton, "Course report…", &r);
+                if r.clicked() {
+                    chosen = Some(FileAction::ReportPdf);
+                }
+            });
+            ui.horizontal(|ui| {
                 for (id, action) in [
                     ("Course SVG…", FileAction::CourseSvg),
                     ("Course PNG…", FileAction::CoursePng),

@@ -232,7 +232,7 @@ impl Files {
                     })
                 })
             }
-            FileAction::ExportSheetPdf | FileAction::CoursePdf => {
+            FileAction::ExportSheetPdf | FileAction::CoursePdf | FileAction::ReportPdf => {
                 let printed = pages_of(st, action)
                     .and_then(|sheet| crate::web::print_pages(&sheet).map_err(WriteError::Browser));
                 if printed.is_ok() {
@@ -316,6 +316,7 @@ fn default_name(st: &AppState, action: FileAction) -> String {
         FileAction::CourseSvg | FileAction::CoursePng | FileAction::CoursePdf => {
             format!("{stem}_course.{}", action.file_type().1)
         }
+        FileAction::ReportPdf => format!("{stem}_report.pdf"),
     }
 }
 
@@ -373,7 +374,9 @@ fn contents(st: &AppState, action: FileAction) -> Result<Vec<Vec<u8>>, WriteErro
             .map(String::into_bytes)
             .collect()),
         FileAction::ExportSheetPng | FileAction::CoursePng => sheet_png(st, action),
-        FileAction::ExportSheetPdf | FileAction::CoursePdf => sheet_pdf(st, action).map(one),
+        FileAction::ExportSheetPdf | FileAction::CoursePdf | FileAction::ReportPdf => {
+            sheet_pdf(st, action).map(one)
+        }
         FileAction::CamCsv(i) => st
             .session
             .cam_csv(i)
@@ -424,16 +427,19 @@ fn sheet(st: &AppState) -> Sheet {
         .sheet(st.view.layers.centres, crate::ui::words::lang())
 }
 
-/// The pages `action` exports: the position's sheet, or the course sheet of its
-/// window's choices.
+/// The pages `action` exports: the position's sheet, or the course sheet or the
+/// course-design report of the course window's choices.
 fn pages_of(st: &AppState, action: FileAction) -> Result<Sheet, WriteError> {
+    let lang = crate::ui::words::lang();
+    let course = || st.course.chosen_numbers().map_err(WriteError::Course);
     match action {
-        FileAction::CourseSvg | FileAction::CoursePng | FileAction::CoursePdf => {
-            let chosen = st.course.chosen_numbers().map_err(WriteError::Course)?;
-            let lang = crate::ui::words::lang();
+        FileAction::CourseSvg | FileAction::CoursePng | FileAction::CoursePdf => Ok(st
+            .session
+            .course_sheet(st.course.positions, &course()?, lang)?),
+        FileAction::ReportPdf => {
             Ok(st
                 .session
-                .course_sheet(st.course.positions, &chosen, lang)?)
+                .course_report(st.course.positions, &course()?, lang)?)
         }
         _ => Ok(sheet(st)),
     }

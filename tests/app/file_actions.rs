@@ -385,6 +385,25 @@ fn the_course_sheet_window_exports_the_sheet_asked_for() {
     );
     let text = String::from_utf8_lossy(&bytes);
     assert!(text.contains(&format!("/Count {pages}")), "{pages} pages");
+    // The course-design report from the same choices.
+    click(&mut h, "Course design report (PDF)…");
+    let asked = dialog.asked.lock().expect("not poisoned").clone();
+    assert!(
+        asked.iter().any(|a| a.action == FileAction::ReportPdf),
+        "{}",
+        status(&h)
+    );
+    let bytes = std::fs::read(&path).expect("the report was written");
+    let pages = h
+        .state()
+        .state
+        .session
+        .course_report(6, &[1, 4], linkage_diagram::words::Lang::English)
+        .expect("the report")
+        .pages
+        .len();
+    let text = String::from_utf8_lossy(&bytes);
+    assert!(text.contains(&format!("/Count {pages}")), "{pages} pages");
     std::fs::remove_dir_all(dir).expect("clean up");
 }
 

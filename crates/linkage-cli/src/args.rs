@@ -219,6 +219,17 @@ pub(crate) enum Command {
         #[command(flatten)]
         args: CourseArgs,
     },
+    /// The course-design report (课程设计说明书): the task's data, the structure
+    /// (degrees of freedom, Assur groups), the positions table, the plan, the s–v–a
+    /// diagrams, the polygons with their vector equations at chosen positions, the
+    /// force polygons, the flywheel, the cams and the results, on A4 pages (--pdf;
+    /// --lang zh-CN for Chinese).
+    CourseReport {
+        #[command(flatten)]
+        scene: SceneArgs,
+        #[command(flatten)]
+        args: CourseArgs,
+    },
     /// The timing diagram: every output (links pinned to ground, sliders) against the
     /// main shaft's angle as a share of its stroke, with its dwells (CSV or JSON;
     /// --svg and --png write the sheet).

@@ -89,6 +89,7 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
             lang,
         ),
         Command::CourseSheet { scene, args } => course::run(&scene, &args),
+        Command::CourseReport { scene, args } => course::report(&scene, &args),
         Command::Timing {
             scene,
             samples,

@@ -27,6 +27,7 @@
 pub mod cam_dxf;
 pub mod construction;
 pub mod course;
+pub mod course_report;
 pub mod cycle_table;
 pub mod figure;
 pub mod force_figure;
@@ -49,6 +50,7 @@ pub mod svg_course;
 mod svg_draw;
 mod svg_forces;
 mod svg_plan;
+pub mod svg_report;
 pub mod svg_timing;
 pub mod words;
 

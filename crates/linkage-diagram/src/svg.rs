@@ -94,9 +94,7 @@ pub fn sheet(pos: &Position<'_>, parts: Parts, lang: Lang) -> Sheet {
     }
     polygons(&mut pages, pos, parts, sizes, lang);
     if parts.table {
-        for q in [Quantity::Velocity, Quantity::Acceleration] {
-            table(&mut pages, pos.equations, q, lang);
-        }
+        equation_tables(&mut pages, pos.equations, lang);
     }
     if parts.forces
         && let Some(fp) = pos.forces
@@ -204,6 +202,13 @@ fn pose(pages: &mut Pages, laid: &LaidPose, lang: Lang) {
         });
         let top = pages.place(20.0);
         label_at(pages.out(), &text, [MARGIN, top], "#000000");
+    }
+}
+
+/// The velocity and then the acceleration equations' tables.
+pub(crate) fn equation_tables(pages: &mut Pages, equations: &[VectorEquation], lang: Lang) {
+    for q in [Quantity::Velocity, Quantity::Acceleration] {
+        table(pages, equations, q, lang);
     }
 }
 

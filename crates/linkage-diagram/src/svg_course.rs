@@ -28,10 +28,6 @@ const BLUE: &str = "#1e5aaa";
 /// The sheet in `lang`, on as many A4 pages as it needs: the plan and the diagrams
 /// on the first, each chosen position's polygons whole on a page.
 pub fn course_sheet(c: &CourseSheet, lang: Lang) -> Sheet {
-    let sizes = Sizes {
-        font_px: FONT,
-        ..Sizes::default()
-    };
     let m = &c.mechanism;
     let title = sw!(
         lang,
@@ -42,24 +38,39 @@ pub fn course_sheet(c: &CourseSheet, lang: Lang) -> Sheet {
     );
     let mut pages = Pages::new(&title);
     heading(&mut pages, &title, 16.0);
+    course_body(&mut pages, c, lang, false);
+    pages.finish()
+}
+
+/// The sheet's content from the plan on: the plan, the diagrams, each chosen
+/// position's polygons (with their vector-equation tables where `tables`), and the
+/// force polygons at the first chosen position.
+pub(crate) fn course_body(pages: &mut Pages, c: &CourseSheet, lang: Lang, tables: bool) {
+    let sizes = Sizes {
+        font_px: FONT,
+        ..Sizes::default()
+    };
+    let m = &c.mechanism;
     let top = pages.place(PLAN_H + 10.0);
     let pane = Rect::from_min_size([MARGIN, top], WIDTH, PLAN_H);
     let plan_title = sw!(lang, "course.plan");
     crate::svg_plan::plan(pages.out(), m, &c.positions, pane, sizes, &plan_title);
     if let Some(o) = &c.output {
-        diagrams(&mut pages, o, &c.positions, lang);
+        diagrams(pages, o, &c.positions, lang);
     }
     for chosen in &c.chosen {
         let s = &c.positions[chosen.number];
-        chosen_polygons(&mut pages, m, s, chosen, sizes, lang);
+        chosen_polygons(pages, m, s, chosen, sizes, lang);
+        if tables {
+            crate::svg::equation_tables(pages, &chosen.equations, lang);
+        }
     }
     if let (Some(fp), Some(first)) = (&c.forces, c.chosen.first()) {
         pages.keep(2.0 * 30.0 + 310.0);
         let text = sw!(lang, "course.position_forces", n = first.number);
-        heading(&mut pages, &text, 14.0);
-        crate::svg_forces::forces(&mut pages, m, fp, sizes, lang);
+        heading(pages, &text, 14.0);
+        crate::svg_forces::forces(pages, m, fp, sizes, lang);
     }
-    pages.finish()
 }
 
 /// The width between the margins, px.

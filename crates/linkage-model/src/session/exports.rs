@@ -108,3 +108,22 @@ impl Session {
         Ok(linkage_diagram::svg_course::course_sheet(&sheet, lang))
     }
 }
+
+impl Session {
+    /// The course-design report of the current mechanism in `lang`, with the course
+    /// sheet's `count` positions and `chosen` ones, as `linkage course-report` writes
+    /// it.
+    ///
+    /// # Errors
+    /// What the course sheet and the cycle's analysis refuse.
+    pub fn course_report(
+        &self,
+        count: usize,
+        chosen: &[usize],
+        lang: Lang,
+    ) -> Result<linkage_diagram::pages::Sheet, linkage::LinkageError> {
+        let mut k = self.kinematics().clone();
+        let data = linkage_diagram::course_report::CourseReport::compute(&mut k, count, chosen)?;
+        Ok(linkage_diagram::svg_report::course_report(&data, lang))
+    }
+}
