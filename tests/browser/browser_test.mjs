@@ -1,8 +1,8 @@
 // Real-browser test of the web demo: Debian's Chromium, headless, driven by
 // playwright-core (no browser download). Checks: no console errors, a canvas that is
 // not blank, that dragging the crank slider changes the picture, that Save and Export
-// download the scene and the sweep CSV, that Export diagram downloads the sheet that
-// `linkage diagram` writes for the same scene and crank angle (the CLI named by
+// download the scene and the sweep CSV, that Export diagram downloads the sheet's first
+// A4 page as `linkage diagram --svg` writes it for the same scene and crank angle (the CLI named by
 // LINKAGE_CLI, built by scripts/browser_test.sh) and PNG… a 150 dpi PNG of it, and
 // that Open uploads a scene file (the saved one, then another scene, which changes
 // the picture), and that the uploaded scene survives a reload and opens from the
@@ -15,7 +15,9 @@
 // every shipped scene opened by its link and drawn, with its edit's CPU measured.
 // Usage: node browser_test.mjs http://127.0.0.1:PORT/
 import { execFileSync } from 'node:child_process';
-import { readFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { EDIT_CPU_HEADING, appState, build, colouredIn, decode, differing, editCpuRow, launchChromium, nonBackground, quiet, settledControl, shippedScenes, until, wrongBuild } from './common.mjs';
 import { framesKeptComing, framesSpanned, slicesKeptTheirBudget } from './frames.mjs';
 
@@ -204,11 +206,17 @@ async function filesLinksEditorAndSearch() {
     if (sheet.name !== `die_cutter_at_${deg.toFixed(0)}deg.svg`) fail(`diagram download named ${sheet.name} at ${deg}°`);
     const cli = process.env.LINKAGE_CLI ?? 'target/debug/linkage';
     const scene = new URL('../../assets/scenes/die_cutter.ron', import.meta.url).pathname;
+    // The sheet is A4 pages, a file each: the first download is the first page, as
+    // the CLI writes it to the file named (the others to name-2.svg, …).
     let expected = '';
+    const dir = mkdtempSync(join(tmpdir(), 'linkage-sheet-'));
     try {
-      expected = execFileSync(cli, ['diagram', scene, '--input-deg', String(deg)], { encoding: 'utf8' });
+      execFileSync(cli, ['diagram', scene, '--input-deg', String(deg), '--svg', join(dir, 'sheet.svg')]);
+      expected = readFileSync(join(dir, 'sheet.svg'), 'utf8');
     } catch (e) {
       fail(`linkage diagram (${cli}) did not run: ${e.message}`);
+    } finally {
+      rmSync(dir, { recursive: true, force: true });
     }
     if (expected && sheet.text !== expected) {
       const a = sheet.text.split('\n'), b = expected.split('\n');
@@ -221,15 +229,36 @@ async function filesLinksEditorAndSearch() {
   let pngWidth = 0;
   if (!pngButton) fail('no PNG export button');
   else {
-    const [dl] = await Promise.all([
-      page.waitForEvent('download', { timeout: 20000 }),
-      page.mouse.click(0.5 * (pngButton.rect[0] + pngButton.rect[2]), 0.5 * (pngButton.rect[1] + pngButton.rect[3])),
-    ]);
-    const bytes = readFileSync(await dl.path());
-    if (!dl.suggestedFilename().endsWith('deg.png')) fail(`PNG download named ${dl.suggestedFilename()}`);
+    // A picture a page, each drawn when its image has loaded: in any order. The first
+    // page is the one named like the sheet.
+    const downloads = [];
+    const take = (d) => downloads.push(d);
+    page.on('download', take);
+    await page.mouse.click(0.5 * (pngButton.rect[0] + pngButton.rect[2]), 0.5 * (pngButton.rect[1] + pngButton.rect[3]));
+    const first = () => downloads.find((d) => d.suggestedFilename().endsWith('deg.png'));
+    await until(async () => first() !== undefined, () => page.mouse.move(700, 6));
+    page.off('download', take);
+    const dl = first() ?? downloads[0];
+    if (!dl) fail('no PNG download');
+    const bytes = dl ? readFileSync(await dl.path()) : Buffer.alloc(0);
+    if (dl && !dl.suggestedFilename().endsWith('deg.png')) fail(`PNG download named ${dl.suggestedFilename()}`);
     if (bytes.subarray(1, 4).toString() !== 'PNG') fail('the PNG download is no PNG');
     else pngWidth = bytes.readUInt32BE(16);
     if (Math.abs(pngWidth - 1240) > 1) fail(`the PNG sheet is ${pngWidth} px wide, not 1240`);
+  }
+  // PDF…: the pages printed through a hidden frame, A4 without margins; the browser's
+  // print dialog saves the PDF (headless Chromium prints nowhere).
+  const pdfButton = controls.controls.entries.find((e) => e.kind === 'FileButton' && e.label === 'PDF…');
+  let printedPages = 0;
+  if (!pdfButton) fail('no PDF export button');
+  else {
+    await page.mouse.click(0.5 * (pdfButton.rect[0] + pdfButton.rect[2]), 0.5 * (pdfButton.rect[1] + pdfButton.rect[3]));
+    await until(async () => (await page.$$('iframe')).length > 0, () => page.mouse.move(700, 6));
+    const doc = await page.evaluate(() => [...document.querySelectorAll('iframe')].map((f) => f.srcdoc).pop() ?? '');
+    printedPages = (doc.match(/class="page"/g) ?? []).length;
+    if (!doc.includes('@page { size: A4; margin: 0 }') || printedPages < 2) fail(`the print frame holds ${printedPages} pages: ${doc.slice(0, 200)}`);
+    const said = (await appState(page)).status ?? '';
+    if (!said.includes('Save as PDF')) fail(`after PDF… the status says ${said}`);
   }
   const saved = await download(SAVE);
   if (saved.name !== 'die_cutter.ron') fail(`scene download named ${saved.name}`);
@@ -519,7 +548,7 @@ async function filesLinksEditorAndSearch() {
   }
   return {
     csv_download_rows: csvRows, scene_download_bytes: saved.text.length,
-    sheet_download_bytes: sheetBytes, sheet_png_width: pngWidth,
+    sheet_download_bytes: sheetBytes, sheet_png_width: pngWidth, printed_pages: printedPages,
     pixels_changed_by_upload: reopened, link_chars: page.url().length,
     editor_drag_frames_ms: dragFrames,
     built_four_bar_joints: built.joints?.length ?? 0,

@@ -48,6 +48,7 @@ pub(crate) struct Pages {
     done: Vec<String>,
     body: String,
     y: f64,
+    sections: usize,
 }
 
 impl Pages {
@@ -58,6 +59,7 @@ impl Pages {
             done: Vec::new(),
             body: String::new(),
             y: MARGIN,
+            sections: 0,
         }
     }
 
@@ -84,6 +86,12 @@ impl Pages {
         if self.y + height > BOTTOM && self.y > MARGIN {
             self.new_page();
         }
+    }
+
+    /// The number of the next numbered section (1 for the first).
+    pub(crate) fn next_section(&mut self) -> usize {
+        self.sections += 1;
+        self.sections
     }
 
     /// Ends the current page; the next block starts at the top of a new one.

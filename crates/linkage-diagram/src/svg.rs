@@ -18,8 +18,8 @@ use crate::polygon_figure::{self, PolygonFigure, unit};
 use crate::pose_figure::PoseFigure;
 use crate::pose_layout::{LaidPose, layout_pose};
 use crate::svg_draw::{
-    FONT, MARGIN, PAGE_W, circle, frame, label_at, leaders_and_label, line, measure, polygon,
-    polygon_shape, scale_bar, text_at, titled_pane,
+    FONT, MARGIN, PAGE_W, circle, fit_text, frame, label_at, leaders_and_label, line, measure,
+    polygon, polygon_shape, scale_bar, text_at, titled_pane,
 };
 use crate::words::{self, Lang, sw};
 
@@ -267,8 +267,11 @@ fn table(pages: &mut Pages, equations: &[VectorEquation], quantity: Quantity, la
                 "#000000",
             );
             y += row;
-            for (x, cell) in columns[1..].iter().zip(&cells) {
-                text_at(out, [MARGIN + x, y], cell, FONT, "normal");
+            // Each cell cut to its column, the last to the page's margin.
+            let ends = columns[2..].iter().copied().chain([WIDTH]);
+            for ((x, end), cell) in columns[1..].iter().zip(ends).zip(&cells) {
+                let fitted = fit_text(cell, end - x - 8.0, FONT);
+                text_at(out, [MARGIN + x, y], &fitted, FONT, "normal");
             }
         }
     }

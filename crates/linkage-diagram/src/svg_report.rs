@@ -21,7 +21,12 @@ const WIDTH: f64 = PAGE_W - 2.0 * MARGIN;
 /// The report in `lang`.
 pub fn course_report(r: &CourseReport, lang: Lang) -> Sheet {
     let m = &r.course.mechanism;
-    let title = format!("{}: {}", sw!(lang, "report.title"), m.name);
+    let title = sw!(
+        lang,
+        "report.footer",
+        title = sw!(lang, "report.title"),
+        name = m.name
+    );
     let mut pages = Pages::new(&title);
     heading(&mut pages, &sw!(lang, "report.title"), 22.0);
     heading(
@@ -37,6 +42,13 @@ pub fn course_report(r: &CourseReport, lang: Lang) -> Sheet {
     cams(&mut pages, r, lang);
     results(&mut pages, r, lang);
     pages.finish()
+}
+
+/// A numbered section's heading: "3 运动分析与力分析", numbered in the order the
+/// report holds them (a scene without cams has no cam section to count).
+fn section(pages: &mut Pages, title: &str) {
+    let n = pages.next_section();
+    heading(pages, &format!("{n} {title}"), 14.0);
 }
 
 /// A line of text, cut to the page's width.
@@ -78,7 +90,7 @@ fn table(pages: &mut Pages, columns: &[f64], head: &[String], rows: &[Vec<String
 
 /// §1: the crank speed, the links and the scene's notes.
 fn task(pages: &mut Pages, r: &CourseReport, lang: Lang) {
-    heading(pages, &sw!(lang, "report.task"), 14.0);
+    section(pages, &sw!(lang, "report.task"));
     let omega = r.course.mechanism.driver.speed_rad_s;
     let rpm = omega * 60.0 / std::f64::consts::TAU;
     let speed = sw!(
@@ -135,7 +147,7 @@ fn wrap(text: &str, chars: usize) -> Vec<String> {
 
 /// §2: the degrees of freedom and the Assur groups.
 fn structure(pages: &mut Pages, r: &CourseReport, lang: Lang) {
-    heading(pages, &sw!(lang, "report.structure"), 14.0);
+    section(pages, &sw!(lang, "report.structure"));
     let f = r.mobility;
     let dof = sw!(
         lang,
@@ -168,7 +180,7 @@ fn structure(pages: &mut Pages, r: &CourseReport, lang: Lang) {
 /// §3: the positions table, then the course sheet's figures and tables.
 fn kinematics(pages: &mut Pages, r: &CourseReport, lang: Lang) {
     pages.new_page();
-    heading(pages, &sw!(lang, "report.kinematics"), 14.0);
+    section(pages, &sw!(lang, "report.kinematics"));
     if let Some((name, is_angle)) = &r.output {
         let of = sw!(
             lang,
@@ -177,32 +189,38 @@ fn kinematics(pages: &mut Pages, r: &CourseReport, lang: Lang) {
             count = r.positions.len()
         );
         line(pages, &of);
-        let head = [
-            sw!(lang, "report.col_position"),
-            sw!(lang, "report.col_crank"),
-            sw!(lang, "report.col_s"),
-            sw!(lang, "report.col_v"),
-            sw!(lang, "report.col_a"),
-        ];
         let units: [&str; 3] = if *is_angle {
             ["rad", "rad/s", "rad/s²"]
         } else {
             ["m", "m/s", "m/s²"]
         };
-        let scale: [f64; 3] = std::array::from_fn(|i| {
-            r.positions
+        // One unit a column, its prefix chosen by the column's largest value.
+        let columns: [Column; 3] = std::array::from_fn(|i| {
+            let scale = r
+                .positions
                 .iter()
                 .map(|p| p.s_v_a[i].abs())
-                .fold(0.0, f64::max)
+                .fold(0.0, f64::max);
+            Column::new(scale, units[i], *is_angle && i == 0)
         });
+        let names = [
+            sw!(lang, "report.col_s"),
+            sw!(lang, "report.col_v"),
+            sw!(lang, "report.col_a"),
+        ];
+        let mut head = vec![
+            sw!(lang, "report.col_position"),
+            sw!(lang, "report.col_crank"),
+        ];
+        for (c, key) in columns.iter().zip(names) {
+            head.push(format!("{key} ({})", c.unit));
+        }
         let rows: Vec<Vec<String>> = r
             .positions
             .iter()
             .map(|p| {
                 let mut row = vec![p.number.to_string(), degrees(p.crank_deg)];
-                for i in 0..3 {
-                    row.push(value(p.s_v_a[i], scale[i], units[i], *is_angle && i == 0));
-                }
+                row.extend(columns.iter().zip(p.s_v_a).map(|(c, v)| c.cell(v)));
                 row
             })
             .collect();
@@ -211,19 +229,44 @@ fn kinematics(pages: &mut Pages, r: &CourseReport, lang: Lang) {
     crate::svg_course::course_body(pages, &r.course, lang, true);
 }
 
-/// A table's value: a rocker's angle in degrees, the rest in SI with a prefix, the
-/// round-off of `scale` as 0.
-fn value(v: f64, scale: f64, unit: &str, angle: bool) -> String {
-    if angle {
-        return degrees(v.to_degrees());
+/// A column of the positions table: its unit with the prefix its largest value takes
+/// (a rocker's angle in degrees), and the size its round-off is judged against.
+struct Column {
+    unit: String,
+    factor: f64,
+    scale: f64,
+}
+
+impl Column {
+    fn new(scale: f64, unit: &str, degrees: bool) -> Self {
+        if degrees {
+            return Self {
+                unit: "°".into(),
+                factor: 180.0 / std::f64::consts::PI,
+                scale,
+            };
+        }
+        let p = crate::numbers::Prefix::for_magnitude(scale);
+        Self {
+            unit: p.unit(unit),
+            factor: p.factor,
+            scale,
+        }
     }
-    crate::numbers::si_beside(v, scale, unit)
+
+    /// `v` in the column's unit, four significant digits, its round-off as 0.
+    fn cell(&self, v: f64) -> String {
+        if v.abs() <= self.scale * crate::numbers::ROUND_OFF {
+            return "0".into();
+        }
+        significant(v * self.factor, 4)
+    }
 }
 
 /// §4: the flywheel sized by the energy method.
 fn flywheel(pages: &mut Pages, r: &CourseReport, lang: Lang) {
     pages.keep(8.0 * ROW);
-    heading(pages, &sw!(lang, "report.flywheel"), 14.0);
+    section(pages, &sw!(lang, "report.flywheel"));
     let Some(f) = &r.flywheel else {
         line(pages, &sw!(lang, "report.no_flywheel"));
         return;
@@ -242,7 +285,7 @@ fn flywheel(pages: &mut Pages, r: &CourseReport, lang: Lang) {
         vec![sw!(lang, "report.delta"), significant(REPORT_DELTA, 4)],
         vec![
             sw!(lang, "report.flywheel_inertia"),
-            si(f.flywheel_kg_m2, "kg·m²"),
+            inertia(f.flywheel_kg_m2),
         ],
     ];
     table(pages, &[0.0, 420.0], &[], &rows);
@@ -254,7 +297,7 @@ fn cams(pages: &mut Pages, r: &CourseReport, lang: Lang) {
         return;
     }
     pages.keep(6.0 * ROW);
-    heading(pages, &sw!(lang, "report.cams"), 14.0);
+    section(pages, &sw!(lang, "report.cams"));
     let mut rows = Vec::new();
     for c in &r.cams {
         let [angle, at] = c.largest_pressure;
@@ -282,7 +325,7 @@ fn cams(pages: &mut Pages, r: &CourseReport, lang: Lang) {
 /// §6: the results.
 fn results(pages: &mut Pages, r: &CourseReport, lang: Lang) {
     pages.keep(10.0 * ROW);
-    heading(pages, &sw!(lang, "report.results"), 14.0);
+    section(pages, &sw!(lang, "report.results"));
     let a = &r.analysis;
     let none = || sw!(lang, "report.none");
     let mut rows = vec![
@@ -321,7 +364,7 @@ fn results(pages: &mut Pages, r: &CourseReport, lang: Lang) {
     if let Some(f) = &r.flywheel {
         rows.push(vec![
             sw!(lang, "report.flywheel_inertia"),
-            si(f.flywheel_kg_m2, "kg·m²"),
+            inertia(f.flywheel_kg_m2),
         ]);
     }
     let head = [
@@ -341,4 +384,10 @@ fn grashof(lang: Lang, class: GrashofClass) -> String {
         GrashofClass::ChangePoint => sw!(lang, "grashof.change_point"),
         GrashofClass::TripleRocker => sw!(lang, "grashof.triple_rocker"),
     }
+}
+
+/// A moment of inertia, kg·m², in plain digits: a prefix would fall on the kilogram
+/// (40.25 kkg·m²).
+fn inertia(j: f64) -> String {
+    format!("{} kg·m²", significant(j, 4))
 }

@@ -101,6 +101,11 @@ pub fn dyad(lang: Lang, d: &DyadLabel) -> String {
 /// A force polygon's stage: its group and its links' numbers, or the crank.
 pub fn stage_title(lang: Lang, stage: &StagePolygon, m: &Mechanism) -> String {
     let numbers = stage_numbers(stage, m);
+    // A Chinese list takes the enumeration comma: 构件 3、4.
+    let numbers = match lang {
+        Lang::English => numbers,
+        Lang::Chinese => numbers.replace(", ", "、"),
+    };
     match &stage.stage {
         Stage::Group { dyad: d, .. } if d.kind != DyadKind::CamFollower => {
             sw!(
