@@ -126,6 +126,14 @@ impl CourseReport {
                 .map(|e| e.group)
                 .collect()
         });
+        // Only where the scene gives masses or loads: a kinematics scene has no torque
+        // to even out (its sizing would be a flywheel of 0).
+        let loaded = linkage::kinetostatics::Kinetostatics::new(k).is_ok();
+        let flywheel = if loaded {
+            size_flywheel(k, REPORT_DELTA).ok()
+        } else {
+            None
+        };
         let m = k.mechanism();
         Ok(Self {
             output: main.map(|o| (o.name().to_string(), o.is_angle())),
@@ -137,7 +145,7 @@ impl CourseReport {
             mobility: mobility(m),
             groups,
             cams: m.cams.iter().map(cam_figures).collect(),
-            flywheel: size_flywheel(k, REPORT_DELTA).ok(),
+            flywheel,
             analysis,
             course,
         })
