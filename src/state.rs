@@ -152,6 +152,10 @@ pub struct CourseOptions {
     pub open: bool,
     /// Positions over the crank's range (12, as the course asks).
     pub positions: usize,
+    /// Whether position 0 is at the start of the crank's range.
+    pub from_start: bool,
+    /// Otherwise the crank angle of position 0, degrees.
+    pub first_deg: f64,
     /// The positions drawn with their polygons, as typed ("1, 7").
     pub chosen: String,
 }
@@ -161,12 +165,23 @@ impl Default for CourseOptions {
         Self {
             open: false,
             positions: linkage_diagram::course::DEFAULT_POSITIONS,
+            from_start: true,
+            first_deg: 0.0,
             chosen: "1, 7".into(),
         }
     }
 }
 
 impl CourseOptions {
+    /// What the window asks for, or what is wrong with its text.
+    pub fn choice(&self) -> Result<crate::session::CourseChoice, String> {
+        Ok(crate::session::CourseChoice {
+            positions: self.positions,
+            first_deg: (!self.from_start).then_some(self.first_deg),
+            chosen: self.chosen_numbers()?,
+        })
+    }
+
     /// The chosen positions' numbers, or what is wrong with the text (with the
     /// valid range).
     pub fn chosen_numbers(&self) -> Result<Vec<usize>, String> {

@@ -39,6 +39,15 @@ pub fn window(ctx: &egui::Context, st: &mut AppState, files: &mut Files, frame: 
                     .labelled_by(label.id);
             });
             ui.horizontal(|ui| {
+                ui.checkbox(&mut st.course.from_start, tr!("course.from_start"));
+                if !st.course.from_start {
+                    let drag = egui::DragValue::new(&mut st.course.first_deg)
+                        .range(-360.0..=360.0)
+                        .suffix("°");
+                    ui.add(drag).on_hover_text(tr!("course.first_hint"));
+                }
+            });
+            ui.horizontal(|ui| {
                 let label = ui.label(tr!("course.chosen"));
                 ui.text_edit_singleline(&mut st.course.chosen)
                     .labelled_by(label.id)

@@ -431,16 +431,12 @@ fn sheet(st: &AppState) -> Sheet {
 /// course-design report of the course window's choices.
 fn pages_of(st: &AppState, action: FileAction) -> Result<Sheet, WriteError> {
     let lang = crate::ui::words::lang();
-    let course = || st.course.chosen_numbers().map_err(WriteError::Course);
+    let course = || st.course.choice().map_err(WriteError::Course);
     match action {
-        FileAction::CourseSvg | FileAction::CoursePng | FileAction::CoursePdf => Ok(st
-            .session
-            .course_sheet(st.course.positions, &course()?, lang)?),
-        FileAction::ReportPdf => {
-            Ok(st
-                .session
-                .course_report(st.course.positions, &course()?, lang)?)
+        FileAction::CourseSvg | FileAction::CoursePng | FileAction::CoursePdf => {
+            Ok(st.session.course_sheet(&course()?, lang)?)
         }
+        FileAction::ReportPdf => Ok(st.session.course_report(&course()?, lang)?),
         _ => Ok(sheet(st)),
     }
 }

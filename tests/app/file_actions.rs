@@ -355,7 +355,12 @@ fn the_course_sheet_window_exports_the_sheet_asked_for() {
     );
     h.state_mut().state.course.positions = 6;
     h.state_mut().state.course.chosen = "1, 4".into();
+    // Position 0 at a crank angle of the user's.
+    h.state_mut().state.course.from_start = false;
+    h.state_mut().state.course.first_deg = 45.0;
     h.run();
+    let choice = h.state().state.course.choice().expect("a choice");
+    assert_eq!(choice.first_deg, Some(45.0));
     // The top bar's PDF… is the position's sheet; the window's is the course's.
     h.get_all_by_role_and_label(Role::Button, "PDF…")
         .last()
@@ -375,7 +380,7 @@ fn the_course_sheet_window_exports_the_sheet_asked_for() {
         .state()
         .state
         .session
-        .course_sheet(6, &[1, 4], linkage_diagram::words::Lang::English)
+        .course_sheet(&choice, linkage_diagram::words::Lang::English)
         .expect("the sheet")
         .pages
         .len();
@@ -398,7 +403,7 @@ fn the_course_sheet_window_exports_the_sheet_asked_for() {
         .state()
         .state
         .session
-        .course_report(6, &[1, 4], linkage_diagram::words::Lang::English)
+        .course_report(&choice, linkage_diagram::words::Lang::English)
         .expect("the report")
         .pages
         .len();

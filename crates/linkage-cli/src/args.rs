@@ -454,6 +454,10 @@ pub(crate) struct CourseArgs {
     /// Positions over the crank's range, numbered from 0 at its start.
     #[arg(long, default_value_t = 12)]
     pub(crate) positions: usize,
+    /// The crank angle of position 0, degrees (default the start of the crank's
+    /// range): any angle on a crank that turns, one of its range on one that rocks.
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) first_deg: Option<f64>,
     /// The positions drawn with their polygons (the first also with its force
     /// polygons); default the second and the one half a range on.
     #[arg(long, num_args = 1..)]

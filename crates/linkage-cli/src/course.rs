@@ -16,7 +16,7 @@ use crate::io::{describe, load};
 pub fn run(scene: &SceneArgs, args: &CourseArgs) -> Result<String> {
     check_dpi(&args.out)?;
     let mut k = load(scene)?;
-    let sheet = CourseSheet::compute(&mut k, args.positions, &chosen(args))
+    let sheet = CourseSheet::compute_from(&mut k, args.positions, args.first_deg, &chosen(args))
         .map_err(|e| describe(scene, e))?;
     write_sheet(course_sheet(&sheet, args.out.lang), &args.out)
 }
@@ -25,7 +25,7 @@ pub fn run(scene: &SceneArgs, args: &CourseArgs) -> Result<String> {
 pub fn report(scene: &SceneArgs, args: &CourseArgs) -> Result<String> {
     check_dpi(&args.out)?;
     let mut k = load(scene)?;
-    let data = CourseReport::compute(&mut k, args.positions, &chosen(args))
+    let data = CourseReport::compute_from(&mut k, args.positions, args.first_deg, &chosen(args))
         .map_err(|e| describe(scene, e))?;
     write_sheet(course_report(&data, args.out.lang), &args.out)
 }

@@ -11,7 +11,7 @@ use linkage::error::{Param, Valid};
 use linkage::force_polygon::{ForcePolygons, force_polygons};
 use linkage::kinetostatics::Kinetostatics;
 use linkage::polygon::{VectorEquation, polygons};
-use linkage::sweep::sweep;
+use linkage::sweep::{Grid, sweep, sweep_each_on, sweep_range};
 use linkage::{Kinematics, LinkageError, Mechanism, Result, Solution};
 
 /// Positions on the sheet unless asked.
@@ -79,6 +79,23 @@ impl CourseSheet {
     /// Fewer than 2 positions, a chosen number past the last position, or a position
     /// that does not solve.
     pub fn compute(k: &mut Kinematics, count: usize, chosen: &[usize]) -> Result<Self> {
+        Self::compute_from(k, count, None, chosen)
+    }
+
+    /// [`Self::compute`] with position 0 at the crank angle `first_deg` where given:
+    /// on a crank that turns, any angle (the positions go round a turn from it); on
+    /// one that rocks, an angle of its range (the positions span it from there to
+    /// the range's end).
+    ///
+    /// # Errors
+    /// As [`Self::compute`], and a first angle outside a rocking crank's range (the
+    /// error names the range).
+    pub fn compute_from(
+        k: &mut Kinematics,
+        count: usize,
+        first_deg: Option<f64>,
+        chosen: &[usize],
+    ) -> Result<Self> {
         if count < 2 {
             return Err(invalid(Param::CoursePositions, count, Valid::AtLeast(2)));
         }
@@ -94,7 +111,10 @@ impl CourseSheet {
         }
         // The sweep's own positions: evenly over the range, a full turn without its
         // repeated end, branch points stepped past.
-        let positions = sweep(k, count)?.solutions;
+        let positions = match first_deg {
+            None => sweep(k, count)?.solutions,
+            Some(first) => positions_from(k, count, first)?,
+        };
         let chosen: Vec<ChosenPosition> = chosen
             .iter()
             .map(|&number| ChosenPosition {
@@ -115,6 +135,38 @@ impl CourseSheet {
             forces,
         })
     }
+}
+
+/// `count` positions from the crank angle `first_deg`: round a turn, or to the end
+/// of a rocking crank's range.
+fn positions_from(k: &mut Kinematics, count: usize, first_deg: f64) -> Result<Vec<Solution>> {
+    let ([a, b], full) = sweep_range(k)?;
+    let first = first_deg.to_radians();
+    let inside = first_deg.is_finite() && (full || (a..=b).contains(&first));
+    if !inside {
+        let valid = if full {
+            Valid::Between(-360.0, 360.0)
+        } else {
+            Valid::Between(a.to_degrees(), b.to_degrees())
+        };
+        return Err(LinkageError::invalid(
+            Param::FirstPosition,
+            first_deg,
+            valid,
+        ));
+    }
+    let end = if full {
+        first + std::f64::consts::TAU
+    } else {
+        b
+    };
+    let mut solutions = Vec::with_capacity(count);
+    let grid = Grid::even([first, end], full, count);
+    sweep_each_on::<LinkageError>(k, grid, |_, s, _| {
+        solutions.push(s.clone());
+        Ok(())
+    })?;
+    Ok(solutions)
 }
 
 fn invalid(param: Param, value: usize, valid: Valid) -> LinkageError {

@@ -104,7 +104,21 @@ impl CourseReport {
     /// # Errors
     /// What [`CourseSheet::compute`] and the cycle's analysis refuse.
     pub fn compute(k: &mut Kinematics, count: usize, chosen: &[usize]) -> Result<Self> {
-        let course = CourseSheet::compute(k, count, chosen)?;
+        Self::compute_from(k, count, None, chosen)
+    }
+
+    /// [`Self::compute`] with position 0 at the crank angle `first_deg` where given
+    /// ([`CourseSheet::compute_from`]).
+    ///
+    /// # Errors
+    /// As [`CourseSheet::compute_from`] and the cycle's analysis.
+    pub fn compute_from(
+        k: &mut Kinematics,
+        count: usize,
+        first_deg: Option<f64>,
+        chosen: &[usize],
+    ) -> Result<Self> {
+        let course = CourseSheet::compute_from(k, count, first_deg, chosen)?;
         let analysis = report(k)?;
         let main = main_output(k);
         let positions = course

@@ -227,7 +227,15 @@ fn tick_step(extent: f64) -> f64 {
 /// A line and the number at each position's crank angle.
 fn position_marks(out: &mut String, axes: &Axes, marks: &[f64]) {
     let [x0, x1] = axes.x;
+    // On a turn the diagrams run from the range's start; positions counted from
+    // another angle are marked where they fall in that turn.
+    let turn = (x1 - x0 - 360.0).abs() < 2.0;
     for (i, &x) in marks.iter().enumerate() {
+        let x = if turn {
+            x0 + (x - x0).rem_euclid(360.0)
+        } else {
+            x
+        };
         if x < x0 - 1e-9 || x > x1 + 1e-9 {
             continue;
         }

@@ -89,41 +89,61 @@ impl Session {
 }
 
 impl Session {
-    /// The course sheet of the current mechanism in `lang`: `count` positions from
-    /// the start of its range, polygons at the positions numbered `chosen` (and the
-    /// force polygons at the first where the scene has force data), on A4 pages, as
-    /// `linkage course-sheet` draws it.
+    /// The course sheet of the current mechanism in `lang`: `course.positions`
+    /// positions from its first (the start of the crank's range unless given),
+    /// polygons at the positions numbered `course.chosen` (and the force polygons at
+    /// the first where the scene has force data), on A4 pages, as `linkage
+    /// course-sheet` draws it.
     ///
     /// # Errors
     /// Fewer than 2 positions, a chosen number past the last position, or a position
     /// that does not solve.
     pub fn course_sheet(
         &self,
-        count: usize,
-        chosen: &[usize],
+        course: &CourseChoice,
         lang: Lang,
     ) -> Result<linkage_diagram::pages::Sheet, linkage::LinkageError> {
         let mut k = self.kinematics().clone();
-        let sheet = linkage_diagram::course::CourseSheet::compute(&mut k, count, chosen)?;
+        let sheet = linkage_diagram::course::CourseSheet::compute_from(
+            &mut k,
+            course.positions,
+            course.first_deg,
+            &course.chosen,
+        )?;
         Ok(linkage_diagram::svg_course::course_sheet(&sheet, lang))
     }
 }
 
 impl Session {
     /// The course-design report of the current mechanism in `lang`, with the course
-    /// sheet's `count` positions and `chosen` ones, as `linkage course-report` writes
-    /// it.
+    /// sheet's positions of `course`, as `linkage course-report` writes it.
     ///
     /// # Errors
     /// What the course sheet and the cycle's analysis refuse.
     pub fn course_report(
         &self,
-        count: usize,
-        chosen: &[usize],
+        course: &CourseChoice,
         lang: Lang,
     ) -> Result<linkage_diagram::pages::Sheet, linkage::LinkageError> {
         let mut k = self.kinematics().clone();
-        let data = linkage_diagram::course_report::CourseReport::compute(&mut k, count, chosen)?;
+        let data = linkage_diagram::course_report::CourseReport::compute_from(
+            &mut k,
+            course.positions,
+            course.first_deg,
+            &course.chosen,
+        )?;
         Ok(linkage_diagram::svg_report::course_report(&data, lang))
     }
+}
+
+/// What a course sheet or report is asked for: how many positions, from which crank
+/// angle, and the positions drawn with their polygons.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CourseChoice {
+    /// Positions over the crank's range.
+    pub positions: usize,
+    /// The crank angle of position 0, degrees; the start of the range if `None`.
+    pub first_deg: Option<f64>,
+    /// The positions drawn with their polygons.
+    pub chosen: Vec<usize>,
 }

@@ -47,6 +47,7 @@ use document::Document;
 pub use document::SceneSource;
 use dynamic_run::{DynamicRun, IntegratorChoice};
 pub use edit::SceneEdit;
+pub use exports::CourseChoice;
 use notice::Notice;
 use params::{LengthParam, length_params};
 use pose::Pose;

@@ -125,6 +125,8 @@ pub enum Param {
     CoursePositions,
     /// A position chosen on a course sheet.
     ChosenPosition,
+    /// The crank angle of a course sheet's first position, degrees.
+    FirstPosition,
 }
 
 impl std::fmt::Display for Param {
@@ -189,6 +191,7 @@ impl std::fmt::Display for Param {
             Self::GroundRegionWidth => "ground region width",
             Self::CoursePositions => "positions",
             Self::ChosenPosition => "chosen position",
+            Self::FirstPosition => "first position's crank angle (deg)",
         };
         f.write_str(words)
     }
