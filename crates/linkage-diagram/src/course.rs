@@ -173,16 +173,21 @@ fn invalid(param: Param, value: usize, valid: Valid) -> LinkageError {
     LinkageError::invalid(param, value as f64, valid)
 }
 
-/// The main output's s, v and a over the range (rocker angles unwrapped).
-fn output_series(k: &mut Kinematics) -> Result<Option<OutputSeries>> {
+/// The main output: the scene's output link (a rocker or a slider), or the first
+/// output where that is neither.
+pub(crate) fn main_output(k: &Kinematics) -> Option<Output> {
     let m = k.mechanism();
-    let main = m.output;
     let all = outputs(k);
     let is_main = |o: &&Output| match o {
-        Output::Rocker { link, .. } => *link == main,
-        Output::Slide { slider, .. } => m.sliders[*slider].slider == main,
+        Output::Rocker { link, .. } => *link == m.output,
+        Output::Slide { slider, .. } => m.sliders[*slider].slider == m.output,
     };
-    let Some(out) = all.iter().find(is_main).or_else(|| all.first()).cloned() else {
+    all.iter().find(is_main).or_else(|| all.first()).cloned()
+}
+
+/// The main output's s, v and a over the range (rocker angles unwrapped).
+fn output_series(k: &mut Kinematics) -> Result<Option<OutputSeries>> {
+    let Some(out) = main_output(k) else {
         return Ok(None);
     };
     let sw = sweep(k, DIAGRAM_STEPS)?;

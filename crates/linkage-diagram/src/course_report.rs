@@ -6,7 +6,7 @@
 //! polygons), the flywheel where the scene has loads, the cams, and the results.
 //! [`crate::svg_report`] lays it out on A4 pages.
 
-use linkage::analysis::{Output, Report, outputs, report};
+use linkage::analysis::{Report, report};
 use linkage::cam::CamPoint;
 use linkage::dyad::GroupLabel;
 use linkage::extremum::{locate_max, locate_min};
@@ -120,7 +120,7 @@ impl CourseReport {
     ) -> Result<Self> {
         let course = CourseSheet::compute_from(k, count, first_deg, chosen)?;
         let analysis = report(k)?;
-        let main = main_output(k);
+        let main = crate::course::main_output(k);
         let positions = course
             .positions
             .iter()
@@ -166,35 +166,12 @@ impl CourseReport {
     }
 }
 
-/// The main output (the scene's output link), or the first.
-fn main_output(k: &Kinematics) -> Option<Output> {
-    let m = k.mechanism();
-    let all = outputs(k);
-    let is_main = |o: &&Output| match o {
-        Output::Rocker { link, .. } => *link == m.output,
-        Output::Slide { slider, .. } => m.sliders[*slider].slider == m.output,
-    };
-    all.iter().find(is_main).or_else(|| all.first()).cloned()
-}
-
 /// Each moving link with the distances between its joints (by the joints' letters),
 /// measured at the first position: the lengths the scene gives it.
 fn links(m: &linkage::Mechanism, s: &linkage::Solution) -> Vec<LinkRow> {
     m.moving_links()
         .map(|l| {
-            let mut joints: Vec<linkage::PointId> = m
-                .revolutes
-                .iter()
-                .filter(|r| r.a == l || r.b == l)
-                .map(|r| r.point)
-                .chain(
-                    m.sliders
-                        .iter()
-                        .filter(|sl| sl.slider == l)
-                        .map(|sl| sl.point),
-                )
-                .collect();
-            joints.dedup();
+            let joints = crate::pose_figure::link_joints(m, l);
             let mut lengths = Vec::new();
             for (i, &a) in joints.iter().enumerate() {
                 for &b in &joints[i + 1..] {

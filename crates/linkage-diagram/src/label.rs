@@ -118,14 +118,16 @@ impl Label {
     }
 }
 
+/// Whether `c` is of the Chinese face's ranges (CJK radicals to the full-width
+/// forms): a square character, drawn with [`crate::png::CJK_FONT`].
+pub fn is_cjk(c: char) -> bool {
+    ('\u{2E80}'..='\u{FFEF}').contains(&c)
+}
+
 /// A character's approximate advance in ems: a CJK character (and a full-width
 /// form) is a square, a Latin one a little over half of it.
 pub fn em_width(c: char) -> f64 {
-    if ('\u{2E80}'..='\u{FFEF}').contains(&c) {
-        1.0
-    } else {
-        0.58
-    }
+    if is_cjk(c) { 1.0 } else { 0.58 }
 }
 
 #[cfg(test)]

@@ -136,7 +136,7 @@ pub(crate) fn heading(pages: &mut Pages, text: &str, size: f64) {
 
 /// `text` in lines no wider than `width` at `size` px (the approximate measure),
 /// broken at spaces; a word wider than a line is cut with an ellipsis.
-fn wrap(text: &str, width: f64, size: f64) -> Vec<String> {
+pub(crate) fn wrap(text: &str, width: f64, size: f64) -> Vec<String> {
     let wide = |t: &str| Label::plain(t).approximate_size(size)[0] > width;
     let mut lines: Vec<String> = Vec::new();
     let mut line = String::new();

@@ -37,7 +37,7 @@ pub fn render(svg: &str, dpi: f32, font: &[u8], family: &str) -> Result<Vec<u8>,
 /// Whether `text` holds a character of the Chinese face's ranges (CJK radicals to
 /// the full-width forms).
 pub(crate) fn has_cjk(text: &str) -> bool {
-    text.chars().any(|c| ('\u{2E80}'..='\u{FFEF}').contains(&c))
+    text.chars().any(crate::label::is_cjk)
 }
 
 /// resvg's options with `font` as the sans-serif face, and [`CJK_FONT`] beside it

@@ -54,6 +54,24 @@ pub fn link_number(m: &Mechanism, link: LinkId) -> usize {
     }
 }
 
+/// The joints of `link`: its revolutes' points, then its slider blocks'.
+pub fn link_joints(m: &Mechanism, link: LinkId) -> Vec<PointId> {
+    let mut pts: Vec<PointId> = m
+        .revolutes
+        .iter()
+        .filter(|r| r.a == link || r.b == link)
+        .map(|r| r.point)
+        .chain(
+            m.sliders
+                .iter()
+                .filter(|sl| sl.slider == link)
+                .map(|sl| sl.point),
+        )
+        .collect();
+    pts.dedup();
+    pts
+}
+
 impl PoseFigure {
     /// The figure of `m` at `s`, with `centres` if given.
     pub fn new(m: &Mechanism, s: &Solution, centres: Option<&InstantCentres>) -> Self {
@@ -64,22 +82,7 @@ impl PoseFigure {
         let joints = m.joint_points();
         let links = m
             .moving_links()
-            .map(|l| {
-                let mut pts: Vec<PointId> = m
-                    .revolutes
-                    .iter()
-                    .filter(|r| r.a == l || r.b == l)
-                    .map(|r| r.point)
-                    .chain(
-                        m.sliders
-                            .iter()
-                            .filter(|sl| sl.slider == l)
-                            .map(|sl| sl.point),
-                    )
-                    .collect();
-                pts.dedup();
-                outline(pts.into_iter().map(at).collect())
-            })
+            .map(|l| outline(link_joints(m, l).into_iter().map(at).collect()))
             .collect();
         let ground_pivots = m
             .revolutes

@@ -83,7 +83,7 @@ pub(crate) fn hex([r, g, b]: [u8; 3]) -> String {
 /// letters into a ligature, as "fi", the run loses its Chinese.) Nothing for a text
 /// without Chinese, which takes the sheet's face.
 pub(crate) fn family(t: &str) -> &'static str {
-    if t.chars().any(|c| ('\u{2E80}'..='\u{FFEF}').contains(&c)) {
+    if t.chars().any(crate::label::is_cjk) {
         " font-family=\"Noto Sans CJK SC, Noto Sans SC, Microsoft YaHei, PingFang SC, sans-serif\""
     } else {
         ""

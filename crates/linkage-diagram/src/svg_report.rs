@@ -121,28 +121,11 @@ fn task(pages: &mut Pages, r: &CourseReport, lang: Lang) {
     if !r.analysis.notes.is_empty() {
         line(pages, &sw!(lang, "report.notes"));
         for note in &r.analysis.notes {
-            for part in wrap(note, 110) {
+            for part in crate::pages::wrap(note, WIDTH, FONT) {
                 line(pages, &part);
             }
         }
     }
-}
-
-/// `text` in lines of at most `chars` characters, broken at spaces.
-fn wrap(text: &str, chars: usize) -> Vec<String> {
-    let mut lines = vec![String::new()];
-    for word in text.split_whitespace() {
-        let last = lines.last_mut().expect("one line");
-        if !last.is_empty() && last.chars().count() + word.chars().count() >= chars {
-            lines.push(word.to_owned());
-        } else {
-            if !last.is_empty() {
-                last.push(' ');
-            }
-            last.push_str(word);
-        }
-    }
-    lines
 }
 
 /// §2: the degrees of freedom and the Assur groups.

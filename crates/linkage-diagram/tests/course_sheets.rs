@@ -12,17 +12,7 @@ use linkage_diagram::words::Lang;
 
 #[test]
 fn every_scene_gets_a_course_sheet_with_its_positions_on_its_diagrams() {
-    let examples = format!("{}/../../docs/examples", env!("CARGO_MANIFEST_DIR"));
-    let mut scenes = common::scenes();
-    for e in std::fs::read_dir(&examples).expect("examples") {
-        let p = e.expect("entry").path();
-        if p.extension().is_some_and(|x| x == "ron") {
-            let text = std::fs::read_to_string(&p).expect("readable");
-            let m = linkage::Mechanism::from_ron(&text).expect("valid");
-            scenes.push((p.display().to_string(), m));
-        }
-    }
-    for (file, m) in scenes {
+    for (file, m) in common::scenes_and_examples() {
         for count in [12, 5] {
             let mut k = Kinematics::new(m.clone()).expect("kinematics");
             let sheet = CourseSheet::compute(&mut k, count, &[1, count - 1])

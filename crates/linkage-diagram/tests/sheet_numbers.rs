@@ -7,12 +7,7 @@
 mod common;
 
 use linkage::Kinematics;
-use linkage::force_polygon::force_polygons;
-use linkage::instant_centres::instant_centres;
-use linkage::kinetostatics::Kinetostatics;
-use linkage::polygon::polygons;
 use linkage_diagram::course::CourseSheet;
-use linkage_diagram::svg::{Parts, Position, sheet};
 use linkage_diagram::svg_course::course_sheet;
 use linkage_diagram::words::Lang;
 
@@ -101,26 +96,11 @@ fn every_sheet_writes_four_significant_digits_at_most() {
         let mut k = Kinematics::new(m.clone()).expect("kinematics");
         for x in common::inputs(&k, 12) {
             let what = format!("{file} at {:.1} deg", x.to_degrees());
-            let forces = Kinetostatics::new(&mut k)
-                .and_then(|mut ks| force_polygons(&mut k, &mut ks, x))
-                .ok();
-            let Ok(s) = k.solve(x) else { continue };
-            let equations = polygons(&k, &s);
-            let centres = instant_centres(k.mechanism(), &s);
-            let position = Position {
-                mechanism: k.mechanism(),
-                solution: &s,
-                equations: &equations,
-                centres: Some(&centres),
-                forces: forces.as_ref(),
-            };
-            let parts = Parts {
-                centres: true,
-                forces: true,
-                ..Parts::default()
-            };
             for lang in Lang::ALL {
-                check(&sheet(&position, parts, lang).pages.concat(), &what);
+                let Some(sheet) = common::full_sheet(&mut k, x, lang) else {
+                    continue;
+                };
+                check(&sheet.pages.concat(), &what);
             }
         }
         let course = CourseSheet::compute(&mut k, 12, &[1, 11]).expect("course sheet");

@@ -10,15 +10,10 @@
 mod common;
 
 use linkage::Kinematics;
-use linkage::force_polygon::force_polygons;
-use linkage::instant_centres::instant_centres;
-use linkage::kinetostatics::Kinetostatics;
-use linkage::polygon::polygons;
 use linkage_diagram::Rect;
 use linkage_diagram::course::CourseSheet;
 use linkage_diagram::pages::Sheet;
 use linkage_diagram::png::{Faces, TextBox};
-use linkage_diagram::svg::{Parts, Position, sheet};
 use linkage_diagram::svg_course::course_sheet;
 use linkage_diagram::words::Lang;
 
@@ -80,55 +75,14 @@ fn check(sheet: &Sheet, what: &str, out: &mut Vec<String>) {
     }
 }
 
-/// Every scene file and every example.
-fn all_scenes() -> Vec<(String, linkage::Mechanism)> {
-    let mut scenes = common::scenes();
-    let examples = format!("{}/../../docs/examples", env!("CARGO_MANIFEST_DIR"));
-    let mut files: Vec<_> = std::fs::read_dir(&examples)
-        .expect("examples")
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| p.extension().is_some_and(|x| x == "ron"))
-        .collect();
-    files.sort();
-    for p in files {
-        let text = std::fs::read_to_string(&p).expect("readable");
-        if let Ok(m) = linkage::Mechanism::from_ron(&text) {
-            scenes.push((p.display().to_string(), m));
-        }
-    }
-    scenes
-}
-
-fn position_sheet(k: &mut Kinematics, x: f64, lang: Lang) -> Option<Sheet> {
-    let forces = Kinetostatics::new(k)
-        .and_then(|mut ks| force_polygons(k, &mut ks, x))
-        .ok();
-    let s = k.solve(x).ok()?;
-    let equations = polygons(k, &s);
-    let centres = instant_centres(k.mechanism(), &s);
-    let position = Position {
-        mechanism: k.mechanism(),
-        solution: &s,
-        equations: &equations,
-        centres: Some(&centres),
-        forces: forces.as_ref(),
-    };
-    let parts = Parts {
-        centres: true,
-        forces: true,
-        ..Parts::default()
-    };
-    Some(sheet(&position, parts, lang))
-}
-
 #[test]
 fn every_page_of_every_sheet_is_a4_with_no_text_over_text() {
     let mut found = Vec::new();
-    for (file, m) in all_scenes() {
+    for (file, m) in common::scenes_and_examples() {
         let mut k = Kinematics::new(m).expect("kinematics");
         for lang in Lang::ALL {
             for x in common::inputs(&k, 3) {
-                if let Some(sheet) = position_sheet(&mut k, x, lang) {
+                if let Some(sheet) = common::full_sheet(&mut k, x, lang) {
                     let what = format!("{file} at {:.1}° ({})", x.to_degrees(), lang.code());
                     check(&sheet, &what, &mut found);
                 }
