@@ -175,7 +175,10 @@ fn initial_session() -> (Session, Option<String>) {
             log::warn!("the link's scene did not open: {e}");
             (
                 open_or_explain(DEFAULT_SCENE),
-                Some(format!("the link's scene did not open: {e}")),
+                Some(crate::i18n::tr!(
+                    "file.link_failed",
+                    why = e.words(crate::ui::words::lang())
+                )),
             )
         }
         Err(_) => (open_or_explain(DEFAULT_SCENE), None),

@@ -116,6 +116,7 @@ impl AppState {
         match Drawing::from_pose(s.scene(), s.mechanism(), s.pose()) {
             Ok(drawing) => self.resume_drawing(drawing),
             Err(why) => {
+                let why = crate::ui::words::not_drawable(&why);
                 self.status = Some(tr!("drawing.cannot_become", why = why));
                 Replaced::No
             }
@@ -162,6 +163,7 @@ impl AppState {
                 Replaced::Yes
             }
             Err(why) => {
+                let why = crate::ui::words::refusal(&why, linkage::scene::LengthUnit::Metre);
                 self.status = Some(tr!("drawing.does_not_solve", why = why));
                 Replaced::No
             }

@@ -165,30 +165,11 @@ mod catalogue {
 
     const ROOT: &str = env!("CARGO_MANIFEST_DIR");
 
-    /// `key -> {locale -> text}` of `locales/app.yml` (its `_version: 2` layout: a
-    /// key at the margin, its languages indented under it).
+    /// `key -> {locale -> text}` of `locales/app.yml`.
     fn catalogue() -> BTreeMap<String, BTreeMap<String, String>> {
         let text = std::fs::read_to_string(Path::new(ROOT).join("locales/app.yml"))
             .expect("the catalogue");
-        let mut out: BTreeMap<String, BTreeMap<String, String>> = BTreeMap::new();
-        let mut key = None;
-        for line in text.lines() {
-            if line.trim_start().starts_with('#') || line.trim().is_empty() {
-                continue;
-            }
-            if !line.starts_with(' ') {
-                let k = line.trim_end_matches(':').to_string();
-                key = (k != "_version: 2").then_some(k);
-                continue;
-            }
-            let (Some(k), Some((locale, value))) = (&key, line.trim().split_once(": ")) else {
-                continue;
-            };
-            out.entry(k.clone())
-                .or_default()
-                .insert(locale.to_string(), value.trim_matches('"').to_string());
-        }
-        out
+        linkage_diagram::words::catalogue_entries(&text)
     }
 
     /// Every `.rs` file under `src/`, with its text.
@@ -246,7 +227,7 @@ mod catalogue {
 
     /// Calls that put their string argument on screen: a literal with a word in it
     /// there bypasses the catalogue.
-    const SHOWN: [&str; 21] = [
+    const SHOWN: [&str; 27] = [
         ".button(\"",
         ".label(\"",
         ".heading(\"",
@@ -268,6 +249,14 @@ mod catalogue {
         "RichText::new(format!(\"",
         "status = Some(format!(\"",
         "status = Some(\"",
+        // A plot's series: its name shows where the pointer hovers it.
+        "Line::new(\"",
+        "Points::new(\"",
+        "HLine::new(\"",
+        "VLine::new(\"",
+        "Polygon::new(format!(\"",
+        // A plot's axis title.
+        "plot(key, height, \"",
     ];
 
     /// What is left to move into the catalogue, file by file: the UI's literals

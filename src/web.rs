@@ -168,7 +168,7 @@ pub fn publish_controls(
     let published = Published {
         frame,
         controls: &st.controls,
-        message: st.session.message(),
+        message: st.session.message_in(crate::ui::words::lang()),
         status: st.status.as_deref(),
         edit_timing: st.timing.edit_timing,
         run_pending: st.session.run_progress().is_some(),
@@ -237,10 +237,12 @@ impl UrlSync {
         }
         self.last = now.clone();
         if now.is_empty() {
-            return s
-                .share_payload()
-                .err()
-                .map(|e| format!("{e}: a reload will not keep it"));
+            return s.share_payload().err().map(|e| {
+                crate::i18n::tr!(
+                    "file.link_not_kept",
+                    why = linkage_diagram::refusal::share(crate::ui::words::lang(), e)
+                )
+            });
         }
         if let Some(history) = web_sys::window().and_then(|w| w.history().ok()) {
             let _ = history.replace_state_with_url(&JsValue::NULL, "", Some(&format!("#{now}")));
@@ -309,7 +311,10 @@ pub fn follow_fragment(st: &mut crate::state::AppState, url: &mut UrlSync) {
             log::info!("opening the link's scene: {}", session.scene().name);
             st.open(session);
         }
-        Err(e) => st.status = Some(crate::i18n::tr!("file.link_failed", why = e)),
+        Err(e) => {
+            let why = e.words(crate::ui::words::lang());
+            st.status = Some(crate::i18n::tr!("file.link_failed", why = why));
+        }
     }
     url.forget();
 }

@@ -171,7 +171,7 @@ fn run_stats(ui: &mut egui::Ui, st: &AppState) {
                 drift = format!("{:.2e}", run.energy_drift_j)
             ));
             for w in &s.warnings {
-                let words = crate::session::words::run_warning(w);
+                let words = crate::session::words::run_warning(w, crate::ui::words::lang());
                 ui.colored_label(ui.visuals().warn_fg_color, words);
             }
             for e in run.sim.events.iter().filter(|e| e.stopped) {
@@ -185,7 +185,8 @@ fn run_stats(ui: &mut egui::Ui, st: &AppState) {
             }
         }
         Some(Err(e)) => {
-            ui.colored_label(ui.visuals().error_fg_color, e.to_string());
+            let why = e.words(st.session.scene().length_unit, crate::ui::words::lang());
+            ui.colored_label(ui.visuals().error_fg_color, why);
         }
     }
 }

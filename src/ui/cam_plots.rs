@@ -43,10 +43,10 @@ pub fn motion_plots(ui: &mut egui::Ui, s: &Session) {
         (
             [180.0 / std::f64::consts::PI; 4],
             [
-                Unit::Fixed("deg"),
-                Unit::Fixed("deg/s"),
-                Unit::Fixed("deg/s²"),
-                Unit::Fixed("deg/s³"),
+                Unit::Fixed("°"),
+                Unit::Fixed("°/s"),
+                Unit::Fixed("°/s²"),
+                Unit::Fixed("°/s³"),
             ],
         )
     } else {
@@ -56,7 +56,12 @@ pub fn motion_plots(ui: &mut egui::Ui, s: &Session) {
         };
         ([1.0 / length.to_metres(); 4], units.map(Unit::Fixed))
     };
-    let names = ["lift", "velocity", "acceleration", "jerk"];
+    let names = [
+        tr!("cam.lift_axis"),
+        tr!("cam.velocity_axis"),
+        tr!("cam.acceleration_axis"),
+        tr!("cam.jerk_axis"),
+    ];
     let w = c.speed_rad_s;
     let cursor = cursor_deg(s, 0);
     crate::ui::plot_layout::side_by_side(ui, names.len(), |ui, i, height| {
@@ -73,7 +78,7 @@ pub fn motion_plots(ui: &mut egui::Ui, s: &Session) {
                 ]
             })
             .collect();
-        let axis = Axis::new(names[i], units[i]);
+        let axis = Axis::new(&names[i], units[i]);
         cam_plot(ui, (s, "cam motion", i), axis, &data, &[], cursor, height);
     });
 }
@@ -89,7 +94,7 @@ pub fn limit_plots(ui: &mut egui::Ui, s: &Session) {
     let pressure = series(c, |p| p.pressure_angle_rad.to_degrees());
     let radius = series(c, |p| p.profile_radius_m / length.to_metres());
     let pressure_name = tr!("cam.pressure_axis", limit = format!("{limit:.0}"));
-    let pressure_axis = Axis::new(&pressure_name, Unit::Fixed("deg"));
+    let pressure_axis = Axis::new(&pressure_name, Unit::Fixed("°"));
     let radius_name = tr!("cam.radius_axis");
     let radius_axis = Axis::new(
         &radius_name,
@@ -120,11 +125,7 @@ pub fn limit_plots(ui: &mut egui::Ui, s: &Session) {
     if !past.is_empty() {
         ui.colored_label(
             PAST,
-            format!(
-                "{} of {} cam angles past a limit",
-                past.len(),
-                c.points.len()
-            ),
+            tr!("cam.past_count", past = past.len(), all = c.points.len()),
         );
     }
 }
@@ -157,7 +158,8 @@ fn cam_plot(
         .iter()
         .fold((lo, hi), |(a, b), &l| (a.min(l), b.max(l)));
     let key = (id, i, s.scene().name.as_str(), s.generation());
-    plot_axes::plot(key, height, "cam angle (deg)", &series.title)
+    let x_title = tr!("cam.angle_axis");
+    plot_axes::plot(key, height, &x_title, &series.title)
         .include_y(lo)
         .include_y(hi)
         .show(ui, |p| {
@@ -166,18 +168,18 @@ fn cam_plot(
                 data.iter().copied().collect::<PlotPoints<'_>>(),
             ));
             for &l in limits {
-                p.hline(HLine::new("limit", l).color(PAST));
+                p.hline(HLine::new(tr!("cam.limit"), l).color(PAST));
             }
             let past = out_of(data, limits);
             if !past.is_empty() {
                 p.points(
-                    Points::new("past the limit", PlotPoints::from(past))
+                    Points::new(tr!("cam.past_limit"), PlotPoints::from(past))
                         .color(PAST)
                         .radius(2.0),
                 );
             }
             if let Some(x) = cursor {
-                p.vline(VLine::new("now", x));
+                p.vline(VLine::new(tr!("plot.now"), x));
             }
         });
 }

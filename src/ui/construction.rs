@@ -72,7 +72,8 @@ impl ConstructionView {
         let steps = match construct(eq, &pole, &crossing) {
             Ok(steps) => steps,
             Err(e) => {
-                ui.colored_label(ui.visuals().warn_fg_color, e.to_string());
+                let why = linkage_diagram::refusal::construction(crate::ui::words::lang(), &e);
+                ui.colored_label(ui.visuals().warn_fg_color, why);
                 return;
             }
         };

@@ -81,7 +81,7 @@ fn crank_and_run_time(ui: &mut egui::Ui, st: &mut AppState) {
         }
     }
 
-    if let Some(msg) = st.session.message() {
+    if let Some(msg) = st.session.message_in(crate::ui::words::lang()) {
         ui.colored_label(ui.visuals().warn_fg_color, msg);
     }
 }

@@ -67,11 +67,14 @@ fn status(ui: &mut egui::Ui, st: &AppState) {
         dof = m.dof()
     ));
     match &b.problem {
-        Some(why) => ui.colored_label(egui::Color32::from_rgb(150, 90, 0), why.to_string()),
+        Some(why) => {
+            let why = crate::ui::words::drawing_problem(why, b.drawing().length_unit);
+            ui.colored_label(egui::Color32::from_rgb(150, 90, 0), why)
+        }
         None => ui.colored_label(egui::Color32::from_rgb(20, 110, 40), tr!("draw.complete")),
     };
     if let Some(why) = &b.refusal {
-        ui.colored_label(egui::Color32::DARK_RED, why.to_string());
+        ui.colored_label(egui::Color32::DARK_RED, why.words(crate::ui::words::lang()));
     }
 }
 

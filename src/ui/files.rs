@@ -260,7 +260,7 @@ impl Files {
         match result {
             Ok(()) if action == FileAction::SaveScene => st.session.mark_saved(),
             Ok(()) => {}
-            Err(e) => st.status = Some(e.to_string()),
+            Err(e) => st.status = Some(e.words(st.session.scene().length_unit)),
         }
     }
 
@@ -359,6 +359,29 @@ enum WriteError {
     #[cfg(target_arch = "wasm32")]
     #[error("in the browser the page draws the PNG and the PDF")]
     PngInBrowser,
+}
+
+impl WriteError {
+    /// Why nothing was written, in the app's language: the solver's refusal in the
+    /// user's words, a library's or the system's own words quoted.
+    fn words(&self, unit: linkage::scene::LengthUnit) -> String {
+        match self {
+            Self::Solver(e) => crate::ui::words::refusal(e, unit),
+            #[cfg(not(target_arch = "wasm32"))]
+            Self::Png(why) | Self::Dxf(why) => why.clone(),
+            #[cfg(not(target_arch = "wasm32"))]
+            Self::File(e) => e.to_string(),
+            Self::Opening => tr!("file.nothing_to_write"),
+            Self::Course(why) => why.clone(),
+            Self::NoCam(n) => tr!("file.no_cam", number = n),
+            #[cfg(target_arch = "wasm32")]
+            Self::DxfInBrowser => tr!("file.dxf_in_browser"),
+            #[cfg(target_arch = "wasm32")]
+            Self::Browser(why) => tr!("file.browser_refused", why = why),
+            #[cfg(target_arch = "wasm32")]
+            Self::PngInBrowser => tr!("file.png_in_browser"),
+        }
+    }
 }
 
 /// The files an action writes (a sheet's SVG and PNG: a file per page), or why
@@ -490,7 +513,10 @@ pub fn open_text(st: &mut AppState, name: String, text: &str) {
             st.open(s);
             report(st, log::Level::Info, tr!("file.opened", name = name));
         }
-        Err(e) => report(st, log::Level::Warn, format!("{name}: {e}")),
+        Err(e) => {
+            let why = crate::ui::words::refusal(&e, linkage::scene::LengthUnit::Metre);
+            report(st, log::Level::Warn, format!("{name}: {why}"));
+        }
     }
 }
 
@@ -549,11 +575,11 @@ fn run(st: &mut AppState, action: FileAction, path: &std::path::Path) {
                     };
                     report(st, log::Level::Info, message);
                 }
-                Err(e) => report(
-                    st,
-                    log::Level::Warn,
-                    tr!("file.cannot_write", path = shown, why = e),
-                ),
+                Err(e) => {
+                    let why = e.words(st.session.scene().length_unit);
+                    let message = tr!("file.cannot_write", path = shown, why = why);
+                    report(st, log::Level::Warn, message);
+                }
             }
         }
     }

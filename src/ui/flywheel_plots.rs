@@ -9,6 +9,7 @@ use egui_plot::{HLine, Line, PlotPoints, Points, VLine};
 use linkage::machine::FlywheelSizing;
 use linkage_diagram::numbers::{si, significant};
 
+use crate::i18n::tr;
 use crate::session::curves::FLYWHEEL_DELTA;
 use crate::ui::plot_axes::{self, Axis, Unit};
 
@@ -50,28 +51,30 @@ pub fn flywheel_plots(
         .map(|&[x, y]| [x, y * surplus.factor])
         .collect();
     let mean = sized.mean_torque_n_m * torque.factor;
+    let crank_title = tr!("plot.crank_axis");
+    let inertia_title = tr!("plot.reduced_inertia_axis");
     crate::ui::plot_layout::side_by_side(ui, 3, |ui, which, height| {
         let key = (key, "flywheel", which);
         match which {
-            0 => plot_axes::plot(key, height, CRANK_TITLE, &torque.title).show(ui, |p| {
+            0 => plot_axes::plot(key, height, &crank_title, &torque.title).show(ui, |p| {
                 p.line(Line::new(
-                    "the load's torque",
+                    tr!("plot.load_torque"),
                     PlotPoints::from(torque.points.clone()),
                 ));
-                p.hline(HLine::new("mean: the motor's", mean));
-                p.vline(VLine::new("now", cursor_deg));
+                p.hline(HLine::new(tr!("plot.motor_mean"), mean));
+                p.vline(VLine::new(tr!("plot.now"), cursor_deg));
             }),
-            1 => plot_axes::plot(key, height, CRANK_TITLE, &surplus.title).show(ui, |p| {
+            1 => plot_axes::plot(key, height, &crank_title, &surplus.title).show(ui, |p| {
                 p.line(Line::new("W", PlotPoints::from(surplus.points.clone())));
                 p.points(
-                    Points::new("largest and smallest", PlotPoints::from(extremes.clone()))
+                    Points::new(tr!("plot.extremes"), PlotPoints::from(extremes.clone()))
                         .radius(4.0),
                 );
-                p.vline(VLine::new("now", cursor_deg));
+                p.vline(VLine::new(tr!("plot.now"), cursor_deg));
             }),
-            _ => plot_axes::plot(key, height, "J_red (kg·m²)", &wittenbauer.title).show(ui, |p| {
+            _ => plot_axes::plot(key, height, &inertia_title, &wittenbauer.title).show(ui, |p| {
                 p.line(Line::new(
-                    "energy–inertia (Wittenbauer)",
+                    tr!("plot.wittenbauer"),
                     PlotPoints::from(wittenbauer.points.clone()),
                 ));
             }),
@@ -79,19 +82,16 @@ pub fn flywheel_plots(
     });
 }
 
-/// The crank-angle axis' title.
-const CRANK_TITLE: &str = "crank angle (deg)";
-
 /// The energy method's figures, in two short lines.
 fn figures(s: &FlywheelSizing) -> String {
-    format!(
-        "mean torque {} · mean power {} · ΔW_max {}\n\
-         flywheel for δ = {FLYWHEEL_DELTA}: J_F = {} kg·m² (the mechanism's own: up to {}, mean {} kg·m²)",
-        si(s.mean_torque_n_m, "N·m"),
-        si(s.mean_power_w, "W"),
-        si(s.work_range_j, "J"),
-        significant(s.flywheel_kg_m2, 4),
-        significant(s.reduced_inertia_kg_m2.max, 4),
-        significant(s.reduced_inertia_kg_m2.mean, 4),
+    tr!(
+        "plot.flywheel_figures",
+        torque = si(s.mean_torque_n_m, "N·m"),
+        power = si(s.mean_power_w, "W"),
+        work = si(s.work_range_j, "J"),
+        delta = FLYWHEEL_DELTA,
+        flywheel = significant(s.flywheel_kg_m2, 4),
+        max = significant(s.reduced_inertia_kg_m2.max, 4),
+        mean = significant(s.reduced_inertia_kg_m2.mean, 4)
     )
 }

@@ -27,7 +27,7 @@ pub fn section(ui: &mut egui::Ui, session: &Session, figure_height: f32) {
                 ui.visuals().warn_fg_color,
                 tr!(
                     "forces.none_here",
-                    why = linkage_model::session::words::error(e, session.scene().length_unit)
+                    why = crate::ui::words::refusal(e, session.scene().length_unit)
                 ),
             );
         }

@@ -9,6 +9,7 @@ use egui_plot::{HLine, Line, PlotPoints, Points, VLine};
 use linkage::machine::{Shaking, SteadyState};
 use linkage_diagram::numbers::{Prefix, si, significant};
 
+use crate::i18n::tr;
 use crate::session::curves::ShakingCurves;
 use crate::ui::plot_axes::{self, Axis, Unit};
 
@@ -22,14 +23,14 @@ pub fn steady_plots(
     cursor_deg: f64,
 ) {
     let n = |v: f64| significant(v, 4);
-    ui.label(format!(
-        "ω max {} · min {} · mean {} rad/s (nominal {}) · δ = {} · period {} s",
-        n(st.max_rad_s),
-        n(st.min_rad_s),
-        n(st.mean_rad_s),
-        n(nominal_rad_s),
-        n(st.delta),
-        n(st.period_s)
+    ui.label(tr!(
+        "plot.steady_figures",
+        max = n(st.max_rad_s),
+        min = n(st.min_rad_s),
+        mean = n(st.mean_rad_s),
+        nominal = n(nominal_rad_s),
+        delta = n(st.delta),
+        period = n(st.period_s)
     ));
     let by_angle: Vec<[f64; 2]> = st
         .cycle
@@ -41,15 +42,19 @@ pub fn steady_plots(
     let plots = if from_rest.is_empty() { 2 } else { 3 };
     crate::ui::plot_layout::side_by_side(ui, plots, |ui, which, height| {
         let (x_label, name, data) = match which {
-            0 => ("crank angle (deg)", "ω, steady state", &by_angle),
-            1 => ("t (s)", "ω, steady state", &by_time),
-            _ => ("t (s), from rest", "ω, run-up from rest", &from_rest),
+            0 => (tr!("plot.crank_axis"), tr!("plot.steady_line"), &by_angle),
+            1 => ("t (s)".to_string(), tr!("plot.steady_line"), &by_time),
+            _ => (
+                tr!("plot.from_rest_axis"),
+                tr!("plot.run_up_line"),
+                &from_rest,
+            ),
         };
-        plot_axes::plot((key, "steady", which), height, x_label, "ω (rad/s)").show(ui, |p| {
+        plot_axes::plot((key, "steady", which), height, &x_label, "ω (rad/s)").show(ui, |p| {
             p.line(Line::new(name, PlotPoints::from(data.clone())));
-            p.hline(HLine::new("nominal", nominal_rad_s));
+            p.hline(HLine::new(tr!("plot.nominal"), nominal_rad_s));
             if which == 0 {
-                p.vline(VLine::new("now", cursor_deg));
+                p.vline(VLine::new(tr!("plot.now"), cursor_deg));
             }
         });
     });
@@ -59,15 +64,14 @@ pub fn steady_plots(
 /// and |F| against the crank angle.
 pub fn shaking_plots(ui: &mut egui::Ui, key: (&str, u64), sc: &ShakingCurves, cursor_deg: f64) {
     let c = &sc.counterweight;
-    ui.label(format!(
-        "crank counterweight (least squares): {} kg·m at {}° from the crank · \
-         peak {} without, {} with · rms {} without, {} with",
-        significant(c.mass_radius_kg_m, 4),
-        significant(c.angle_rad.to_degrees(), 4),
-        si(sc.before.peak_force_n, "N"),
-        si(sc.after.peak_force_n, "N"),
-        si(sc.before.rms_force_n, "N"),
-        si(sc.after.rms_force_n, "N")
+    ui.label(tr!(
+        "plot.counterweight_figures",
+        mr = significant(c.mass_radius_kg_m, 4),
+        angle = significant(c.angle_rad.to_degrees(), 4),
+        peak_without = si(sc.before.peak_force_n, "N"),
+        peak_with = si(sc.after.peak_force_n, "N"),
+        rms_without = si(sc.before.rms_force_n, "N"),
+        rms_with = si(sc.after.rms_force_n, "N")
     ));
     // Both diagrams in the prefix of the larger force, the same on both axes.
     let prefix = Prefix::for_magnitude(sc.before.peak_force_n.max(sc.after.peak_force_n));
@@ -104,24 +108,31 @@ pub fn shaking_plots(ui: &mut egui::Ui, key: (&str, u64), sc: &ShakingCurves, cu
             )
             .data_aspect(1.0)
             .show(ui, |p| {
-                p.line(Line::new("without", PlotPoints::from(polar(&sc.before))));
                 p.line(Line::new(
-                    "with counterweight",
+                    tr!("plot.without"),
+                    PlotPoints::from(polar(&sc.before)),
+                ));
+                p.line(Line::new(
+                    tr!("plot.with_counterweight"),
                     PlotPoints::from(polar(&sc.after)),
                 ));
                 if let Some(f) = now {
-                    p.points(Points::new("now", PlotPoints::from(vec![f])).radius(4.0));
+                    p.points(Points::new(tr!("plot.now"), PlotPoints::from(vec![f])).radius(4.0));
                 }
             });
         } else {
             let key = (key, "shaking", which);
-            plot_axes::plot(key, height, "crank angle (deg)", &force("|F|")).show(ui, |p| {
-                p.line(Line::new("without", PlotPoints::from(size(&sc.before))));
+            let x_title = tr!("plot.crank_axis");
+            plot_axes::plot(key, height, &x_title, &force("|F|")).show(ui, |p| {
                 p.line(Line::new(
-                    "with counterweight",
+                    tr!("plot.without"),
+                    PlotPoints::from(size(&sc.before)),
+                ));
+                p.line(Line::new(
+                    tr!("plot.with_counterweight"),
                     PlotPoints::from(size(&sc.after)),
                 ));
-                p.vline(VLine::new("now", cursor_deg));
+                p.vline(VLine::new(tr!("plot.now"), cursor_deg));
             });
         }
     });

@@ -11,6 +11,8 @@ use std::ops::RangeInclusive;
 
 use eframe::egui;
 
+use crate::i18n::tr;
+
 /// What a number is, for its row.
 #[derive(Clone, Debug)]
 pub struct NumberSpec<'a> {
@@ -116,15 +118,16 @@ impl Refusal {
         let unit = |v: f64| with_unit(&format_value(v), spec.unit);
         let (lo, hi) = (*spec.range.start(), *spec.range.end());
         let why = match self {
-            Self::NotANumber { text } => format!("\"{text}\" is not a number"),
-            Self::OutOfRange { value, .. } => format!("{} is outside the range", unit(*value)),
+            Self::NotANumber { text } => tr!("number.not_a_number", text = text),
+            Self::OutOfRange { value, .. } => tr!("number.out_of_range", value = unit(*value)),
         };
-        format!(
-            "{}: {why} {} … {}; kept {}",
-            spec.label,
-            format_value(lo),
-            unit(hi),
-            unit(kept)
+        tr!(
+            "number.refused",
+            label = spec.label,
+            why = why,
+            lo = format_value(lo),
+            hi = unit(hi),
+            kept = unit(kept)
         )
     }
 }

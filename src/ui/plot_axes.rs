@@ -93,9 +93,9 @@ fn shown_name(name: &str) -> String {
     }
 }
 
-/// Whether an axis' unit is an angle (its ticks step by 15°, 30°, 90°…).
+/// Whether an axis' unit is an angle in degrees (its ticks step by 15°, 30°, 90°…).
 fn is_angle(title: &str) -> bool {
-    title.ends_with("(deg)")
+    title.ends_with("(deg)") || title.ends_with("(°)")
 }
 
 /// About how many ticks an axis gets.

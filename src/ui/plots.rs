@@ -324,6 +324,7 @@ fn flywheel_tab(ui: &mut egui::Ui, s: &Session) {
             crate::ui::flywheel_plots::flywheel_plots(ui, plot_key(s), sized, cursor_deg(s))
         }
         Some(Err(why)) => {
+            let why = crate::ui::words::refusal(why, s.scene().length_unit);
             ui.label(tr!("plot.no_flywheel", why = why));
         }
         None => {}
@@ -349,6 +350,7 @@ fn steady_tab(ui: &mut egui::Ui, s: &Session) {
             );
         }
         Some(Err(why)) => {
+            let why = crate::ui::words::refusal(why, s.scene().length_unit);
             ui.label(tr!("plot.no_steady", why = why));
         }
         None => {}
@@ -365,6 +367,7 @@ fn shaking_tab(ui: &mut egui::Ui, s: &Session) {
             crate::ui::machine_plots::shaking_plots(ui, plot_key(s), sc, cursor_deg(s));
         }
         Some(Err(why)) => {
+            let why = crate::ui::words::refusal(why, s.scene().length_unit);
             ui.label(tr!("plot.no_shaking", why = why));
         }
         None => {}
@@ -454,7 +457,7 @@ fn plot(
                 PlotPoints::from(series.points),
             ));
             if let Some(x) = cursor.filter(|x| x.is_finite()) {
-                p.vline(VLine::new("now", x));
+                p.vline(VLine::new(tr!("plot.now"), x));
             }
         });
 }

@@ -68,7 +68,8 @@ fn entries(
     let r = match report {
         Ok(r) => r,
         Err(e) => {
-            ui.colored_label(ui.visuals().warn_fg_color, tr!("report.none", why = e));
+            let why = crate::ui::words::refusal(e, unit);
+            ui.colored_label(ui.visuals().warn_fg_color, tr!("report.none", why = why));
             return;
         }
     };

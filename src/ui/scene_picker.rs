@@ -187,7 +187,7 @@ fn scene_picker(ui: &mut egui::Ui, st: &mut AppState, width: f32) {
     if let Some(key) = chosen {
         match Session::open_builtin(key) {
             Ok(s) => st.open(s),
-            Err(e) => st.status = Some(e.to_string()),
+            Err(e) => st.status = Some(e.words(crate::ui::words::lang())),
         }
     }
 }
@@ -345,7 +345,10 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
     if let Some(t) = chosen {
         match Session::open_text(SceneSource::File(format!("{}.ron", t.key)), t.text) {
             Ok(s) => st.open(s),
-            Err(e) => st.status = Some(tr!("top.template_failed", name = t.key, why = e)),
+            Err(e) => {
+                let why = crate::ui::words::refusal(&e, linkage::scene::LengthUnit::Metre);
+                st.status = Some(tr!("top.template_failed", name = t.key, why = why));
+            }
         }
     }
 }

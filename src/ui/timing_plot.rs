@@ -9,6 +9,7 @@ use linkage::analysis::TimingLane;
 use linkage::scene::LengthUnit;
 use linkage_model::session::words::length;
 
+use crate::i18n::tr;
 use crate::session::Session;
 
 /// A lane's height on the plot's axis, of which its curve takes 1.
@@ -22,7 +23,8 @@ pub fn timing_plot(ui: &mut egui::Ui, s: &Session, cursor_deg: f64, height: f32)
         return;
     };
     let key = ("timing", s.scene().name.as_str(), s.generation());
-    crate::ui::plot_axes::plot(key, height, "main shaft angle (deg)", "")
+    let x_title = tr!("plot.shaft_axis");
+    crate::ui::plot_axes::plot(key, height, &x_title, "")
         .show_axes([true, false])
         .show_grid([true, false])
         .include_y(-0.2)
@@ -34,9 +36,12 @@ pub fn timing_plot(ui: &mut egui::Ui, s: &Session, cursor_deg: f64, height: f32)
                     let (a, b) = (a.to_degrees(), b.to_degrees());
                     let corners = vec![[a, foot], [b, foot], [b, foot + 1.0], [a, foot + 1.0]];
                     p.polygon(
-                        Polygon::new(format!("{} dwell", lane.name), PlotPoints::from(corners))
-                            .fill_color(egui::Color32::from_rgba_unmultiplied(230, 190, 90, 70))
-                            .stroke(egui::Stroke::NONE),
+                        Polygon::new(
+                            tr!("plot.dwell", lane = lane.name),
+                            PlotPoints::from(corners),
+                        )
+                        .fill_color(egui::Color32::from_rgba_unmultiplied(230, 190, 90, 70))
+                        .stroke(egui::Stroke::NONE),
                     );
                 }
                 let points: PlotPoints<'_> = shaft_deg
@@ -56,7 +61,7 @@ pub fn timing_plot(ui: &mut egui::Ui, s: &Session, cursor_deg: f64, height: f32)
                 );
             }
             if cursor_deg.is_finite() {
-                p.vline(VLine::new("now", cursor_deg));
+                p.vline(VLine::new(tr!("plot.now"), cursor_deg));
             }
         });
 }
@@ -65,8 +70,11 @@ pub fn timing_plot(ui: &mut egui::Ui, s: &Session, cursor_deg: f64, height: f32)
 fn stroke_text(lane: &TimingLane, unit: LengthUnit) -> String {
     let [lo, hi] = lane.range;
     if lane.is_angle {
-        format!("swing {:.2}°", (hi - lo).to_degrees())
+        tr!(
+            "plot.swing",
+            angle = format!("{:.2}°", (hi - lo).to_degrees())
+        )
     } else {
-        format!("stroke {}", length(hi - lo, unit))
+        tr!("plot.stroke", length = length(hi - lo, unit))
     }
 }

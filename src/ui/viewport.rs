@@ -412,11 +412,14 @@ fn legend(
         .compact()
         .then_some(st.status.as_deref())
         .flatten();
-    let message = [st.session.message(), status.map(str::to_owned)]
-        .into_iter()
-        .flatten()
-        .collect::<Vec<_>>()
-        .join("\n");
+    let message = [
+        st.session.message_in(crate::ui::words::lang()),
+        status.map(str::to_owned),
+    ]
+    .into_iter()
+    .flatten()
+    .collect::<Vec<_>>()
+    .join("\n");
     if message.is_empty() {
         return [top_height, 0.0];
     }

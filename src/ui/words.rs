@@ -6,8 +6,10 @@
 //! app said; the app's own things through the app's catalogue.
 
 use linkage::Mechanism;
+use linkage::drawing::DrawingProblem;
 use linkage::dyad::GroupLabel;
 use linkage::force_polygon::StagePolygon;
+use linkage::scene::LengthUnit;
 use linkage_diagram::words::{self, Lang};
 
 use crate::i18n::tr;
@@ -17,6 +19,48 @@ pub fn lang() -> Lang {
     match crate::i18n::language() {
         crate::i18n::Language::English => Lang::English,
         crate::i18n::Language::Chinese => Lang::Chinese,
+    }
+}
+
+/// A solver's refusal in the app's language, lengths in `unit`: the links by
+/// their points, the crank's angle in degrees, each condition with its range.
+pub fn refusal(e: &linkage::LinkageError, unit: LengthUnit) -> String {
+    linkage_diagram::refusal::error(lang(), e, unit)
+}
+
+/// Why the drawing is not yet a mechanism, and what to do next with the drawing
+/// tools.
+pub fn drawing_problem(p: &DrawingProblem, unit: LengthUnit) -> String {
+    match p {
+        DrawingProblem::NoLinks => tr!("draw.no_links"),
+        DrawingProblem::Mobility(m) => {
+            let dof = m.dof();
+            let (moving, joints) = (m.moving, m.revolutes + m.prismatics);
+            if dof > 1 {
+                tr!("draw.too_free", dof = dof, moving = moving, joints = joints)
+            } else {
+                tr!("draw.locked", dof = dof, moving = moving, joints = joints)
+            }
+        }
+        DrawingProblem::NoDriver => tr!(
+            "draw.no_driver",
+            tool = tool_name(crate::drawing::Tool::Driver)
+        ),
+        DrawingProblem::DriverNotGrounded(link) => tr!("draw.driver_not_grounded", link = link),
+        DrawingProblem::Invalid(e) => refusal(e, unit),
+    }
+}
+
+/// Why the open scene cannot become a drawing.
+pub fn not_drawable(why: &linkage::drawing::NotDrawable) -> String {
+    use linkage::drawing::NotDrawable;
+    match why {
+        NotDrawable::Forces => tr!("drawing.keeps_forces"),
+        NotDrawable::BlockCarriesPoints(block) => {
+            tr!("drawing.block_carries_points", block = block)
+        }
+        NotDrawable::PointNotDrawn(point) => tr!("drawing.point_not_drawn", point = point),
+        NotDrawable::CamJoint(joint) => tr!("drawing.cam_joint", joint = joint),
     }
 }
 

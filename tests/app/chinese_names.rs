@@ -4,7 +4,9 @@
 //! in the scene menu, the plots' axis titles and the status line. The pictures are written to `target/screens/` to look at.
 
 use eframe::egui;
+use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
+use linkage_lab::LinkageApp;
 use linkage_lab::session::{SceneSource, Session};
 use linkage_lab::ui::control_map::ControlKind;
 
@@ -83,4 +85,48 @@ fn the_app_speaks_chinese_when_chosen_and_english_again() {
     common::settle(&mut h);
     assert_eq!(h.state().state.language, Language::English);
     assert!(h.query_by_label("Play").is_some(), "English again");
+}
+
+/// A refusal in Chinese, as drawn: the die cutter's crank made a hundred times
+/// longer is refused in the user's words and language, with the limit and the
+/// distances, and no English (the solver's inner words nor the English catalogue)
+/// reaches the screen; the same refusal in English once the language is switched.
+#[test]
+fn a_refused_edit_is_worded_in_the_users_language() {
+    use linkage_lab::i18n::Language;
+    use linkage_lab::session::SceneEdit;
+    let mut h = common::sized_harness(1366.0, 768.0);
+    h.ctx
+        .set_missing_glyph_policy(egui::MissingGlyphPolicy::Panic);
+    h.state_mut().state.language = Language::Chinese;
+    common::settle(&mut h);
+    let crank = h.state().state.session.lengths()[1].clone();
+    let value = 100.0
+        * crank
+            .value(h.state().state.session.scene())
+            .expect("a length");
+    h.state_mut()
+        .state
+        .edit(SceneEdit::Length { index: 1, value });
+    common::settle(&mut h);
+    // A label's text is its node's value.
+    let shown = |h: &Harness<'static, LinkageApp>, words: &str| -> Option<String> {
+        h.query_all_by(|n| n.value().is_some_and(|v| v.contains(words)))
+            .next()
+            .and_then(|n| n.value())
+    };
+    let refused = shown(&h, "无法装配").expect("the refusal is drawn in Chinese");
+    assert!(
+        refused.contains("最多可到") && refused.contains(&crank.label),
+        "{refused}"
+    );
+    for english in ["does not fit", "cannot meet", "dyad", "margin"] {
+        assert!(
+            shown(&h, english).is_none(),
+            "English on the screen: {english}"
+        );
+    }
+    h.state_mut().state.language = Language::English;
+    common::settle(&mut h);
+    assert!(shown(&h, "does not fit at crank").is_some());
 }

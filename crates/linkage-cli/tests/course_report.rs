@@ -85,7 +85,8 @@ fn every_scenes_report_holds_the_clis_numbers_with_its_fonts_embedded() {
         assert_eq!(code, Some(0), "{file}: {err}");
         let text = text_of(&pdf);
         assert!(text.contains("Course design report"), "{file}");
-        assert!(text.contains("F = 3n − 2P_L − P_H"), "{file}: {text}");
+        // P_L and P_H set with their subscripts, read back in line.
+        assert!(text.contains("F = 3n − 2PL − PH"), "{file}: {text}");
         let (code, json, err) = run_linkage(&["report", &file]);
         assert_eq!(code, Some(0), "{file}: {err}");
         let report: serde_json::Value = serde_json::from_str(&json).expect("JSON");

@@ -44,6 +44,7 @@ pub mod png;
 pub mod polygon_figure;
 pub mod pose_figure;
 pub mod pose_layout;
+pub mod refusal;
 pub mod svg;
 pub mod svg_cam;
 pub mod svg_course;

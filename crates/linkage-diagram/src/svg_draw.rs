@@ -96,6 +96,31 @@ pub(crate) fn escape(t: &str) -> String {
         .replace('>', "&gt;")
 }
 
+/// `t` escaped, with each `_{…}` of a symbol the catalogue writes (M_{b}, J_{F},
+/// ΔW_{max}) set as a subscript of the text's `size`: what a textbook prints, not
+/// an underscore. A name the user typed with an underscore (`bell_crank`) has no
+/// brace after it and stays as typed.
+pub(crate) fn typeset(t: &str, size: f64) -> String {
+    let plain = escape;
+    let mut out = String::new();
+    let mut rest = t;
+    while let Some(at) = rest.find("_{") {
+        let Some(len) = rest[at..].find('}') else {
+            break;
+        };
+        out.push_str(&plain(&rest[..at]));
+        let _ = write!(
+            out,
+            "<tspan font-size=\"{:.1}\" baseline-shift=\"sub\">{}</tspan>",
+            size * SCRIPT_SCALE,
+            plain(&rest[at + 2..at + len])
+        );
+        rest = &rest[at + len + 1..];
+    }
+    out.push_str(&plain(rest));
+    out
+}
+
 pub(crate) fn text_at(out: &mut String, at: Pt, t: &str, size: f64, weight: &str) {
     let _ = writeln!(
         out,
@@ -103,7 +128,7 @@ pub(crate) fn text_at(out: &mut String, at: Pt, t: &str, size: f64, weight: &str
         at[0],
         at[1],
         family(t),
-        escape(t)
+        typeset(t, size)
     );
 }
 
@@ -115,7 +140,7 @@ pub(crate) fn text_at_end(out: &mut String, at: Pt, t: &str, size: f64) {
         at[0],
         at[1],
         family(t),
-        escape(t)
+        typeset(t, size)
     );
 }
 

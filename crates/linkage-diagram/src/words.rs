@@ -5,6 +5,8 @@
 //! stage treats a force. The app words the same data through these functions, so a
 //! sheet says what the app said.
 
+use std::collections::BTreeMap;
+
 use linkage::Mechanism;
 use linkage::dyad::{DyadKind, DyadLabel, GroupLabel};
 use linkage::force_polygon::{Stage, StagePolygon};
@@ -197,6 +199,93 @@ pub fn known(lang: Lang, k: bool) -> String {
     }
 }
 
+/// `key -> {locale -> text}` of a catalogue file in rust-i18n's `_version: 2`
+/// layout (a key at the margin, its languages indented under it): what the
+/// catalogue tests of this crate and of the app read.
+#[doc(hidden)]
+pub fn catalogue_entries(text: &str) -> BTreeMap<String, BTreeMap<String, String>> {
+    let mut out: BTreeMap<String, BTreeMap<String, String>> = BTreeMap::new();
+    let mut key = None;
+    for line in text.lines() {
+        if line.trim_start().starts_with('#') || line.trim().is_empty() {
+            continue;
+        }
+        if !line.starts_with(' ') {
+            let k = line.trim_end_matches(':').to_string();
+            key = (k != "_version: 2").then_some(k);
+            continue;
+        }
+        let (Some(k), Some((locale, value))) = (&key, line.trim().split_once(": ")) else {
+            continue;
+        };
+        out.entry(k.clone())
+            .or_default()
+            .insert(locale.to_string(), value.trim_matches('"').to_string());
+    }
+    out
+}
+
+/// The scene files' own keys and the notations a Chinese text keeps as written
+/// (units, a value that is no number).
+const KEPT_IN_CHINESE: [&str; 23] = [
+    "NaN",
+    "inf",
+    "rad",
+    "ground",
+    "true",
+    "branches",
+    "models",
+    "Kinetostatics",
+    "guess",
+    "angle",
+    "Left",
+    "Right",
+    "Along",
+    "Against",
+    "rtol",
+    "atol",
+    "UTF",
+    "RRR",
+    "RRP",
+    "RPR",
+    "PRP",
+    "max",
+    "min",
+];
+
+/// The English words of a Chinese `text` (runs of three or more ASCII letters)
+/// outside `%{…}` placeholders, the scene files' keys and notations, and the
+/// user's `names` (a link or point as named in the scene): what the tests of the
+/// Chinese words look for.
+#[doc(hidden)]
+pub fn english_words(text: &str, names: &[&str]) -> Vec<String> {
+    let named = |w: &str| {
+        names.iter().any(|n| {
+            n.split(|c: char| !c.is_ascii_alphabetic())
+                .any(|part| part == w)
+        })
+    };
+    let mut out = Vec::new();
+    let mut word = String::new();
+    let mut depth = 0;
+    for c in text.chars().chain([' ']) {
+        match c {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            c if depth == 0 && c.is_ascii_alphabetic() => {
+                word.push(c);
+                continue;
+            }
+            _ => {}
+        }
+        if word.len() >= 3 && !KEPT_IN_CHINESE.contains(&word.as_str()) && !named(&word) {
+            out.push(word.clone());
+        }
+        word.clear();
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use std::collections::{BTreeMap, BTreeSet};
@@ -205,27 +294,14 @@ mod tests {
 
     const ROOT: &str = env!("CARGO_MANIFEST_DIR");
 
-    /// `key -> {locale -> text}` of the catalogue (its `_version: 2` layout).
+    /// `key -> {locale -> text}` of every catalogue file (the sheets' and the
+    /// refusals').
     fn catalogue() -> BTreeMap<String, BTreeMap<String, String>> {
-        let text =
-            std::fs::read_to_string(format!("{ROOT}/locales/sheets.yml")).expect("the catalogue");
-        let mut out: BTreeMap<String, BTreeMap<String, String>> = BTreeMap::new();
-        let mut key = None;
-        for line in text.lines() {
-            if line.trim_start().starts_with('#') || line.trim().is_empty() {
-                continue;
-            }
-            if !line.starts_with(' ') {
-                let k = line.trim_end_matches(':').to_string();
-                key = (k != "_version: 2").then_some(k);
-                continue;
-            }
-            let (Some(k), Some((locale, value))) = (&key, line.trim().split_once(": ")) else {
-                continue;
-            };
-            out.entry(k.clone())
-                .or_default()
-                .insert(locale.to_string(), value.trim_matches('"').to_string());
+        let mut out = BTreeMap::new();
+        for file in ["sheets.yml", "refusals.yml"] {
+            let text =
+                std::fs::read_to_string(format!("{ROOT}/locales/{file}")).expect("the catalogue");
+            out.extend(catalogue_entries(&text));
         }
         out
     }
@@ -233,8 +309,19 @@ mod tests {
     /// The keys `sw!` is called with in the crate's sources.
     fn keys_used() -> BTreeSet<String> {
         let mut used = BTreeSet::new();
-        for entry in std::fs::read_dir(format!("{ROOT}/src")).expect("sources") {
-            let path = entry.expect("entry").path();
+        let mut dirs = vec![std::path::PathBuf::from(format!("{ROOT}/src"))];
+        let mut files = Vec::new();
+        while let Some(dir) = dirs.pop() {
+            for entry in std::fs::read_dir(dir).expect("sources") {
+                let path = entry.expect("entry").path();
+                if path.is_dir() {
+                    dirs.push(path);
+                } else {
+                    files.push(path);
+                }
+            }
+        }
+        for path in files {
             let text = std::fs::read_to_string(&path).unwrap_or_default();
             for (at, m) in text.match_indices("sw!(") {
                 // Not the pattern's own text in this test.

@@ -192,7 +192,10 @@ fn result(ui: &mut egui::Ui, st: &mut AppState, view: &SynthesisView) -> Option<
     match &view.result {
         None => None,
         Some(Err(why)) => {
-            ui.colored_label(ui.visuals().error_fg_color, why.to_string());
+            ui.colored_label(
+                ui.visuals().error_fg_color,
+                why.words(crate::ui::words::lang()),
+            );
             None
         }
         Some(Ok(design)) => design_view(ui, &mut st.controls, design),

@@ -114,7 +114,8 @@ fn targets(
         tab.csv_error = inputs.read_csv(&tab.csv).err();
     }
     if let Some(why) = &tab.csv_error {
-        ui.colored_label(ui.visuals().error_fg_color, why.to_string());
+        let why = linkage_diagram::refusal::rows(crate::ui::words::lang(), why);
+        ui.colored_label(ui.visuals().error_fg_color, why);
     }
     let clear = ui.button(tr!("path.clear"));
     controls.note(ui, ControlKind::FileButton, "Clear targets", &clear);
@@ -144,14 +145,14 @@ fn canvas(
                 for piece in d.curve(360) {
                     let mm: PlotPoints<'_> =
                         piece.iter().map(|q| [q[0] * 1e3, q[1] * 1e3]).collect();
-                    p.line(Line::new("coupler curve", mm).width(1.5));
+                    p.line(Line::new(tr!("path.coupler_curve"), mm).width(1.5));
                 }
                 if let Some(bars) = linkage_lines(d) {
-                    p.line(Line::new("linkage", bars).width(2.5));
+                    p.line(Line::new(tr!("path.linkage"), bars).width(2.5));
                 }
             }
             let at: PlotPoints<'_> = inputs.targets.iter().map(|t| t.at_mm).collect();
-            p.points(Points::new("targets", at).radius(5.0));
+            p.points(Points::new(tr!("path.target_points"), at).radius(5.0));
             for (i, t) in inputs.targets.iter().enumerate() {
                 let [x, y] = t.at_mm;
                 p.text(
@@ -279,7 +280,12 @@ fn search_buttons(
                     tab.refused = None;
                     tab.chosen = (0, 0);
                 }
-                Err(why) => tab.refused = Some(why.to_string()),
+                Err(why) => {
+                    tab.refused = Some(crate::ui::words::refusal(
+                        &why,
+                        linkage::scene::LengthUnit::Metre,
+                    ))
+                }
             }
         }
         if let Some(job) = tab.job.as_mut() {

@@ -4,6 +4,9 @@
 
 use linkage::Vec2;
 use linkage::scene::{ForceWhen, Models};
+use linkage_diagram::words::Lang;
+
+use crate::session::words::mw;
 
 /// One end of a new link: a point already drawn, or a new one at a place (m).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -178,40 +181,34 @@ pub enum Refusal {
     Coefficient(f64),
     /// A drive the scene would refuse, with the solver's reason (the field and its
     /// valid range).
-    Drive(String),
+    Drive(linkage::LinkageError),
+}
+
+impl Refusal {
+    /// Why the edit was not made, in `lang`.
+    pub fn words(&self, lang: Lang) -> String {
+        match self {
+            Self::SameEnds => mw!(lang, "drawing.same_ends"),
+            Self::AlreadyJoined(link) => mw!(lang, "drawing.already_joined", link = link),
+            Self::AlreadySlider(p) => mw!(lang, "drawing.already_slider", point = p),
+            Self::DriverNotGrounded(link) => mw!(lang, "drawing.driver_not_grounded", link = link),
+            Self::NotFinite => mw!(lang, "drawing.not_finite"),
+            Self::Name(name) if name.trim().is_empty() => mw!(lang, "drawing.empty_name"),
+            Self::Name(name) => mw!(lang, "drawing.name_taken", name = name),
+            Self::GuideThroughPin(link) => mw!(lang, "drawing.guide_through_pin", link = link),
+            Self::Mass(kg) => mw!(lang, "drawing.mass", kg = kg),
+            Self::Speed(rpm) => mw!(lang, "drawing.speed", rpm = rpm),
+            Self::Coefficient(v) => mw!(lang, "drawing.coefficient", value = v),
+            Self::Drive(e) => {
+                linkage_diagram::refusal::error(lang, e, linkage::scene::LengthUnit::Metre)
+            }
+        }
+    }
 }
 
 impl std::fmt::Display for Refusal {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::SameEnds => f.write_str("a link needs two different points"),
-            Self::AlreadyJoined(link) => write!(f, "those points are already on {link}"),
-            Self::AlreadySlider(p) => write!(f, "{p} already slides on a guide"),
-            Self::DriverNotGrounded(link) => write!(
-                f,
-                "{link} has no ground pivot: the input link must turn about one"
-            ),
-            Self::NotFinite => f.write_str("that is not a finite number"),
-            Self::Name(name) if name.trim().is_empty() => f.write_str("a name cannot be empty"),
-            Self::Name(name) => write!(f, "the name {name} is taken"),
-            Self::GuideThroughPin(link) => write!(
-                f,
-                "{link} carries the slider's pin: its guide must be on another link or ground"
-            ),
-            Self::Mass(kg) => write!(
-                f,
-                "{kg} kg is not a mass: give a positive number, or none for a massless link"
-            ),
-            Self::Speed(rpm) => write!(
-                f,
-                "{rpm} rpm cannot drive: the speed must be a finite number other than 0"
-            ),
-            Self::Coefficient(v) => write!(
-                f,
-                "{v} is invalid: a stiffness, free length or damping must be finite and >= 0"
-            ),
-            Self::Drive(why) => f.write_str(why),
-        }
+        f.write_str(&self.words(Lang::English))
     }
 }
 

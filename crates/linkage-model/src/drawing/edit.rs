@@ -43,8 +43,7 @@ pub fn apply(drawing: &Drawing, edit: DrawingEdit) -> Result<Drawing, Refusal> {
         DrawingEdit::SetGravity(on) => next.gravity = on,
         DrawingEdit::SetDrive(drive) => {
             if let Some(spec) = &drive {
-                linkage::model::Drive::from_spec(spec)
-                    .map_err(|e| Refusal::Drive(e.to_string()))?;
+                linkage::model::Drive::from_spec(spec).map_err(Refusal::Drive)?;
             }
             next.drive = drive;
         }

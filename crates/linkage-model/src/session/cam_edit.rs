@@ -7,7 +7,7 @@ use linkage::cam::{Law, SegmentSpec};
 
 use super::Session;
 use super::history::EditTarget;
-use super::notice::Notice;
+use super::notice::{Notice, ValueKind};
 
 /// One edit of a cam joint, by its index in the scene's `cams`.
 #[derive(Clone, Debug, PartialEq)]
@@ -78,9 +78,9 @@ impl Session {
                     .fold(0.0, f64::max);
                 if !(to.is_finite() && to > 0.0 && largest > 0.0) {
                     self.message = Some(Notice::InvalidValue {
-                        what: "cam lift",
+                        what: ValueKind::CamLift,
                         value: to,
-                        valid: "it must be finite and > 0",
+                        valid: linkage::error::Valid::Positive,
                     });
                     return;
                 }
@@ -90,7 +90,10 @@ impl Session {
             }
             CamEdit::Roller(radius) => joint.roller_radius = radius,
         }
-        let what = format!("the cam {}/{}", joint.cam, joint.follower);
+        let what = super::notice::EditSubject::Cam {
+            cam: joint.cam.clone(),
+            follower: joint.follower.clone(),
+        };
         self.rebuild(EditTarget::Cam(cam), scene, what);
     }
 }

@@ -9,7 +9,8 @@ use super::Session;
 use super::dynamic_run::IntegratorChoice;
 use super::history::EditTarget;
 use super::limit;
-use super::notice::Notice;
+use super::notice::{EditSubject, Notice, ValueKind};
+use linkage::error::Valid;
 
 /// One edit a user makes in the viewer.
 #[derive(Clone, Debug, PartialEq)]
@@ -130,9 +131,9 @@ impl Session {
     fn set_spring_k(&mut self, index: usize, k_n_per_m: f64) {
         if !(k_n_per_m.is_finite() && k_n_per_m >= 0.0) {
             self.message = Some(Notice::InvalidValue {
-                what: "spring constant (N/m)",
+                what: ValueKind::SpringConstant,
                 value: k_n_per_m,
-                valid: "it must be finite and >= 0",
+                valid: Valid::NonNegative,
             });
             return;
         }
@@ -141,16 +142,18 @@ impl Session {
             return;
         };
         spring.k_n_per_m = k_n_per_m;
-        let what = format!("the spring {}-{}'s constant", spring.a, spring.b);
+        let what = EditSubject::SpringConstant {
+            ends: [spring.a.clone(), spring.b.clone()],
+        };
         self.rebuild(EditTarget::Spring(index), scene, what);
     }
 
     fn set_mass(&mut self, index: usize, mass_kg: f64) {
         if !(mass_kg.is_finite() && mass_kg > 0.0) {
             self.message = Some(Notice::InvalidValue {
-                what: "mass (kg)",
+                what: ValueKind::Mass,
                 value: mass_kg,
-                valid: "it must be finite and > 0",
+                valid: Valid::Positive,
             });
             return;
         }
@@ -165,7 +168,9 @@ impl Session {
             *i *= mass_kg / old;
         }
         link.mass = Some(mass_kg);
-        let what = format!("the mass of {}", link.name);
+        let what = EditSubject::Mass {
+            link: link.name.clone(),
+        };
         self.rebuild(EditTarget::Mass(index), scene, what);
     }
 
@@ -181,7 +186,9 @@ impl Session {
         };
         let mut scene = self.scene().clone();
         scene.branches.insert(point.to_string(), b);
-        let what = format!("flipping the branch at {point}");
+        let what = EditSubject::Branch {
+            point: point.to_string(),
+        };
         self.rebuild(EditTarget::Branch(point.to_string()), scene, what);
     }
 
@@ -196,7 +203,7 @@ impl Session {
             Ok(built) => self.commit(EditTarget::Replaced, scene, built),
             Err(why) => {
                 self.message = Some(Notice::EditRefused {
-                    what: "putting the design in place".into(),
+                    what: EditSubject::Design,
                     why,
                 })
             }
@@ -208,11 +215,7 @@ impl Session {
         if &scene == self.scene() {
             return;
         }
-        self.rebuild(
-            EditTarget::Reset,
-            scene,
-            "putting back the scene as opened".into(),
-        );
+        self.rebuild(EditTarget::Reset, scene, EditSubject::Reset);
     }
 
     /// Puts back the scene the history holds next, backwards (undo) or forwards
@@ -237,7 +240,7 @@ impl Session {
 
     /// Rebuilds everything from `scene` at the current input; on failure nothing
     /// changes and the notice says `what` failed and why.
-    pub(super) fn rebuild(&mut self, target: EditTarget, scene: SceneFile, what: String) {
+    pub(super) fn rebuild(&mut self, target: EditTarget, scene: SceneFile, what: EditSubject) {
         match super::Built::new(&scene, Some(self.edit_input()), &self.curves().cams) {
             Ok(built) => self.commit(target, scene, built),
             Err(why) => self.message = Some(Notice::EditRefused { what, why }),

@@ -36,22 +36,9 @@ pub enum NotAssembled {
     },
 }
 
-impl NotAssembled {
-    /// The reason in words, lengths in `unit`: the links by their points and the
-    /// distances that do not fit, never the solver's dyad kind or margin.
-    pub fn words(&self, unit: LengthUnit) -> String {
-        match self {
-            Self::Solver(e) => super::words::error(e, unit),
-            Self::Open {
-                dyad, shortfall, ..
-            } => super::words::open(dyad, shortfall.as_deref(), unit),
-        }
-    }
-}
-
 impl fmt::Display for NotAssembled {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.words(LengthUnit::Metre))
+        f.write_str(&self.words(LengthUnit::Metre, linkage_diagram::words::Lang::English))
     }
 }
 

@@ -19,6 +19,7 @@ mod exports;
 pub mod history;
 pub mod limit;
 pub mod notice;
+mod notice_words;
 pub mod params;
 mod playback;
 mod point_edit;
@@ -95,6 +96,19 @@ pub enum OpenError {
     /// An address that names no scene.
     #[error("the URL names no scene")]
     NoScene,
+}
+
+impl OpenError {
+    /// Why the scene did not open, in `lang`.
+    pub fn words(&self, lang: linkage_diagram::words::Lang) -> String {
+        use linkage_diagram::refusal;
+        match self {
+            Self::NoSuchScene(key) => words::mw!(lang, "notice.no_such_scene", key = key),
+            Self::Scene(e) => refusal::error(lang, e, linkage::scene::LengthUnit::Metre),
+            Self::Share(e) => refusal::share(lang, e),
+            Self::NoScene => words::mw!(lang, "notice.no_scene"),
+        }
+    }
 }
 
 impl Session {
@@ -305,10 +319,15 @@ impl Session {
         self.edits
     }
 
-    /// What the last edit could not do, and why, in words (made here, when shown).
+    /// What the last edit could not do, and why, in English (made here, when shown).
     pub fn message(&self) -> Option<String> {
+        self.message_in(linkage_diagram::words::Lang::English)
+    }
+
+    /// What the last edit could not do, and why, in `lang`.
+    pub fn message_in(&self, lang: linkage_diagram::words::Lang) -> Option<String> {
         let unit = self.scene().length_unit;
-        self.message.as_ref().map(|n| n.words(unit))
+        self.message.as_ref().map(|n| n.words(unit, lang))
     }
 
     /// What the last edit could not do, as data.

@@ -3,7 +3,9 @@
 use std::fmt;
 
 use linkage::LinkageError;
+use linkage::error::Valid;
 use linkage::scene::LengthUnit;
+use linkage_diagram::words::Lang;
 
 use super::limit::NotAssembled;
 use super::params::LengthError;
@@ -30,12 +32,12 @@ pub enum Notice {
     LengthInvalid(LengthError),
     /// A value outside its valid range (or not a number).
     InvalidValue {
-        /// What it is, with its unit ("spring constant (N/m)").
-        what: &'static str,
+        /// What it is.
+        what: ValueKind,
         /// The value asked for.
         value: f64,
-        /// The valid range in words.
-        valid: &'static str,
+        /// What it must be.
+        valid: Valid,
     },
     /// A cam segment's angle that leaves the next segment none.
     CamSpanRefused {
@@ -61,8 +63,8 @@ pub enum Notice {
     },
     /// The scene an edit made does not build or solve.
     EditRefused {
-        /// The edit, in words ("flipping the branch at C").
-        what: String,
+        /// The edit.
+        what: EditSubject,
         /// The solver's error.
         why: LinkageError,
     },
@@ -90,95 +92,60 @@ pub enum PointRefusal {
     OtherBranch,
 }
 
-impl Notice {
-    /// The notice as the user reads it, lengths in the scene's `unit`: the links
-    /// by their points, the crank's angle in degrees, never the solver's terms.
-    pub fn words(&self, unit: LengthUnit) -> String {
-        use super::words::{error, significant};
-        match self {
-            Self::LengthRefused {
-                label,
-                value,
-                unit: shown,
-                input_deg,
-                why,
-                limit,
-            } => {
-                let why = why.words(unit);
-                let at = significant(*input_deg, 4);
-                let value = significant(*value, 5);
-                match limit {
-                    Some(limit) => format!(
-                        "{label} = {value} {shown} does not fit at crank {at}°: {why}. At this \
-                         crank angle {label} can go to {} {shown}; the last valid pose stays.",
-                        significant(*limit, 5)
-                    ),
-                    None => {
-                        format!("{label} = {value} {shown}: {why}; the last valid pose stays.")
-                    }
-                }
-            }
-            Self::LengthInvalid(why) => why.to_string(),
-            Self::InvalidValue { what, value, valid } => {
-                format!("{what} = {value} is invalid: {valid}; nothing changed")
-            }
-            Self::CamSpanRefused {
-                segment,
-                deg,
-                room_deg,
-            } => format!(
-                "segment {} of the cam cannot span {}°: the next segment gives it room, \
-                 so it must lie between 0 and {}° (exclusive); nothing changed",
-                segment + 1,
-                significant(*deg, 5),
-                significant(*room_deg, 5)
-            ),
-            Self::InputRefused(why) => error(why, unit),
-            Self::PointRefused { name, why, .. } if *why == PointRefusal::NoSuchPoint => {
-                format!("there is no point named {name}")
-            }
-            Self::PointRefused {
-                name,
-                to,
-                unit: shown,
-                why,
-            } => {
-                let why = match why {
-                    PointRefusal::NotAssembled(n) => n.words(unit),
-                    other => other.to_string(),
-                };
-                format!(
-                    "{name} cannot go to ({:.2}, {:.2}) {shown}: {why}",
-                    to[0], to[1]
-                )
-            }
-            Self::EditRefused { what, why } => format!("{what}: {}", error(why, unit)),
-            Self::HistoryRefused { undo, why } => {
-                let what = if *undo { "undo" } else { "redo" };
-                format!("cannot {what}: {}", error(why, unit))
-            }
-        }
-    }
+/// A value a notice refuses, by what it sets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ValueKind {
+    /// A spring's constant, N/m.
+    SpringConstant,
+    /// A link's mass, kg.
+    Mass,
+    /// A cam segment's lift, in the scene's length unit.
+    CamLift,
+    /// The crank's angle, deg.
+    InputAngle,
 }
 
+/// An edit a notice says could not be made, by what it changed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum EditSubject {
+    /// A spring's constant, the spring by its two points.
+    SpringConstant {
+        /// Its points.
+        ends: [String; 2],
+    },
+    /// A link's mass.
+    Mass {
+        /// The link.
+        link: String,
+    },
+    /// The assembly branch flipped at a point.
+    Branch {
+        /// The point.
+        point: String,
+    },
+    /// A cam joint's program or roller.
+    Cam {
+        /// The cam's link.
+        cam: String,
+        /// The follower's link.
+        follower: String,
+    },
+    /// A synthesised design put in place of the scene.
+    Design,
+    /// The scene put back as opened.
+    Reset,
+}
+
+/// The notice in English, lengths in metres (the command line's and the tests'
+/// words; the app words it in the user's language and unit).
 impl fmt::Display for Notice {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.words(LengthUnit::Metre))
+        f.write_str(&self.words(LengthUnit::Metre, Lang::English))
     }
 }
 
 impl fmt::Display for PointRefusal {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Self::NotFinite => f.write_str("the place is not finite"),
-            Self::NoSuchPoint => f.write_str("no link carries such a point"),
-            Self::NotAssembled(why) => write!(f, "{why}"),
-            Self::OffGuide => {
-                f.write_str("it slides on a guide, so it can move only along the guide's line")
-            }
-            Self::OtherBranch => f.write_str(
-                "the chain assembles there only on its other branch (flip the branch first)",
-            ),
-        }
+        f.write_str(&self.words(LengthUnit::Metre, Lang::English))
     }
 }

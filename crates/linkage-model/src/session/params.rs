@@ -195,18 +195,6 @@ pub enum LengthError {
 
 impl std::fmt::Display for LengthError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::NotPositive {
-                label,
-                value,
-                range: [lo, hi],
-            } => write!(
-                f,
-                "{label} = {value} is invalid: it must be a positive length ({lo:.4} to {hi:.4} on the slider)"
-            ),
-            Self::PointsGone { label } => {
-                write!(f, "{label}: the scene no longer has these points")
-            }
-        }
+        f.write_str(&self.words(linkage_diagram::words::Lang::English))
     }
 }

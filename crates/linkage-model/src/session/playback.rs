@@ -24,9 +24,9 @@ impl Session {
     pub(super) fn move_to_deg(&mut self, input_deg: f64) {
         if !input_deg.is_finite() {
             self.message = Some(Notice::InvalidValue {
-                what: "input angle (deg)",
+                what: super::notice::ValueKind::InputAngle,
                 value: input_deg,
-                valid: "it must be a finite number",
+                valid: linkage::error::Valid::Finite,
             });
             return;
         }

@@ -5,8 +5,10 @@
 
 use linkage::dynamics::Run;
 use linkage::{Kinematics, LinkageError};
+use linkage_diagram::words::Lang;
 
 use super::dynamic_run::{DynamicRun, IntegratorChoice, settings_for};
+use super::words::mw;
 use crate::job::{Job, Work};
 
 /// Integrator steps in one step of the job (a step costs microseconds).
@@ -23,15 +25,21 @@ pub enum RunError {
     Finished,
 }
 
+impl RunError {
+    /// Why the run has no result, in `lang`, lengths in `unit`: a refusal for the
+    /// run's settings names the app's controls.
+    pub fn words(&self, unit: linkage::scene::LengthUnit, lang: Lang) -> String {
+        match self {
+            Self::Solver(e) => super::words::error(e, unit, lang),
+            Self::ThreadEnded => mw!(lang, "notice.thread_ended"),
+            Self::Finished => mw!(lang, "notice.result_taken"),
+        }
+    }
+}
+
 impl std::fmt::Display for RunError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            // A refusal for the run's settings names the app's controls.
-            Self::Solver(LinkageError::Run(r)) => f.write_str(&super::words::run_refusal(r)),
-            Self::Solver(e) => write!(f, "{e}"),
-            Self::ThreadEnded => f.write_str("the run's thread ended"),
-            Self::Finished => f.write_str("the run's result was already taken"),
-        }
+        f.write_str(&self.words(linkage::scene::LengthUnit::Metre, Lang::English))
     }
 }
 

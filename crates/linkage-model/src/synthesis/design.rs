@@ -2,10 +2,15 @@
 //! words), its figure and the scene it opens as; and the small helpers every tab's
 //! table is written with. A leaf of the synthesis modules.
 
+use linkage::scene::LengthUnit;
 use linkage::synthesis::positions::PositionsError;
 use linkage::synthesis::rows::RowError;
 use linkage::{LinkageError, SceneFile};
+use linkage_diagram::refusal;
+use linkage_diagram::words::Lang;
 use thiserror::Error;
+
+use crate::session::words::mw;
 
 /// Why a tab has no design, as data; the window words it.
 #[derive(Clone, Debug, Error, PartialEq)]
@@ -55,6 +60,45 @@ pub enum FunctionSpecError {
     /// The function is equal at both ends: no rise to map.
     #[error("{0} is equal at both ends of the range")]
     EqualEnds(String),
+}
+
+impl SynthError {
+    /// Why the tab has no design, in `lang`.
+    pub fn words(&self, lang: Lang) -> String {
+        match self {
+            Self::Solver(e) => refusal::error(lang, e, LengthUnit::Metre),
+            Self::Rows(e) => refusal::rows(lang, e),
+            Self::Positions(e) => refusal::positions(lang, e),
+            Self::Function(e) => e.words(lang),
+            Self::PathIsSearched => mw!(lang, "synthesis.path_is_searched"),
+            Self::DoesNotSolve(e) => mw!(
+                lang,
+                "synthesis.does_not_solve",
+                why = refusal::error(lang, e, LengthUnit::Metre)
+            ),
+        }
+    }
+}
+
+impl FunctionSpecError {
+    /// Why a function generator's inputs give no design, in `lang`.
+    pub fn words(&self, lang: Lang) -> String {
+        match self {
+            Self::PointCount(n) => mw!(lang, "synthesis.point_count", count = n),
+            Self::EmptyRange(x0, x1) => mw!(lang, "synthesis.empty_range", x0 = x0, x1 = x1),
+            Self::NoSpan => mw!(lang, "synthesis.no_span"),
+            Self::Undefined { function, x0, x1 } => mw!(
+                lang,
+                "synthesis.undefined",
+                function = function,
+                x0 = x0,
+                x1 = x1
+            ),
+            Self::EqualEnds(function) => {
+                mw!(lang, "synthesis.equal_ends", function = function)
+            }
+        }
+    }
 }
 
 /// A design: its table (quantity, value in words) and its scene.
