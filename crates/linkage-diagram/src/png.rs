@@ -135,6 +135,93 @@ impl Faces {
     }
 }
 
+impl Faces {
+    /// Every straight piece of every stroked line of `svg` (a curve by its
+    /// chord), in the page's coordinates: what a test of a sheet's
+    /// legibility checks the texts against (no line drawn through a text).
+    ///
+    /// # Errors
+    /// An SVG that does not parse.
+    pub fn stroked_segments(&self, svg: &str) -> Result<Vec<[crate::geometry::Pt; 2]>, String> {
+        let mut segments = Vec::new();
+        collect_segments(self.tree(svg)?.root(), None, &mut segments);
+        Ok(segments)
+    }
+}
+
+/// The part of the segment `[p, q]` inside `clip` (Liang–Barsky), if any.
+fn clipped(
+    [p, q]: [crate::geometry::Pt; 2],
+    clip: Option<&crate::geometry::Rect>,
+) -> Option<[crate::geometry::Pt; 2]> {
+    let Some(r) = clip else {
+        return Some([p, q]);
+    };
+    let d = [q[0] - p[0], q[1] - p[1]];
+    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
+    for (k, lo, hi) in [(0, r.min[0], r.max[0]), (1, r.min[1], r.max[1])] {
+        if d[k] == 0.0 {
+            if p[k] < lo || p[k] > hi {
+                return None;
+            }
+            continue;
+        }
+        let (a, b) = ((lo - p[k]) / d[k], (hi - p[k]) / d[k]);
+        t0 = t0.max(a.min(b));
+        t1 = t1.min(a.max(b));
+    }
+    let at = |t: f64| [p[0] + t * d[0], p[1] + t * d[1]];
+    (t0 < t1).then(|| [at(t0), at(t1)])
+}
+
+/// The stroked segments under `group`, cut to the clip paths around them (a plot's
+/// curve runs past its frame and is clipped there).
+fn collect_segments(
+    group: &resvg::usvg::Group,
+    clip: Option<crate::geometry::Rect>,
+    out: &mut Vec<[crate::geometry::Pt; 2]>,
+) {
+    use resvg::tiny_skia::PathSegment;
+    for node in group.children() {
+        match node {
+            resvg::usvg::Node::Group(g) => {
+                let own = g.clip_path().map(|c| {
+                    let b = c.root().abs_bounding_box();
+                    crate::geometry::Rect {
+                        min: [f64::from(b.left()), f64::from(b.top())],
+                        max: [f64::from(b.right()), f64::from(b.bottom())],
+                    }
+                });
+                collect_segments(g, own.or(clip), out);
+            }
+            resvg::usvg::Node::Path(p) if p.stroke().is_some() => {
+                let t = p.abs_transform();
+                let at = |q: resvg::tiny_skia::Point| {
+                    let mut q = q;
+                    t.map_point(&mut q);
+                    [f64::from(q.x), f64::from(q.y)]
+                };
+                let (mut start, mut last) = ([0.0; 2], [0.0; 2]);
+                for segment in p.data().segments() {
+                    let to = match segment {
+                        PathSegment::MoveTo(q) => {
+                            start = at(q);
+                            last = start;
+                            continue;
+                        }
+                        PathSegment::LineTo(q) => at(q),
+                        PathSegment::QuadTo(_, q) | PathSegment::CubicTo(_, _, q) => at(q),
+                        PathSegment::Close => start,
+                    };
+                    out.extend(clipped([last, to], clip.as_ref()));
+                    last = to;
+                }
+            }
+            _ => {}
+        }
+    }
+}
+
 fn collect_boxes(group: &resvg::usvg::Group, out: &mut Vec<TextBox>) {
     for node in group.children() {
         match node {
