@@ -1,7 +1,9 @@
 //! Label placement: each label tries candidate places in order of preference — next
 //! to its point or beside its arrow, then on rings further out with a leader line —
 //! and takes the first that stays in the pane and overlaps no label placed before,
-//! no arrow head and no vertex, crossing as few arrows as it can. Greedy placement
+//! no arrow head and no vertex, crossing as few arrows as it can; a leader through
+//! a label, or a label on a leader, counts as three arrows crossed (it reads as
+//! striking the label out). Greedy placement
 //! with candidates is what cartographic labelling does for point and line features;
 //! the figures have tens of labels, so every candidate is checked directly.
 
@@ -13,6 +15,10 @@ pub struct Obstacles {
     bounds: Rect,
     hard: Vec<Rect>,
     segments: Vec<[Pt; 2]>,
+    /// The labels placed so far, each with its gap.
+    labels: Vec<Rect>,
+    /// The leaders drawn so far.
+    leaders: Vec<[Pt; 2]>,
 }
 
 /// Where a label went.
@@ -48,6 +54,8 @@ impl Obstacles {
             bounds,
             hard: heads.chain(dots).collect(),
             segments: shafts.to_vec(),
+            labels: Vec::new(),
+            leaders: Vec::new(),
         }
     }
 
@@ -82,12 +90,32 @@ impl Obstacles {
                 .chain(shapes)
                 .collect(),
             segments,
+            labels: Vec::new(),
+            leaders: Vec::new(),
         }
     }
 
     /// Whether `r` is a free place: in bounds, overlapping nothing hard.
     fn free(&self, r: &Rect) -> bool {
         self.bounds.contains_rect(r) && !self.hard.iter().any(|h| h.overlaps(r))
+    }
+
+    /// How many leaders drawn before cross `r`, and how many labels placed before
+    /// its own leader to `anchor` crosses.
+    fn leader_conflicts(&self, r: &Rect, anchor: Option<Pt>) -> usize {
+        let on_leaders = self
+            .leaders
+            .iter()
+            .filter(|l| r.crosses_segment(l[0], l[1]))
+            .count();
+        let through_labels = anchor.map_or(0, |a| {
+            let from = nearest_on(r, a);
+            self.labels
+                .iter()
+                .filter(|l| l.crosses_segment(from, a))
+                .count()
+        });
+        on_leaders + through_labels
     }
 
     /// How many arrows cross `r`.
@@ -117,7 +145,7 @@ impl Obstacles {
         let mut least_bad: Option<(f64, Rect, Option<Pt>)> = None;
         for (order, (rect, leader)) in candidates.into_iter().enumerate() {
             if self.free(&rect) {
-                let cost = self.crossings(&rect);
+                let cost = self.crossings(&rect) + 3 * self.leader_conflicts(&rect, leader);
                 if best.as_ref().is_none_or(|b| (cost, order) < (b.0, b.1)) {
                     best = Some((cost, order, rect, leader));
                 }
@@ -148,9 +176,12 @@ impl Obstacles {
         // A gap between labels: the measure is approximate, and glyphs set in a real
         // face may reach a pixel past it.
         self.hard.push(rect.expand(LABEL_GAP));
+        self.labels.push(rect.expand(LABEL_GAP));
+        let leader = leader.map(|a| [nearest_on(&rect, a), a]);
+        self.leaders.extend(leader);
         Placed {
             rect,
-            leader: leader.map(|a| [nearest_on(&rect, a), a]),
+            leader,
             collides,
         }
     }
