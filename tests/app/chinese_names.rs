@@ -117,7 +117,7 @@ fn a_refused_edit_is_worded_in_the_users_language() {
     };
     let refused = shown(&h, "无法装配").expect("the refusal is drawn in Chinese");
     assert!(
-        refused.contains("最多可到") && refused.contains(&crank.label),
+        refused.contains("极限值为") && refused.contains(&crank.label),
         "{refused}"
     );
     for english in ["does not fit", "cannot meet", "dyad", "margin"] {
