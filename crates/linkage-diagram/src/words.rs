@@ -5,7 +5,7 @@
 //! stage treats a force. The app words the same data through these functions, so a
 //! sheet says what the app said.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 use linkage::Mechanism;
 use linkage::dyad::{DyadKind, DyadLabel, GroupLabel};
@@ -225,6 +225,42 @@ pub fn catalogue_entries(text: &str) -> BTreeMap<String, BTreeMap<String, String
     out
 }
 
+/// The keys a catalogue macro (`call`: "sw!(", "mw!(") is called with in every file
+/// under `src`, each the first literal after the call: what the catalogue tests of
+/// this crate and of the model check their catalogues against.
+#[doc(hidden)]
+pub fn catalogue_keys_used(src: &std::path::Path, call: &str) -> BTreeSet<String> {
+    let mut used = BTreeSet::new();
+    let mut dirs = vec![src.to_path_buf()];
+    while let Some(dir) = dirs.pop() {
+        let Ok(entries) = std::fs::read_dir(dir) else {
+            continue;
+        };
+        for path in entries.filter_map(|e| e.ok().map(|e| e.path())) {
+            if path.is_dir() {
+                dirs.push(path);
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).unwrap_or_default();
+            for (at, m) in text.match_indices(call) {
+                // Not the pattern's own text in a test.
+                if text[..at].ends_with('"') {
+                    continue;
+                }
+                let rest = &text[at + m.len()..];
+                let Some(start) = rest.find('"') else {
+                    continue;
+                };
+                let rest = &rest[start + 1..];
+                if let Some(end) = rest.find('"') {
+                    used.insert(rest[..end].to_string());
+                }
+            }
+        }
+    }
+    used
+}
+
 /// The scene files' own keys and the notations a Chinese text keeps as written
 /// (units, a value that is no number).
 const KEPT_IN_CHINESE: [&str; 23] = [
@@ -308,37 +344,7 @@ mod tests {
 
     /// The keys `sw!` is called with in the crate's sources.
     fn keys_used() -> BTreeSet<String> {
-        let mut used = BTreeSet::new();
-        let mut dirs = vec![std::path::PathBuf::from(format!("{ROOT}/src"))];
-        let mut files = Vec::new();
-        while let Some(dir) = dirs.pop() {
-            for entry in std::fs::read_dir(dir).expect("sources") {
-                let path = entry.expect("entry").path();
-                if path.is_dir() {
-                    dirs.push(path);
-                } else {
-                    files.push(path);
-                }
-            }
-        }
-        for path in files {
-            let text = std::fs::read_to_string(&path).unwrap_or_default();
-            for (at, m) in text.match_indices("sw!(") {
-                // Not the pattern's own text in this test.
-                if text[..at].ends_with('"') {
-                    continue;
-                }
-                let rest = &text[at + m.len()..];
-                let Some(start) = rest.find('"') else {
-                    continue;
-                };
-                let rest = &rest[start + 1..];
-                if let Some(end) = rest.find('"') {
-                    used.insert(rest[..end].to_string());
-                }
-            }
-        }
-        used
+        catalogue_keys_used(std::path::Path::new(&format!("{ROOT}/src")), "sw!(")
     }
 
     #[test]

@@ -76,7 +76,9 @@ fn problems_and_lines(page: &str) -> (Vec<String>, Vec<String>) {
     let lines = boxes
         .iter()
         .filter_map(|b| {
-            let [p, q] = segments.iter().find(|s| crosses(s, &core(&b.rect)))?;
+            let [p, q] = segments
+                .iter()
+                .find(|[p, q]| core(&b.rect).crosses_segment(*p, *q))?;
             Some(format!(
                 "a line from {p:.1?} to {q:.1?} runs through {:?} at {:?}",
                 b.text, b.rect
@@ -95,24 +97,6 @@ fn core(r: &Rect) -> Rect {
         min: [r.min[0] + dx, r.min[1] + dy],
         max: [r.max[0] - dx, r.max[1] - dy],
     }
-}
-
-/// Whether the segment `[p, q]` passes through `r` (Liang–Barsky clipping).
-fn crosses([p, q]: &[[f64; 2]; 2], r: &Rect) -> bool {
-    let d = [q[0] - p[0], q[1] - p[1]];
-    let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
-    for (k, lo, hi) in [(0, r.min[0], r.max[0]), (1, r.min[1], r.max[1])] {
-        if d[k] == 0.0 {
-            if p[k] < lo || p[k] > hi {
-                return false;
-            }
-            continue;
-        }
-        let (a, b) = ((lo - p[k]) / d[k], (hi - p[k]) / d[k]);
-        t0 = t0.max(a.min(b));
-        t1 = t1.min(a.max(b));
-    }
-    t0 < t1
 }
 
 fn overlap(a: &TextBox, b: &TextBox) -> bool {

@@ -111,35 +111,8 @@ mod tests {
 
     /// The `mw!` keys of every source under `src/`.
     fn keys_used() -> std::collections::BTreeSet<String> {
-        let root = concat!(env!("CARGO_MANIFEST_DIR"), "/src");
-        let mut dirs = vec![std::path::PathBuf::from(root)];
-        let mut used = std::collections::BTreeSet::new();
-        while let Some(dir) = dirs.pop() {
-            for entry in std::fs::read_dir(dir).expect("sources") {
-                let path = entry.expect("entry").path();
-                if path.is_dir() {
-                    dirs.push(path);
-                    continue;
-                }
-                let text = std::fs::read_to_string(&path).unwrap_or_default();
-                for (at, m) in text.match_indices("mw!(") {
-                    // Not the pattern's own text in this test.
-                    if text[..at].ends_with('"') {
-                        continue;
-                    }
-                    let rest = &text[at + m.len()..];
-                    // The key is the literal after the language.
-                    let Some(start) = rest.find('"') else {
-                        continue;
-                    };
-                    let rest = &rest[start + 1..];
-                    if let Some(end) = rest.find('"') {
-                        used.insert(rest[..end].to_string());
-                    }
-                }
-            }
-        }
-        used
+        let src = concat!(env!("CARGO_MANIFEST_DIR"), "/src");
+        linkage_diagram::words::catalogue_keys_used(std::path::Path::new(src), "mw!(")
     }
 
     #[test]
