@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Real-browser test of the web demo: builds it (scripts/build_web.sh), serves dist/ on
+# Real-browser test of the web demo: builds it (scripts/build_web.sh; not when
+# LINKAGE_WEB_BUILT is set, as CI has built it), serves dist/ on
 # 127.0.0.1, and runs tests/browser/browser_test.mjs in Debian's headless Chromium via
 # playwright-core, once per build (WebGL2, WebGPU; in the WebGPU build what its renderer
 # decides, over every scene), and every_scene.mjs, links_and_drops.mjs,
@@ -16,8 +17,11 @@ fi
 (cd tests/browser && npm ci --no-audit --no-fund)
 node --test tests/browser/frames_test.mjs
 started=$(date +%s)
-bash scripts/build_web.sh
-echo "== web builds took $(( $(date +%s) - started )) s"
+# CI builds dist/ beforehand, beside the native build (scripts/check.sh).
+if [ -z "${LINKAGE_WEB_BUILT:-}" ]; then
+    bash scripts/build_web.sh
+    echo "== web builds took $(( $(date +%s) - started )) s"
+fi
 # The CLI the browser test compares the app's diagram download with (in CI the one
 # the tests built: scripts/check.sh).
 [ -n "${LINKAGE_BINS_FROM_TESTS:-}" ] || cargo build -q -p linkage-cli
