@@ -77,7 +77,7 @@ section "fuzzing and properties at scale"
 # `--workspace`, not `-p linkage`: the solver alone is built with other features
 # than in the workspace (no `parallel`), and was built anew (70 s).
 LINKAGE_FUZZ_CASES=100000 LINKAGE_PROPERTY_CASES=34000 \
-    cargo test --workspace --test fuzz_scenes --test properties -- --nocapture
+    cargo test --workspace --test solver -- fuzz_scenes:: properties:: --nocapture
 
 section "CLI over every scene"
 bin="${CARGO_TARGET_DIR:-target}/debug"

@@ -20,24 +20,73 @@ pub enum Unit {
     None,
 }
 
+/// What an axis shows, in words: named in the app's language.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AxisWord {
+    /// The crank's angle.
+    CrankAngle,
+    /// The transmission angle.
+    TransmissionAngle,
+    /// The torque on the input.
+    InputTorque,
+    /// The logarithm of the output's force per unit input torque.
+    Amplification,
+    /// The reduced model's torque with the machine at rest.
+    ReducedTorqueAtRest,
+}
+
+impl AxisWord {
+    /// The word in the app's language.
+    fn shown(self) -> String {
+        match self {
+            Self::CrankAngle => tr!("axis.crank_angle"),
+            Self::TransmissionAngle => tr!("axis.transmission_angle"),
+            Self::InputTorque => tr!("axis.input_torque"),
+            Self::Amplification => tr!("axis.amplification"),
+            Self::ReducedTorqueAtRest => tr!("axis.reduced_torque_at_rest"),
+        }
+    }
+}
+
+/// What an axis shows: a word of the catalogue, or a name shown as it is (a symbol
+/// such as ω or J(q), a name the scene gave, a name already in the app's language).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AxisName<'a> {
+    /// A word, in the app's language.
+    Word(AxisWord),
+    /// Shown as it is.
+    AsIs(&'a str),
+}
+
 /// An axis: what it shows and in which unit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Axis<'a> {
-    /// What it shows ("input torque", "crank angle").
-    pub name: &'a str,
+    /// What it shows.
+    pub name: AxisName<'a>,
     /// Its unit.
     pub unit: Unit,
 }
 
 impl<'a> Axis<'a> {
-    /// An axis of `name` in `unit`.
+    /// An axis named `name` as it is (a symbol, a scene's name), in `unit`.
     pub const fn new(name: &'a str, unit: Unit) -> Self {
-        Self { name, unit }
+        Self {
+            name: AxisName::AsIs(name),
+            unit,
+        }
+    }
+
+    /// An axis showing `word`, in `unit`.
+    pub const fn word(word: AxisWord, unit: Unit) -> Self {
+        Self {
+            name: AxisName::Word(word),
+            unit,
+        }
     }
 }
 
 /// The crank-angle axis most plots share.
-pub const CRANK: Axis<'static> = Axis::new("crank angle", Unit::Fixed("deg"));
+pub const CRANK: Axis<'static> = Axis::word(AxisWord::CrankAngle, Unit::Fixed("deg"));
 
 /// A series ready to plot: its values scaled to the axis' prefix, and the axis
 /// title with its unit ("input torque (kN·m)").
@@ -71,25 +120,14 @@ pub fn series(axis: Axis<'_>, data: &[[f64; 2]]) -> Series {
 
 /// An axis title with its unit and prefix, its name in the app's language.
 pub fn title(axis: Axis<'_>, prefix: Prefix) -> String {
-    let name = shown_name(axis.name);
+    let name = match axis.name {
+        AxisName::Word(word) => word.shown(),
+        AxisName::AsIs(name) => name.to_owned(),
+    };
     match axis.unit {
         Unit::Si(u) => format!("{name} ({})", prefix.unit(u)),
         Unit::Fixed(u) => format!("{name} ({u})"),
         Unit::None => name,
-    }
-}
-
-/// An axis' name as shown: the plots name their axes in English (symbols such as
-/// ω, J(q) and the scene's own link names stay as they are); the words among them
-/// come from the catalogue.
-fn shown_name(name: &str) -> String {
-    match name {
-        "crank angle" => tr!("axis.crank_angle"),
-        "transmission angle" => tr!("axis.transmission_angle"),
-        "input torque" => tr!("axis.input_torque"),
-        "log10 amplification" => tr!("axis.amplification"),
-        "M(q) at rest" => tr!("axis.reduced_torque_at_rest"),
-        other => other.to_owned(),
     }
 }
 
@@ -267,7 +305,7 @@ mod tests {
     #[test]
     fn a_torque_takes_its_prefix_and_an_angle_none() {
         let torque = [[0.0, -6_000.0], [90.0, 51_720.0], [180.0, 100.0]];
-        let s = series(Axis::new("input torque", Unit::Si("N·m")), &torque);
+        let s = series(Axis::word(AxisWord::InputTorque, Unit::Si("N·m")), &torque);
         assert_eq!(s.title, "input torque (kN·m)");
         assert!((s.points[1][1] - 51.72).abs() < 1e-12);
         let s = series(CRANK, &torque);

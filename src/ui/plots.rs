@@ -14,7 +14,7 @@ use crate::session::curves::ModelCurves;
 use crate::session::derived::Shown;
 use crate::state::AppState;
 use crate::ui::control_map::ControlKind;
-use crate::ui::plot_axes::{self, Axis, CRANK, Unit};
+use crate::ui::plot_axes::{self, Axis, AxisWord, CRANK, Unit};
 
 /// Which plot the plot pane shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -188,7 +188,7 @@ impl PlotsPanel {
             PlotTab::Output => output_plots(ui, s),
             PlotTab::Transmission => {
                 let x = cursor_deg(s);
-                let angle = Axis::new("transmission angle", Unit::Fixed("deg"));
+                let angle = Axis::word(AxisWord::TransmissionAngle, Unit::Fixed("deg"));
                 let data = &s.curves().transmission_deg;
                 row(
                     ui,
@@ -286,10 +286,10 @@ fn output_plots(ui: &mut egui::Ui, s: &Session) {
 }
 
 /// The input torque's axis.
-const TORQUE: Axis<'static> = Axis::new("input torque", Unit::Si("N·m"));
+const TORQUE: Axis<'static> = Axis::word(AxisWord::InputTorque, Unit::Si("N·m"));
 /// The force amplification's axis: the logarithm of the output's force per unit input
 /// torque (N per N·m; the tab's hover says so).
-const AMPLIFICATION: Axis<'static> = Axis::new("log10 amplification", Unit::None);
+const AMPLIFICATION: Axis<'static> = Axis::word(AxisWord::Amplification, Unit::None);
 
 /// The input torque and the force amplification (on a log scale).
 fn torque_plots(ui: &mut egui::Ui, s: &Session) {
@@ -404,7 +404,7 @@ fn reduced_model_plots(ui: &mut egui::Ui, s: &Session) {
     let x = cursor_deg(s);
     let q = Axis::new("q", Unit::Fixed("deg"));
     let inertia = Axis::new("J(q)", Unit::Fixed("kg·m²"));
-    let moment = Axis::new("M(q) at rest", Unit::Si("N·m"));
+    let moment = Axis::word(AxisWord::ReducedTorqueAtRest, Unit::Si("N·m"));
     row(
         ui,
         "reduced",
