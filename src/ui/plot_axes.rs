@@ -162,9 +162,14 @@ pub fn nice_step(raw: f64, angle: bool) -> f64 {
 }
 
 /// The ticks between `lo` and `hi`: every multiple of a round step, about
-/// [`TICKS`] of them.
-pub fn ticks(lo: f64, hi: f64, angle: bool) -> Vec<GridMark> {
-    let step = nice_step((hi - lo) / TICKS, angle);
+/// [`TICKS`] of them, and no step below `least_step` (so that a narrow plot's labels
+/// stand far enough apart to be drawn).
+pub fn ticks(lo: f64, hi: f64, angle: bool, least_step: f64) -> Vec<GridMark> {
+    let mut step = nice_step((hi - lo) / TICKS, angle);
+    if step < least_step {
+        // nice_step gives at least three quarters of what it is asked for.
+        step = nice_step(least_step / 0.75, angle);
+    }
     if !(hi > lo && step > 0.0) || (hi - lo) / step > 100.0 {
         return Vec::new();
     }
@@ -182,13 +187,14 @@ pub fn ticks(lo: f64, hi: f64, angle: bool) -> Vec<GridMark> {
 pub fn tick_text(mark: GridMark) -> String {
     let step = mark.step_size;
     let decimals = if step > 0.0 && step.is_finite() {
-        let d = (-step.log10().floor()).max(0.0) as usize;
-        // 2.5, 0.25: one more digit than the power of ten.
-        if ((step / 10f64.powf(step.log10().floor())) - 2.5).abs() < 1e-9 {
-            d + 1
+        let power = step.log10().floor();
+        // 2.5, 0.25: one more digit than the power of ten (none for 25 or 250).
+        let extra = if ((step / 10f64.powf(power)) - 2.5).abs() < 1e-9 {
+            1.0
         } else {
-            d
-        }
+            0.0
+        };
+        (extra - power).max(0.0) as usize
     } else {
         0
     };
@@ -204,9 +210,22 @@ pub fn tick_text(mark: GridMark) -> String {
     }
 }
 
-fn grid(input: GridInput, angle: bool) -> Vec<GridMark> {
-    ticks(input.bounds.0, input.bounds.1, angle)
+/// The ticks of an axis whose labels are drawn in full from `label_gap` points apart:
+/// no closer (a cam's four plots side by side in a laptop's pane, 150 points wide,
+/// had ticks every 60° 25 points apart, their labels faded out to nothing).
+fn grid(input: GridInput, angle: bool, label_gap: f32) -> Vec<GridMark> {
+    // base_step_size is the plot's units across GRID_LEAST points.
+    let least = input.base_step_size * f64::from(label_gap / GRID_LEAST);
+    ticks(input.bounds.0, input.bounds.1, angle, least)
 }
+
+/// The least spacing of grid lines, points (egui_plot's own default, set here
+/// because [`grid`] reads its units per this spacing).
+const GRID_LEAST: f32 = 8.0;
+/// The spacing of tick labels along x and along y, points: hidden below the first,
+/// in full from the second.
+const X_LABEL_GAP: [f32; 2] = [24.0, 30.0];
+const Y_LABEL_GAP: [f32; 2] = [12.0, 18.0];
 
 /// A plot `height` high, keyed by `id`, with the readable axes: its titles, round
 /// ticks labelled from end to end, the value under the pointer to four digits.
@@ -226,13 +245,14 @@ pub fn plot<'a>(
     Plot::new(id)
         .height(height)
         .allow_scroll(false)
-        .x_grid_spacer(move |i| grid(i, x_angle))
-        .y_grid_spacer(move |i| grid(i, y_angle))
+        .grid_spacing(GRID_LEAST..=300.0)
+        .x_grid_spacer(move |i| grid(i, x_angle, X_LABEL_GAP[1]))
+        .y_grid_spacer(move |i| grid(i, y_angle, Y_LABEL_GAP[1]))
         .custom_x_axes(vec![
-            axis(AxisHints::new_x(), x_title).label_spacing(24.0..=30.0),
+            axis(AxisHints::new_x(), x_title).label_spacing(X_LABEL_GAP[0]..=X_LABEL_GAP[1]),
         ])
         .custom_y_axes(vec![
-            axis(AxisHints::new_y(), y_title).label_spacing(12.0..=18.0),
+            axis(AxisHints::new_y(), y_title).label_spacing(Y_LABEL_GAP[0]..=Y_LABEL_GAP[1]),
         ])
         .label_formatter(move |hover| {
             let p = pointer(hover);
@@ -269,7 +289,7 @@ mod tests {
             (1e5, 1e5 + 3.0),
             (-120.0, 7_000.0),
         ] {
-            let marks = ticks(lo, hi, false);
+            let marks = ticks(lo, hi, false, 0.0);
             assert!((3..=7).contains(&marks.len()), "{lo}..{hi}: {marks:?}");
             let step = marks[0].step_size;
             assert!(marks[0].value - lo <= step, "{lo}..{hi}: first {marks:?}");
@@ -284,11 +304,29 @@ mod tests {
         }
     }
 
+    /// A narrow plot's ticks stand at least as far apart as its labels need.
+    #[test]
+    fn a_narrow_axis_takes_a_longer_step() {
+        let turn: Vec<f64> = ticks(0.0, 360.0, true, 72.0)
+            .iter()
+            .map(|m| m.value)
+            .collect();
+        assert_eq!(turn, [0.0, 90.0, 180.0, 270.0, 360.0]);
+        for (lo, hi, least) in [(0.0, 1.0, 0.3), (-6e3, 5.8e4, 2.1e4), (0.0, 360.0, 200.0)] {
+            let marks = ticks(lo, hi, lo == 0.0 && hi == 360.0, least);
+            assert!(marks.len() >= 2, "{lo}..{hi}: {marks:?}");
+            assert!(marks[0].step_size >= least, "{lo}..{hi}: {marks:?}");
+        }
+    }
+
     #[test]
     fn a_turn_is_ticked_in_divisors_of_the_turn() {
-        let steps: Vec<f64> = ticks(0.0, 360.0, true).iter().map(|m| m.value).collect();
+        let steps: Vec<f64> = ticks(0.0, 360.0, true, 0.0)
+            .iter()
+            .map(|m| m.value)
+            .collect();
         assert_eq!(steps, [0.0, 60.0, 120.0, 180.0, 240.0, 300.0, 360.0]);
-        let marks = ticks(34.3, 117.7, true);
+        let marks = ticks(34.3, 117.7, true, 0.0);
         assert_eq!(marks[0].step_size, 15.0);
     }
 
@@ -298,6 +336,8 @@ mod tests {
         assert_eq!(tick_text(mark(20_000.0, 10_000.0)), "20000");
         assert_eq!(tick_text(mark(2.5, 2.5)), "2.5");
         assert_eq!(tick_text(mark(0.75, 0.25)), "0.75");
+        assert_eq!(tick_text(mark(750.0, 250.0)), "750");
+        assert_eq!(tick_text(mark(75.0, 25.0)), "75");
         assert_eq!(tick_text(mark(-1e-17, 0.1)), "0");
     }
 

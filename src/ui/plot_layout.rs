@@ -5,11 +5,14 @@
 use eframe::egui;
 
 /// Narrowest a plot is drawn beside another, points: below, plots stand one under
-/// another (a phone's sheet).
-const LEAST_WIDTH: f32 = 200.0;
-/// The lowest a plot is drawn, points: its axis title, three labelled ticks and its
-/// curve read. A pane lower than this scrolls instead of squashing its plots.
-pub const LEAST_HEIGHT: f32 = 150.0;
+/// another (a phone's sheet). A cam's s, v, a and j stand side by side in a laptop's
+/// plot pane (771 points at 1366×768) with their ticks 0…360 read.
+const LEAST_WIDTH: f32 = 180.0;
+/// The lowest a plot is drawn, points: its axis titles, four labelled ticks and its
+/// curve read. Down to this the plots fit the pane (a plot a few points taller than
+/// the pane hid its axis title below the pane's edge, the flywheel tab at 1366×768);
+/// a pane lower still scrolls instead of squashing its plots.
+pub const LEAST_HEIGHT: f32 = 120.0;
 /// The highest a plot in a stack is drawn, points (a phone's sheet shows the next
 /// one's top below it).
 const STACKED_HEIGHT: f32 = 260.0;
@@ -26,10 +29,11 @@ const SPIKE: f64 = 1.0;
 pub fn side_by_side(ui: &mut egui::Ui, n: usize, mut draw: impl FnMut(&mut egui::Ui, usize, f32)) {
     // The last tick's label is centred on the plot's right edge: room for its half.
     let mut draw = |ui: &mut egui::Ui, i: usize, height: f32| {
-        ui.scope(|ui| {
+        let drawn = ui.scope(|ui| {
             ui.set_max_width(ui.available_width() - TICK_ROOM);
             draw(ui, i, height);
         });
+        note_drawn(ui, drawn.response.rect);
     };
     let room = ui.available_height() - ui.spacing().item_spacing.y;
     if ui.available_width() >= LEAST_WIDTH * n as f32 {
@@ -45,6 +49,51 @@ pub fn side_by_side(ui: &mut egui::Ui, n: usize, mut draw: impl FnMut(&mut egui:
             draw(ui, i, height);
         }
     }
+}
+
+/// A plot drawn this frame: its rectangle (axes and titles included) and the part of
+/// the pane it is seen through.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct DrawnPlot {
+    /// The plot with its axes.
+    pub rect: egui::Rect,
+    /// What the pane shows of the plot's scroll area.
+    pub seen: egui::Rect,
+}
+
+/// The plots of one frame, with that frame's number.
+#[derive(Clone, Debug, Default)]
+struct DrawnPlots {
+    frame: u64,
+    plots: Vec<DrawnPlot>,
+}
+
+fn drawn_id() -> egui::Id {
+    egui::Id::unique("plot_layout::drawn")
+}
+
+/// Notes a plot drawn at `rect` in `ui`'s frame.
+fn note_drawn(ui: &egui::Ui, rect: egui::Rect) {
+    let frame = ui.ctx().cumulative_frame_nr();
+    let seen = ui.clip_rect();
+    ui.ctx().data_mut(|d| {
+        let drawn = d.get_temp_mut_or_default::<DrawnPlots>(drawn_id());
+        if drawn.frame != frame {
+            *drawn = DrawnPlots {
+                frame,
+                plots: Vec::new(),
+            };
+        }
+        drawn.plots.push(DrawnPlot { rect, seen });
+    });
+}
+
+/// The plots drawn in the last frame that drew any (tests check that none is cut by
+/// the pane's edge).
+pub fn drawn_plots(ctx: &egui::Context) -> Vec<DrawnPlot> {
+    ctx.data(|d| d.get_temp::<DrawnPlots>(drawn_id()))
+        .map(|d| d.plots)
+        .unwrap_or_default()
 }
 
 /// The y range a plot shows, padded by a tenth: every value where the extremes lie
