@@ -54,7 +54,7 @@ timed() {
     return $rc
 }
 for build in webgl2 webgpu; do
-    echo "== $build build (browser tests from $(( $(date +%s) - started )) s after the web builds began)"
+    echo "== $build build (at $(( $(date +%s) - started )) s of the browser test script)"
     export LINKAGE_BUILD=$build
     # Every check in the WebGL2 build; in the WebGPU build what its renderer decides:
     # the die cutter drawn, dragged and played, then every shipped scene opened by its

@@ -68,7 +68,11 @@ def main():
     # Latin face joins letters into a ligature, as "fi" in "profile").
     chars |= {chr(c) for c in range(0x20, 0x7F)} | {chr(c) for c in range(0xA0, 0x100)}
     chars |= {chr(c) for c in range(0x391, 0x3CA)}
-    chars |= set("−–—‘’“”…′″·•°±µ²³ⁿᵗ√∞≈≤≥")
+    chars |= set("−–—‘’“”…′″•°±µ²³ⁿᵗ√∞≈≤≥")
+    # Not the middle dot: this face's is full-width (the Chinese 间隔号), and a unit's
+    # dot in a Chinese line read "kN · m". Without it, resvg takes the Latin face's for
+    # that one character, and egui the Latin face's anyway.
+    chars.discard("·")
     face = TTCollection(str(SOURCE)).fonts[SC_INDEX]
     options = subset.Options()
     options.layout_features = ["*"]

@@ -2,7 +2,7 @@
 # Regenerates the example course-design reports under docs/examples/reports: the die
 # cutter, the paper-cup feed with its cam and the gravity flipper, in English and in
 # Chinese (`linkage course-report --pdf`). Run from the repository root after a change
-# to the report's layout or words: tests/course_report.rs reads them back.
+# to the report's layout or words: crates/linkage-cli/tests/command_line/course_report.rs reads them back.
 set -euo pipefail
 cargo build -q -p linkage-cli
 out=docs/examples/reports

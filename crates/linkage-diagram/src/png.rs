@@ -258,4 +258,48 @@ mod tests {
         let latin_only = undrawn_with(svg, &options(UBUNTU, "Ubuntu", false)).expect("parses");
         assert_eq!(latin_only.concat(), "曲柄连杆，滑块");
     }
+
+    /// A unit's dot in a line set in the Chinese face comes from the Latin face:
+    /// the Chinese face's is full-width, and "kN·m" read "kN · m" in a Chinese
+    /// report (the subset leaves it out, scripts/cjk_font.py).
+    #[test]
+    fn a_chinese_lines_unit_dot_is_the_latin_one() {
+        let svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"300\" height=\"40\">\
+                   <text x=\"5\" y=\"30\" font-size=\"20\" font-family=\"Noto Sans CJK SC\">\
+                   平衡力矩 50.31 kN·m</text></svg>";
+        let tree = Faces::new(UBUNTU, "Ubuntu").tree(svg).expect("parses");
+        let mut dots = Vec::new();
+        collect_glyph_faces(tree.root(), tree.fontdb(), &mut dots);
+        let faces: Vec<&String> = dots
+            .iter()
+            .filter(|(t, _)| t == "·")
+            .map(|(_, f)| f)
+            .collect();
+        assert_eq!(faces, ["Ubuntu"], "{dots:?}");
+    }
+
+    /// Each drawn character with the family of the face that draws it.
+    fn collect_glyph_faces(
+        group: &resvg::usvg::Group,
+        db: &resvg::usvg::fontdb::Database,
+        out: &mut Vec<(String, String)>,
+    ) {
+        for node in group.children() {
+            match node {
+                resvg::usvg::Node::Group(g) => collect_glyph_faces(g, db, out),
+                resvg::usvg::Node::Text(t) => {
+                    for span in t.layouted() {
+                        for g in &span.positioned_glyphs {
+                            let family = db
+                                .face(g.font)
+                                .and_then(|f| f.families.first().map(|(n, _)| n.clone()))
+                                .unwrap_or_default();
+                            out.push((g.text.clone(), family));
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
 }
