@@ -47,13 +47,18 @@ pub struct LaidPose {
 }
 
 /// The box of the ground symbol drawn under a pivot at `p`: a triangle 14 px wide
-/// and 11 px high with a base line 20 px wide.
+/// and 11 px high with a base line 20 px wide, and [`SYMBOL_CLEARANCE`] either side:
+/// a joint letter placed flush against the symbol's box was drawn a little wider
+/// than its estimate, over the base line's end.
 pub fn pivot_symbol_box(p: Pt) -> Rect {
     Rect {
-        min: [p[0] - 10.0, p[1]],
-        max: [p[0] + 10.0, p[1] + 12.0],
+        min: [p[0] - 10.0 - SYMBOL_CLEARANCE, p[1]],
+        max: [p[0] + 10.0 + SYMBOL_CLEARANCE, p[1] + 12.0],
     }
 }
+
+/// Room kept between a ground symbol's base line and a letter beside it, px.
+const SYMBOL_CLEARANCE: f64 = 2.5;
 
 /// A centre farther from the mechanism's box than this many times its size is
 /// listed instead of drawn (it would shrink the mechanism to a speck).
