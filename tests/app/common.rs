@@ -127,3 +127,17 @@ pub fn open_dropping_edits(
     state.push(Command::Open(Box::new(session)));
     state.push(Command::Answer(true));
 }
+
+/// Every scene file in `assets/scenes` (read from the directory, not listed), in
+/// order of name.
+pub fn shipped_scene_files() -> Vec<std::path::PathBuf> {
+    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes");
+    let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(dir)
+        .expect("scene dir")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "ron"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 6, "{files:?}");
+    files
+}

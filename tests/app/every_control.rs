@@ -28,20 +28,14 @@ use common::settle;
 
 /// The display name of every scene file in `assets/scenes`.
 fn shipped_scene_names() -> Vec<(PathBuf, String)> {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes");
-    let mut out: Vec<(PathBuf, String)> = std::fs::read_dir(dir)
-        .expect("scene dir")
-        .map(|e| e.expect("entry").path())
-        .filter(|p| p.extension().is_some_and(|e| e == "ron"))
+    common::shipped_scene_files()
+        .into_iter()
         .map(|p| {
             let text = std::fs::read_to_string(&p).expect("read");
             let name = linkage::SceneFile::parse(&text).expect("parses").name;
             (p, name)
         })
-        .collect();
-    out.sort();
-    assert!(out.len() >= 6, "{out:?}");
-    out
+        .collect()
 }
 
 /// Opens a scene from the picker; the edits to the last one are dropped when the app

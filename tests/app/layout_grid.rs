@@ -271,18 +271,12 @@ fn the_view_and_the_tab_rows_hold_at_every_size_after_every_panel_action() {
     }
 }
 
-/// The key of every scene file in `assets/scenes` (read from the directory).
+/// The key of every scene file in `assets/scenes`.
 fn shipped_scene_keys() -> Vec<String> {
-    let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/assets/scenes");
-    let mut keys: Vec<String> = std::fs::read_dir(dir)
-        .expect("scene dir")
-        .map(|e| e.expect("entry").path())
-        .filter(|p| p.extension().is_some_and(|e| e == "ron"))
+    crate::common::shipped_scene_files()
+        .iter()
         .map(|p| p.file_stem().expect("stem").to_string_lossy().into_owned())
-        .collect();
-    keys.sort();
-    assert!(keys.len() >= 6, "{keys:?}");
-    keys
+        .collect()
 }
 
 /// The first row of plots of every plot tab of every shipped scene is seen whole in
