@@ -7,7 +7,7 @@ use crate::figure::ArrowStyle;
 pub use crate::figure::Figure;
 use crate::geometry::{Pt, Rect, distance};
 use crate::label::Label;
-use crate::placement::{Obstacles, place_arrow_label, place_vertex_label};
+use crate::placement::{Anchor, Obstacles, place_all, place_vertex_label};
 
 /// Sizes of the drawing, in pixels.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -220,7 +220,7 @@ pub fn layout_polygon_fitting(
     let heads: Vec<[Pt; 3]> = arrows.iter().filter_map(|a| a.head).collect();
     let mut obstacles = Obstacles::new(pane.expand(-2.0), &shafts, &heads, &vertices);
     let mut labels = vertex_labels(fig, &vertices, &mut obstacles, measure);
-    labels.extend(arrow_labels(fig, &arrows, &mut obstacles, measure));
+    labels.extend(arrow_labels(fig, &arrows, &obstacles, measure));
     let scale_bar =
         (s > 0.0).then(|| fitted.scale_bar(units.width().max(units.height()), pane, sizes));
     LaidPolygon {
@@ -314,25 +314,39 @@ fn label_order(arrows: &[LaidArrow]) -> Vec<&LaidArrow> {
     order
 }
 
-/// A label per relative or component arrow, the shortest (least room) first.
+/// A label per relative or component arrow, placed among `obstacles` the shortest
+/// (least room) first, then in the orders [`place_all`] tries where a label is
+/// left crossed by a line.
 fn arrow_labels(
     fig: &dyn Figure,
     arrows: &[LaidArrow],
-    obstacles: &mut Obstacles,
+    obstacles: &Obstacles,
     measure: &dyn Fn(&Label) -> [f64; 2],
 ) -> Vec<LaidLabel> {
-    label_order(arrows)
+    let labelled: Vec<(&LaidArrow, Label)> = label_order(arrows)
         .into_iter()
-        .filter_map(|a| {
-            let label = fig.arrow_label(a.index)?;
-            let placed = place_arrow_label(a.from, a.to, measure(&label), obstacles);
-            Some(LaidLabel {
-                label,
-                rect: placed.rect,
-                leader: placed.leader,
-                owner: LabelOwner::Arrow(a.index),
-                collides: placed.collides,
-            })
+        .filter_map(|a| Some((a, fig.arrow_label(a.index)?)))
+        .collect();
+    let anchors: Vec<(Anchor, [f64; 2])> = labelled
+        .iter()
+        .map(|(a, label)| {
+            let anchor = Anchor::Arrow {
+                from: a.from,
+                to: a.to,
+            };
+            (anchor, measure(label))
+        })
+        .collect();
+    let placed = place_all(obstacles, &anchors);
+    labelled
+        .into_iter()
+        .zip(placed)
+        .map(|((a, label), placed)| LaidLabel {
+            label,
+            rect: placed.rect,
+            leader: placed.leader,
+            owner: LabelOwner::Arrow(a.index),
+            collides: placed.collides,
         })
         .collect()
 }

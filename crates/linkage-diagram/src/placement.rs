@@ -30,6 +30,9 @@ pub struct Placed {
     pub leader: Option<[Pt; 2]>,
     /// Whether every candidate collided (the least bad one was taken).
     pub collides: bool,
+    /// The arrows it crosses, weighted as [`Obstacles`] weighs them (0: clear of
+    /// every line).
+    pub cost: usize,
 }
 
 /// The free space kept round a placed label, pixels.
@@ -118,12 +121,22 @@ impl Obstacles {
         on_leaders + through_labels
     }
 
-    /// How many arrows cross `r`.
+    /// How many arrows cross `r`, an arrow through its text's core (which strikes
+    /// the text out, where one across its edge only grazes it) counting as
+    /// [`STRUCK_OUT`] of them.
     fn crossings(&self, r: &Rect) -> usize {
+        let core = text_core(r);
         self.segments
             .iter()
             .filter(|s| r.crosses_segment(s[0], s[1]))
-            .count()
+            .map(|s| {
+                if core.crosses_segment(s[0], s[1]) {
+                    STRUCK_OUT
+                } else {
+                    1
+                }
+            })
+            .sum()
     }
 
     /// How badly `r` collides: overlap area with hard obstacles and the outside.
@@ -159,9 +172,9 @@ impl Obstacles {
                 }
             }
         }
-        let (rect, leader, collides) = match (best, least_bad) {
-            (Some((_, _, r, l)), _) => (r, l, false),
-            (None, Some((_, r, l))) => (r, l, true),
+        let (rect, leader, collides, cost) = match (best, least_bad) {
+            (Some((c, _, r, l)), _) => (r, l, false, c),
+            (None, Some((_, r, l))) => (r, l, true, self.crossings(&r)),
             // The callers always give candidates; were there none, the label sits
             // at the pane's corner, marked as colliding, rather than stop the drawing.
             (None, None) => (
@@ -171,6 +184,7 @@ impl Obstacles {
                 },
                 None,
                 true,
+                0,
             ),
         };
         // A gap between labels: the measure is approximate, and glyphs set in a real
@@ -183,7 +197,24 @@ impl Obstacles {
             rect,
             leader,
             collides,
+            cost,
         }
+    }
+}
+
+/// What a line through a text's core costs, in arrows crossed: as a leader through
+/// a label, it reads as striking the text out.
+const STRUCK_OUT: usize = 3;
+
+/// The middle of a label's box, where its glyphs' strokes are: the box less a tenth
+/// of its width either side and 15 % of its height above and below (the
+/// ascenders', descenders' and scripts' room, which a line may cross and leave the
+/// text legible). Wider than the glyphs' core, as the box is an approximate measure.
+fn text_core(r: &Rect) -> Rect {
+    let (dx, dy) = (0.1 * r.width(), 0.15 * r.height());
+    Rect {
+        min: [r.min[0] + dx, r.min[1] + dy],
+        max: [r.max[0] - dx, r.max[1] - dy],
     }
 }
 
@@ -231,8 +262,42 @@ fn directions(first: Pt, n: usize) -> impl Iterator<Item = Pt> {
     })
 }
 
-/// Rings further out for a label with a leader, pixels.
+/// Rings further out for a label with a leader, pixels: tried in turn with
+/// [`RING_DIRECTIONS`] directions, then, where none of them was clear, the outer
+/// ones again halfway between those directions and on two rings further still
+/// (a crowded spot: a polygon's vertex among its labels, a plan's web of positions).
 const RINGS_PX: [f64; 5] = [12.0, 20.0, 32.0, 48.0, 70.0];
+
+/// Directions on each ring.
+const RING_DIRECTIONS: usize = 16;
+
+/// The rings of the second pass, pixels.
+const SECOND_RINGS_PX: [f64; 4] = [48.0, 70.0, 100.0, 140.0];
+
+/// The ring candidates round `anchor` (first pass, then the second), each with its
+/// leader to `anchor`: from `first` on, alternating either side.
+fn ring_candidates(
+    anchor: Pt,
+    first: Pt,
+    size: [f64; 2],
+) -> impl Iterator<Item = (Rect, Option<Pt>)> {
+    // By its angle, as `first` may be zero (a zero-length arrow's normal), which
+    // `directions` reads as the angle 0.
+    let half_step = std::f64::consts::PI / RING_DIRECTIONS as f64;
+    let (s, c) = (first[1].atan2(first[0]) + half_step).sin_cos();
+    let between = [c, s];
+    let on = move |rings: &'static [f64], from: Pt| {
+        rings.iter().flat_map(move |&r| {
+            directions(from, RING_DIRECTIONS)
+                .map(move |d| (box_towards(anchor, d, r, size, Clear::Point), Some(anchor)))
+        })
+    };
+    let last_two = &SECOND_RINGS_PX[2..];
+    on(&RINGS_PX, first)
+        .chain(on(&SECOND_RINGS_PX[..2], between))
+        .chain(on(last_two, first))
+        .chain(on(last_two, between))
+}
 
 /// Places a vertex's label next to it, preferring direction `away`.
 pub fn place_vertex_label(anchor: Pt, away: Pt, size: [f64; 2], o: &mut Obstacles) -> Placed {
@@ -247,11 +312,7 @@ pub fn place_vertex_label(anchor: Pt, away: Pt, size: [f64; 2], o: &mut Obstacle
             None,
         )
     });
-    let far = RINGS_PX.into_iter().flat_map(move |r| {
-        directions(away, 16)
-            .map(move |d| (box_towards(anchor, d, r, size, Clear::Point), Some(anchor)))
-    });
-    o.choose(near.chain(far))
+    o.choose(near.chain(ring_candidates(anchor, away, size)))
 }
 
 /// Places an arrow's label beside it, near its middle first.
@@ -265,10 +326,7 @@ pub fn place_arrow_label(from: Pt, to: Pt, size: [f64; 2], o: &mut Obstacles) ->
             .map(move |side| (box_towards(at, side, 3.0, size, Clear::Line), None))
     });
     let mid = along(from, [to[0] - from[0], to[1] - from[1]], 0.5);
-    let far = RINGS_PX.into_iter().flat_map(move |r| {
-        directions(n, 16).map(move |d| (box_towards(mid, d, r, size, Clear::Point), Some(mid)))
-    });
-    o.choose(beside.chain(far))
+    o.choose(beside.chain(ring_candidates(mid, n, size)))
 }
 
 /// The point of `r`'s outline nearest to `p`.
@@ -277,4 +335,81 @@ fn nearest_on(r: &Rect, p: Pt) -> Pt {
         p[0].clamp(r.min[0], r.max[0]),
         p[1].clamp(r.min[1], r.max[1]),
     ]
+}
+
+/// Where a label goes: by a vertex (preferring the direction `away`) or beside an
+/// arrow or a line.
+#[derive(Clone, Copy, Debug)]
+pub enum Anchor {
+    /// A point: a joint, a polygon's vertex, a position's pin.
+    Vertex {
+        /// The point.
+        at: Pt,
+        /// The direction preferred, away from the figure's middle.
+        away: Pt,
+    },
+    /// An arrow or a link's side, from `from` to `to`.
+    Arrow {
+        /// Its tail.
+        from: Pt,
+        /// Its head.
+        to: Pt,
+    },
+}
+
+/// Tries of [`place_all`] beyond the first, from each end of the given order.
+const REPAIR_TRIES: usize = 3;
+
+/// What a label over another or past the pane costs in [`place_all`]'s totals.
+const COLLIDES: usize = 1000;
+
+/// Places a label of each size at its anchor, clear of `obstacles` and of each
+/// other, returned in the order given. Greedy placement in one order leaves the
+/// last labels the worst places; where a label is left crossed by a line (a crowded
+/// corner), the crossed labels go first in a new try, up to [`REPAIR_TRIES`] times
+/// from the order given and as many from its reverse, and the try whose labels
+/// cross the fewest lines is kept.
+pub fn place_all(obstacles: &Obstacles, labels: &[(Anchor, [f64; 2])]) -> Vec<Placed> {
+    let given: Vec<usize> = (0..labels.len()).collect();
+    let mut best = place_in(obstacles, labels, &given);
+    for start in [given.clone(), given.into_iter().rev().collect()] {
+        let mut order = start;
+        for _ in 0..REPAIR_TRIES {
+            if best.1 == 0 {
+                break;
+            }
+            let (crossed, rest): (Vec<usize>, Vec<usize>) =
+                order.iter().partition(|&&i| best.0[i].cost > 0);
+            order = crossed.into_iter().chain(rest).collect();
+            let next = place_in(obstacles, labels, &order);
+            if next.1 < best.1 {
+                best = next;
+            }
+        }
+    }
+    best.0
+}
+
+/// The labels placed in `order` among a copy of `obstacles`, in the order given,
+/// with their total cost.
+fn place_in(
+    obstacles: &Obstacles,
+    labels: &[(Anchor, [f64; 2])],
+    order: &[usize],
+) -> (Vec<Placed>, usize) {
+    let mut o = obstacles.clone();
+    let mut placed = vec![None; labels.len()];
+    for &i in order {
+        let (anchor, size) = labels[i];
+        placed[i] = Some(match anchor {
+            Anchor::Vertex { at, away } => place_vertex_label(at, away, size, &mut o),
+            Anchor::Arrow { from, to } => place_arrow_label(from, to, size, &mut o),
+        });
+    }
+    let placed: Vec<Placed> = placed.into_iter().flatten().collect();
+    let total = placed
+        .iter()
+        .map(|p| if p.collides { COLLIDES } else { p.cost })
+        .sum();
+    (placed, total)
 }

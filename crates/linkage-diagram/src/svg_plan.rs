@@ -7,10 +7,10 @@ use std::fmt::Write as _;
 
 use linkage::{LinkId, Mechanism, Solution};
 
-use crate::geometry::{Pt, Rect};
+use crate::geometry::{Pt, Rect, distance};
 use crate::label::Label;
 use crate::layout::{Fit, Sizes};
-use crate::placement::{Obstacles, Placed, place_arrow_label, place_vertex_label};
+use crate::placement::{Anchor, Obstacles, Placed, place_all};
 use crate::pose_figure::{PoseFigure, link_number};
 use crate::pose_layout::pivot_symbol_box;
 use crate::svg_draw::{FONT, TITLE_H, frame, label_at, line, text_at};
@@ -18,6 +18,7 @@ use crate::svg_draw::{FONT, TITLE_H, frame, label_at, line, text_at};
 const BLUE: &str = "#1e5aaa";
 const GREY: &str = "#9a9a9a";
 const NUMBER: &str = "#b0306a";
+const JOINT: &str = "#000000";
 
 /// Every position's links, the start drawn strong, lettered and numbered.
 pub(crate) fn plan(
@@ -69,27 +70,23 @@ pub(crate) fn plan(
     for &p in &pivots {
         pivot(out, p);
     }
-    let start = PoseFigure::new(m, &positions[0], None);
-    let joints: Vec<(String, Pt)> = start
-        .joints
-        .iter()
-        .map(|(name, p)| (name.clone(), fit.px(*p)))
-        .collect();
     let flat: Vec<Vec<Pt>> = px_all.iter().flatten().cloned().collect();
-    let mut obstacles = Obstacles::for_points(
+    let mut labels = joint_letters(m, &positions[0], &fit, fit.px(units.centre()));
+    // The joints' dots, which no label may cover.
+    let dots: Vec<Pt> = labels.iter().filter_map(PlanLabel::point).collect();
+    labels.extend(link_numbers(m, &px_all[0]));
+    labels.extend(position_numbers(m, positions, &fit));
+    let obstacles = Obstacles::for_points(
         inner,
         &flat,
-        joints.iter().map(|j| &j.1),
+        dots.iter(),
         pivots.iter().map(|&p| pivot_symbol_box(p)),
     );
-    let middle = fit.px(units.centre());
-    for (name, at) in &joints {
-        let away = [at[0] - middle[0], at[1] - middle[1]];
-        let placed = place_vertex_label(*at, away, size(name), &mut obstacles);
-        draw(out, name, &placed, "#000000");
+    let anchors: Vec<(Anchor, [f64; 2])> =
+        labels.iter().map(|l| (l.anchor, size(&l.text))).collect();
+    for (label, placed) in labels.iter().zip(place_all(&obstacles, &anchors)) {
+        draw(out, &label.text, &placed, label.colour);
     }
-    link_numbers(out, m, &px_all[0], &mut obstacles);
-    position_numbers(out, m, positions, &fit, &mut obstacles);
     let bar = fit.scale_bar(units.width().max(units.height()), inner, sizes);
     line(out, bar.from, bar.to, "#000000", 2.0, false);
     text_at(
@@ -117,44 +114,125 @@ fn outlines(m: &Mechanism, s: &Solution) -> Vec<Vec<Pt>> {
         .collect()
 }
 
-/// The start's links by their numbers, beside each link's first side.
-fn link_numbers(out: &mut String, m: &Mechanism, start: &[Vec<Pt>], o: &mut Obstacles) {
-    for (link, l) in m.moving_links().zip(start) {
-        let text = link_number(m, link).to_string();
-        let placed = match l[..] {
-            [a, b, ..] => place_arrow_label(a, b, size(&text), o),
-            [a] => place_vertex_label(a, [1.0, -1.0], size(&text), o),
-            [] => continue,
-        };
-        draw(out, &text, &placed, BLUE);
+/// A label of the plan: its text, colour and where it goes.
+struct PlanLabel {
+    text: String,
+    colour: &'static str,
+    anchor: Anchor,
+}
+
+impl PlanLabel {
+    /// The point it names, if it names one.
+    fn point(&self) -> Option<Pt> {
+        match self.anchor {
+            Anchor::Vertex { at, .. } => Some(at),
+            Anchor::Arrow { .. } => None,
+        }
     }
 }
 
-/// Each position's number at the crank pin (away from the crank's pivot) and at the
-/// output's point.
-fn position_numbers(
-    out: &mut String,
-    m: &Mechanism,
-    positions: &[Solution],
-    fit: &Fit,
-    o: &mut Obstacles,
-) {
-    let pivot = ground_point(m, m.driver.link).map(|p| fit.px(p));
-    let output_pivot = ground_point(m, m.output).map(|p| fit.px(p));
-    for (i, s) in positions.iter().enumerate() {
-        let text = i.to_string();
-        for (link, centre) in [(m.driver.link, pivot), (m.output, output_pivot)] {
-            if i > 0 && link == m.driver.link && m.output == m.driver.link {
-                continue;
+/// The start's joints by their letters, away from the figure's `middle` (pixels).
+fn joint_letters(m: &Mechanism, start: &Solution, fit: &Fit, middle: Pt) -> Vec<PlanLabel> {
+    PoseFigure::new(m, start, None)
+        .joints
+        .iter()
+        .map(|(name, p)| {
+            let at = fit.px(*p);
+            PlanLabel {
+                text: name.clone(),
+                colour: JOINT,
+                anchor: Anchor::Vertex {
+                    at,
+                    away: [at[0] - middle[0], at[1] - middle[1]],
+                },
             }
-            let Some(at) = far_point(m, s, link).map(|p| fit.px(p)) else {
-                continue;
+        })
+        .collect()
+}
+
+/// The start's links by their numbers, beside each link's first side.
+fn link_numbers(m: &Mechanism, start: &[Vec<Pt>]) -> Vec<PlanLabel> {
+    m.moving_links()
+        .zip(start)
+        .filter_map(|(link, l)| {
+            let anchor = match l[..] {
+                [from, to, ..] => Anchor::Arrow { from, to },
+                [at] => Anchor::Vertex {
+                    at,
+                    away: [1.0, -1.0],
+                },
+                [] => return None,
             };
+            Some(PlanLabel {
+                text: link_number(m, link).to_string(),
+                colour: BLUE,
+                anchor,
+            })
+        })
+        .collect()
+}
+
+/// Each position's number at the crank pin (away from the crank's pivot) and at the
+/// output's point; positions whose points fall within [`SAME_SPOT_PX`] of each other
+/// share one label ("0–3, 11"), as a slider with a short stroke on a large drawing
+/// puts all its positions on a few pixels.
+fn position_numbers(m: &Mechanism, positions: &[Solution], fit: &Fit) -> Vec<PlanLabel> {
+    let mut labels = Vec::new();
+    for link in [m.driver.link, m.output] {
+        if link == m.output && m.output == m.driver.link {
+            continue;
+        }
+        let centre = ground_point(m, link).map(|p| fit.px(p));
+        let points: Vec<(usize, Pt)> = positions
+            .iter()
+            .enumerate()
+            .filter_map(|(i, s)| Some((i, fit.px(far_point(m, s, link)?))))
+            .collect();
+        for (numbers, at) in same_spots(&points) {
             let away = centre.map_or([0.0, -1.0], |c| [at[0] - c[0], at[1] - c[1]]);
-            let placed = place_vertex_label(at, away, size(&text), o);
-            draw(out, &text, &placed, NUMBER);
+            labels.push(PlanLabel {
+                text: number_list(&numbers),
+                colour: NUMBER,
+                anchor: Anchor::Vertex { at, away },
+            });
         }
     }
+    labels
+}
+
+/// Points closer than this share one label, pixels: about a number's height.
+const SAME_SPOT_PX: f64 = 10.0;
+
+/// The positions grouped by spot: each group's numbers and its first point, every
+/// point within [`SAME_SPOT_PX`] of its group's first.
+fn same_spots(points: &[(usize, Pt)]) -> Vec<(Vec<usize>, Pt)> {
+    let mut groups: Vec<(Vec<usize>, Pt)> = Vec::new();
+    for &(i, p) in points {
+        let near = |g: &&mut (Vec<usize>, Pt)| distance(g.1, p) < SAME_SPOT_PX;
+        match groups.iter_mut().find(|g| near(g)) {
+            Some(g) => g.0.push(i),
+            None => groups.push((vec![i], p)),
+        }
+    }
+    groups
+}
+
+/// Numbers in rising order as a short list, three or more in a row as a range:
+/// [0, 1, 2, 3, 11] reads "0–3, 11".
+fn number_list(numbers: &[usize]) -> String {
+    let mut runs: Vec<(usize, usize)> = Vec::new();
+    for &n in numbers {
+        match runs.last_mut() {
+            Some((_, last)) if *last + 1 == n => *last = n,
+            _ => runs.push((n, n)),
+        }
+    }
+    let run = |&(a, b): &(usize, usize)| match b - a {
+        0 => a.to_string(),
+        1 => format!("{a}, {b}"),
+        _ => format!("{a}–{b}"),
+    };
+    runs.iter().map(run).collect::<Vec<_>>().join(", ")
 }
 
 /// Where `link` is pinned to the frame, metres (its pivot's ground point).
@@ -221,4 +299,29 @@ fn pivot(out: &mut String, p: Pt) {
         p[0] + 6.0,
         p[1] + 10.0
     );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_in_a_row_read_as_a_range() {
+        assert_eq!(number_list(&[0, 1, 2, 3, 11]), "0–3, 11");
+        assert_eq!(number_list(&[4, 5, 9]), "4, 5, 9");
+        assert_eq!(number_list(&[7]), "7");
+    }
+
+    #[test]
+    fn positions_on_one_spot_share_a_label() {
+        let points = [
+            (0, [0.0, 0.0]),
+            (1, [30.0, 0.0]),
+            (2, [3.0, 4.0]),
+            (3, [31.0, 2.0]),
+            (4, [60.0, 0.0]),
+        ];
+        let groups: Vec<Vec<usize>> = same_spots(&points).into_iter().map(|g| g.0).collect();
+        assert_eq!(groups, [vec![0, 2], vec![1, 3], vec![4]]);
+    }
 }

@@ -27,16 +27,6 @@ const EDGE: f64 = 15.0;
 /// touch by antialiasing's width.
 const SLACK: f64 = 0.5;
 
-/// Lines drawn through the middle of a text, over every sheet of the test below:
-/// 102 when first counted (2026-11-28), 38 once a leader through a label or a
-/// label on a leader weighs as three arrows crossed (`placement`), 20 once a ground
-/// symbol keeps a letter's width clear beside its base line (a joint letter was
-/// drawn over the line's end). What is left: a polygon's term label crossed by
-/// another term's vector, a position number of the course sheet's plan by a link of
-/// another position. The count may only go down (the test fails on any other count,
-/// so that a fix lowers it here); a new one fails the test.
-const LINES_THROUGH_TEXT_LEFT: usize = 20;
-
 /// The problems on one page: texts past the edge and texts over texts; then the
 /// lines drawn through texts.
 fn problems(page: &str) -> Vec<String> {
@@ -90,10 +80,13 @@ fn problems_and_lines(page: &str) -> (Vec<String>, Vec<String>) {
 }
 
 /// The middle of a text's box: its glyphs' cores, which a line the text names may
-/// pass beside (a label sits by its line) but not through.
+/// pass beside (a label sits by its line) but not through. The box less 15 % of its
+/// width either side and 22 % of its height above and below: a line through a
+/// term's subscript ("a_B^n" with its arrow along the B) strikes it out as surely
+/// as one through the letter (with 30 %, as first measured, that one passed).
 fn core(r: &Rect) -> Rect {
     let [w, h] = [r.max[0] - r.min[0], r.max[1] - r.min[1]];
-    let (dx, dy) = (0.15 * w, 0.3 * h);
+    let (dx, dy) = (0.15 * w, 0.22 * h);
     Rect {
         min: [r.min[0] + dx, r.min[1] + dy],
         max: [r.max[0] - dx, r.max[1] - dy],
@@ -145,9 +138,8 @@ fn every_page_of_every_sheet_is_a4_with_no_text_over_text() {
         found.join("\n")
     );
     assert!(
-        lines.len() == LINES_THROUGH_TEXT_LEFT,
-        "{} lines through texts where {LINES_THROUGH_TEXT_LEFT} are left (fewer: lower \
-         LINES_THROUGH_TEXT_LEFT):\n{}",
+        lines.is_empty(),
+        "{} lines through texts:\n{}",
         lines.len(),
         lines.join("\n")
     );
