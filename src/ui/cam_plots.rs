@@ -10,7 +10,7 @@ use egui_plot::{HLine, Line, PlotPoints, Points, VLine};
 use crate::i18n::tr;
 use crate::session::Session;
 use crate::session::cam_curves::CamCurves;
-use crate::ui::plot_axes::{self, Axis, Unit};
+use crate::ui::plot_axes::{self, Axis, AxisTitle, Unit};
 
 /// Red, for the places past a limit.
 const PAST: egui::Color32 = egui::Color32::from_rgb(220, 70, 60);
@@ -43,7 +43,7 @@ pub fn motion_plots(ui: &mut egui::Ui, s: &Session) {
         (
             [180.0 / std::f64::consts::PI; 4],
             [
-                Unit::Fixed("°"),
+                Unit::Degrees,
                 Unit::Fixed("°/s"),
                 Unit::Fixed("°/s²"),
                 Unit::Fixed("°/s³"),
@@ -94,7 +94,7 @@ pub fn limit_plots(ui: &mut egui::Ui, s: &Session) {
     let pressure = series(c, |p| p.pressure_angle_rad.to_degrees());
     let radius = series(c, |p| p.profile_radius_m / length.to_metres());
     let pressure_name = tr!("cam.pressure_axis", limit = format!("{limit:.0}"));
-    let pressure_axis = Axis::new(&pressure_name, Unit::Fixed("°"));
+    let pressure_axis = Axis::new(&pressure_name, Unit::Degrees);
     let radius_name = tr!("cam.radius_axis");
     let radius_axis = Axis::new(
         &radius_name,
@@ -158,13 +158,13 @@ fn cam_plot(
         .iter()
         .fold((lo, hi), |(a, b), &l| (a.min(l), b.max(l)));
     let key = (id, i, s.scene().name.as_str(), s.generation());
-    let x_title = tr!("cam.angle_axis");
+    let x_title = AxisTitle::degrees(tr!("cam.angle_axis"));
     plot_axes::plot(key, height, &x_title, &series.title)
         .include_y(lo)
         .include_y(hi)
         .show(ui, |p| {
             p.line(Line::new(
-                series.title.clone(),
+                series.title.text.clone(),
                 data.iter().copied().collect::<PlotPoints<'_>>(),
             ));
             for &l in limits {

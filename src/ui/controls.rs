@@ -13,7 +13,7 @@ use crate::ui::number_field::{NumberInput, NumberSpec, slider_row};
 
 /// The crank-angle slider's name in the control map, and its English label (UI
 /// tests find it by this).
-pub const CRANK_LABEL: &str = "crank angle (deg)";
+pub const CRANK_LABEL: &str = "crank angle (°)";
 
 /// The control panel.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {

@@ -11,7 +11,7 @@ use linkage_diagram::numbers::{si, significant};
 
 use crate::i18n::tr;
 use crate::session::curves::FLYWHEEL_DELTA;
-use crate::ui::plot_axes::{self, Axis, Unit};
+use crate::ui::plot_axes::{self, Axis, AxisTitle, Unit};
 
 /// The figures in one line, then the two plots side by side (stacked when narrow).
 pub fn flywheel_plots(
@@ -51,8 +51,8 @@ pub fn flywheel_plots(
         .map(|&[x, y]| [x, y * surplus.factor])
         .collect();
     let mean = sized.mean_torque_n_m * torque.factor;
-    let crank_title = tr!("plot.crank_axis");
-    let inertia_title = tr!("plot.reduced_inertia_axis");
+    let crank_title = AxisTitle::degrees(tr!("plot.crank_axis"));
+    let inertia_title = AxisTitle::plain(tr!("plot.reduced_inertia_axis"));
     crate::ui::plot_layout::side_by_side(ui, 3, |ui, which, height| {
         let key = (key, "flywheel", which);
         match which {

@@ -11,7 +11,7 @@ use linkage_diagram::numbers::{Prefix, si, significant};
 
 use crate::i18n::tr;
 use crate::session::curves::ShakingCurves;
-use crate::ui::plot_axes::{self, Axis, Unit};
+use crate::ui::plot_axes::{self, Axis, AxisTitle, Unit};
 
 /// The steady state's figures, then ω–φ and ω–t side by side.
 pub fn steady_plots(
@@ -42,15 +42,20 @@ pub fn steady_plots(
     let plots = if from_rest.is_empty() { 2 } else { 3 };
     crate::ui::plot_layout::side_by_side(ui, plots, |ui, which, height| {
         let (x_label, name, data) = match which {
-            0 => (tr!("plot.crank_axis"), tr!("plot.steady_line"), &by_angle),
-            1 => ("t (s)".to_string(), tr!("plot.steady_line"), &by_time),
+            0 => (
+                AxisTitle::degrees(tr!("plot.crank_axis")),
+                tr!("plot.steady_line"),
+                &by_angle,
+            ),
+            1 => (AxisTitle::plain("t (s)"), tr!("plot.steady_line"), &by_time),
             _ => (
-                tr!("plot.from_rest_axis"),
+                AxisTitle::plain(tr!("plot.from_rest_axis")),
                 tr!("plot.run_up_line"),
                 &from_rest,
             ),
         };
-        plot_axes::plot((key, "steady", which), height, &x_label, "ω (rad/s)").show(ui, |p| {
+        let y_label = AxisTitle::plain("ω (rad/s)");
+        plot_axes::plot((key, "steady", which), height, &x_label, &y_label).show(ui, |p| {
             p.line(Line::new(name, PlotPoints::from(data.clone())));
             p.hline(HLine::new(tr!("plot.nominal"), nominal_rad_s));
             if which == 0 {
@@ -122,7 +127,7 @@ pub fn shaking_plots(ui: &mut egui::Ui, key: (&str, u64), sc: &ShakingCurves, cu
             });
         } else {
             let key = (key, "shaking", which);
-            let x_title = tr!("plot.crank_axis");
+            let x_title = AxisTitle::degrees(tr!("plot.crank_axis"));
             plot_axes::plot(key, height, &x_title, &force("|F|")).show(ui, |p| {
                 p.line(Line::new(
                     tr!("plot.without"),

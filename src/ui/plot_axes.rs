@@ -14,7 +14,10 @@ pub enum Unit {
     /// An SI unit that takes a prefix (N, N·m, J, W, m/s, m/s²): the plot picks the
     /// one that suits its values.
     Si(&'static str),
-    /// A unit written as it is (deg, deg/s, rad/s, the scene's mm or m, kg·m²).
+    /// An angle in degrees, written °: its ticks step by divisors of the turn
+    /// (15°, 30°, 90°…).
+    Degrees,
+    /// A unit written as it is (°/s, rad/s, the scene's mm or m, kg·m²).
     Fixed(&'static str),
     /// A plain number (a ratio, a share, a logarithm).
     None,
@@ -86,7 +89,7 @@ impl<'a> Axis<'a> {
 }
 
 /// The crank-angle axis most plots share.
-pub const CRANK: Axis<'static> = Axis::word(AxisWord::CrankAngle, Unit::Fixed("deg"));
+pub const CRANK: Axis<'static> = Axis::word(AxisWord::CrankAngle, Unit::Degrees);
 
 /// A series ready to plot: its values scaled to the axis' prefix, and the axis
 /// title with its unit ("input torque (kN·m)").
@@ -95,7 +98,7 @@ pub struct Series {
     /// The points, y scaled by the prefix.
     pub points: Vec<[f64; 2]>,
     /// The axis title.
-    pub title: String,
+    pub title: AxisTitle,
     /// The factor the y values were multiplied by.
     pub factor: f64,
 }
@@ -118,22 +121,50 @@ pub fn series(axis: Axis<'_>, data: &[[f64; 2]]) -> Series {
     }
 }
 
+/// An axis title as shown, and whether the axis is an angle in degrees (its ticks
+/// step by 15°, 30°, 90°…).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct AxisTitle {
+    /// The title with its unit: "input torque (kN·m)".
+    pub text: String,
+    /// Whether the axis' unit is the degree.
+    pub degrees: bool,
+}
+
+impl AxisTitle {
+    /// A title whose axis is not an angle (or has no title: "").
+    pub fn plain(text: impl Into<String>) -> Self {
+        Self {
+            text: text.into(),
+            degrees: false,
+        }
+    }
+
+    /// A title whose axis is an angle in degrees ("main shaft angle (°)").
+    pub fn degrees(text: String) -> Self {
+        Self {
+            text,
+            degrees: true,
+        }
+    }
+}
+
 /// An axis title with its unit and prefix, its name in the app's language.
-pub fn title(axis: Axis<'_>, prefix: Prefix) -> String {
+pub fn title(axis: Axis<'_>, prefix: Prefix) -> AxisTitle {
     let name = match axis.name {
         AxisName::Word(word) => word.shown(),
         AxisName::AsIs(name) => name.to_owned(),
     };
-    match axis.unit {
+    let text = match axis.unit {
         Unit::Si(u) => format!("{name} ({})", prefix.unit(u)),
+        Unit::Degrees => format!("{name} (°)"),
         Unit::Fixed(u) => format!("{name} ({u})"),
         Unit::None => name,
+    };
+    AxisTitle {
+        text,
+        degrees: axis.unit == Unit::Degrees,
     }
-}
-
-/// Whether an axis' unit is an angle in degrees (its ticks step by 15°, 30°, 90°…).
-fn is_angle(title: &str) -> bool {
-    title.ends_with("(deg)") || title.ends_with("(°)")
 }
 
 /// About how many ticks an axis gets.
@@ -232,10 +263,11 @@ const Y_LABEL_GAP: [f32; 2] = [12.0, 18.0];
 pub fn plot<'a>(
     id: impl std::hash::Hash + std::fmt::Debug,
     height: f32,
-    x_title: &str,
-    y_title: &str,
+    x_title: &AxisTitle,
+    y_title: &AxisTitle,
 ) -> Plot<'a> {
-    let (x_angle, y_angle) = (is_angle(x_title), is_angle(y_title));
+    let (x_angle, y_angle) = (x_title.degrees, y_title.degrees);
+    let (x_title, y_title) = (x_title.text.as_str(), y_title.text.as_str());
     let axis = |hints: AxisHints<'a>, title: &str| {
         hints
             .label(title.to_owned())
@@ -346,9 +378,9 @@ mod tests {
     fn a_torque_takes_its_prefix_and_an_angle_none() {
         let torque = [[0.0, -6_000.0], [90.0, 51_720.0], [180.0, 100.0]];
         let s = series(Axis::word(AxisWord::InputTorque, Unit::Si("N·m")), &torque);
-        assert_eq!(s.title, "input torque (kN·m)");
+        assert_eq!(s.title, AxisTitle::plain("input torque (kN·m)"));
         assert!((s.points[1][1] - 51.72).abs() < 1e-12);
         let s = series(CRANK, &torque);
-        assert_eq!(s.title, "crank angle (deg)");
+        assert_eq!(s.title, AxisTitle::degrees("crank angle (°)".into()));
     }
 }

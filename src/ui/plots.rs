@@ -188,7 +188,7 @@ impl PlotsPanel {
             PlotTab::Output => output_plots(ui, s),
             PlotTab::Transmission => {
                 let x = cursor_deg(s);
-                let angle = Axis::word(AxisWord::TransmissionAngle, Unit::Fixed("deg"));
+                let angle = Axis::word(AxisWord::TransmissionAngle, Unit::Degrees);
                 let data = &s.curves().transmission_deg;
                 row(
                     ui,
@@ -245,7 +245,7 @@ fn output_plots(ui: &mut egui::Ui, s: &Session) {
                 out.rate.as_slice(),
                 out.acceleration.as_slice(),
             ],
-            ["deg", "deg/s", "deg/s²"],
+            [Unit::Degrees, Unit::Fixed("°/s"), Unit::Fixed("°/s²")],
             ["θ", "ω", "α"],
         )
     } else {
@@ -256,7 +256,8 @@ fn output_plots(ui: &mut egui::Ui, s: &Session) {
         let units = match unit {
             linkage::scene::LengthUnit::Millimetre => ["mm", "mm/s", "mm/s²"],
             linkage::scene::LengthUnit::Metre => ["m", "m/s", "m/s²"],
-        };
+        }
+        .map(Unit::Fixed);
         (
             [
                 scaled[0].as_slice(),
@@ -273,14 +274,7 @@ fn output_plots(ui: &mut egui::Ui, s: &Session) {
         .collect();
     let x = cursor_deg(s);
     let specs: Vec<PlotSpec<'_>> = (0..3)
-        .map(|i| {
-            (
-                Axis::new(&names[i], Unit::Fixed(units[i])),
-                CRANK,
-                data[i],
-                Some(x),
-            )
-        })
+        .map(|i| (Axis::new(&names[i], units[i]), CRANK, data[i], Some(x)))
         .collect();
     row(ui, "output", plot_key(s), &specs);
 }
@@ -381,7 +375,7 @@ fn motion_plots(ui: &mut egui::Ui, s: &Session) {
     };
     let t = s.time_s();
     let omega = Axis::new("ω", Unit::Fixed("rad/s"));
-    let phi = Axis::new("φ", Unit::Fixed("deg"));
+    let phi = Axis::new("φ", Unit::Degrees);
     let time = Axis::new("t", Unit::Fixed("s"));
     let now = Some(s.input_rad().to_degrees());
     row(
@@ -402,7 +396,7 @@ fn reduced_model_plots(ui: &mut egui::Ui, s: &Session) {
         return;
     };
     let x = cursor_deg(s);
-    let q = Axis::new("q", Unit::Fixed("deg"));
+    let q = Axis::new("q", Unit::Degrees);
     let inertia = Axis::new("J(q)", Unit::Fixed("kg·m²"));
     let moment = Axis::word(AxisWord::ReducedTorqueAtRest, Unit::Si("N·m"));
     row(
@@ -453,7 +447,7 @@ fn plot(
         .default_y_bounds(lo, hi)
         .show(ui, |p| {
             p.line(Line::new(
-                series.title.clone(),
+                series.title.text.clone(),
                 PlotPoints::from(series.points),
             ));
             if let Some(x) = cursor.filter(|x| x.is_finite()) {

@@ -11,6 +11,7 @@ use linkage_model::session::words::length;
 
 use crate::i18n::tr;
 use crate::session::Session;
+use crate::ui::plot_axes::AxisTitle;
 
 /// A lane's height on the plot's axis, of which its curve takes 1.
 const LANE: f64 = 1.4;
@@ -23,8 +24,8 @@ pub fn timing_plot(ui: &mut egui::Ui, s: &Session, cursor_deg: f64, height: f32)
         return;
     };
     let key = ("timing", s.scene().name.as_str(), s.generation());
-    let x_title = tr!("plot.shaft_axis");
-    crate::ui::plot_axes::plot(key, height, &x_title, "")
+    let x_title = AxisTitle::degrees(tr!("plot.shaft_axis"));
+    crate::ui::plot_axes::plot(key, height, &x_title, &AxisTitle::plain(""))
         .show_axes([true, false])
         .show_grid([true, false])
         .include_y(-0.2)

@@ -77,7 +77,7 @@ fn held(h: &Harness<'static, LinkageApp>, label: &str) -> f64 {
     }
     if let Some(segment) = label
         .strip_prefix("segment ")
-        .and_then(|r| r.strip_suffix(" angle (deg)"))
+        .and_then(|r| r.strip_suffix(" angle (°)"))
     {
         let i: usize = segment.parse().expect("a segment number");
         return scene.cams[0].segments[i - 1].angle_deg();

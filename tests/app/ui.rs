@@ -183,7 +183,7 @@ fn the_cam_panel_edits_the_program_and_undo_takes_it_back() {
             .collect()
     };
     assert_eq!(spans(&h), [110.0, 70.0, 110.0, 70.0]);
-    h.get_by_role_and_label(Role::TextInput, "segment 1 angle (deg)")
+    h.get_by_role_and_label(Role::TextInput, "segment 1 angle (°)")
         .set_text_value_accesskit("100");
     h.run();
     assert_eq!(spans(&h), [100.0, 80.0, 110.0, 70.0]);
@@ -196,12 +196,12 @@ fn the_cam_panel_edits_the_program_and_undo_takes_it_back() {
         .set_text_value_accesskit("10");
     h.run();
     assert!((swing(&h) - 10.0).abs() < 1e-9, "{}", swing(&h));
-    h.get_by_role_and_label(Role::TextInput, "segment 2 angle (deg)")
+    h.get_by_role_and_label(Role::TextInput, "segment 2 angle (°)")
         .set_text_value_accesskit("200");
     h.run();
     // Past what it and the next segment hold together: refused with that range.
     assert!(
-        h.query_by_label_contains("segment 2 angle (deg): 200° is outside the range 0 … 190°")
+        h.query_by_label_contains("segment 2 angle (°): 200° is outside the range 0 … 190°")
             .is_some(),
         "no refusal with its range"
     );
