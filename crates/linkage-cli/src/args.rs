@@ -270,6 +270,11 @@ pub(crate) enum Command {
         #[command(subcommand)]
         what: SynthCommand,
     },
+    /// Involute spur gears: a meshing pair's geometry, contact ratio and checks.
+    Gears {
+        #[command(subcommand)]
+        what: GearsCommand,
+    },
 }
 
 #[derive(Subcommand, Debug)]
@@ -596,4 +601,45 @@ fn sheet_lang(text: &str) -> Result<Lang, String> {
         _ if Lang::from_tag(&lower) == Lang::Chinese => Ok(Lang::Chinese),
         _ => Err(format!("{text:?} is not a sheet language: en or zh-CN")),
     }
+}
+
+/// What `linkage gears` does.
+#[derive(Subcommand, Debug)]
+pub(crate) enum GearsCommand {
+    /// A meshing pair: circles, tooth thicknesses, working pressure angle, centre
+    /// distance, contact ratio and the checks (undercut, interference, pointed tips,
+    /// clearance). Text in mm and degrees; JSON in SI (m, rad).
+    Pair(PairArgs),
+}
+
+/// A pair's numbers as typed: millimetres and degrees.
+#[derive(clap::Args, Debug)]
+pub(crate) struct PairArgs {
+    /// Module, mm.
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) module: f64,
+    /// The pinion's and the wheel's numbers of teeth.
+    #[arg(long, num_args = 2, value_names = ["Z1", "Z2"], required = true)]
+    pub(crate) teeth: Vec<u32>,
+    /// The pinion's and the wheel's profile shift coefficients.
+    #[arg(long, num_args = 2, value_names = ["X1", "X2"], allow_hyphen_values = true, default_values_t = [0.0, 0.0])]
+    pub(crate) shift: Vec<f64>,
+    /// The basic rack's pressure angle, degrees.
+    #[arg(long, default_value_t = 20.0, allow_hyphen_values = true)]
+    pub(crate) pressure_angle_deg: f64,
+    /// Addendum coefficient h_a*.
+    #[arg(long, default_value_t = 1.0, allow_hyphen_values = true)]
+    pub(crate) addendum: f64,
+    /// Clearance coefficient c*.
+    #[arg(long, default_value_t = 0.25, allow_hyphen_values = true)]
+    pub(crate) clearance: f64,
+    /// A centre distance, mm (else the one the shifts give, without backlash).
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) centre_distance: Option<f64>,
+    /// The wheel has internal teeth (a ring round the pinion).
+    #[arg(long)]
+    pub(crate) internal: bool,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    pub(crate) format: ReportFormat,
 }

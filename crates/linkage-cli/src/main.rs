@@ -13,6 +13,7 @@ mod course;
 mod diagram;
 mod error;
 mod flywheel;
+mod gears;
 mod io;
 mod kinetostatics;
 mod plot;
@@ -73,6 +74,7 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
         } => at::at(&scene, input_deg, format),
         Command::Report { scene, format } => report::report(&scene, format),
         Command::Synth { what } => synth::synth(what),
+        Command::Gears { what } => gears::run(what),
         Command::Diagram { scene, args } => diagram::run(&scene, &args),
         Command::Cam {
             file,

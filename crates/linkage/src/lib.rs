@@ -26,6 +26,7 @@ pub mod dynamics;
 pub mod error;
 pub mod extremum;
 pub mod force_polygon;
+pub mod gears;
 pub mod ids;
 pub mod instant_centres;
 pub mod integrator;

@@ -1,0 +1,259 @@
+//! `linkage gears pair`: a meshing pair of involute spur gears from its module,
+//! teeth, shifts and pressure angle (or a centre distance): every circle, tooth
+//! thickness, the working pressure angle, centre distance, contact ratio and the
+//! checks. Text in millimetres and degrees for a person; JSON in SI for programs.
+
+use std::fmt::Write as _;
+
+use linkage::gears::{
+    CentreDistance, Gear, GearError, GearKind, GearPair, GearParam, GearSpec, PairIssue, PairSpec,
+};
+use linkage_diagram::numbers::significant;
+
+use crate::args::{GearsCommand, PairArgs, ReportFormat};
+use crate::error::{CliError, Result};
+
+/// Runs `linkage gears …`.
+pub(crate) fn run(what: GearsCommand) -> Result<String> {
+    match what {
+        GearsCommand::Pair(args) => pair(&args),
+    }
+}
+
+fn pair(a: &PairArgs) -> Result<String> {
+    let gear = |teeth: u32, shift: f64| GearSpec {
+        module_m: a.module * 1e-3,
+        teeth,
+        pressure_angle_rad: a.pressure_angle_deg.to_radians(),
+        addendum_coefficient: a.addendum,
+        clearance_coefficient: a.clearance,
+        shift,
+        kind: GearKind::External,
+    };
+    let wheel = gear(a.teeth[1], a.shift[1]);
+    let spec = PairSpec {
+        pinion: gear(a.teeth[0], a.shift[0]),
+        wheel: if a.internal { wheel.internal() } else { wheel },
+        centre: a
+            .centre_distance
+            .map_or(CentreDistance::FromShifts, |mm| CentreDistance::Given {
+                centre_m: mm * 1e-3,
+            }),
+    };
+    let p = GearPair::new(spec).map_err(|e| CliError::refused(words(&e)))?;
+    Ok(match a.format {
+        ReportFormat::Json => serde_json::to_string_pretty(&p)? + "\n",
+        ReportFormat::Text => text(&p),
+    })
+}
+
+/// A length in metres as millimetres, four significant digits.
+fn mm(m: f64) -> String {
+    significant(m * 1e3, 4)
+}
+
+/// An angle in radians as degrees, five significant digits.
+fn deg(rad: f64) -> String {
+    format!("{}°", significant(rad.to_degrees(), 5))
+}
+
+/// The pair as a person reads it.
+fn text(p: &GearPair) -> String {
+    let mut out = String::new();
+    let s = &p.pinion.spec;
+    let kind = if p.internal { "internal" } else { "external" };
+    let _ = writeln!(
+        out,
+        "{kind} pair: m = {} mm, α = {}, h_a* = {}, c* = {}",
+        mm(s.module_m),
+        deg(s.pressure_angle_rad),
+        s.addendum_coefficient,
+        s.clearance_coefficient
+    );
+    gear_rows(&mut out, p);
+    pair_lines(&mut out, p);
+    if p.issues.is_empty() {
+        let _ = writeln!(out, "checks: none");
+    }
+    for issue in &p.issues {
+        let _ = writeln!(out, "check: {}", issue_words(issue));
+    }
+    out
+}
+
+/// A row a gear: pinion and wheel side by side.
+fn gear_rows(o: &mut String, p: &GearPair) {
+    let _ = writeln!(o, "{:<44}{:>12}{:>12}", "", "pinion", "wheel");
+    let row = |o: &mut String, name: &str, f: &dyn Fn(&Gear) -> String| {
+        let _ = writeln!(o, "{name:<44}{:>12}{:>12}", f(&p.pinion), f(&p.wheel));
+    };
+    row(o, "teeth z", &|g| g.spec.teeth.to_string());
+    row(o, "shift x", &|g| significant(g.spec.shift, 4));
+    row(o, "pitch diameter d (mm)", &|g| mm(2.0 * g.pitch_radius_m));
+    row(o, "base diameter d_b (mm)", &|g| mm(2.0 * g.base_radius_m));
+    row(o, "tip diameter d_a (mm)", &|g| mm(2.0 * g.tip_radius_m));
+    row(o, "root diameter d_f (mm)", &|g| mm(2.0 * g.root_radius_m));
+    row(o, "tooth thickness on the pitch circle s (mm)", &|g| {
+        mm(g.tooth_thickness_m)
+    });
+    row(o, "space width on the pitch circle e (mm)", &|g| {
+        mm(g.space_width_m)
+    });
+    row(o, "tooth thickness at the tip s_a (mm)", &|g| {
+        g.tip_thickness_m().map_or("-".into(), mm)
+    });
+    row(
+        o,
+        "least shift without undercut x_min",
+        &|g| match g.spec.kind {
+            GearKind::External => significant(g.least_shift_without_undercut(), 4),
+            GearKind::Internal => "-".into(),
+        },
+    );
+    let [r1, r2] = p.working_pitch_radii_m;
+    let [c1, c2] = p.clearances_m;
+    for (name, [a, b]) in [
+        ("working pitch diameter d' (mm)", [2.0 * r1, 2.0 * r2]),
+        ("clearance at the tip (mm)", [c1, c2]),
+    ] {
+        let _ = writeln!(o, "{name:<44}{:>12}{:>12}", mm(a), mm(b));
+    }
+}
+
+/// The pair's own figures, one a line.
+fn pair_lines(o: &mut String, p: &GearPair) {
+    let line = |o: &mut String, name: &str, value: String| {
+        let _ = writeln!(o, "{name:<44}{value:>12}");
+    };
+    line(o, "centre distance a' (mm)", mm(p.centre_m));
+    line(
+        o,
+        "standard centre distance a (mm)",
+        mm(p.standard_centre_m),
+    );
+    line(
+        o,
+        "working pressure angle α'",
+        deg(p.working_pressure_angle_rad),
+    );
+    line(
+        o,
+        "centre distance modification y",
+        significant(p.centre_modification, 4),
+    );
+    if let Some(dy) = p.tip_shortening {
+        line(o, "tip shortening Δy", significant(dy, 4));
+    }
+    line(
+        o,
+        "shift sum without backlash",
+        significant(p.shift_sum_without_backlash, 4),
+    );
+    line(
+        o,
+        "backlash on the working pitch circle (mm)",
+        mm(p.backlash_m),
+    );
+    line(o, "path of contact g_α (mm)", mm(p.path_of_contact_m));
+    line(o, "contact ratio ε_α", significant(p.contact_ratio, 4));
+    line(
+        o,
+        "speed ratio (wheel / pinion)",
+        significant(p.speed_ratio, 5),
+    );
+}
+
+/// A check in words.
+fn issue_words(issue: &PairIssue) -> String {
+    match *issue {
+        PairIssue::Undercut {
+            member,
+            shift_short,
+        } => format!(
+            "the {} is undercut by a rack cutter (its shift is {} short of the least)",
+            member.words(),
+            significant(shift_short, 3)
+        ),
+        PairIssue::PointedTip { member } => {
+            format!(
+                "the {}'s teeth come to a point inside the tip circle",
+                member.words()
+            )
+        }
+        PairIssue::TipInterference { member } => format!(
+            "the {}'s tip passes the other gear's interference point: it cuts into its root",
+            member.words()
+        ),
+        PairIssue::RingTipInsideBase => {
+            "the ring's tip circle is inside its base circle: its teeth are not involute to the tip"
+                .into()
+        }
+        PairIssue::NoClearance {
+            member,
+            clearance_m,
+        } => format!(
+            "the {}'s tip meets the other gear's root (clearance {} mm)",
+            member.words(),
+            mm(clearance_m)
+        ),
+        PairIssue::ContactRatioBelowOne { contact_ratio } => format!(
+            "contact ratio {} is below 1: the motion is not continuous",
+            significant(contact_ratio, 4)
+        ),
+    }
+}
+
+/// A refusal in the units typed: millimetres and degrees.
+fn words(e: &GearError) -> String {
+    match *e {
+        GearError::OutOfRange {
+            member,
+            param,
+            value,
+            min,
+            max,
+        } => {
+            let (name, scale, unit) = match param {
+                GearParam::Module => ("module", 1e3, " mm"),
+                GearParam::PressureAngle => ("pressure angle", 180.0 / std::f64::consts::PI, "°"),
+                other => (other.words(), 1.0, ""),
+            };
+            let who = member.map_or("gear", |m| m.words());
+            let v = |x: f64| significant(x * scale, 4);
+            format!(
+                "{who}: {name} {}{unit} is outside the range {} … {}{unit}",
+                v(value),
+                v(min),
+                v(max)
+            )
+        }
+        GearError::CentreDistance {
+            given_m,
+            min_m,
+            max_m,
+            max_angle_deg,
+        } => format!(
+            "centre distance {} mm is outside the range {} … {} mm for these gears (working pressure angle 0 … {max_angle_deg}°)",
+            mm(given_m),
+            mm(min_m),
+            mm(max_m)
+        ),
+        GearError::TeethJam {
+            centre_m,
+            overlap_m,
+            shift_sum,
+            shift_sum_max,
+        } => format!(
+            "at centre distance {} mm the teeth overlap by {} mm on the working pitch circle: the shifts must sum to at most {} (they sum to {})",
+            mm(centre_m),
+            mm(overlap_m),
+            significant(shift_sum_max, 4),
+            significant(shift_sum, 4)
+        ),
+        GearError::Mismatched { .. }
+        | GearError::InternalPinion
+        | GearError::RingTooSmall { .. }
+        | GearError::NoRim { .. }
+        | GearError::NoWorkingAngle { .. } => e.to_string(),
+    }
+}

@@ -1,0 +1,125 @@
+//! `linkage gears pair`: the JSON (SI) of a shifted pair against the textbooks'
+//! closed forms written here (working pressure angle from the shifts, contact ratio
+//! by the tangent formula), the text in millimetres and degrees, and refusals in the
+//! units typed, naming the gear and the valid range.
+
+use crate::common;
+
+use common::run_linkage;
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let mut all = vec!["gears", "pair"];
+    all.extend_from_slice(args);
+    all.extend_from_slice(&["--format", "json"]);
+    let (code, out, err) = run_linkage(&all);
+    assert_eq!(code, Some(0), "{err}");
+    serde_json::from_str(&out).expect("JSON")
+}
+
+fn number(v: &serde_json::Value, path: &[&str]) -> f64 {
+    let mut at = v;
+    for key in path {
+        at = &at[*key];
+    }
+    at.as_f64().unwrap_or_else(|| panic!("{path:?} in {v}"))
+}
+
+/// z = 12 and 40, m = 2 mm, x = 0.3 and 0.2: inv α' = inv 20° + 2 tan 20° · 0.5/52,
+/// a' = a cos 20°/cos α', ε by the tangent formula.
+#[test]
+fn a_shifted_pair_is_the_textbooks() {
+    let v = json(&[
+        "--module", "2", "--teeth", "12", "40", "--shift", "0.3", "0.2",
+    ]);
+    let a20 = 20f64.to_radians();
+    let inv = |x: f64| x.tan() - x;
+    let target = inv(a20) + 2.0 * a20.tan() * 0.5 / 52.0;
+    // Bisection for α', apart from the solver's Newton.
+    let (mut lo, mut hi) = (0.0_f64, 1.5_f64);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if inv(mid) < target {
+            lo = mid
+        } else {
+            hi = mid
+        }
+    }
+    let aw = 0.5 * (lo + hi);
+    assert!((number(&v, &["working_pressure_angle_rad"]) - aw).abs() < 1e-12);
+    let a = 0.052;
+    assert!((number(&v, &["centre_m"]) - a * a20.cos() / aw.cos()).abs() < 1e-15);
+    let term = |z: f64, x: f64| {
+        let r = 0.001 * z;
+        let ra = r + (1.0 + x) * 0.002;
+        let alpha_a = (r * a20.cos() / ra).acos();
+        z * (alpha_a.tan() - aw.tan())
+    };
+    let eps = (term(12.0, 0.3) + term(40.0, 0.2)) / std::f64::consts::TAU;
+    let ours = number(&v, &["contact_ratio"]);
+    assert!((ours - eps).abs() < 1e-12, "{ours} vs {eps}");
+    assert_eq!(v["issues"].as_array().map(Vec::len), Some(0), "{v}");
+}
+
+#[test]
+fn the_text_is_in_millimetres_and_degrees_with_the_checks() {
+    let (code, out, err) = run_linkage(&["gears", "pair", "--module", "3", "--teeth", "12", "30"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.starts_with("external pair: m = 3 mm, α = 20°"), "{out}");
+    assert!(out.contains("centre distance a' (mm)"), "{out}");
+    assert!(
+        out.lines().any(|l| l.starts_with("pitch diameter d (mm)")
+            && l.contains("36")
+            && l.contains("90")),
+        "{out}"
+    );
+    assert!(
+        out.contains("check: the pinion is undercut by a rack cutter"),
+        "{out}"
+    );
+}
+
+#[test]
+fn refusals_name_the_gear_the_number_and_its_range_in_the_units_typed() {
+    let cases: [(&[&str], &str); 5] = [
+        (&["--module", "2"], "required arguments were not provided"),
+        (
+            &["--module", "0", "--teeth", "20", "40"],
+            "pinion: module 0 mm is outside the range 0.01 … 1000 mm",
+        ),
+        (
+            &[
+                "--module",
+                "2",
+                "--teeth",
+                "20",
+                "40",
+                "--pressure-angle-deg",
+                "50",
+            ],
+            "pinion: pressure angle 50° is outside the range 10 … 35°",
+        ),
+        (
+            &[
+                "--module",
+                "2",
+                "--teeth",
+                "14",
+                "31",
+                "--centre-distance",
+                "40",
+            ],
+            "centre distance 40 mm is outside the range 42.29 … 59.8 mm",
+        ),
+        (
+            &["--module", "2", "--teeth", "40", "30", "--internal"],
+            "the internal wheel's 30 teeth must be more than the pinion's 40",
+        ),
+    ];
+    for (args, words) in cases {
+        let mut all = vec!["gears", "pair"];
+        all.extend_from_slice(args);
+        let (code, _, err) = run_linkage(&all);
+        assert_ne!(code, Some(0));
+        assert!(err.contains(words), "{args:?}: {err}");
+    }
+}

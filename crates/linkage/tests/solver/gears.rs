@@ -1,0 +1,334 @@
+//! Involute spur gears and pairs against closed forms written here, apart from the
+//! module's own: the tooth thickness from the involute's parametric form (the roll
+//! angle t, polar angle t − atan t), the contact ratio by the textbooks' tangent
+//! formula ε = [z₁(tan α_a1 − tan α') ± z₂(tan α_a2 − tan α')]/2π, the shifts' sum from
+//! a centre distance by the textbooks' formula, the 17-tooth limit at 20° and its
+//! least shift. Random gears and pairs nobody chose (teeth 6..200, shifts −1..1,
+//! modules 0.1..50 mm) give finite numbers or a clean refusal.
+
+use std::f64::consts::PI;
+
+use linkage::gears::{
+    CentreDistance, Gear, GearError, GearKind, GearPair, GearParam, GearSpec, Member, PairIssue,
+    PairSpec, least_teeth_without_undercut,
+};
+use proptest::prelude::*;
+
+const DEG20: f64 = 20.0 * PI / 180.0;
+
+/// The tooth thickness at `rho` from the involute itself: the flank is the involute
+/// of the base circle turned so that it crosses the pitch circle at half the tooth's
+/// angle; at radius ρ its roll angle is t = √(ρ²/r_b² − 1) and its polar angle
+/// t − atan t. An internal gear's space is shaped as an external tooth.
+fn thickness_by_involute(g: &Gear, rho: f64) -> f64 {
+    let (r, rb) = (g.pitch_radius_m, g.base_radius_m);
+    let polar = |radius: f64| {
+        let t = (radius * radius / (rb * rb) - 1.0).sqrt();
+        t - t.atan()
+    };
+    let share = 2.0 * PI * rho / f64::from(g.spec.teeth);
+    match g.spec.kind {
+        GearKind::External => {
+            let half_at_base = g.tooth_thickness_m / (2.0 * r) + polar(r);
+            2.0 * rho * (half_at_base - polar(rho))
+        }
+        GearKind::Internal => {
+            let half_space_at_base = g.space_width_m / (2.0 * r) + polar(r);
+            share - 2.0 * rho * (half_space_at_base - polar(rho))
+        }
+    }
+}
+
+fn pair(pinion: GearSpec, wheel: GearSpec) -> GearPair {
+    let spec = PairSpec {
+        pinion,
+        wheel,
+        centre: CentreDistance::FromShifts,
+    };
+    GearPair::new(spec).expect("a pair that meshes")
+}
+
+/// The textbooks' contact ratio: external ε = [z₁(tan α_a1 − tan α') + z₂(tan α_a2 −
+/// tan α')]/2π, internal with the wheel's term subtracted.
+fn textbook_contact_ratio(p: &GearPair) -> f64 {
+    let aw = p.working_pressure_angle_rad;
+    let term = |g: &Gear| {
+        let alpha_a = (g.base_radius_m / g.tip_radius_m).acos();
+        f64::from(g.spec.teeth) * (alpha_a.tan() - aw.tan())
+    };
+    let wheel = if p.internal {
+        -term(&p.wheel)
+    } else {
+        term(&p.wheel)
+    };
+    (term(&p.pinion) + wheel) / (2.0 * PI)
+}
+
+#[test]
+fn a_standard_pairs_circles_and_contact_ratio_are_the_textbooks() {
+    let m = 0.004;
+    let p = pair(GearSpec::standard(m, 20), GearSpec::standard(m, 50));
+    assert!((p.pinion.pitch_radius_m - 0.040).abs() < 1e-15);
+    assert!((p.wheel.tip_radius_m - (0.100 + m)).abs() < 1e-15);
+    assert!((p.wheel.root_radius_m - (0.100 - 1.25 * m)).abs() < 1e-15);
+    assert!((p.centre_m - 0.140).abs() < 1e-15);
+    assert!((p.working_pressure_angle_rad - DEG20).abs() < 1e-14);
+    let eps = textbook_contact_ratio(&p);
+    assert!(
+        (p.contact_ratio - eps).abs() < 1e-12,
+        "{} vs {eps}",
+        p.contact_ratio
+    );
+    // z = 20 and 50 at 20°: ε ≈ 1.66 (the textbooks' chart).
+    assert!((1.6..1.7).contains(&p.contact_ratio));
+    assert!((p.speed_ratio + 0.4).abs() < 1e-15);
+    for c in p.clearances_m {
+        assert!((c - 0.25 * m).abs() < 1e-15);
+    }
+    assert!(p.issues.is_empty(), "{:?}", p.issues);
+}
+
+/// Shifted pairs, external and internal: on the working pitch circles the two teeth
+/// fill the pitch exactly (no backlash) by the involute's own geometry.
+#[test]
+fn shifted_pairs_mesh_without_backlash_by_the_involutes_geometry() {
+    let m = 0.003;
+    let cases = [
+        (17, 0.4, 41, 0.3, GearKind::External),
+        (12, 0.5, 27, -0.2, GearKind::External),
+        (25, -0.3, 40, 0.3, GearKind::External),
+        (20, 0.3, 64, 0.1, GearKind::Internal),
+        (18, 0.0, 50, 0.0, GearKind::Internal),
+        (22, -0.2, 61, 0.4, GearKind::Internal),
+    ];
+    for (z1, x1, z2, x2, kind) in cases {
+        let wheel = GearSpec {
+            kind,
+            ..GearSpec::standard(m, z2).shifted(x2)
+        };
+        let p = pair(GearSpec::standard(m, z1).shifted(x1), wheel);
+        let [r1, r2] = p.working_pitch_radii_m;
+        assert!((r2 - r1 - p.centre_m).abs() < 1e-14 || (r1 + r2 - p.centre_m).abs() < 1e-14);
+        let pitch = 2.0 * PI * r1 / f64::from(z1);
+        let s1 = thickness_by_involute(&p.pinion, r1);
+        let s2 = thickness_by_involute(&p.wheel, r2);
+        let gap = pitch - s1 - s2;
+        assert!(gap.abs() < 1e-12 * m, "{z1}/{z2} {kind:?}: gap {gap:e}");
+        assert!(p.backlash_m.abs() < 1e-12 * m);
+        let eps = textbook_contact_ratio(&p);
+        assert!(
+            (p.contact_ratio - eps).abs() < 1e-11,
+            "{} vs {eps}",
+            p.contact_ratio
+        );
+    }
+}
+
+/// The module's tooth thickness at any radius is the involute's.
+#[test]
+fn tooth_thickness_at_any_radius_is_the_involutes() {
+    for (z, x, kind) in [
+        (9, 0.6, GearKind::External),
+        (31, -0.4, GearKind::External),
+        (57, 0.2, GearKind::Internal),
+    ] {
+        let g = Gear::new(GearSpec {
+            kind,
+            ..GearSpec::standard(0.002, z).shifted(x)
+        })
+        .expect("a gear");
+        let (lo, hi) = (
+            g.base_radius_m * 1.0001,
+            g.tip_radius_m.max(g.root_radius_m),
+        );
+        for k in 0..=50 {
+            let rho = lo + (hi - lo) * f64::from(k) / 50.0;
+            let ours = g.tooth_thickness_at(rho).expect("outside the base circle");
+            let theirs = thickness_by_involute(&g, rho);
+            assert!(
+                (ours - theirs).abs() < 1e-13 * g.pitch_radius_m,
+                "z {z} at {rho}: {ours} vs {theirs}"
+            );
+        }
+    }
+}
+
+/// A centre distance given: the working pressure angle from cos α' = a cos α / a', the
+/// shifts' sum from x₁ + x₂ = (z₁ + z₂)(inv α' − inv α)/(2 tan α); with that sum the
+/// pair has no backlash, with less it has some, with more it jams.
+#[test]
+fn a_centre_distance_given_asks_the_textbooks_shift_sum() {
+    let (m, z1, z2) = (0.002, 14, 31);
+    let a = 0.5 * m * f64::from(z1 + z2);
+    let given = a + 0.4 * m;
+    let alpha_w = (a * DEG20.cos() / given).acos();
+    let inv = |x: f64| x.tan() - x;
+    let sum = f64::from(z1 + z2) * (inv(alpha_w) - inv(DEG20)) / (2.0 * DEG20.tan());
+    let at = |x1: f64, x2: f64| {
+        GearPair::new(PairSpec {
+            pinion: GearSpec::standard(m, z1).shifted(x1),
+            wheel: GearSpec::standard(m, z2).shifted(x2),
+            centre: CentreDistance::Given { centre_m: given },
+        })
+    };
+    let p = at(0.3, sum - 0.3).expect("the shifts fit");
+    assert!((p.working_pressure_angle_rad - alpha_w).abs() < 1e-14);
+    assert!((p.shift_sum_without_backlash - sum).abs() < 1e-12);
+    assert!(p.backlash_m < 1e-12 * m);
+    assert!((p.centre_modification - 0.4).abs() < 1e-12);
+    let loose = at(0.3, sum - 0.4).expect("thinner teeth fit");
+    assert!(loose.backlash_m > 0.05 * m);
+    let jam = at(0.3, sum - 0.2).expect_err("thicker teeth jam");
+    assert!(matches!(jam, GearError::TeethJam { .. }), "{jam}");
+    // Standard gears at the larger distance: they mesh, with backlash.
+    let standard = at(0.0, 0.0).expect("standard gears fit a larger distance");
+    assert!(standard.backlash_m > 0.1 * m);
+    let below = GearPair::new(PairSpec {
+        pinion: GearSpec::standard(m, z1),
+        wheel: GearSpec::standard(m, z2),
+        centre: CentreDistance::Given { centre_m: 0.9 * a },
+    })
+    .expect_err("inside the base circles' distance");
+    assert!(matches!(below, GearError::CentreDistance { .. }));
+    assert!(below.to_string().contains("outside the range"), "{below}");
+}
+
+/// z_min = 2 h_a*/sin²α: 17 at 20° as the textbooks round it, 32 at 14.5°; below it
+/// a rack cutter undercuts, and the least shift x_min = h_a* − z sin²α/2 cures it.
+#[test]
+fn seventeen_teeth_at_twenty_degrees_and_the_least_shift() {
+    let z_min = least_teeth_without_undercut(1.0, DEG20);
+    assert_eq!(z_min.round(), 17.0);
+    assert!((z_min - 2.0 / DEG20.sin().powi(2)).abs() < 1e-12);
+    assert_eq!(
+        least_teeth_without_undercut(1.0, 14.5f64.to_radians()).round(),
+        32.0
+    );
+    let g = Gear::new(GearSpec::standard(0.001, 12)).expect("a gear");
+    let x_min = g.least_shift_without_undercut();
+    assert!((x_min - (1.0 - 6.0 * DEG20.sin().powi(2))).abs() < 1e-15);
+    // The textbooks' rounded form (17 − z)/17 within its rounding.
+    assert!((x_min - 5.0 / 17.0).abs() < 0.01);
+    assert!(
+        g.undercut_shift_short()
+            .is_some_and(|s| (s - x_min).abs() < 1e-15)
+    );
+    let cured = Gear::new(GearSpec::standard(0.001, 12).shifted(x_min)).expect("a gear");
+    assert_eq!(cured.undercut_shift_short(), None);
+    let p = pair(GearSpec::standard(0.001, 12), GearSpec::standard(0.001, 40));
+    assert!(p.issues.iter().any(|i| matches!(
+        i,
+        PairIssue::Undercut {
+            member: Member::Pinion,
+            ..
+        }
+    )));
+}
+
+/// A small gear shifted far comes to a point: its tip thickness (the involute's)
+/// is negative, and the pair says so.
+#[test]
+fn a_pointed_tip_is_found() {
+    let g = Gear::new(GearSpec::standard(0.001, 8).shifted(0.9)).expect("a gear");
+    let tip = thickness_by_involute(&g, g.tip_radius_m);
+    assert!(tip < 0.0, "{tip}");
+    assert!(g.is_pointed());
+    let fine = Gear::new(GearSpec::standard(0.001, 30).shifted(0.2)).expect("a gear");
+    assert!(!fine.is_pointed());
+    assert!(fine.tip_thickness_m().is_some_and(|s| s > 0.4 * 0.001));
+}
+
+#[test]
+fn refusals_name_the_gear_the_number_and_its_range() {
+    let bad = GearPair::new(PairSpec {
+        pinion: GearSpec::standard(0.002, 20),
+        wheel: GearSpec::standard(0.002, 40).shifted(f64::NAN),
+        centre: CentreDistance::FromShifts,
+    })
+    .expect_err("a NaN shift");
+    assert!(matches!(
+        bad,
+        GearError::OutOfRange {
+            member: Some(Member::Wheel),
+            param: GearParam::Shift,
+            ..
+        }
+    ));
+    assert!(
+        bad.to_string()
+            .starts_with("wheel: profile shift coefficient x NaN is outside the range -3 … 3"),
+        "{bad}"
+    );
+    let zero = Gear::new(GearSpec::standard(0.0, 20)).expect_err("no module");
+    assert!(
+        zero.to_string()
+            .contains("module (m) 0 is outside the range"),
+        "{zero}"
+    );
+    let ring = GearPair::new(PairSpec {
+        pinion: GearSpec::standard(0.002, 30),
+        wheel: GearSpec::standard(0.002, 30).internal(),
+        centre: CentreDistance::FromShifts,
+    })
+    .expect_err("a ring no larger than its pinion");
+    assert_eq!(
+        ring,
+        GearError::RingTooSmall {
+            pinion: 30,
+            wheel: 30,
+            least: 31
+        }
+    );
+    let mixed = GearPair::new(PairSpec {
+        pinion: GearSpec::standard(0.002, 30),
+        wheel: GearSpec::standard(0.0025, 40),
+        centre: CentreDistance::FromShifts,
+    })
+    .expect_err("two modules");
+    assert!(matches!(mixed, GearError::Mismatched { .. }));
+    let rimless = Gear::new(GearSpec::standard(0.002, 6).shifted(-2.5)).expect_err("no rim");
+    assert!(matches!(rimless, GearError::NoRim { .. }), "{rimless}");
+}
+
+fn cases() -> u32 {
+    std::env::var("LINKAGE_PROPERTY_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(512)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(cases()))]
+
+    /// Gears and pairs nobody chose: a pair is made with finite numbers everywhere,
+    /// or refused with words.
+    #[test]
+    fn random_pairs_are_finite_or_refused(
+        module_mm in 0.1f64..50.0,
+        z1 in 6u32..200,
+        z2 in 6u32..200,
+        x1 in -1.0f64..1.0,
+        x2 in -1.0f64..1.0,
+        internal in any::<bool>(),
+        angle_deg in prop::sample::select(vec![14.5, 20.0, 25.0]),
+    ) {
+        let spec = |z: u32, x: f64| GearSpec {
+            pressure_angle_rad: f64::to_radians(angle_deg),
+            ..GearSpec::standard(module_mm * 1e-3, z).shifted(x)
+        };
+        let wheel = if internal { spec(z2, x2).internal() } else { spec(z2, x2) };
+        match GearPair::new(PairSpec { pinion: spec(z1, x1), wheel, centre: CentreDistance::FromShifts }) {
+            Ok(p) => {
+                let numbers = [
+                    p.centre_m, p.working_pressure_angle_rad, p.contact_ratio,
+                    p.path_of_contact_m, p.backlash_m, p.clearances_m[0], p.clearances_m[1],
+                    p.working_pitch_radii_m[0], p.working_pitch_radii_m[1], p.speed_ratio,
+                ];
+                prop_assert!(numbers.iter().all(|v| v.is_finite()), "{p:?}");
+                prop_assert!(p.centre_m > 0.0);
+                prop_assert!(p.backlash_m.abs() < 1e-9 * module_mm * 1e-3);
+            }
+            Err(e) => prop_assert!(!e.to_string().is_empty()),
+        }
+    }
+}
