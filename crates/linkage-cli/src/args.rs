@@ -275,6 +275,22 @@ pub(crate) enum Command {
         #[command(subcommand)]
         what: GearsCommand,
     },
+    /// A gear train from its file (RON: members, gears, meshes, belt and chain stages,
+    /// inputs): every member's speed, the ratios to the first input, Willis' converted
+    /// ratios and a planetary set's assembly conditions (text, or JSON).
+    Train {
+        /// Train file (RON), e.g. assets/trains/planetary_ring_fixed.ron.
+        file: PathBuf,
+        /// A member's speed in rpm, replacing the file's inputs (repeat for two).
+        #[arg(long, num_args = 2, value_names = ["MEMBER", "RPM"], allow_hyphen_values = true, action = clap::ArgAction::Append)]
+        input: Vec<String>,
+        /// The member to reduce the members' inertias to (kg·m²).
+        #[arg(long)]
+        reduce_to: Option<String>,
+        /// Output format.
+        #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+        format: ReportFormat,
+    },
 }
 
 #[derive(Subcommand, Debug)]

@@ -31,6 +31,7 @@ mod synth_motion;
 mod synth_path;
 mod timing;
 mod tradeoff;
+mod train;
 
 use std::io::{ErrorKind, Write};
 use std::process::ExitCode;
@@ -75,6 +76,12 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
         Command::Report { scene, format } => report::report(&scene, format),
         Command::Synth { what } => synth::synth(what),
         Command::Gears { what } => gears::run(what),
+        Command::Train {
+            file,
+            input,
+            reduce_to,
+            format,
+        } => train::run(&file, &input, reduce_to.as_deref(), format),
         Command::Diagram { scene, args } => diagram::run(&scene, &args),
         Command::Cam {
             file,

@@ -123,3 +123,34 @@ fn refusals_name_the_gear_the_number_and_its_range_in_the_units_typed() {
         assert!(err.contains(words), "{args:?}: {err}");
     }
 }
+
+/// `linkage train`: the die cutter's drive gives the crank 50 rpm and reduces the
+/// drive's inertias to it; a planetary set with other inputs; refusals.
+#[test]
+fn train_speeds_ratios_and_refusals() {
+    let file = common::repo("assets/trains/die_cutter_drive.ron");
+    let (code, out, err) = run_linkage(&["train", &file, "--reduce-to", "crank"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        out.lines()
+            .any(|l| l.starts_with("crank") && l.contains(" 50 ") && l.trim_end().ends_with("29")),
+        "{out}"
+    );
+    assert!(
+        out.contains("inertia reduced to crank: 17.09 kg·m²"),
+        "{out}"
+    );
+    let set = common::repo("assets/trains/planetary_ring_fixed.ron");
+    let (code, out, err) = run_linkage(&[
+        "train", &set, "--input", "sun", "1000", "--input", "carrier", "0", "--format", "json",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    let ring = v["solution"]["speeds_rpm"][3]["rpm"]
+        .as_f64()
+        .expect("the ring's speed");
+    assert!((ring + 250.0).abs() < 1e-9, "{ring}");
+    let (code, _, err) = run_linkage(&["train", &set, "--input", "sun", "1000"]);
+    assert_ne!(code, Some(0));
+    assert!(err.contains("give 2 input speed(s) (1 given)"), "{err}");
+}

@@ -21,6 +21,7 @@ mod flywheel;
 mod force_polygons;
 mod function_synthesis;
 mod fuzz_scenes;
+mod gear_trains;
 mod gears;
 mod geneva;
 mod instant_centres;

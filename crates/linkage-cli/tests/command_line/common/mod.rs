@@ -8,6 +8,11 @@ pub fn scene(file: &str) -> String {
     format!("{}/../../assets/scenes/{file}", env!("CARGO_MANIFEST_DIR"))
 }
 
+/// The path of `FILE` from the repository's root.
+pub fn repo(file: &str) -> String {
+    format!("{}/../../{file}", env!("CARGO_MANIFEST_DIR"))
+}
+
 /// Runs `linkage ARGS`; returns (exit code, stdout, stderr).
 pub fn run_linkage(args: &[&str]) -> (Option<i32>, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_linkage"))

@@ -1,0 +1,197 @@
+//! A train file's names checked and its constraint rows written: one a mesh (Willis'
+//! relation relative to the member holding both axes' line of centres) and one a belt
+//! or chain stage.
+
+use super::train_file::{FRAME, GearFile, TrainFile, is_frame};
+use super::train_results::TrainError;
+
+/// Every name defined once, every name used defined, every number in range.
+pub(crate) fn check_names(file: &TrainFile) -> Result<(), TrainError> {
+    let mut seen: Vec<&str> = vec![FRAME];
+    for name in file.members.iter().map(|m| m.name.as_str()) {
+        if seen.contains(&name) {
+            return Err(TrainError::Duplicate { name: name.into() });
+        }
+        seen.push(name);
+    }
+    let member = |what: String, name: &str| {
+        if seen.contains(&name) {
+            Ok(())
+        } else {
+            Err(TrainError::Unknown {
+                what,
+                name: name.into(),
+                kind: "members",
+            })
+        }
+    };
+    for m in &file.members {
+        member(format!("member {}'s axis_on", m.name), &m.axis_on)?;
+        range(
+            &format!("member {}'s inertia_kg_m2", m.name),
+            m.inertia_kg_m2,
+            0.0,
+            1e9,
+        )?;
+    }
+    let mut gear_names: Vec<&str> = Vec::new();
+    for g in &file.gears {
+        if gear_names.contains(&g.name.as_str()) {
+            return Err(TrainError::Duplicate {
+                name: g.name.clone(),
+            });
+        }
+        gear_names.push(&g.name);
+        member(format!("gear {}'s member", g.name), &g.member)?;
+        range(
+            &format!("gear {}'s teeth", g.name),
+            f64::from(g.teeth),
+            3.0,
+            10_000.0,
+        )?;
+    }
+    for (a, b) in &file.meshes {
+        for name in [a, b] {
+            if !gear_names.contains(&name.as_str()) {
+                return Err(TrainError::Unknown {
+                    what: format!("mesh ({a}, {b})"),
+                    name: name.clone(),
+                    kind: "gears",
+                });
+            }
+        }
+    }
+    for s in &file.stages {
+        member(format!("stage {} → {}'s from", s.from, s.to), &s.from)?;
+        member(format!("stage {} → {}'s to", s.from, s.to), &s.to)?;
+        range(
+            &format!("stage {} → {}'s ratio", s.from, s.to),
+            s.ratio,
+            1e-6,
+            1e6,
+        )?;
+    }
+    for i in &file.inputs {
+        member(format!("input on {}", i.member), &i.member)?;
+        range(&format!("input on {}'s rpm", i.member), i.rpm, -1e7, 1e7)?;
+    }
+    Ok(())
+}
+
+fn range(what: &str, value: f64, min: f64, max: f64) -> Result<(), TrainError> {
+    if value.is_finite() && (min..=max).contains(&value) {
+        Ok(())
+    } else {
+        Err(TrainError::OutOfRange {
+            what: what.into(),
+            value,
+            min,
+            max,
+        })
+    }
+}
+
+/// The rows over the members' speeds (the frame's is 0 and has no column).
+pub(crate) fn rows(file: &TrainFile) -> Result<Vec<Vec<f64>>, TrainError> {
+    let n = file.members.len();
+    let column = |name: &str| file.members.iter().position(|m| m.name == name);
+    let add = |row: &mut Vec<f64>, name: &str, v: f64| {
+        if let Some(j) = column(name) {
+            row[j] += v;
+        }
+    };
+    let mut rows = Vec::new();
+    for (a, b) in &file.meshes {
+        let (ga, gb) = (gear(file, a), gear(file, b));
+        if ga.internal && gb.internal {
+            return Err(TrainError::BothInternal {
+                a: a.clone(),
+                b: b.clone(),
+            });
+        }
+        let holder = holder(file, ga, gb)?;
+        let sigma = if ga.internal || gb.internal {
+            -1.0
+        } else {
+            1.0
+        };
+        let (za, zb) = (f64::from(ga.teeth), f64::from(gb.teeth));
+        let mut row = vec![0.0; n];
+        add(&mut row, &ga.member, za);
+        add(&mut row, &gb.member, sigma * zb);
+        add(&mut row, &holder, -(za + sigma * zb));
+        rows.push(row);
+    }
+    for s in &file.stages {
+        let sign = if s.crossed { -1.0 } else { 1.0 };
+        let mut row = vec![0.0; n];
+        add(&mut row, &s.from, 1.0);
+        add(&mut row, &s.to, -sign * s.ratio);
+        rows.push(row);
+    }
+    Ok(rows)
+}
+
+/// A gear by name (checked to exist).
+fn gear<'a>(file: &'a TrainFile, name: &str) -> &'a GearFile {
+    file.gears
+        .iter()
+        .find(|g| g.name == name)
+        .expect("meshes name gears, checked first")
+}
+
+/// The member holding an axis: the frame or a carrier.
+fn axis_of<'a>(file: &'a TrainFile, member: &'a str) -> &'a str {
+    file.members
+        .iter()
+        .find(|m| m.name == member)
+        .map_or(FRAME, |m| m.axis_on.as_str())
+}
+
+/// The member that holds the line of centres of two meshing gears: the one holding
+/// both axes, or the carrier of a planet meshing with a gear on the carrier's axis.
+fn holder(file: &TrainFile, a: &GearFile, b: &GearFile) -> Result<String, TrainError> {
+    let (pa, pb) = (axis_of(file, &a.member), axis_of(file, &b.member));
+    let found = if pa == pb {
+        Some(pa)
+    } else if !is_frame(pb) && axis_of(file, pb) == pa {
+        Some(pb)
+    } else if !is_frame(pa) && axis_of(file, pa) == pb {
+        Some(pa)
+    } else {
+        None
+    };
+    found
+        .map(str::to_string)
+        .ok_or_else(|| TrainError::AxesApart {
+            a: a.name.clone(),
+            b: b.name.clone(),
+            a_axis: pa.into(),
+            b_axis: pb.into(),
+        })
+}
+
+/// Each carrier (a member holding another's axis) with its central members: those
+/// not on the carrier whose gears mesh with a gear on a member it carries.
+pub(crate) fn central_members(file: &TrainFile) -> Vec<(String, Vec<String>)> {
+    let carried = |carrier: &str, member: &str| axis_of(file, member) == carrier;
+    let mut out = Vec::new();
+    for h in &file.members {
+        let mut central: Vec<String> = Vec::new();
+        for (a, b) in &file.meshes {
+            let (ga, gb) = (gear(file, a), gear(file, b));
+            for (planet, other) in [(ga, gb), (gb, ga)] {
+                let central_one = carried(&h.name, &planet.member)
+                    && !carried(&h.name, &other.member)
+                    && other.member != h.name;
+                if central_one && !central.contains(&other.member) {
+                    central.push(other.member.clone());
+                }
+            }
+        }
+        if !central.is_empty() {
+            out.push((h.name.clone(), central));
+        }
+    }
+    out
+}

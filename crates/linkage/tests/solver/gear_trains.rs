@@ -1,0 +1,232 @@
+//! Gear trains against closed forms written here: a planetary set's three ratios
+//! (ring fixed 1 + z_r/z_s, sun fixed 1 + z_s/z_r, carrier fixed −z_r/z_s), a
+//! differential's carrier (z_s ω_s + z_r ω_r)/(z_s + z_r), a compound train's sign
+//! and size (−1)^externals · Π z_driven/z_driving, an idler's sign, a crossed belt;
+//! the shipped train files; Willis' ratio; the assembly conditions; refusals.
+
+use linkage::gears::train_file::TrainFile;
+use linkage::gears::{AssemblyCheck, Train, TrainError};
+
+fn train(text: &str) -> Train {
+    let file: TrainFile = ron::from_str(text).unwrap_or_else(|e| panic!("{e}"));
+    Train::new(file).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The planetary set (sun 20, planets 30, ring 80) with `inputs`.
+fn planetary(inputs: &str) -> String {
+    format!(
+        r#"(name: "set", members: [(name: "sun"), (name: "planet", axis_on: "carrier"),
+            (name: "carrier", planets: Some(4)), (name: "ring")],
+            gears: [(name: "s", member: "sun", teeth: 20), (name: "p", member: "planet", teeth: 30),
+                    (name: "r", member: "ring", teeth: 80, internal: true)],
+            meshes: [("s", "p"), ("p", "r")], inputs: [{inputs}])"#
+    )
+}
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-12 * a.abs().max(b.abs()).max(1.0)
+}
+
+#[test]
+fn a_planetary_sets_three_ratios_are_the_textbooks() {
+    let (zs, zr) = (20.0, 80.0);
+    let ring_fixed = train(&planetary(
+        r#"(member: "sun", rpm: 1000.0), (member: "ring", rpm: 0.0)"#,
+    ));
+    let s = ring_fixed.solve().expect("solved");
+    assert_eq!(s.dof, 2);
+    assert!(close(
+        s.ratio("sun", "carrier").expect("a member"),
+        1.0 + zr / zs
+    ));
+    let sun_fixed = train(&planetary(
+        r#"(member: "ring", rpm: 1000.0), (member: "sun", rpm: 0.0)"#,
+    ));
+    let s = sun_fixed.solve().expect("solved");
+    assert!(close(
+        s.ratio("ring", "carrier").expect("a member"),
+        1.0 + zs / zr
+    ));
+    let carrier_fixed = train(&planetary(
+        r#"(member: "sun", rpm: 1000.0), (member: "carrier", rpm: 0.0)"#,
+    ));
+    let s = carrier_fixed.solve().expect("solved");
+    assert!(close(s.ratio("sun", "ring").expect("a member"), -zr / zs));
+    // The planet about its own axis, relative to the carrier: −z_s/z_p of the sun's.
+    let planet = s.speed_rpm("planet").expect("a member");
+    assert!(close(planet, -1000.0 * zs / 30.0));
+    // Willis' converted ratio of the sun and the ring, whatever the inputs.
+    let w = &s.willis[0];
+    assert_eq!(
+        (w.carrier.as_str(), w.from.as_str(), w.to.as_str()),
+        ("carrier", "sun", "ring")
+    );
+    assert!(close(w.ratio, -zr / zs));
+}
+
+#[test]
+fn a_differential_sums_its_two_inputs() {
+    let (ws, wr) = (1450.0, -100.0);
+    let t = train(&planetary(&format!(
+        r#"(member: "sun", rpm: {ws}), (member: "ring", rpm: {wr})"#
+    )));
+    let s = t.solve().expect("solved");
+    let carrier = (20.0 * ws + 80.0 * wr) / 100.0;
+    assert!(close(s.speed_rpm("carrier").expect("a member"), carrier));
+    // One input is not enough.
+    let one = train(&planetary(r#"(member: "sun", rpm: 1450.0)"#));
+    assert_eq!(
+        one.solve().expect_err("two needed"),
+        TrainError::Inputs { dof: 2, given: 1 }
+    );
+}
+
+#[test]
+fn a_compound_train_with_an_idler_and_a_crossed_belt() {
+    let t = train(
+        r#"(name: "compound", members: [(name: "a"), (name: "b"), (name: "idler"), (name: "c"), (name: "d")],
+            gears: [(name: "z1", member: "a", teeth: 18), (name: "z2", member: "b", teeth: 54),
+                    (name: "z3", member: "b", teeth: 21), (name: "zi", member: "idler", teeth: 33),
+                    (name: "z4", member: "c", teeth: 63)],
+            meshes: [("z1", "z2"), ("z3", "zi"), ("zi", "z4")],
+            stages: [(kind: Chain, from: "c", to: "d", ratio: 1.5, crossed: false)],
+            inputs: [(member: "a", rpm: 900.0)])"#,
+    );
+    let s = t.solve().expect("solved");
+    assert_eq!(s.dof, 1);
+    // Three external meshes: (−1)³; the idler's teeth cancel.
+    let a_over_c = (-1.0_f64).powi(3) * (54.0 / 18.0) * (63.0 / 21.0);
+    assert!(close(s.ratio("a", "c").expect("a member"), a_over_c));
+    assert!(close(s.ratio("c", "d").expect("a member"), 1.5));
+    let crossed = train(
+        r#"(name: "belt", members: [(name: "a"), (name: "b")],
+            stages: [(kind: Belt, from: "a", to: "b", ratio: 2.0, crossed: true)],
+            inputs: [(member: "a", rpm: 100.0)])"#,
+    );
+    assert!(close(
+        crossed
+            .solve()
+            .expect("solved")
+            .speed_rpm("b")
+            .expect("a member"),
+        -50.0
+    ));
+}
+
+#[test]
+fn the_shipped_trains_solve_and_the_die_cutters_crank_turns_at_fifty() {
+    let dir = format!("{}/../../assets/trains", env!("CARGO_MANIFEST_DIR"));
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .expect("assets/trains")
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    files.sort();
+    assert!(files.len() >= 3);
+    for path in files {
+        let text = std::fs::read_to_string(&path).expect("read");
+        let s = train(&text)
+            .solve()
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        assert!(s.speeds_rpm.iter().all(|m| m.rpm.is_finite()));
+        if path.ends_with("die_cutter_drive.ron") {
+            assert!(
+                close(s.speed_rpm("crank").expect("a member"), 50.0),
+                "{s:?}"
+            );
+            assert!(close(s.ratio("motor", "crank").expect("a member"), 29.0));
+            // J_motor 29² + J_input 10² + J_intermediate 5²: what the drive adds at the crank.
+            let t = train(&text);
+            let reduced = t
+                .reduced_inertia_kg_m2(&s, "crank")
+                .expect("the crank turns");
+            assert!(
+                close(reduced, 0.012 * 29.0 * 29.0 + 0.05 * 100.0 + 0.08 * 25.0),
+                "{reduced}"
+            );
+        }
+        if path.ends_with("planetary_ring_fixed.ron") {
+            assert!(close(s.speed_rpm("carrier").expect("a member"), 290.0));
+        }
+    }
+}
+
+#[test]
+fn a_planetary_sets_assembly_conditions() {
+    let s = train(&planetary(
+        r#"(member: "sun", rpm: 1.0), (member: "ring", rpm: 0.0)"#,
+    ))
+    .solve()
+    .expect("a member");
+    let find = |f: &dyn Fn(&AssemblyCheck) -> bool| s.assembly.iter().find(|c| f(c)).cloned();
+    // 80 = 20 + 2·30: coaxial; (20 + 80)/4 = 25: equal spacing; (20 + 30) sin 45° = 35.4 > 32.
+    assert!(matches!(
+        find(&|c| matches!(c, AssemblyCheck::Coaxial { .. })),
+        Some(AssemblyCheck::Coaxial { holds: true, .. })
+    ));
+    assert!(matches!(
+        find(&|c| matches!(c, AssemblyCheck::EqualSpacing { .. })),
+        Some(AssemblyCheck::EqualSpacing { holds: true, .. })
+    ));
+    let Some(AssemblyCheck::Neighbours {
+        clearance_modules,
+        holds,
+        ..
+    }) = find(&|c| matches!(c, AssemblyCheck::Neighbours { .. }))
+    else {
+        panic!("no neighbour check");
+    };
+    assert!(
+        holds
+            && close(
+                clearance_modules,
+                50.0 * (std::f64::consts::PI / 4.0).sin() - 32.0
+            )
+    );
+    // A ring of 81: not coaxial, and (20 + 81)/4 not whole.
+    let odd = planetary(r#"(member: "sun", rpm: 1.0), (member: "ring", rpm: 0.0)"#)
+        .replace("teeth: 80", "teeth: 81");
+    let s = train(&odd).solve().expect("solved");
+    assert!(
+        s.assembly
+            .iter()
+            .any(|c| matches!(c, AssemblyCheck::Coaxial { holds: false, .. }))
+    );
+    assert!(
+        s.assembly
+            .iter()
+            .any(|c| matches!(c, AssemblyCheck::EqualSpacing { holds: false, .. }))
+    );
+}
+
+#[test]
+fn refusals_name_what_is_wrong() {
+    let bad = |text: &str| {
+        let file: TrainFile = ron::from_str(text).unwrap_or_else(|e| panic!("{e}"));
+        Train::new(file)
+            .and_then(|t| t.solve())
+            .expect_err("refused")
+            .to_string()
+    };
+    let unknown =
+        bad(r#"(name: "x", members: [(name: "a")], gears: [(name: "g", member: "b", teeth: 20)])"#);
+    assert!(unknown.contains("gear g's member names `b`"), "{unknown}");
+    let apart = bad(
+        r#"(name: "x", members: [(name: "h1"), (name: "h2"), (name: "p", axis_on: "h1"), (name: "q", axis_on: "h2")],
+            gears: [(name: "gp", member: "p", teeth: 20), (name: "gq", member: "q", teeth: 20)],
+            meshes: [("gp", "gq")], inputs: [])"#,
+    );
+    assert!(apart.contains("cannot mesh"), "{apart}");
+    let teeth =
+        bad(r#"(name: "x", members: [(name: "a")], gears: [(name: "g", member: "a", teeth: 2)])"#);
+    assert!(
+        teeth.contains("gear g's teeth 2 is outside the range 3 … 10000"),
+        "{teeth}"
+    );
+    let tied = bad(
+        r#"(name: "x", members: [(name: "a"), (name: "b"), (name: "c")],
+            gears: [(name: "ga", member: "a", teeth: 20), (name: "gb", member: "b", teeth: 40)],
+            meshes: [("ga", "gb")], inputs: [(member: "a", rpm: 1.0), (member: "b", rpm: 1.0)])"#,
+    );
+    assert!(tied.contains("the inputs do not fix the train"), "{tied}");
+}
