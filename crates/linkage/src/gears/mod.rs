@@ -8,6 +8,7 @@
 
 mod error;
 mod gear;
+pub mod generation;
 pub mod involute;
 mod pair;
 mod train;

@@ -332,3 +332,55 @@ proptest! {
         }
     }
 }
+
+/// The tooth as a rack cutter cuts it, from the cutter's lines alone: from the form
+/// circle up it is the involute to round-off where the shift is at least x_min (20
+/// teeth, 40 teeth shifted −0.5, 12 teeth with the least shift); where it is not (12
+/// and 8 teeth unshifted) the cutter's tip undercuts it just above the base circle.
+/// The form circle is where the cutter's straight flank ends, h_a*·m below its datum
+/// line: its contact on the line of action is (h_a* − x)·m / sin α from the pitch
+/// point, r sin α − that from the base circle's tangent point N.
+#[test]
+fn the_cut_tooth_is_the_involute_unless_undercut() {
+    use linkage::gears::generation::cut_tooth_thickness_at;
+    let m = 0.002;
+    let twelve = Gear::new(GearSpec::standard(m, 12)).expect("a gear");
+    // (teeth, shift, undercut)
+    let cases = [
+        (20, 0.0, false),
+        (40, -0.5, false),
+        (12, twelve.least_shift_without_undercut(), false),
+        (12, 0.0, true),
+        (8, 0.0, true),
+    ];
+    for (z, x, undercut) in cases {
+        let g = Gear::new(GearSpec::standard(m, z).shifted(x)).expect("a gear");
+        let from_n = g.pitch_radius_m * DEG20.sin() - (1.0 - x) * m / DEG20.sin();
+        assert_eq!(from_n < -1e-12, undercut, "z {z} x {x}: {from_n}");
+        let lo = if undercut {
+            g.base_radius_m
+        } else {
+            g.base_radius_m.hypot(from_n)
+        };
+        let hi = g.tip_radius_m;
+        let mut thinnest = 0.0_f64;
+        for k in 1..=40 {
+            // Closer together near the base circle, where an undercut is (a few
+            // hundredths of a millimetre deep for 12 teeth of 2 mm).
+            let rho = lo + (hi - lo) * (f64::from(k) / 40.0).powi(2);
+            let cut = cut_tooth_thickness_at(&g, rho).expect("a radius on the tooth");
+            let involute = thickness_by_involute(&g, rho);
+            let short = (involute - cut) / m;
+            thinnest = thinnest.max(short);
+            if !undercut {
+                assert!(
+                    short.abs() < 1e-10,
+                    "z {z} x {x} at {rho}: cut {cut} vs involute {involute}"
+                );
+            }
+        }
+        if undercut {
+            assert!(thinnest > 1e-3, "z {z}: no undercut found ({thinnest:e})");
+        }
+    }
+}
