@@ -626,6 +626,32 @@ pub(crate) enum GearsCommand {
     /// distance, contact ratio and the checks (undercut, interference, pointed tips,
     /// clearance). Text in mm and degrees; JSON in SI (m, rad).
     Pair(PairArgs),
+    /// One gear as a rack cutter cuts it (GB/T 1356's basic rack, its tip rounded):
+    /// the whole outline with its fillets and any undercut, as SVG (mm) or DXF.
+    Profile(ProfileArgs),
+}
+
+/// A gear's numbers for its cut profile: millimetres and degrees.
+#[derive(clap::Args, Debug)]
+pub(crate) struct ProfileArgs {
+    /// Module, mm.
+    #[arg(long, allow_hyphen_values = true)]
+    pub(crate) module: f64,
+    /// Number of teeth.
+    #[arg(long)]
+    pub(crate) teeth: u32,
+    /// Profile shift coefficient.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub(crate) shift: f64,
+    /// The basic rack's pressure angle, degrees.
+    #[arg(long, default_value_t = 20.0, allow_hyphen_values = true)]
+    pub(crate) pressure_angle_deg: f64,
+    /// Write the drawing as SVG here.
+    #[arg(long)]
+    pub(crate) svg: Option<PathBuf>,
+    /// Write the outline as DXF (millimetres) here.
+    #[arg(long)]
+    pub(crate) dxf: Option<PathBuf>,
 }
 
 /// A pair's numbers as typed: millimetres and degrees.

@@ -10,14 +10,70 @@ use linkage::gears::{
 };
 use linkage_diagram::numbers::significant;
 
-use crate::args::{GearsCommand, PairArgs, ReportFormat};
+use crate::args::{GearsCommand, PairArgs, ProfileArgs, ReportFormat};
 use crate::error::{CliError, Result};
 
 /// Runs `linkage gears …`.
 pub(crate) fn run(what: GearsCommand) -> Result<String> {
     match what {
         GearsCommand::Pair(args) => pair(&args),
+        GearsCommand::Profile(args) => profile(&args),
     }
+}
+
+/// `gears profile`: the cut gear's outline to SVG and DXF files; a line saying what
+/// was written (and the undercut, where there is one).
+fn profile(a: &ProfileArgs) -> Result<String> {
+    let spec = GearSpec {
+        pressure_angle_rad: a.pressure_angle_deg.to_radians(),
+        ..GearSpec::standard(a.module * 1e-3, a.teeth).shifted(a.shift)
+    };
+    let g = Gear::new(spec).map_err(|e| CliError::refused(words(&e)))?;
+    if a.svg.is_none() && a.dxf.is_none() {
+        return Err(CliError::refused("give --svg FILE or --dxf FILE"));
+    }
+    let outline = linkage_diagram::gear_profile::gear_outline(&g, 60);
+    let mut said = String::new();
+    if let Some(path) = &a.svg {
+        let svg = linkage_diagram::gear_profile::gear_svg(&g, &outline);
+        std::fs::write(path, svg).map_err(|source| CliError::Write {
+            path: path.clone(),
+            source,
+        })?;
+        let _ = writeln!(said, "wrote {}", path.display());
+    }
+    if let Some(path) = &a.dxf {
+        write_dxf(path, &outline, g.pitch_radius_m)?;
+        let _ = writeln!(said, "wrote {}", path.display());
+    }
+    if let Some(short) = g.undercut_shift_short() {
+        let _ = writeln!(
+            said,
+            "undercut: the shift is {} short of x_min = {}",
+            significant(short, 3),
+            significant(g.least_shift_without_undercut(), 4)
+        );
+    }
+    Ok(said)
+}
+
+#[cfg(not(target_arch = "wasm32"))]
+fn write_dxf(path: &std::path::Path, outline: &[[f64; 2]], pitch_radius_m: f64) -> Result<()> {
+    let error = |e: String| CliError::Write {
+        path: path.to_path_buf(),
+        source: std::io::Error::other(e),
+    };
+    let bytes = linkage_diagram::cam_dxf::gear_dxf(outline, pitch_radius_m)
+        .map_err(|e| error(e.to_string()))?;
+    std::fs::write(path, bytes).map_err(|e| error(e.to_string()))
+}
+
+/// The CLI is only type-checked for wasm32, where the DXF crate does not build.
+#[cfg(target_arch = "wasm32")]
+fn write_dxf(_: &std::path::Path, _: &[[f64; 2]], _: f64) -> Result<()> {
+    Err(CliError::refused(
+        "--dxf is not available in a wasm32 build",
+    ))
 }
 
 fn pair(a: &PairArgs) -> Result<String> {

@@ -53,3 +53,23 @@ pub fn cam_dxf(
     drawing.save(&mut bytes)?;
     Ok(bytes)
 }
+
+/// A cut gear's outline (`gear_profile::gear_outline`, metres) as a DXF drawing in
+/// millimetres: the closed outline on the `PROFILE` layer, the pitch circle on the
+/// `PITCH` layer.
+///
+/// # Errors
+/// The `dxf` crate's, writing to memory.
+pub fn gear_dxf(outline: &[[f64; 2]], pitch_radius_m: f64) -> Result<Vec<u8>, DxfError> {
+    let mut drawing = Drawing::new();
+    drawing.header.version = AcadVersion::R2000;
+    drawing.header.default_drawing_units = Units::Millimeters;
+    drawing.add_entity(polyline(outline, PROFILE_LAYER));
+    let pitch = Circle::new(Point::new(0.0, 0.0, 0.0), pitch_radius_m * 1e3);
+    let mut circle = Entity::new(EntityType::Circle(pitch));
+    circle.common.layer = PITCH_LAYER.to_string();
+    drawing.add_entity(circle);
+    let mut bytes = Vec::new();
+    drawing.save(&mut bytes)?;
+    Ok(bytes)
+}

@@ -31,6 +31,7 @@ pub mod course_report;
 pub mod cycle_table;
 pub mod figure;
 pub mod force_figure;
+pub mod gear_profile;
 pub mod geometry;
 pub mod label;
 pub mod layout;

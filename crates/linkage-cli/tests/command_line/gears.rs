@@ -154,3 +154,37 @@ fn train_speeds_ratios_and_refusals() {
     assert_ne!(code, Some(0));
     assert!(err.contains("give 2 input speed(s) (1 given)"), "{err}");
 }
+
+/// `linkage gears profile`: 12 teeth unshifted are undercut and said to be; the SVG
+/// and DXF are written; shifted by x_min they are not.
+#[test]
+fn a_cut_profile_is_written_and_its_undercut_said() {
+    let dir = std::env::temp_dir().join(format!("linkage_gear_profile_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let (svg, dxf) = (dir.join("g.svg"), dir.join("g.dxf"));
+    let (svg_s, dxf_s) = (svg.display().to_string(), dxf.display().to_string());
+    let args = [
+        "gears", "profile", "--module", "2", "--teeth", "12", "--svg", &svg_s, "--dxf", &dxf_s,
+    ];
+    let (code, out, err) = run_linkage(&args);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        out.contains("undercut: the shift is 0.298 short of x_min = 0.2981"),
+        "{out}"
+    );
+    let text = std::fs::read_to_string(&svg).expect("the SVG");
+    assert!(
+        text.contains("<polygon points=") && text.contains("z = 12, m = 2 mm"),
+        "{}",
+        &text[..300]
+    );
+    let drawing = std::fs::read_to_string(&dxf).expect("the DXF");
+    assert!(drawing.contains("LWPOLYLINE") && drawing.contains("PROFILE"));
+    let x_min = "0.29813332935693415";
+    let (code, out, _) = run_linkage(&[
+        "gears", "profile", "--module", "2", "--teeth", "12", "--shift", x_min, "--svg", &svg_s,
+    ]);
+    assert_eq!(code, Some(0));
+    assert!(!out.contains("undercut"), "{out}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -1,0 +1,149 @@
+//! A gear as a rack cutter cuts it ([`linkage::gears::generation`]), drawn whole: the
+//! outline of every tooth (its two cut flanks, fillet and undercut included, and the
+//! root circle between teeth) as SVG in millimetres, with the pitch, base, tip and
+//! root circles, or as DXF for manufacture (the outline on its own layer).
+
+use std::f64::consts::TAU;
+use std::fmt::Write as _;
+
+use linkage::gears::Gear;
+use linkage::gears::generation::cut_flank;
+
+use crate::numbers::significant;
+
+/// The closed outline of the cut gear, metres: every tooth's flanks from
+/// `per_flank` radii, root arcs between them.
+pub fn gear_outline(g: &Gear, per_flank: usize) -> Vec<[f64; 2]> {
+    let left: Vec<[f64; 2]> = cut_flank(g, per_flank);
+    let z = g.spec.teeth;
+    let pitch = TAU / f64::from(z);
+    let mut out = Vec::new();
+    for k in 0..z {
+        let turn = f64::from(k) * pitch;
+        let (s, c) = turn.sin_cos();
+        let at = |[x, y]: [f64; 2]| [c * x - s * y, s * x + c * y];
+        // The right flank (the left one mirrored) root to tip, the left tip to root.
+        out.extend(left.iter().map(|&[x, y]| at([-x, y])));
+        out.extend(left.iter().rev().map(|&p| at(p)));
+        // The root circle to the next tooth's right flank.
+        if let Some(&[x, y]) = left.first() {
+            let a0 = y.atan2(x) + turn;
+            let a1 = y.atan2(-x) + turn + pitch;
+            let r = g.root_radius_m;
+            for j in 1..8 {
+                let a = a0 + (a1 - a0) * f64::from(j) / 8.0;
+                out.push([r * a.cos(), r * a.sin()]);
+            }
+        }
+    }
+    out
+}
+
+/// The cut gear as an SVG drawing in millimetres: its outline, the pitch circle
+/// dash-dotted, the base circle dotted, and a title with its numbers.
+pub fn gear_svg(g: &Gear, outline: &[[f64; 2]]) -> String {
+    let mm = |v: f64| v * 1e3;
+    let half = mm(g.tip_radius_m.max(g.root_radius_m)) * 1.15;
+    let size = 2.0 * half;
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{size:.2}mm\" height=\"{:.2}mm\" viewBox=\"{:.3} {:.3} {size:.3} {:.3}\">",
+        size * 1.1,
+        -half,
+        -half * 1.2,
+        size * 1.1
+    );
+    let points: Vec<String> = outline
+        .iter()
+        .map(|&[x, y]| format!("{:.4},{:.4}", mm(x), -mm(y)))
+        .collect();
+    let stroke = half / 400.0;
+    let _ = writeln!(
+        out,
+        "<polygon points=\"{}\" fill=\"#e8eef7\" stroke=\"#1e5aaa\" stroke-width=\"{stroke:.4}\"/>",
+        points.join(" ")
+    );
+    let circle = |out: &mut String, r: f64, dash: &str| {
+        let _ = writeln!(
+            out,
+            "<circle cx=\"0\" cy=\"0\" r=\"{:.4}\" fill=\"none\" stroke=\"#555555\" stroke-width=\"{:.4}\" stroke-dasharray=\"{dash}\"/>",
+            mm(r),
+            stroke * 0.6
+        );
+    };
+    circle(
+        &mut out,
+        g.pitch_radius_m,
+        &format!(
+            "{:.3} {:.3} {:.3} {:.3}",
+            8.0 * stroke,
+            2.0 * stroke,
+            1.0 * stroke,
+            2.0 * stroke
+        ),
+    );
+    circle(
+        &mut out,
+        g.base_radius_m,
+        &format!("{:.3} {:.3}", 1.0 * stroke, 2.0 * stroke),
+    );
+    let s = g.spec;
+    let undercut = g.undercut_shift_short().map_or(String::new(), |short| {
+        format!(", undercut (x short of x_min by {})", significant(short, 3))
+    });
+    let _ = writeln!(
+        out,
+        "<text x=\"{:.3}\" y=\"{:.3}\" font-size=\"{:.3}\" font-family=\"sans-serif\">z = {}, m = {} mm, x = {}, α = {}°{undercut}</text>",
+        -half,
+        -half * 1.08,
+        half / 18.0,
+        s.teeth,
+        significant(mm(s.module_m), 4),
+        significant(s.shift, 4),
+        significant(s.pressure_angle_rad.to_degrees(), 4)
+    );
+    out.push_str("</svg>\n");
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use linkage::gears::GearSpec;
+    use std::f64::consts::FRAC_PI_2;
+
+    /// The angle of a point, from the +y axis (the first tooth's middle).
+    fn from_top(p: [f64; 2]) -> f64 {
+        p[1].atan2(p[0]) - FRAC_PI_2
+    }
+
+    /// The outline goes round once: every tooth's points within its pitch, all of
+    /// them between the root and the tip circles.
+    #[test]
+    fn the_outline_is_every_tooth_between_root_and_tip() {
+        let g = Gear::new(GearSpec::standard(0.002, 12)).expect("a gear");
+        let outline = gear_outline(&g, 40);
+        assert!(outline.len() > 12 * 80);
+        for p in &outline {
+            let r = p[0].hypot(p[1]);
+            assert!(
+                r >= g.root_radius_m * (1.0 - 1e-12) && r <= g.tip_radius_m * (1.0 + 1e-12),
+                "{r}"
+            );
+        }
+        // The first tooth is centred on the y axis: its flanks' angles mirror.
+        let first = from_top(outline[0]);
+        let last_of_tooth = from_top(outline[79]);
+        assert!(
+            (first + last_of_tooth).abs() < 1e-12,
+            "{first} {last_of_tooth}"
+        );
+        let svg = gear_svg(&g, &outline);
+        assert!(
+            svg.contains("z = 12, m = 2 mm, x = 0, α = 20°, undercut"),
+            "{}",
+            &svg[..400]
+        );
+    }
+}
