@@ -25,7 +25,7 @@ fn number(v: &serde_json::Value, path: &[&str]) -> f64 {
 }
 
 /// z = 12 and 40, m = 2 mm, x = 0.3 and 0.2: inv α' = inv 20° + 2 tan 20° · 0.5/52,
-/// a' = a cos 20°/cos α', ε by the tangent formula.
+/// a' = a cos 20°/cos α', the tips shortened by Δy·m, ε by the tangent formula.
 #[test]
 fn a_shifted_pair_is_the_textbooks() {
     let v = json(&[
@@ -47,10 +47,14 @@ fn a_shifted_pair_is_the_textbooks() {
     let aw = 0.5 * (lo + hi);
     assert!((number(&v, &["working_pressure_angle_rad"]) - aw).abs() < 1e-12);
     let a = 0.052;
-    assert!((number(&v, &["centre_m"]) - a * a20.cos() / aw.cos()).abs() < 1e-15);
+    let centre = a * a20.cos() / aw.cos();
+    assert!((number(&v, &["centre_m"]) - centre).abs() < 1e-15);
+    // The tips cut down by Δy = x₁ + x₂ − y to keep the standard clearance.
+    let dy = 0.5 - (centre - a) / 0.002;
+    assert!((number(&v, &["tip_shortening"]) - dy).abs() < 1e-12);
     let term = |z: f64, x: f64| {
         let r = 0.001 * z;
-        let ra = r + (1.0 + x) * 0.002;
+        let ra = r + (1.0 + x - dy) * 0.002;
         let alpha_a = (r * a20.cos() / ra).acos();
         z * (alpha_a.tan() - aw.tan())
     };
@@ -186,5 +190,23 @@ fn a_cut_profile_is_written_and_its_undercut_said() {
     ]);
     assert_eq!(code, Some(0));
     assert!(!out.contains("undercut"), "{out}");
+    // Above 32.1° the basic rack's teeth are pointed: refused with the limit.
+    let (code, _, err) = run_linkage(&[
+        "gears",
+        "profile",
+        "--module",
+        "2",
+        "--teeth",
+        "30",
+        "--pressure-angle-deg",
+        "34",
+        "--svg",
+        &svg_s,
+    ]);
+    assert_ne!(code, Some(0));
+    assert!(
+        err.contains("come to a point") && err.contains("below 32.1°"),
+        "{err}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -47,7 +47,7 @@ impl Cutter {
             tip_line: g.root_radius_m,
             offset: 0.25 * PI * m - datum * tan_alpha,
             tan_alpha,
-            fillet: s.clearance_coefficient * m / (1.0 - s.pressure_angle_rad.sin()),
+            fillet: fillet(g),
         }
     }
 
@@ -134,13 +134,33 @@ impl Cutter {
     }
 }
 
+/// The half-width of the cutter's tooth on its tip line, m: negative where the
+/// basic rack comes to a point above it (a pressure angle over 32° with h_a* = 1,
+/// c* = 0.25, or h_a* = 2 at 20°).
+fn tip_half_width(g: &Gear) -> f64 {
+    let s = g.spec;
+    let depth = (s.addendum_coefficient + s.clearance_coefficient) * s.module_m;
+    0.25 * PI * s.module_m - depth * s.pressure_angle_rad.tan()
+}
+
+/// The tip fillet's radius: c*·m / (1 − sin α), or less where the two fillets of
+/// the cutter's tip would overlap (above about 22.4° with GB/T 1356's coefficients):
+/// then the largest that fits the tip's half-width.
+fn fillet(g: &Gear) -> f64 {
+    let s = g.spec;
+    let (sin, cos) = s.pressure_angle_rad.sin_cos();
+    let standard = s.clearance_coefficient * s.module_m / (1.0 - sin);
+    standard.min(tip_half_width(g).max(0.0) * cos / (1.0 - sin))
+}
+
 /// The polar angle of the cut tooth's edge at `radius_m`, in the gear's frame where
 /// the space the cutter's middle tooth cuts is centred at 90° and the tooth beside it
-/// at 90° − 180°/z; `None` below the root or above the tip circle, or for an
-/// internal gear.
+/// at 90° − 180°/z; `None` below the root or above the tip circle, where the cutter
+/// does not reach (its tip is pointed above the root circle), or for an internal
+/// gear.
 pub fn cut_edge_angle(g: &Gear, radius_m: f64) -> Option<f64> {
     let inside = radius_m > g.root_radius_m && radius_m <= g.tip_radius_m;
-    if g.spec.kind != GearKind::External || !inside {
+    if g.spec.kind != GearKind::External || !inside || tip_half_width(g) <= 0.0 {
         return None;
     }
     let cutter = Cutter::of(g);
@@ -157,7 +177,7 @@ pub fn cut_edge_angle(g: &Gear, radius_m: f64) -> Option<f64> {
         .map(|k| -reach + step * k as f64)
         .min_by(|a, b| f(*a).total_cmp(&f(*b)))
         .unwrap_or(0.0);
-    Some(golden_min(f, best - step, best + step))
+    Some(golden_min(f, best - step, best + step)).filter(|a| a.is_finite())
 }
 
 /// The cut tooth's thickness (arc) at `radius_m`: twice the edge's angle from the

@@ -94,9 +94,9 @@ pub struct GearPair {
     pub working_pitch_radii_m: [f64; 2],
     /// The centre distance modification coefficient y = (a' − a)/m.
     pub centre_modification: f64,
-    /// The tip shortening coefficient Δy = x₁ + x₂ − y of an external pair, by which
-    /// the tips are cut down to keep the standard clearance (0 for a standard or an
-    /// equal-and-opposite shift).
+    /// The tip shortening coefficient Δy = x₁ + x₂ − y of an external pair (0 for a
+    /// standard or an equal-and-opposite shift): where positive, both gears' tip
+    /// circles here are cut down by Δy·m to keep the standard clearance.
     pub tip_shortening: Option<f64>,
     /// The shifts' sum that meshes without backlash at this centre distance.
     pub shift_sum_without_backlash: f64,
@@ -197,9 +197,22 @@ impl GearPair {
             contact_ratio: 0.0,
             issues: Vec::new(),
         };
+        pair.shorten_tips();
         pair.contact();
         pair.check();
         Ok(pair)
+    }
+
+    /// Both tips cut down by Δy·m where Δy > 0 (GB practice: d_a = d + 2(h_a* + x −
+    /// Δy)m), so that a shifted pair keeps the standard clearance; its contact ratio,
+    /// interference and pointed tips are then of the shortened teeth.
+    fn shorten_tips(&mut self) {
+        let Some(dy) = self.tip_shortening.filter(|dy| *dy > 0.0) else {
+            return;
+        };
+        let cut = dy * self.pinion.spec.module_m;
+        self.pinion.tip_radius_m -= cut;
+        self.wheel.tip_radius_m -= cut;
     }
 
     /// The clearances, the path of contact and the contact ratio.

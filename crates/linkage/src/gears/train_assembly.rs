@@ -38,21 +38,28 @@ pub(crate) fn checks(file: &TrainFile) -> Vec<AssemblyCheck> {
         if pairs.is_empty() {
             continue;
         }
+        // Each planet's axis at one distance from the carrier's, whatever central
+        // gears it meets (double planets may sit at two distances).
         let mut distances: Vec<f64> = Vec::new();
-        for (p, c) in &pairs {
-            let (zp, zc) = (f64::from(p.teeth), f64::from(c.teeth));
-            let d = if c.internal {
-                0.5 * (zc - zp)
-            } else {
-                0.5 * (zc + zp)
-            };
-            if !distances.iter().any(|x| (x - d).abs() < 1e-9) {
-                distances.push(d);
+        let mut holds = true;
+        for planet in &planets {
+            let mut own: Vec<f64> = Vec::new();
+            for (p, c) in pairs.iter().filter(|(p, _)| p.member == *planet) {
+                let d = centre_distance(p, c);
+                if !own.iter().any(|x| (x - d).abs() < 1e-9) {
+                    own.push(d);
+                }
+            }
+            holds &= own.len() <= 1;
+            for d in own {
+                if !distances.iter().any(|x| (x - d).abs() < 1e-9) {
+                    distances.push(d);
+                }
             }
         }
         out.push(AssemblyCheck::Coaxial {
             carrier: h.name.clone(),
-            holds: distances.len() == 1,
+            holds,
             distances_modules: distances,
         });
         if let Some(k) = h.planets {
@@ -74,7 +81,8 @@ fn simple_set(
     let (Some((p, s)), Some((p2, r))) = (sun, ring) else {
         return;
     };
-    if p.name != p2.name || k == 0 {
+    // One planet has no neighbour, and spaces equally on its own.
+    if p.name != p2.name || k < 2 {
         return;
     }
     let value = f64::from(s.teeth + r.teeth) / f64::from(k);
@@ -92,6 +100,16 @@ fn simple_set(
         clearance_modules: clearance,
         holds: clearance > 0.0,
     });
+}
+
+/// The distance between a planet's axis and a central gear's, modules.
+fn centre_distance(planet: &GearFile, central: &GearFile) -> f64 {
+    let (zp, zc) = (f64::from(planet.teeth), f64::from(central.teeth));
+    if central.internal {
+        0.5 * (zc - zp)
+    } else {
+        0.5 * (zc + zp)
+    }
 }
 
 fn find<'a>(file: &'a TrainFile, name: &str) -> Option<&'a GearFile> {

@@ -51,6 +51,23 @@ pub enum TrainError {
         /// The member holding the other's.
         b_axis: String,
     },
+    /// An internal gear with no more teeth than the external gear it meshes with.
+    #[error(
+        "internal gear `{ring}` ({ring_teeth} teeth) must have more teeth than `{mate}` ({mate_teeth}) inside it"
+    )]
+    RingTooSmall {
+        /// The internal gear.
+        ring: String,
+        /// Its teeth.
+        ring_teeth: u32,
+        /// The external gear inside it.
+        mate: String,
+        /// Its teeth.
+        mate_teeth: u32,
+    },
+    /// A train with no member that turns.
+    #[error("a train needs at least one member that turns")]
+    NoMembers,
     /// Two internal gears in mesh.
     #[error(
         "gears `{a}` and `{b}` are both internal: an internal gear meshes with an external one"
@@ -98,8 +115,8 @@ pub struct WillisRatio {
 /// A planetary set's assembly condition.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub enum AssemblyCheck {
-    /// Every planet meets every central gear at one distance from the carrier's axis
-    /// (in modules): coaxiality.
+    /// Each planet meets every central gear it meshes with at one distance from the
+    /// carrier's axis (in modules): coaxiality.
     Coaxial {
         /// The carrier.
         carrier: String,

@@ -7,6 +7,9 @@ use super::train_results::TrainError;
 
 /// Every name defined once, every name used defined, every number in range.
 pub(crate) fn check_names(file: &TrainFile) -> Result<(), TrainError> {
+    if file.members.is_empty() {
+        return Err(TrainError::NoMembers);
+    }
     let mut seen: Vec<&str> = vec![FRAME];
     for name in file.members.iter().map(|m| m.name.as_str()) {
         if seen.contains(&name) {
@@ -14,26 +17,50 @@ pub(crate) fn check_names(file: &TrainFile) -> Result<(), TrainError> {
         }
         seen.push(name);
     }
-    let member = |what: String, name: &str| {
-        if seen.contains(&name) {
-            Ok(())
-        } else {
-            Err(TrainError::Unknown {
-                what,
-                name: name.into(),
-                kind: "members",
-            })
-        }
-    };
+    let member = |what: String, name: &str| known(&seen, what, name);
     for m in &file.members {
         member(format!("member {}'s axis_on", m.name), &m.axis_on)?;
-        range(
-            &format!("member {}'s inertia_kg_m2", m.name),
-            m.inertia_kg_m2,
-            0.0,
-            1e9,
-        )?;
+        let what = format!("member {}'s inertia_kg_m2", m.name);
+        range(&what, m.inertia_kg_m2, 0.0, 1e9)?;
     }
+    check_gears(file, &seen)?;
+    for s in &file.stages {
+        member(format!("stage {} → {}'s from", s.from, s.to), &s.from)?;
+        member(format!("stage {} → {}'s to", s.from, s.to), &s.to)?;
+        let what = format!("stage {} → {}'s ratio", s.from, s.to);
+        range(&what, s.ratio, 1e-6, 1e6)?;
+    }
+    for i in &file.inputs {
+        if is_frame(&i.member) {
+            // The frame does not turn: a member held still is one with an input of 0.
+            return Err(TrainError::Unknown {
+                what: "an input".into(),
+                name: i.member.clone(),
+                kind: "members that turn (a member held still is an input of 0 rpm)",
+            });
+        }
+        member(format!("input on {}", i.member), &i.member)?;
+        range(&format!("input on {}'s rpm", i.member), i.rpm, -1e7, 1e7)?;
+    }
+    Ok(())
+}
+
+/// `name`, used by `what`, is one of the members `seen` (the frame among them).
+fn known(seen: &[&str], what: String, name: &str) -> Result<(), TrainError> {
+    if seen.contains(&name) {
+        Ok(())
+    } else {
+        Err(TrainError::Unknown {
+            what,
+            name: name.into(),
+            kind: "members",
+        })
+    }
+}
+
+/// Every gear named once, on a member `seen`, with teeth in range; every mesh of
+/// gears defined.
+fn check_gears(file: &TrainFile, seen: &[&str]) -> Result<(), TrainError> {
     let mut gear_names: Vec<&str> = Vec::new();
     for g in &file.gears {
         if gear_names.contains(&g.name.as_str()) {
@@ -42,13 +69,9 @@ pub(crate) fn check_names(file: &TrainFile) -> Result<(), TrainError> {
             });
         }
         gear_names.push(&g.name);
-        member(format!("gear {}'s member", g.name), &g.member)?;
-        range(
-            &format!("gear {}'s teeth", g.name),
-            f64::from(g.teeth),
-            3.0,
-            10_000.0,
-        )?;
+        known(seen, format!("gear {}'s member", g.name), &g.member)?;
+        let what = format!("gear {}'s teeth", g.name);
+        range(&what, f64::from(g.teeth), 3.0, 10_000.0)?;
     }
     for (a, b) in &file.meshes {
         for name in [a, b] {
@@ -60,20 +83,6 @@ pub(crate) fn check_names(file: &TrainFile) -> Result<(), TrainError> {
                 });
             }
         }
-    }
-    for s in &file.stages {
-        member(format!("stage {} → {}'s from", s.from, s.to), &s.from)?;
-        member(format!("stage {} → {}'s to", s.from, s.to), &s.to)?;
-        range(
-            &format!("stage {} → {}'s ratio", s.from, s.to),
-            s.ratio,
-            1e-6,
-            1e6,
-        )?;
-    }
-    for i in &file.inputs {
-        member(format!("input on {}", i.member), &i.member)?;
-        range(&format!("input on {}'s rpm", i.member), i.rpm, -1e7, 1e7)?;
     }
     Ok(())
 }
@@ -108,6 +117,16 @@ pub(crate) fn rows(file: &TrainFile) -> Result<Vec<Vec<f64>>, TrainError> {
                 a: a.clone(),
                 b: b.clone(),
             });
+        }
+        for (ring, mate) in [(ga, gb), (gb, ga)] {
+            if ring.internal && ring.teeth <= mate.teeth {
+                return Err(TrainError::RingTooSmall {
+                    ring: ring.name.clone(),
+                    ring_teeth: ring.teeth,
+                    mate: mate.name.clone(),
+                    mate_teeth: mate.teeth,
+                });
+            }
         }
         let holder = holder(file, ga, gb)?;
         let sigma = if ga.internal || gb.internal {

@@ -183,6 +183,37 @@ fn a_planetary_sets_assembly_conditions() {
                 50.0 * (std::f64::consts::PI / 4.0).sin() - 32.0
             )
     );
+    // One planet: no neighbour to clear, no spacing to check.
+    let one = planetary(r#"(member: "sun", rpm: 1.0), (member: "ring", rpm: 0.0)"#)
+        .replace("Some(4)", "Some(1)");
+    let s1 = train(&one).solve().expect("solved");
+    assert!(!s1.assembly.iter().any(|c| matches!(
+        c,
+        AssemblyCheck::Neighbours { .. } | AssemblyCheck::EqualSpacing { .. }
+    )));
+    // Double planets at two distances (sun 30 with P1 15 at 22.5; P2 15 meshing P1
+    // and a ring of 75 at 30): coaxial, each planet at its own distance.
+    let double = train(
+        r#"(name: "double", members: [(name: "sun"), (name: "p1", axis_on: "carrier"), (name: "p2", axis_on: "carrier"),
+            (name: "carrier"), (name: "ring")],
+            gears: [(name: "s", member: "sun", teeth: 30), (name: "a", member: "p1", teeth: 15),
+                    (name: "b", member: "p2", teeth: 15), (name: "r", member: "ring", teeth: 75, internal: true)],
+            meshes: [("s", "a"), ("a", "b"), ("b", "r")],
+            inputs: [(member: "sun", rpm: 100.0), (member: "ring", rpm: 0.0)])"#,
+    );
+    let sd = double.solve().expect("solved");
+    assert!(
+        sd.assembly
+            .iter()
+            .any(|c| matches!(c, AssemblyCheck::Coaxial { holds: true, .. })),
+        "{:?}",
+        sd.assembly
+    );
+    // A double-planet set, ring fixed: the carrier turns with the sun, 1/(1 − z_r/z_s).
+    assert!(close(
+        sd.ratio("sun", "carrier").expect("a member"),
+        1.0 - 75.0 / 30.0
+    ));
     // A ring of 81: not coaxial, and (20 + 81)/4 not whole.
     let odd = planetary(r#"(member: "sun", rpm: 1.0), (member: "ring", rpm: 0.0)"#)
         .replace("teeth: 80", "teeth: 81");
@@ -223,6 +254,18 @@ fn refusals_name_what_is_wrong() {
         teeth.contains("gear g's teeth 2 is outside the range 3 … 10000"),
         "{teeth}"
     );
+    let empty = bad(r#"(name: "x", members: [])"#);
+    assert!(empty.contains("at least one member"), "{empty}");
+    let small_ring = bad(r#"(name: "x", members: [(name: "a"), (name: "b")],
+            gears: [(name: "g", member: "a", teeth: 30), (name: "r", member: "b", teeth: 20, internal: true)],
+            meshes: [("g", "r")])"#);
+    assert!(
+        small_ring.contains("must have more teeth than `g`"),
+        "{small_ring}"
+    );
+    let frame =
+        bad(r#"(name: "x", members: [(name: "a")], inputs: [(member: "frame", rpm: 0.0)])"#);
+    assert!(frame.contains("an input names `frame`"), "{frame}");
     let tied = bad(
         r#"(name: "x", members: [(name: "a"), (name: "b"), (name: "c")],
             gears: [(name: "ga", member: "a", teeth: 20), (name: "gb", member: "b", teeth: 40)],

@@ -384,3 +384,46 @@ fn the_cut_tooth_is_the_involute_unless_undercut() {
         }
     }
 }
+
+/// Cut profiles of gears nobody chose (teeth 6..200, shifts −1..1, pressure angles
+/// 14.5° to 30°, where the rack's tip fillets are narrowed to fit above 22.4°): every
+/// point finite and between the root and the tip circles; above 32.1° the rack is
+/// pointed and there is no profile.
+#[test]
+fn cut_profiles_of_random_gears_are_finite() {
+    use linkage::gears::generation::cut_flank;
+    let mut state = 0x2545_f491_4f6c_dd1d_u64;
+    let mut next = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..60 {
+        let z = 6 + (next() * 194.0) as u32;
+        let x = -1.0 + 2.0 * next();
+        let angle = [14.5, 20.0, 25.0, 30.0][(next() * 4.0) as usize % 4];
+        let spec = GearSpec {
+            pressure_angle_rad: f64::to_radians(angle),
+            ..GearSpec::standard(0.002, z).shifted(x)
+        };
+        let Ok(g) = Gear::new(spec) else { continue };
+        for p in cut_flank(&g, 30) {
+            let r = p[0].hypot(p[1]);
+            assert!(
+                p.iter().all(|v| v.is_finite()),
+                "z {z} x {x} α {angle}: {p:?}"
+            );
+            assert!(
+                r > g.root_radius_m && r <= g.tip_radius_m * (1.0 + 1e-12),
+                "z {z} x {x} α {angle}: {r}"
+            );
+        }
+    }
+    let steep = Gear::new(GearSpec {
+        pressure_angle_rad: 34f64.to_radians(),
+        ..GearSpec::standard(0.002, 30)
+    })
+    .expect("a gear");
+    assert!(cut_flank(&steep, 10).is_empty());
+}
