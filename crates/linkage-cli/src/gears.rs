@@ -32,7 +32,9 @@ fn profile(a: &ProfileArgs) -> Result<String> {
     if a.svg.is_none() && a.dxf.is_none() {
         return Err(CliError::refused("give --svg FILE or --dxf FILE"));
     }
-    if linkage::gears::generation::cut_flank(&g, 2).is_empty() {
+    // Empty where the rack cuts nothing: its teeth pointed above their tip line.
+    let outline = linkage_diagram::gear_profile::gear_outline(&g, 60);
+    if outline.is_empty() {
         return Err(CliError::refused(format!(
             "at a pressure angle of {}° the basic rack's teeth (h_a* = 1, c* = 0.25) come to a \
              point before their tip line: no rack cuts this gear (the pressure angle must be \
@@ -40,7 +42,6 @@ fn profile(a: &ProfileArgs) -> Result<String> {
             significant(a.pressure_angle_deg, 4)
         )));
     }
-    let outline = linkage_diagram::gear_profile::gear_outline(&g, 60);
     let mut said = String::new();
     if let Some(path) = &a.svg {
         let svg = linkage_diagram::gear_profile::gear_svg(&g, &outline);

@@ -39,16 +39,34 @@ pub fn cam_dxf(
     pitch: &[[f64; 2]],
     base_radius_m: f64,
 ) -> Result<Vec<u8>, DxfError> {
-    let mut drawing = Drawing::new();
-    // Lightweight polylines came with R14; the crate writes R12 unless told.
-    drawing.header.version = AcadVersion::R2000;
-    drawing.header.default_drawing_units = Units::Millimeters;
+    let mut drawing = millimetre_drawing();
     drawing.add_entity(polyline(profile, PROFILE_LAYER));
     drawing.add_entity(polyline(pitch, PITCH_LAYER));
-    let base = Circle::new(Point::new(0.0, 0.0, 0.0), base_radius_m * 1e3);
-    let mut circle = Entity::new(EntityType::Circle(base));
-    circle.common.layer = BASE_CIRCLE_LAYER.to_string();
-    drawing.add_entity(circle);
+    drawing.add_entity(circle(base_radius_m, BASE_CIRCLE_LAYER));
+    saved(&drawing)
+}
+
+/// An empty drawing in millimetres, in a version that has lightweight polylines
+/// (they came with R14; the crate writes R12 unless told).
+fn millimetre_drawing() -> Drawing {
+    let mut drawing = Drawing::new();
+    drawing.header.version = AcadVersion::R2000;
+    drawing.header.default_drawing_units = Units::Millimeters;
+    drawing
+}
+
+/// A circle about the origin of `radius_m`, in millimetres, on `layer`.
+fn circle(radius_m: f64, layer: &str) -> Entity {
+    let mut e = Entity::new(EntityType::Circle(Circle::new(
+        Point::new(0.0, 0.0, 0.0),
+        radius_m * 1e3,
+    )));
+    e.common.layer = layer.to_string();
+    e
+}
+
+/// The drawing's bytes.
+fn saved(drawing: &Drawing) -> Result<Vec<u8>, DxfError> {
     let mut bytes = Vec::new();
     drawing.save(&mut bytes)?;
     Ok(bytes)
@@ -61,15 +79,8 @@ pub fn cam_dxf(
 /// # Errors
 /// The `dxf` crate's, writing to memory.
 pub fn gear_dxf(outline: &[[f64; 2]], pitch_radius_m: f64) -> Result<Vec<u8>, DxfError> {
-    let mut drawing = Drawing::new();
-    drawing.header.version = AcadVersion::R2000;
-    drawing.header.default_drawing_units = Units::Millimeters;
+    let mut drawing = millimetre_drawing();
     drawing.add_entity(polyline(outline, PROFILE_LAYER));
-    let pitch = Circle::new(Point::new(0.0, 0.0, 0.0), pitch_radius_m * 1e3);
-    let mut circle = Entity::new(EntityType::Circle(pitch));
-    circle.common.layer = PITCH_LAYER.to_string();
-    drawing.add_entity(circle);
-    let mut bytes = Vec::new();
-    drawing.save(&mut bytes)?;
-    Ok(bytes)
+    drawing.add_entity(circle(pitch_radius_m, PITCH_LAYER));
+    saved(&drawing)
 }

@@ -12,7 +12,8 @@ use linkage::gears::generation::cut_flank;
 use crate::numbers::significant;
 
 /// The closed outline of the cut gear, metres: every tooth's flanks from
-/// `per_flank` radii, root arcs between them.
+/// `per_flank` radii, root arcs between them; empty where the rack cuts nothing
+/// (its teeth pointed above their tip line, or an internal gear).
 pub fn gear_outline(g: &Gear, per_flank: usize) -> Vec<[f64; 2]> {
     let left: Vec<[f64; 2]> = cut_flank(g, per_flank);
     let z = g.spec.teeth;

@@ -16,9 +16,6 @@ use super::gear::{Gear, GearKind};
 /// Points of the grid over the gear's turn that brackets the cut edge's minima.
 const GRID: usize = 256;
 
-/// The golden ratio's conjugate, (√5 − 1)/2.
-const GOLDEN: f64 = 0.618_033_988_749_894_8;
-
 /// The cutter: its rolling line tangent to the pitch circle at (0, r), its datum
 /// line x·m further out, its teeth reaching (h_a* + c*)·m below the datum line to
 /// the root circle, a tooth centred on the y axis when the gear is at 0.
@@ -177,7 +174,9 @@ pub fn cut_edge_angle(g: &Gear, radius_m: f64) -> Option<f64> {
         .map(|k| -reach + step * k as f64)
         .min_by(|a, b| f(*a).total_cmp(&f(*b)))
         .unwrap_or(0.0);
-    Some(golden_min(f, best - step, best + step)).filter(|a| a.is_finite())
+    // The crate's golden-section search for a maximum, on −f.
+    let least = crate::extremum::golden_max(|phi| Some(-f(phi)), best - step, best + step)?;
+    Some(-least.value).filter(|a| a.is_finite())
 }
 
 /// The cut tooth's thickness (arc) at `radius_m`: twice the edge's angle from the
@@ -201,31 +200,4 @@ pub fn cut_flank(g: &Gear, samples: usize) -> Vec<[f64; 2]> {
             Some([rho * angle.cos(), rho * angle.sin()])
         })
         .collect()
-}
-
-/// The least of `f` on `[a, b]` for an `f` with one minimum there, by golden-section
-/// search to the rounding of the bracket.
-fn golden_min(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
-    let (mut lo, mut hi) = (a, b);
-    let (mut x1, mut x2) = (hi - GOLDEN * (hi - lo), lo + GOLDEN * (hi - lo));
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    for _ in 0..300 {
-        if hi - lo <= 4.0 * f64::EPSILON * (lo.abs() + hi.abs()) {
-            break;
-        }
-        if f1 > f2 {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + GOLDEN * (hi - lo);
-            f2 = f(x2);
-        } else {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - GOLDEN * (hi - lo);
-            f1 = f(x1);
-        }
-    }
-    f1.min(f2)
 }

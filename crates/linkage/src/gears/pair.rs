@@ -218,11 +218,6 @@ impl GearPair {
     /// The clearances, the path of contact and the contact ratio.
     fn contact(&mut self) {
         let (p, w, a) = (&self.pinion, &self.wheel, self.centre_m);
-        let reach = |g: &Gear| {
-            (g.tip_radius_m.powi(2) - g.base_radius_m.powi(2))
-                .max(0.0)
-                .sqrt()
-        };
         let across = a * self.working_pressure_angle_rad.sin();
         if self.internal {
             self.clearances_m = [
@@ -254,11 +249,6 @@ impl GearPair {
                 issues.push(PairIssue::PointedTip { member });
             }
         }
-        let reach = |g: &Gear| {
-            (g.tip_radius_m.powi(2) - g.base_radius_m.powi(2))
-                .max(0.0)
-                .sqrt()
-        };
         let across = self.centre_m * self.working_pressure_angle_rad.sin();
         if self.internal {
             if self.wheel.tip_radius_m < self.wheel.base_radius_m {
@@ -294,6 +284,14 @@ impl GearPair {
         }
         self.issues = issues;
     }
+}
+
+/// How far along the line of action a gear's tip circle reaches from its base
+/// circle's tangent point, √(r_a² − r_b²) (0 where the tip is inside the base circle).
+fn reach(g: &Gear) -> f64 {
+    (g.tip_radius_m.powi(2) - g.base_radius_m.powi(2))
+        .max(0.0)
+        .sqrt()
 }
 
 /// The backlash on the working pitch circles (radii `radii`): the circular pitch
