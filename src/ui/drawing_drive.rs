@@ -1,10 +1,13 @@
 //! The drawing's drive in the side panel, where the drawing computes forces: the
 //! motor (none, a constant torque, a linear induction-motor line, or a table of
-//! torque against speed), the gear ratio, the rotor's inertia and a flywheel on the
-//! crank or the motor shaft. Each change is one edit, checked as the scene checks it.
+//! torque against speed), the gear ratio (or the scene's train, shown), the rotor's
+//! inertia and a flywheel on the crank or the motor shaft. Each change is one edit, checked as the scene checks it.
 
 use eframe::egui;
-use linkage::scene::{DriveSpec, Models, MotorSpec, Shaft};
+use linkage::SceneProblem;
+use linkage::model::DriveTrain;
+use linkage::scene::{DriveSpec, DriveTrainSpec, Models, MotorSpec, Shaft};
+use linkage_diagram::numbers::significant;
 
 use crate::command::Command;
 use crate::drawing::edit::DrawingEdit;
@@ -83,6 +86,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         drive = chosen.motor().map(|motor| DriveSpec {
             motor,
             gear_ratio: drive.as_ref().map_or(1.0, |d| d.gear_ratio),
+            train: drive.as_ref().and_then(|d| d.train.clone()),
             motor_inertia_kg_m2: drive.as_ref().map_or(0.0, |d| d.motor_inertia_kg_m2),
             flywheel_kg_m2: drive.as_ref().map_or(0.0, |d| d.flywheel_kg_m2),
             flywheel_on: drive.as_ref().map_or(Shaft::Crank, |d| d.flywheel_on),
@@ -154,7 +158,11 @@ fn table(ui: &mut egui::Ui, points: &mut Vec<(f64, f64)>) {
 }
 
 fn gear_and_flywheel(ui: &mut egui::Ui, d: &mut DriveSpec) {
-    number(ui, &tr!("drive.gear_ratio"), &mut d.gear_ratio, "");
+    match &d.train {
+        // The train sets the ratio: shown, not edited here (it is edited in its file).
+        Some(spec) => train_line(ui, spec),
+        None => number(ui, &tr!("drive.gear_ratio"), &mut d.gear_ratio, ""),
+    }
     number(
         ui,
         &tr!("drive.rotor_inertia"),
@@ -167,4 +175,21 @@ fn gear_and_flywheel(ui: &mut egui::Ui, d: &mut DriveSpec) {
         ui.radio_value(&mut d.flywheel_on, Shaft::Crank, tr!("drive.on_crank"));
         ui.radio_value(&mut d.flywheel_on, Shaft::Motor, tr!("drive.on_motor"));
     });
+}
+
+/// The drive's train: its name, its ratio and its inertia at the crank, or why it
+/// cannot drive the crank.
+fn train_line(ui: &mut egui::Ui, spec: &DriveTrainSpec) {
+    match DriveTrain::from_spec(spec) {
+        Ok(t) => ui.label(tr!(
+            "drive.train",
+            name = t.name,
+            ratio = significant(t.ratio.abs(), 4),
+            inertia = significant(t.inertia_at_crank_kg_m2, 4)
+        )),
+        Err(p) => ui.colored_label(
+            ui.visuals().error_fg_color,
+            linkage_diagram::refusal::scene(super::words::lang(), &SceneProblem::DriveTrain(p)),
+        ),
+    };
 }

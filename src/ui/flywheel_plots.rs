@@ -82,9 +82,10 @@ pub fn flywheel_plots(
     });
 }
 
-/// The energy method's figures, in two short lines.
+/// The energy method's figures, in two short lines; with a drive, a third: the
+/// rotor's and train's inertia at the crank and the flywheel still to fit.
 fn figures(s: &FlywheelSizing) -> String {
-    tr!(
+    let lines = tr!(
         "plot.flywheel_figures",
         torque = si(s.mean_torque_n_m, "N·m"),
         power = si(s.mean_power_w, "W"),
@@ -93,5 +94,17 @@ fn figures(s: &FlywheelSizing) -> String {
         flywheel = significant(s.flywheel_kg_m2, 4),
         max = significant(s.reduced_inertia_kg_m2.max, 4),
         mean = significant(s.reduced_inertia_kg_m2.mean, 4)
-    )
+    );
+    match s.flywheel_to_add_on_motor_kg_m2 {
+        Some(on_motor) if s.drive_inertia_kg_m2 > 0.0 => {
+            let drive = tr!(
+                "plot.flywheel_beside_drive",
+                drive = significant(s.drive_inertia_kg_m2, 4),
+                crank = significant(s.flywheel_to_add_kg_m2, 4),
+                motor = significant(on_motor, 4)
+            );
+            format!("{lines}\n{drive}")
+        }
+        _ => lines,
+    }
 }

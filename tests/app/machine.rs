@@ -90,3 +90,29 @@ fn the_shaking_tab_shows_the_engine_before_and_after_its_counterweight() {
     );
     h.snapshot("engine_shaking_tab");
 }
+
+/// The die cutter driven through its gear train: the flywheel tab says what the
+/// train's rotor and shafts already hold at the crank and the flywheel still to fit,
+/// on the crank and on the motor shaft, as the solver sizes them.
+#[test]
+fn the_flywheel_tab_counts_the_drive_trains_inertia() {
+    let mut h = harness_on_example("die_cutter_with_train.ron");
+    h.get_by_role_and_label(Role::Button, "Flywheel").click();
+    for _ in 0..4 {
+        h.run();
+    }
+    let scene = h.state().state.session.scene().clone();
+    let mut k = Kinematics::new(Mechanism::from_scene(&scene).expect("valid")).expect("k");
+    let sized = size_flywheel(&mut k, 0.05).expect("sized");
+    let on_motor = sized.flywheel_to_add_on_motor_kg_m2.expect("a drive");
+    let shown = format!(
+        "{} kg·m² on the crank, {} kg·m² on the motor shaft",
+        significant(sized.flywheel_to_add_kg_m2, 4),
+        significant(on_motor, 4)
+    );
+    assert!(
+        h.query_by_label_contains(&shown).is_some(),
+        "the tab shows {shown}"
+    );
+    h.snapshot("die_cutter_with_train_flywheel_tab");
+}

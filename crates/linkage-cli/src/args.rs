@@ -55,6 +55,26 @@ pub(crate) enum PathArg {
     Newton,
 }
 
+/// `linkage train`'s file and options.
+#[derive(clap::Args, Debug)]
+pub(crate) struct TrainArgs {
+    /// Train file (RON), e.g. assets/trains/planetary_ring_fixed.ron.
+    pub file: PathBuf,
+    /// A member's speed in rpm, replacing the file's inputs (repeat for two).
+    #[arg(long, num_args = 2, value_names = ["MEMBER", "RPM"], allow_hyphen_values = true, action = clap::ArgAction::Append)]
+    pub input: Vec<String>,
+    /// The member to reduce the members' inertias to (kg·m²).
+    #[arg(long)]
+    pub reduce_to: Option<String>,
+    /// A load on a member whose speed is not given, N·m from outside,
+    /// counter-clockwise positive: every member's torque and power (ideal gears).
+    #[arg(long, num_args = 2, value_names = ["MEMBER", "N_M"], allow_hyphen_values = true)]
+    pub load: Vec<String>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
+    pub format: ReportFormat,
+}
+
 /// Options shared by the commands that solve a scene.
 #[derive(clap::Args, Debug)]
 pub(crate) struct SceneArgs {
@@ -279,17 +299,8 @@ pub(crate) enum Command {
     /// inputs): every member's speed, the ratios to the first input, Willis' converted
     /// ratios and a planetary set's assembly conditions (text, or JSON).
     Train {
-        /// Train file (RON), e.g. assets/trains/planetary_ring_fixed.ron.
-        file: PathBuf,
-        /// A member's speed in rpm, replacing the file's inputs (repeat for two).
-        #[arg(long, num_args = 2, value_names = ["MEMBER", "RPM"], allow_hyphen_values = true, action = clap::ArgAction::Append)]
-        input: Vec<String>,
-        /// The member to reduce the members' inertias to (kg·m²).
-        #[arg(long)]
-        reduce_to: Option<String>,
-        /// Output format.
-        #[arg(long, value_enum, default_value_t = ReportFormat::Text)]
-        format: ReportFormat,
+        #[command(flatten)]
+        args: TrainArgs,
     },
 }
 

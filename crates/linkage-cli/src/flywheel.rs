@@ -31,7 +31,7 @@ fn summary(name: &str, s: &FlywheelSizing) -> String {
          peak torque        {:.6e} N·m at {:.4} deg\n\
          work surplus range {:.6e} J (largest at {:.4} deg, smallest at {:.4} deg)\n\
          flywheel on crank  {:.6e} kg·m²\n\
-         mechanism's reduced inertia {:.6e} to {:.6e} kg·m² (mean {:.6e})\n",
+         mechanism's reduced inertia {:.6e} to {:.6e} kg·m² (mean {:.6e})\n{}",
         s.speed_rad_s,
         s.delta,
         s.mean_torque_n_m,
@@ -45,6 +45,20 @@ fn summary(name: &str, s: &FlywheelSizing) -> String {
         j.min,
         j.max,
         j.mean,
+        drive_lines(s),
+    )
+}
+
+/// With a drive: its rotor's and train's inertia at the crank, and the flywheel
+/// still to fit beside them, on the crank and on the motor shaft.
+fn drive_lines(s: &FlywheelSizing) -> String {
+    let Some(on_motor) = s.flywheel_to_add_on_motor_kg_m2 else {
+        return String::new();
+    };
+    format!(
+        "drive's rotor and train at crank {:.6e} kg·m²\n\
+         flywheel to add    {:.6e} kg·m² on the crank, {:.6e} kg·m² on the motor shaft\n",
+        s.drive_inertia_kg_m2, s.flywheel_to_add_kg_m2, on_motor,
     )
 }
 

@@ -76,12 +76,7 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
         Command::Report { scene, format } => report::report(&scene, format),
         Command::Synth { what } => synth::synth(what),
         Command::Gears { what } => gears::run(what),
-        Command::Train {
-            file,
-            input,
-            reduce_to,
-            format,
-        } => train::run(&file, &input, reduce_to.as_deref(), format),
+        Command::Train { args } => train::run(&args),
         Command::Diagram { scene, args } => diagram::run(&scene, &args),
         Command::Cam {
             file,

@@ -1,17 +1,17 @@
 //! `linkage train FILE`: a gear train's every member speed from its inputs (the
 //! file's, or `--input MEMBER RPM` given), the ratio of each to the first input,
 //! Willis' converted ratios and a planetary set's assembly conditions; the members'
-//! inertias reduced to one member on request. Text for a person, JSON for programs.
+//! inertias reduced to one member and, with a load on one member, every member's
+//! torque and power, on request. Text for a person, JSON for programs.
 
 use std::fmt::Write as _;
-use std::path::Path;
 
 use linkage::gears::train_file::{InputFile, TrainFile};
-use linkage::gears::{AssemblyCheck, Train, TrainSolution};
+use linkage::gears::{AssemblyCheck, Train, TrainSolution, TrainTorques};
 use linkage_diagram::numbers::significant;
 use serde::Serialize;
 
-use crate::args::ReportFormat;
+use crate::args::{ReportFormat, TrainArgs};
 use crate::error::{CliError, Result};
 
 /// What `--format json` writes.
@@ -19,15 +19,13 @@ use crate::error::{CliError, Result};
 struct Json<'a> {
     solution: &'a TrainSolution,
     reduced_inertia_kg_m2: Option<f64>,
+    torques: Option<&'a TrainTorques>,
 }
 
 /// Runs `linkage train`.
-pub(crate) fn run(
-    path: &Path,
-    inputs: &[String],
-    reduce_to: Option<&str>,
-    format: ReportFormat,
-) -> Result<String> {
+pub(crate) fn run(args: &TrainArgs) -> Result<String> {
+    let (path, inputs, format) = (args.file.as_path(), &args.input, args.format);
+    let reduce_to = args.reduce_to.as_deref();
     let text = std::fs::read_to_string(path).map_err(|source| CliError::Read {
         path: path.to_path_buf(),
         source,
@@ -49,16 +47,61 @@ pub(crate) fn run(
         })?),
         None => None,
     };
+    let torques = match args.load.as_slice() {
+        [member, value] => {
+            let t = value
+                .parse::<f64>()
+                .ok()
+                .filter(|t| t.is_finite())
+                .ok_or_else(|| {
+                    CliError::refused(format!(
+                        "--load {member} {value}: the torque must be a number of N·m"
+                    ))
+                })?;
+            Some(train.torques(&s, member, t).map_err(refused)?)
+        }
+        _ => None,
+    };
     Ok(match format {
         ReportFormat::Json => {
             let json = Json {
                 solution: &s,
                 reduced_inertia_kg_m2: reduced,
+                torques: torques.as_ref(),
             };
             serde_json::to_string_pretty(&json)? + "\n"
         }
-        ReportFormat::Text => words(&s, reduce_to.zip(reduced)),
+        ReportFormat::Text => {
+            let mut text = words(&s, reduce_to.zip(reduced));
+            if let Some(t) = &torques {
+                text += &torque_words(t);
+            }
+            text
+        }
     })
+}
+
+/// Every member's torque and power with the load, and the housing's reaction.
+fn torque_words(t: &TrainTorques) -> String {
+    let mut out = format!(
+        "with a load on {} (ideal gears)\n{:<24}{:>14}{:>14}\n",
+        t.loaded, "member", "torque (N·m)", "power (W)"
+    );
+    for m in &t.members {
+        let _ = writeln!(
+            out,
+            "{:<24}{:>14}{:>14}",
+            m.member,
+            significant(m.torque_n_m, 6),
+            significant(m.power_w, 6)
+        );
+    }
+    let _ = writeln!(
+        out,
+        "the frame (housing) takes {} N·m",
+        significant(t.frame_n_m, 6)
+    );
+    out
 }
 
 /// `--input MEMBER RPM` pairs as the file's inputs.

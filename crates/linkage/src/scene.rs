@@ -10,7 +10,7 @@ use indexmap::IndexMap;
 use serde::{Deserialize, Serialize};
 
 pub use crate::scene_cam::CamJointSpec;
-pub use crate::scene_drive::{DriveSpec, MotorSpec, Shaft};
+pub use crate::scene_drive::{DriveSpec, DriveTrainSpec, MotorSpec, Shaft};
 
 use crate::error::SceneProblem;
 use crate::error::{LinkageError, Result};

@@ -141,7 +141,7 @@ fn train_speeds_ratios_and_refusals() {
         "{out}"
     );
     assert!(
-        out.contains("inertia reduced to crank: 17.09 kg·m²"),
+        out.contains("inertia reduced to crank: 1809 kg·m²"),
         "{out}"
     );
     let set = common::repo("assets/trains/planetary_ring_fixed.ron");
@@ -209,4 +209,68 @@ fn a_cut_profile_is_written_and_its_undercut_said() {
         "{err}"
     );
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A scene whose drive is a train: `linkage flywheel` counts the train's inertias
+/// beside the flywheel, and a train that cannot drive the crank is refused naming
+/// the key and the train's members.
+#[test]
+fn a_drive_train_joins_the_flywheel_sizing_and_is_refused_when_it_cannot_drive() {
+    let file = common::repo("docs/examples/die_cutter_with_train.ron");
+    let (code, out, err) = run_linkage(&["flywheel", &file, "--delta", "0.05"]);
+    assert_eq!(code, Some(0), "{err}");
+    // 1.6·29² + 3·10² + 4·5² + 63 kg·m², the train written out.
+    assert!(
+        out.contains("drive's rotor and train at crank 1.808600e3 kg·m²"),
+        "{out}"
+    );
+    assert!(out.contains("on the motor shaft"), "{out}");
+    let text = std::fs::read_to_string(&file).expect("read");
+    let bad = std::env::temp_dir().join("linkage_bad_drive_train.ron");
+    std::fs::write(
+        &bad,
+        text.replace("motor_member: \"motor\"", "motor_member: \"rotor\""),
+    )
+    .expect("write");
+    let (code, _, err) = run_linkage(&["flywheel", bad.to_str().expect("path")]);
+    assert_ne!(code, Some(0));
+    assert!(
+        err.contains("`motor_member` names `rotor`")
+            && err.contains("motor, input_shaft, intermediate_shaft, crank"),
+        "{err}"
+    );
+}
+
+/// `linkage train --load`: a planetary set with its ring held, loaded at the carrier:
+/// the sun takes the load over 1 + z_r/z_s, the ring's brake the rest, and the powers
+/// cancel; a load where the speed is given is refused naming the member.
+#[test]
+fn train_torques_with_a_load() {
+    let set = common::repo("assets/trains/planetary_ring_fixed.ron");
+    let args = [
+        "train", &set, "--load", "carrier", "-500", "--format", "json",
+    ];
+    let (code, out, err) = run_linkage(&args);
+    assert_eq!(code, Some(0), "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    let members = v["torques"]["members"].as_array().expect("members");
+    let torque = |name: &str| {
+        members
+            .iter()
+            .find(|m| m["member"] == name)
+            .and_then(|m| m["torque_n_m"].as_f64())
+            .expect("a member")
+    };
+    // z_sun 20, z_ring 80: 500/(1 + 4) on the sun, 400 on the ring.
+    assert!((torque("sun") - 100.0).abs() < 1e-9, "{out}");
+    assert!((torque("ring") - 400.0).abs() < 1e-9, "{out}");
+    let (code, text, err) = run_linkage(&["train", &set, "--load", "carrier", "-500"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(text.contains("the frame (housing) takes 0 N·m"), "{text}");
+    let (code, _, err) = run_linkage(&["train", &set, "--load", "sun", "5"]);
+    assert_ne!(code, Some(0));
+    assert!(
+        err.contains("the load is on `sun`, whose speed is given"),
+        "{err}"
+    );
 }

@@ -11,6 +11,7 @@ mod parameter;
 mod run;
 mod scene;
 mod singular;
+mod train;
 
 pub use assembly::{open, reach};
 pub use design::{construction, design, positions, rows};
@@ -18,6 +19,7 @@ pub use parameter::{param, valid};
 pub use run::{run_refusal, run_warning};
 pub use scene::{cam, scene, share};
 pub use singular::{singularity, undecomposable};
+pub use train::{drive_train, train};
 
 use linkage::LinkageError;
 use linkage::error::{AssemblyFailure, MachineAnalysis};

@@ -7,6 +7,7 @@ use linkage::error::{CamProblem, LonePoint, MadeJoint};
 use linkage::share::ShareError;
 
 use super::list;
+use super::train::drive_train;
 use crate::numbers::significant;
 use crate::words::{Lang, sw};
 
@@ -169,6 +170,7 @@ fn chain_and_models(lang: Lang, p: &SceneProblem) -> String {
         SceneProblem::NotPivoted { link } => sw!(lang, "scene.not_pivoted", link = link),
         SceneProblem::NotAsDrawn { point } => sw!(lang, "scene.not_as_drawn", point = point),
         SceneProblem::CannotWrite { why } => sw!(lang, "scene.cannot_write", why = why),
+        SceneProblem::DriveTrain(p) => sw!(lang, "scene.drive_train", why = drive_train(lang, p)),
         // `scene` and `names_and_branches` word the others before they come here;
         // one added to the solver and not yet here reads in the solver's English.
         other => other.to_string(),

@@ -405,6 +405,7 @@ mod tests {
                 rated_rpm: 1450.0,
             },
             gear_ratio: 29.0,
+            train: None,
             motor_inertia_kg_m2: 0.1,
             flywheel_kg_m2: 40.0,
             flywheel_on: Shaft::Motor,

@@ -290,6 +290,9 @@ pub enum SceneProblem {
         /// The first point off its drawn place.
         point: String,
     },
+    /// The drive's gear train cannot drive the crank.
+    #[error("the drive's train: {0}")]
+    DriveTrain(super::DriveTrainProblem),
     /// The scene could not be written as RON.
     #[error("cannot write scene: {why}")]
     CannotWrite {

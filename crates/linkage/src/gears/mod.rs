@@ -16,8 +16,10 @@ mod train_assembly;
 pub mod train_file;
 mod train_results;
 mod train_rows;
+mod train_torques;
 
 pub use error::{GearError, GearParam, Member};
 pub use gear::{Gear, GearKind, GearSpec, least_teeth_without_undercut, limits};
 pub use pair::{CentreDistance, GearPair, MAX_WORKING_ANGLE_DEG, PairIssue, PairSpec};
 pub use train::{AssemblyCheck, MemberSpeed, Train, TrainError, TrainSolution, WillisRatio};
+pub use train_torques::{MemberTorque, TrainTorques};

@@ -16,9 +16,9 @@ pub use super::train_results::{
 /// A train checked: its members by index, its constraint rows.
 #[derive(Clone, Debug)]
 pub struct Train {
-    file: TrainFile,
+    pub(super) file: TrainFile,
     /// The constraint rows over the members' speeds.
-    rows: Vec<Vec<f64>>,
+    pub(super) rows: Vec<Vec<f64>>,
 }
 
 impl Train {
@@ -136,7 +136,7 @@ impl Train {
     }
 
     /// A member's index by name.
-    fn index(&self, name: &str) -> Option<usize> {
+    pub(super) fn index(&self, name: &str) -> Option<usize> {
         self.file.members.iter().position(|m| m.name == name)
     }
 

@@ -18,6 +18,7 @@ use super::torque::{CrankLoad, CrankTorque, full_turn};
 use crate::error::{LinkageError, MachineAnalysis, Result};
 use crate::error::{Param, Valid};
 use crate::extremum::{Extreme, locate_max};
+use crate::model::Drive;
 use crate::roots_util::refine;
 use crate::solve::Kinematics;
 
@@ -56,6 +57,16 @@ pub struct FlywheelSizing {
     pub angle_of_min_rad: f64,
     /// The flywheel inertia on the crank, J_F = ΔW_max / (ω² δ), kg·m².
     pub flywheel_kg_m2: f64,
+    /// The scene's drive's rotor and train inertia reduced to the crank (not its
+    /// flywheel), kg·m²: it turns with the crank and stores the surplus as a
+    /// flywheel does; 0 without a drive.
+    pub drive_inertia_kg_m2: f64,
+    /// The flywheel still to fit on the crank, J_F less the drive's inertia (0 where
+    /// the drive alone holds δ), kg·m².
+    pub flywheel_to_add_kg_m2: f64,
+    /// The same flywheel on the motor shaft, ÷ n² (n the drive's ratio), kg·m²;
+    /// `None` without a drive.
+    pub flywheel_to_add_on_motor_kg_m2: Option<f64>,
     /// The mechanism's own inertia reduced to the crank: smallest, mean, largest.
     pub reduced_inertia_kg_m2: InertiaRange,
     /// The cycle: crank angle, torque, surplus and reduced inertia at every panel end.
@@ -132,6 +143,10 @@ pub fn size_flywheel(k: &mut Kinematics, delta: f64) -> Result<FlywheelSizing> {
         mean: panels.iter().map(|p| p.inertia_integral).sum::<f64>() / turn,
         max: panels.iter().map(|p| p.inertia_span.1).fold(0.0, f64::max),
     };
+    let flywheel_kg_m2 = work_range_j / (w * w * delta);
+    let drive = k.mechanism().drive.as_ref();
+    let drive_inertia = drive.map_or(0.0, Drive::inertia_beside_flywheel_kg_m2);
+    let to_add = (flywheel_kg_m2 - drive_inertia).max(0.0);
     Ok(FlywheelSizing {
         speed_rad_s: w,
         delta,
@@ -144,7 +159,10 @@ pub fn size_flywheel(k: &mut Kinematics, delta: f64) -> Result<FlywheelSizing> {
         surplus_max_j: max.1,
         surplus_min_j: min.1,
         angle_of_min_rad: min.0,
-        flywheel_kg_m2: work_range_j / (w * w * delta),
+        flywheel_kg_m2,
+        drive_inertia_kg_m2: drive_inertia,
+        flywheel_to_add_kg_m2: to_add,
+        flywheel_to_add_on_motor_kg_m2: drive.map(|d| to_add / (d.gear_ratio * d.gear_ratio)),
         reduced_inertia_kg_m2: inertia,
         cycle,
     })

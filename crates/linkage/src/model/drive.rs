@@ -1,8 +1,10 @@
 //! The drive, validated and in SI: the motor's torque against its speed, reflected to
-//! the crank through the gear, and the inertia the gear, rotor and flywheel add there.
+//! the crank through the gear or the train, and the inertia the train, rotor and
+//! flywheel add there.
 
-use crate::error::{LinkageError, Result};
-use crate::error::{Param, Valid};
+use super::drive_train::DriveTrain;
+use crate::error::{DriveTrainProblem, LinkageError, Result};
+use crate::error::{Param, SceneProblem, Valid};
 use crate::scene::{DriveSpec, MotorSpec, Shaft};
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
@@ -58,10 +60,16 @@ fn table(points: &[(f64, f64)], w: f64) -> f64 {
 pub struct Drive {
     /// The motor.
     pub motor: Motor,
-    /// Motor turns per crank turn.
+    /// Motor turns per crank turn (the train's, unsigned, where there is one).
     pub gear_ratio: f64,
-    /// Rotor, flywheel and gear inertia reduced to the crank, kg·m².
+    /// Rotor, train and flywheel inertia reduced to the crank, kg·m².
     pub inertia_at_crank_kg_m2: f64,
+    /// The flywheel's share of it, kg·m².
+    pub flywheel_at_crank_kg_m2: f64,
+    /// The motor rotor's share of it (given beside the train), kg·m².
+    pub rotor_at_crank_kg_m2: f64,
+    /// The train between motor and crank, where the scene gives one.
+    pub train: Option<DriveTrain>,
 }
 
 impl Drive {
@@ -75,12 +83,19 @@ impl Drive {
     ///
     /// # Errors
     /// A gear ratio that is not finite and > 0, an inertia < 0, a linear motor whose
-    /// rated speed is not below its no-load speed, a table not in rising speed.
+    /// rated speed is not below its no-load speed, a table not in rising speed, a
+    /// train that cannot drive the crank ([`DriveTrain::from_spec`]) or whose ratio
+    /// is not the `gear_ratio` given.
     pub fn from_spec(spec: &DriveSpec) -> Result<Self> {
         let invalid = |name: &str, value: f64, valid: Valid| {
             LinkageError::invalid(Param::Scene(format!("drive.{name}")), value, valid)
         };
-        let n = spec.gear_ratio;
+        let train = spec.train.as_deref().map(DriveTrain::from_spec).transpose();
+        let train = train.map_err(train_refused)?;
+        let n = match &train {
+            Some(t) => train_ratio(spec.gear_ratio, t.ratio)?,
+            None => spec.gear_ratio,
+        };
         if !(n.is_finite() && n > 0.0) {
             return Err(invalid("gear_ratio", n, Valid::GearRatio));
         }
@@ -96,12 +111,44 @@ impl Drive {
             Shaft::Crank => spec.flywheel_kg_m2,
             Shaft::Motor => spec.flywheel_kg_m2 * n * n,
         };
+        let train_inertia = train.as_ref().map_or(0.0, |t| t.inertia_at_crank_kg_m2);
+        let rotor = spec.motor_inertia_kg_m2 * n * n;
         Ok(Self {
             motor: motor(&spec.motor, &invalid)?,
             gear_ratio: n,
-            inertia_at_crank_kg_m2: flywheel + spec.motor_inertia_kg_m2 * n * n,
+            inertia_at_crank_kg_m2: flywheel + rotor + train_inertia,
+            flywheel_at_crank_kg_m2: flywheel,
+            rotor_at_crank_kg_m2: rotor,
+            train,
         })
     }
+
+    /// The rotor's and the train's inertia at the crank, the flywheel's left out
+    /// (what turns with the crank beside a flywheel being sized), kg·m².
+    pub fn inertia_beside_flywheel_kg_m2(&self) -> f64 {
+        self.rotor_at_crank_kg_m2
+            + self
+                .train
+                .as_ref()
+                .map_or(0.0, |t| t.inertia_at_crank_kg_m2)
+    }
+}
+
+fn train_refused(p: DriveTrainProblem) -> LinkageError {
+    LinkageError::SceneInvalid(Box::new(SceneProblem::DriveTrain(p)))
+}
+
+/// The train's ratio, unsigned (the motor may turn either way); a `gear_ratio` given
+/// beside it (other than the default 1) must be the same to 1e-9.
+fn train_ratio(given: f64, train: f64) -> Result<f64> {
+    let n = train.abs();
+    if given != 1.0 && (given - n).abs() > 1e-9 * n {
+        return Err(train_refused(DriveTrainProblem::RatioContradicts {
+            given,
+            train: n,
+        }));
+    }
+    Ok(n)
 }
 
 /// The motor in SI, each number checked.
@@ -175,6 +222,7 @@ mod tests {
         Drive::from_spec(&DriveSpec {
             motor,
             gear_ratio: ratio,
+            train: None,
             motor_inertia_kg_m2: 0.5,
             flywheel_kg_m2: 2.0,
             flywheel_on,

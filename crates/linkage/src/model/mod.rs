@@ -11,6 +11,7 @@ use crate::scene::{Branch, ForcesSpec, Models, SceneFile, SolverSpec};
 mod cam_joint;
 mod cams;
 mod drive;
+mod drive_train;
 mod driver;
 mod forces;
 mod from_scene;
@@ -22,6 +23,7 @@ pub use crate::error::CamProblem;
 pub use crate::error::{LonePoint, MadeJoint, SceneProblem};
 pub use cam_joint::{CamContact, CamJoint, FollowerGuide};
 pub use drive::{Drive, Motor};
+pub use drive_train::{DriveTrain, MemberAtCrank};
 
 /// A rigid link.
 #[derive(Clone, Debug, PartialEq)]

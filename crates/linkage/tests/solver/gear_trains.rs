@@ -135,13 +135,14 @@ fn the_shipped_trains_solve_and_the_die_cutters_crank_turns_at_fifty() {
                 "{s:?}"
             );
             assert!(close(s.ratio("motor", "crank").expect("a member"), 29.0));
-            // J_motor 29² + J_input 10² + J_intermediate 5²: what the drive adds at the crank.
+            // J_motor 29² + J_input 10² + J_intermediate 5² + J_crank: what the drive
+            // adds at the crank.
             let t = train(&text);
             let reduced = t
                 .reduced_inertia_kg_m2(&s, "crank")
                 .expect("the crank turns");
             assert!(
-                close(reduced, 0.012 * 29.0 * 29.0 + 0.05 * 100.0 + 0.08 * 25.0),
+                close(reduced, 1.6 * 29.0 * 29.0 + 3.0 * 100.0 + 4.0 * 25.0 + 63.0),
                 "{reduced}"
             );
         }
@@ -272,4 +273,95 @@ fn refusals_name_what_is_wrong() {
             meshes: [("ga", "gb")], inputs: [(member: "a", rpm: 1.0), (member: "b", rpm: 1.0)])"#,
     );
     assert!(tied.contains("the inputs do not fix the train"), "{tied}");
+}
+
+/// Torques through a planetary set against the textbooks' closed forms: the set's
+/// members are coaxial and its planets take no torque from outside, so the sun's,
+/// ring's and carrier's torques sum to zero (moment balance) and their powers too
+/// (an ideal set); with the ring held, T_sun = −T_carrier/(1 + z_r/z_s). Every
+/// way of holding it, and every member's power summing to zero, to round-off.
+#[test]
+fn a_planetary_sets_torques_balance_and_conserve_power() {
+    let (zs, zr) = (20.0, 80.0);
+    let load = -500.0;
+    for inputs in [
+        r#"(member: "sun", rpm: 1450.0), (member: "ring", rpm: 0.0)"#,
+        r#"(member: "ring", rpm: 1450.0), (member: "sun", rpm: 0.0)"#,
+    ] {
+        let t = train(&planetary(inputs));
+        let s = t.solve().expect("solved");
+        let q = t.torques(&s, "carrier", load).expect("torques");
+        let torque = |m: &str| {
+            q.members
+                .iter()
+                .find(|x| x.member == m)
+                .map(|x| x.torque_n_m)
+                .expect("a member")
+        };
+        let power: f64 = q.members.iter().map(|m| m.power_w).sum();
+        let through = q
+            .members
+            .iter()
+            .map(|m| m.power_w.abs())
+            .fold(0.0, f64::max);
+        assert!(power.abs() <= 1e-12 * through, "{q:?}");
+        let (ts, tr, tc) = (torque("sun"), torque("ring"), torque("carrier"));
+        assert!((ts + tr + tc).abs() <= 1e-12 * load.abs(), "{q:?}");
+        assert_eq!(q.frame_n_m, 0.0, "the ring's brake is a member: {q:?}");
+        assert_eq!(torque("planet"), 0.0);
+        assert_eq!(tc, load);
+        if inputs.starts_with(r#"(member: "sun""#) {
+            assert!(
+                (ts + load / (1.0 + zr / zs)).abs() <= 1e-12 * load.abs(),
+                "{ts}"
+            );
+        } else {
+            assert!(
+                (tr + load / (1.0 + zs / zr)).abs() <= 1e-12 * load.abs(),
+                "{tr}"
+            );
+        }
+    }
+}
+
+/// A fixed-axis train: the motor's torque is the load's over the ratio (with the
+/// ratio's sign), the housing takes the rest, and the idle shafts none.
+#[test]
+fn a_fixed_axis_trains_torques_are_the_load_over_the_ratio() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../assets/trains/die_cutter_drive.ron"
+    ))
+    .expect("read");
+    let t = train(&text);
+    let s = t.solve().expect("solved");
+    let load = -15_915.5;
+    let q = t.torques(&s, "crank", load).expect("torques");
+    let motor = q
+        .members
+        .iter()
+        .find(|m| m.member == "motor")
+        .expect("motor");
+    assert!(
+        (motor.torque_n_m + load / 29.0).abs() <= 1e-12 * load.abs(),
+        "{q:?}"
+    );
+    let power: f64 = q.members.iter().map(|m| m.power_w).sum();
+    assert!(power.abs() <= 1e-12 * motor.power_w.abs(), "{q:?}");
+    for idle in ["input_shaft", "intermediate_shaft"] {
+        let m = q.members.iter().find(|m| m.member == idle).expect("member");
+        assert_eq!(m.torque_n_m, 0.0);
+    }
+    assert!((q.frame_n_m + motor.torque_n_m + load).abs() <= 1e-12 * load.abs());
+    // A load where the speed is given is refused, as is a name not in the train.
+    assert_eq!(
+        t.torques(&s, "motor", 1.0),
+        Err(TrainError::LoadWhereSpeedGiven {
+            member: "motor".into()
+        })
+    );
+    assert!(matches!(
+        t.torques(&s, "flywheel", 1.0),
+        Err(TrainError::Unknown { .. })
+    ));
 }
