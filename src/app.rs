@@ -286,6 +286,25 @@ impl LinkageApp {
         controls.note_rect(ControlKind::Pane, "plots", shown.response.rect, true);
     }
 
+    /// The gear-cutting lab in place of the mechanism: its controls in the side pane
+    /// (on a phone or tablet, above the canvas), the canvas in the middle.
+    fn gear_lab_panels(&mut self, ui: &mut egui::Ui) {
+        if self.state.layout.compact() {
+            egui::Panel::top(self.state.layout.panel_id("gear lab"))
+                .resizable(true)
+                .default_size(ui.available_height() * 0.4)
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical()
+                        .show(ui, |ui| ui::gear_lab::panel(ui, &mut self.state));
+                });
+        } else {
+            self.controls_pane(ui, ui::gear_lab::panel);
+        }
+        egui::CentralPanel::default_margins().show(ui, |ui| {
+            ui::gear_lab::canvas(ui, &mut self.state, &self.shapes, self.renderer.as_ref());
+        });
+    }
+
     /// While drawing: the tools beside the drawing; the report, plots and polygons
     /// once the drawing is a mechanism.
     fn drawing_panels(&mut self, ui: &mut egui::Ui) {
@@ -350,6 +369,10 @@ impl eframe::App for LinkageApp {
             st.session.advance(dt, st.play.speed);
             ctx.request_repaint();
         }
+        if let Some(lab) = st.gear_lab.as_mut().filter(|lab| lab.playing) {
+            lab.advance(dt);
+            ctx.request_repaint();
+        }
         let solver_us = started.elapsed().as_secs_f64() * 1e6;
         // Space plays and pauses, Ctrl+Z undoes, Ctrl+Shift+Z or Ctrl+Y redoes, unless
         // a text field has the keyboard (it has its own undo).
@@ -389,7 +412,9 @@ impl eframe::App for LinkageApp {
         crate::i18n::set_language(self.state.language);
         ui::scene_picker::top_bar(ui, &mut self.state, &mut self.panels.files, frame);
         self.take_app_commands();
-        if self.state.drawing.is_some() {
+        if self.state.gear_lab.is_some() {
+            self.gear_lab_panels(ui);
+        } else if self.state.drawing.is_some() {
             self.drawing_panels(ui);
         } else {
             self.viewer_panels(ui, &mut solver_us);

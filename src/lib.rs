@@ -10,6 +10,7 @@ pub mod file_action;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod file_dialog;
 pub mod fonts;
+pub mod gear_lab;
 pub mod i18n;
 pub mod language_pref;
 pub mod render;

@@ -122,6 +122,8 @@ pub struct AppState {
     pub session: Session,
     /// The mechanism being drawn, while the drawing tools are out.
     pub drawing: Option<DrawingEditor>,
+    /// The gear-cutting lab, while it is open in place of the mechanism view.
+    pub gear_lab: Option<crate::gear_lab::GearLab>,
     /// What the panels asked for and the app has not yet done.
     pub commands: Commands,
     /// The animation.
@@ -203,6 +205,7 @@ impl AppState {
         Self {
             session,
             drawing: None,
+            gear_lab: None,
             commands: Commands {
                 fit: true,
                 ..Commands::default()

@@ -16,6 +16,7 @@ pub mod drawing_panel;
 pub mod files;
 pub mod flywheel_plots;
 pub mod force_polygons;
+pub mod gear_lab;
 pub mod label_place;
 pub mod layout;
 pub mod machine_plots;

@@ -316,6 +316,8 @@ fn history_buttons(ui: &mut egui::Ui, st: &mut AppState) {
 
 /// The New… menu's item that starts a drawing from nothing.
 const EMPTY_DRAWING: &str = "Empty: draw your own";
+/// The New… menu's item that opens the gear-cutting lab.
+const GEAR_CUTTING: &str = "Gear cutting";
 /// The New… menu's item that turns the open scene into a drawing to edit.
 const AS_DRAWING: &str = "This scene as a drawing";
 
@@ -328,6 +330,9 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
     let menu = ui.menu_button(tr!("top.new"), |ui| {
         empty = menu_item(ui, st, EMPTY_DRAWING, &tr!("top.new_empty"));
         as_drawing = menu_item(ui, st, AS_DRAWING, &tr!("top.new_as_drawing"));
+        if menu_item(ui, st, GEAR_CUTTING, &tr!("top.new_gear_cutting")) {
+            st.gear_lab = Some(crate::gear_lab::GearLab::default());
+        }
         for (t, name) in crate::catalog::TEMPLATES.iter().zip(template_names()) {
             if menu_item(ui, st, name, name) {
                 chosen = Some(t);

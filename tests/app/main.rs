@@ -9,6 +9,7 @@ mod commands;
 mod drawing;
 mod every_control;
 mod file_actions;
+mod gear_lab;
 mod gl_shaders;
 mod keystrokes;
 mod labels;

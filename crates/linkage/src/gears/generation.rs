@@ -201,3 +201,73 @@ pub fn cut_flank(g: &Gear, samples: usize) -> Vec<[f64; 2]> {
         })
         .collect()
 }
+
+/// The rack cutter as drawn at the gear's turn `phi` (clockwise; the cutter moved
+/// r·φ along its rolling line), in the gear's frame: `teeth` cutter teeth either side
+/// of the middle one, each a convex polygon (its flanks, its tip fillets in
+/// `fillet_points` each, its tip line), then the cutter's body above them, a
+/// rectangle. `None` for an internal gear or a pointed rack.
+pub fn cutter_outline(
+    g: &Gear,
+    phi: f64,
+    teeth: usize,
+    fillet_points: usize,
+) -> Option<Vec<Vec<[f64; 2]>>> {
+    if g.spec.kind != GearKind::External || tip_half_width(g) <= 0.0 {
+        return None;
+    }
+    let c = Cutter::of(g);
+    let m = g.spec.module_m;
+    let top = c.tip_line + 2.0 * (g.spec.addendum_coefficient + g.spec.clearance_coefficient) * m;
+    let pitch = PI * m;
+    let (sin, cos) = phi.sin_cos();
+    let to_gear = |[u, y]: [f64; 2]| [u * cos - y * sin, u * sin + y * cos];
+    let half = teeth as f64;
+    let mut out: Vec<Vec<[f64; 2]>> = (-(teeth as i64)..=teeth as i64)
+        .map(|k| {
+            let centre = c.r * phi + k as f64 * pitch;
+            cutter_tooth(&c, centre, top, fillet_points)
+                .into_iter()
+                .map(to_gear)
+                .collect()
+        })
+        .collect();
+    let (left, right) = (
+        c.r * phi - (half + 0.5) * pitch,
+        c.r * phi + (half + 0.5) * pitch,
+    );
+    let body = [
+        [left, top],
+        [right, top],
+        [right, top + 1.5 * m],
+        [left, top + 1.5 * m],
+    ];
+    out.push(body.into_iter().map(to_gear).collect());
+    Some(out)
+}
+
+/// One cutter tooth centred at `centre` on the rolling line, from its tip line up to
+/// `top`, counter-clockwise, in the cutter's frame.
+fn cutter_tooth(c: &Cutter, centre: f64, top: f64, fillet_points: usize) -> Vec<[f64; 2]> {
+    let alpha = c.tan_alpha.atan();
+    let cy = c.tip_line + c.fillet;
+    let cx = centre + c.offset + cy * c.tan_alpha - c.fillet / alpha.cos();
+    let n = fillet_points.max(2);
+    // The right fillet from the tip line (−90°) to the flank (−α).
+    let right: Vec<[f64; 2]> = (0..n)
+        .map(|i| {
+            let t = -FRAC_PI_2 + (FRAC_PI_2 - alpha) * i as f64 / (n - 1) as f64;
+            [cx + c.fillet * t.cos(), cy + c.fillet * t.sin()]
+        })
+        .chain(std::iter::once([
+            centre + c.offset + top * c.tan_alpha,
+            top,
+        ]))
+        .collect();
+    let mirror = |[u, y]: [f64; 2]| [2.0 * centre - u, y];
+    right
+        .iter()
+        .copied()
+        .chain(right.iter().rev().map(|&p| mirror(p)))
+        .collect()
+}

@@ -427,3 +427,70 @@ fn cut_profiles_of_random_gears_are_finite() {
     .expect("a gear");
     assert!(cut_flank(&steep, 10).is_empty());
 }
+
+/// The rack cutter as drawn is the cutter that cuts: at no position does it reach
+/// into the cut tooth (its fillets drawn by chords, inside the arcs), and every point
+/// of the cut flank is touched by some position, to a fine grid's step: the tooth is
+/// the envelope of the cutter drawn, at 12 teeth with and without undercut and at 40.
+#[test]
+fn the_cutter_drawn_envelopes_the_cut_tooth() {
+    let m = 0.01;
+    for (z, x) in [(12u32, 0.0), (12, 0.3), (40, 0.0)] {
+        let g = Gear::new(GearSpec::standard(m, z).shifted(x)).expect("gear");
+        // The flank as cut_flank gives it, its tooth's middle on the y axis, turned
+        // back by 180°/z to where the cutter's middle tooth cut it.
+        let (sin, cos) = (-std::f64::consts::PI / f64::from(z)).sin_cos();
+        let flank: Vec<[f64; 2]> = linkage::gears::generation::cut_flank(&g, 40)
+            .into_iter()
+            .map(|[x, y]| [x * cos - y * sin, x * sin + y * cos])
+            .collect();
+        let steps = 1500;
+        let reach = 3.0 * std::f64::consts::PI / f64::from(z);
+        let mut nearest = vec![f64::INFINITY; flank.len()];
+        for k in 0..=steps {
+            let phi = -reach + 2.0 * reach * k as f64 / steps as f64;
+            let parts = linkage::gears::generation::cutter_outline(&g, phi, 2, 32).expect("a rack");
+            for tooth in &parts {
+                for (i, p) in flank.iter().enumerate() {
+                    let depth = inside_depth(tooth, *p);
+                    assert!(
+                        depth <= 1e-9 * m,
+                        "z {z} x {x}: {depth} inside at {p:?}, phi {phi}"
+                    );
+                    nearest[i] = nearest[i].min(-depth);
+                }
+            }
+        }
+        let worst = nearest.iter().fold(0.0_f64, |a, &b| a.max(b));
+        assert!(
+            worst <= 2e-3 * m,
+            "z {z} x {x}: a flank point {worst} m from every position"
+        );
+    }
+}
+
+/// How far `p` is inside the counter-clockwise convex polygon (negative: its
+/// distance outside, to the nearest edge's line where that is the nearest).
+fn inside_depth(polygon: &[[f64; 2]], p: [f64; 2]) -> f64 {
+    let n = polygon.len();
+    let mut depth = f64::INFINITY;
+    let mut outside = 0.0_f64;
+    for i in 0..n {
+        let (a, b) = (polygon[i], polygon[(i + 1) % n]);
+        let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
+        let len = ex.hypot(ey);
+        if len == 0.0 {
+            continue;
+        }
+        // Signed distance to the edge's line, positive inside.
+        let d = (ex * (p[1] - a[1]) - ey * (p[0] - a[0])) / len;
+        depth = depth.min(d);
+        if d < 0.0 {
+            // Outside this edge: the distance to the segment.
+            let t = (((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) / (len * len)).clamp(0.0, 1.0);
+            let q = [a[0] + t * ex - p[0], a[1] + t * ey - p[1]];
+            outside = outside.max(q[0].hypot(q[1]));
+        }
+    }
+    if depth >= 0.0 { depth } else { -outside }
+}

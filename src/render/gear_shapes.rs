@@ -1,0 +1,213 @@
+//! The gear-cutting lab as the GPU draws it: the blank (its tip circle, filled), each
+//! cutter position rolled so far filled in the background's colour (the material it
+//! takes away) and outlined thinly (the trace the envelope shows in), the cutter now
+//! filled over it, the pitch, base, root and tip circles, and the cut flanks marked
+//! red where the cutter's tip has undercut them (cut thinner than the involute).
+
+use glam::Vec2;
+use linkage::gears::Gear;
+use linkage::gears::generation::{cut_tooth_thickness_at, cutter_outline};
+
+use super::drawn::colour;
+use super::shape::{Kind, Shape};
+use super::view::Camera;
+use crate::gear_lab::{CUTTER_TEETH, GearLab};
+
+/// The canvas's colour: the cut-away material is filled with it.
+pub const BACKGROUND: [f32; 4] = [0.965, 0.965, 0.95, 1.0];
+const BLANK: [f32; 4] = [0.80, 0.74, 0.58, 1.0];
+const CUTTER: [f32; 4] = [0.36, 0.55, 0.78, 0.55];
+const CUTTER_EDGE: [f32; 4] = [0.16, 0.3, 0.55, 1.0];
+const TRACE: [f32; 4] = [0.36, 0.45, 0.65, 0.22];
+const PITCH: [f32; 4] = [0.1, 0.5, 0.2, 1.0];
+const BASE: [f32; 4] = [0.75, 0.35, 0.1, 1.0];
+const FINE: [f32; 4] = [0.35, 0.35, 0.35, 0.8];
+/// Segments of a drawn circle.
+const ROUND: usize = 180;
+/// Points on each of the cutter's tip fillets.
+const FILLET_POINTS: usize = 8;
+/// Radii along a flank where undercut is looked for.
+const UNDERCUT_SAMPLES: usize = 40;
+
+/// The box the lab's view frames, m: the blank, and the cutter at the roll's ends
+/// and middle.
+pub fn bounds(g: &Gear) -> [f64; 4] {
+    let r = g.tip_radius_m + g.spec.module_m;
+    let reach = crate::gear_lab::roll_reach(g);
+    [-reach, 0.0, reach]
+        .into_iter()
+        .filter_map(|phi| cutter_outline(g, phi, CUTTER_TEETH, 2))
+        .flatten()
+        .flatten()
+        .fold([-r, -r, r, r], |b, [x, y]| {
+            [b[0].min(x), b[1].min(y), b[2].max(x), b[3].max(y)]
+        })
+}
+
+/// Appends the lab's shapes for `g` to `list`.
+pub fn build_gear_lab(list: &mut Vec<Shape>, lab: &GearLab, g: &Gear, camera: &Camera) {
+    list.clear();
+    let at = |p: [f64; 2]| camera.local(p);
+    // Half a line's width, m: 0.6 screen points.
+    let line = (0.6 / camera.points_per_m.max(1e-9)) as f32;
+    let mut push = |s: Option<Shape>| list.extend(s);
+    fill_circle(&mut push, at([0.0, 0.0]), g.tip_radius_m, BLANK);
+    let positions = lab.positions(g);
+    for &phi in &positions {
+        for part in cutter_outline(g, phi, CUTTER_TEETH, FILLET_POINTS).unwrap_or_default() {
+            fill_convex(&mut push, &part, &at, line, BACKGROUND);
+        }
+    }
+    for &phi in &positions {
+        let parts = cutter_outline(g, phi, CUTTER_TEETH, FILLET_POINTS).unwrap_or_default();
+        // The teeth's outlines (the body's last): what the envelope shows in.
+        for part in parts.iter().take(2 * CUTTER_TEETH + 1) {
+            outline(&mut push, part, &at, 0.5 * line, TRACE);
+        }
+    }
+    if let Some(&now) = positions.last() {
+        for part in cutter_outline(g, now, CUTTER_TEETH, FILLET_POINTS).unwrap_or_default() {
+            fill_convex(&mut push, &part, &at, 0.0, CUTTER);
+            outline(&mut push, &part, &at, line, CUTTER_EDGE);
+        }
+    }
+    let centre = at([0.0, 0.0]);
+    for (radius, colour, dashed) in [
+        (g.pitch_radius_m, PITCH, true),
+        (g.base_radius_m, BASE, true),
+        (g.root_radius_m, FINE, false),
+        (g.tip_radius_m, FINE, false),
+    ] {
+        circle(&mut push, centre, radius, line, colour, dashed);
+    }
+    if GearLab::undercut(g) {
+        undercut_marks(&mut push, g, &at, 3.0 * line);
+    }
+    push(Shape::new(
+        Kind::Pin,
+        [centre; 3],
+        2.0 * line,
+        colour::PIN,
+        [0.0; 2],
+    ));
+}
+
+/// A filled circle, as a fan of triangles from its centre.
+fn fill_circle(push: &mut impl FnMut(Option<Shape>), centre: Vec2, radius: f64, colour: [f32; 4]) {
+    let r = radius as f32;
+    for i in 0..ROUND {
+        let a = |k: usize| {
+            let t = std::f32::consts::TAU * k as f32 / ROUND as f32;
+            centre + r * Vec2::new(t.cos(), t.sin())
+        };
+        push(Shape::new(
+            Kind::Fill,
+            [centre, a(i), a(i + 1)],
+            0.002 * r,
+            colour,
+            [0.0; 2],
+        ));
+    }
+}
+
+/// A convex polygon filled, as a fan from its first point, each triangle grown by
+/// `grow` (m) so that an opaque fan shows no seams.
+fn fill_convex(
+    push: &mut impl FnMut(Option<Shape>),
+    points: &[[f64; 2]],
+    at: &impl Fn([f64; 2]) -> Vec2,
+    grow: f32,
+    colour: [f32; 4],
+) {
+    let Some(&first) = points.first() else {
+        return;
+    };
+    let o = at(first);
+    for pair in points[1..].windows(2) {
+        push(Shape::new(
+            Kind::Fill,
+            [o, at(pair[0]), at(pair[1])],
+            grow,
+            colour,
+            [0.0; 2],
+        ));
+    }
+}
+
+/// A closed polygon's edges.
+fn outline(
+    push: &mut impl FnMut(Option<Shape>),
+    points: &[[f64; 2]],
+    at: &impl Fn([f64; 2]) -> Vec2,
+    width: f32,
+    colour: [f32; 4],
+) {
+    for (i, &p) in points.iter().enumerate() {
+        let (a, b) = (at(p), at(points[(i + 1) % points.len()]));
+        push(Shape::new(Kind::Line, [a, b, a], width, colour, [0.0; 2]));
+    }
+}
+
+/// A circle's outline, solid or dashed (every other pair of its segments).
+fn circle(
+    push: &mut impl FnMut(Option<Shape>),
+    centre: Vec2,
+    radius: f64,
+    width: f32,
+    colour: [f32; 4],
+    dashed: bool,
+) {
+    let r = radius as f32;
+    let point = |k: usize| {
+        let t = std::f32::consts::TAU * k as f32 / ROUND as f32;
+        centre + r * Vec2::new(t.cos(), t.sin())
+    };
+    for i in (0..ROUND).filter(|i| !dashed || (i / 2) % 2 == 0) {
+        let (a, b) = (point(i), point(i + 1));
+        push(Shape::new(Kind::Line, [a, b, a], width, colour, [0.0; 2]));
+    }
+}
+
+/// Red along both flanks of the middle space where the cut tooth is thinner than
+/// the involute tooth at the same radius: the undercut, as cut.
+fn undercut_marks(
+    push: &mut impl FnMut(Option<Shape>),
+    g: &Gear,
+    at: &impl Fn([f64; 2]) -> Vec2,
+    width: f32,
+) {
+    let (lo, hi) = (g.root_radius_m, g.tip_radius_m);
+    let z = f64::from(g.spec.teeth);
+    // The teeth either side of the middle space, centred at 90° ∓ 180°/z.
+    let middles = [
+        std::f64::consts::FRAC_PI_2 - std::f64::consts::PI / z,
+        std::f64::consts::FRAC_PI_2 + std::f64::consts::PI / z,
+    ];
+    let point = |rho: f64, middle: f64, side: f64| -> Option<[f64; 2]> {
+        let cut = cut_tooth_thickness_at(g, rho)?;
+        let involute = g.tooth_thickness_at(rho).unwrap_or(f64::INFINITY);
+        if cut >= involute - 1e-4 * g.spec.module_m {
+            return None;
+        }
+        let angle = middle + side * 0.5 * cut / rho;
+        Some([rho * angle.cos(), rho * angle.sin()])
+    };
+    for (middle, side) in [(middles[0], 1.0), (middles[1], -1.0)] {
+        let points: Vec<Option<[f64; 2]>> = (0..=UNDERCUT_SAMPLES)
+            .map(|k| lo + (hi - lo) * k as f64 / UNDERCUT_SAMPLES as f64)
+            .map(|rho| point(rho, middle, side))
+            .collect();
+        for pair in points.windows(2) {
+            if let (Some(a), Some(b)) = (pair[0], pair[1]) {
+                let (a, b) = (at(a), at(b));
+                push(Shape::new(
+                    Kind::Line,
+                    [a, b, a],
+                    width,
+                    colour::PAST_LIMIT,
+                    [0.0; 2],
+                ));
+            }
+        }
+    }
+}

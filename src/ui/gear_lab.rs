@@ -1,0 +1,153 @@
+//! The gear-cutting lab on screen: its controls in the side pane (teeth, module,
+//! shift and pressure angle on sliders, the roll with Play, the gear's circles and
+//! tooth thickness, whether it is undercut and the least shift that cures it, the
+//! way back to the mechanism), and the canvas the GPU pass draws it on, with the
+//! circles named beside it.
+
+use eframe::egui::{self, Align2, Color32, FontId, Sense};
+use linkage::gears::Gear;
+use linkage_diagram::numbers::significant;
+
+use crate::gear_lab::GearLab;
+use crate::i18n::tr;
+use crate::render::Renderer;
+use crate::render::gear_shapes::{BACKGROUND, bounds, build_gear_lab};
+use crate::render::shape::SharedShapes;
+use crate::state::AppState;
+
+/// The lab's controls and numbers.
+pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
+    let Some(lab) = st.gear_lab.as_mut() else {
+        return;
+    };
+    ui.heading(tr!("gear.title"));
+    if ui.button(tr!("gear.back")).clicked() {
+        st.gear_lab = None;
+        st.commands.fit = true;
+        return;
+    }
+    ui.label(tr!("gear.how"));
+    ui.add(egui::Slider::new(&mut lab.teeth, 6..=80).text(tr!("gear.teeth")));
+    ui.add(
+        egui::Slider::new(&mut lab.module_mm, 1.0..=20.0)
+            .step_by(0.5)
+            .text(tr!("gear.module")),
+    );
+    ui.add(
+        egui::Slider::new(&mut lab.shift, -1.0..=1.0)
+            .step_by(0.01)
+            .text(tr!("gear.shift")),
+    );
+    ui.add(
+        egui::Slider::new(&mut lab.pressure_angle_deg, 14.5..=25.0)
+            .step_by(0.5)
+            .text(tr!("gear.pressure_angle")),
+    );
+    ui.horizontal(|ui| {
+        let label = if lab.playing {
+            tr!("gear.pause")
+        } else {
+            tr!("gear.play")
+        };
+        if ui.button(label).clicked() {
+            lab.toggle_play();
+        }
+        ui.add(egui::Slider::new(&mut lab.roll, 0.0..=1.0).text(tr!("gear.roll")));
+    });
+    match lab.gear() {
+        Ok(g) => {
+            let least = g.least_shift_without_undercut();
+            if GearLab::undercut(&g) && ui.button(tr!("gear.use_least_shift")).clicked() {
+                // Rounded up to the slider's step, so that it clears the limit.
+                lab.shift = (least * 100.0).ceil() / 100.0;
+            }
+            numbers(ui, &g);
+        }
+        Err(e) => {
+            ui.colored_label(ui.visuals().error_fg_color, e.to_string());
+        }
+    }
+}
+
+/// The gear's circles, its tooth thickness, and undercut or not.
+fn numbers(ui: &mut egui::Ui, g: &Gear) {
+    let mm = |m: f64| significant(m * 1e3, 5);
+    ui.separator();
+    ui.label(tr!(
+        "gear.circles",
+        d = mm(2.0 * g.pitch_radius_m),
+        db = mm(2.0 * g.base_radius_m),
+        da = mm(2.0 * g.tip_radius_m),
+        df = mm(2.0 * g.root_radius_m)
+    ));
+    ui.label(tr!(
+        "gear.thickness",
+        s = mm(g.tooth_thickness_m),
+        e = mm(g.space_width_m)
+    ));
+    let least = significant(g.least_shift_without_undercut(), 3);
+    if GearLab::undercut(g) {
+        ui.colored_label(
+            Color32::from_rgb(190, 40, 30),
+            tr!(
+                "gear.undercut",
+                x = significant(g.spec.shift, 3),
+                least = least
+            ),
+        );
+    } else {
+        ui.label(tr!("gear.no_undercut", least = least));
+    }
+    if g.is_pointed() {
+        ui.colored_label(Color32::from_rgb(190, 40, 30), tr!("gear.pointed"));
+    }
+    ui.label(tr!("gear.legend"));
+}
+
+/// The canvas: the blank, the cutter and its trace, drawn by the GPU pass.
+pub fn canvas(
+    ui: &mut egui::Ui,
+    st: &mut AppState,
+    shapes: &SharedShapes,
+    renderer: Option<&Renderer>,
+) {
+    let (rect, _) = ui.allocate_exact_size(ui.available_size(), Sense::hover());
+    let Some(lab) = st.gear_lab.as_mut() else {
+        return;
+    };
+    let painter = ui.painter_at(rect);
+    let [r, g_, b, _] = BACKGROUND.map(|c| (c * 255.0).round() as u8);
+    painter.rect_filled(rect, 0.0, Color32::from_rgb(r, g_, b));
+    let Ok(g) = lab.gear() else {
+        return;
+    };
+    if rect.width() > 1.0 && rect.height() > 1.0 {
+        lab.camera.fit(bounds(&g), rect);
+    }
+    if let Ok(mut list) = shapes.lock() {
+        build_gear_lab(&mut list, lab, &g, &lab.camera);
+    }
+    let view = lab.camera.uniform(rect, ui.ctx().pixels_per_point());
+    crate::ui::viewport::paint_shapes(&painter, rect, view, shapes, renderer);
+    let font = FontId::proportional(13.0);
+    // Each name where its circle meets a ray of its own, left of the centre, so that
+    // the two near circles' names do not meet.
+    for (radius, name, colour, angle) in [
+        (
+            g.pitch_radius_m,
+            tr!("gear.pitch_circle"),
+            Color32::from_rgb(25, 128, 50),
+            200.0_f64,
+        ),
+        (
+            g.base_radius_m,
+            tr!("gear.base_circle"),
+            Color32::from_rgb(190, 90, 25),
+            160.0,
+        ),
+    ] {
+        let (sin, cos) = angle.to_radians().sin_cos();
+        let at = lab.camera.to_screen([radius * cos, radius * sin], rect);
+        painter.text(at, Align2::RIGHT_CENTER, name, font.clone(), colour);
+    }
+}

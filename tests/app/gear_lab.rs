@@ -1,0 +1,86 @@
+//! The gear-cutting lab, opened from the New… menu as a student would: the rack cutter
+//! generating 12 teeth (undercut, marked and said) and the same with the least shift
+//! (not undercut), at a laptop's 1366×768, in English and Chinese; back to the
+//! mechanism as it was.
+
+use eframe::egui;
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable as _;
+use linkage_lab::LinkageApp;
+use linkage_lab::i18n::Language;
+use linkage_lab::ui::control_map::ControlKind;
+
+use crate::common;
+
+/// The lab opened from the New… menu at 1366×768 in `language`.
+fn lab(language: Language) -> Harness<'static, LinkageApp> {
+    let mut h = common::sized_harness(1366.0, 768.0);
+    h.ctx
+        .set_missing_glyph_policy(egui::MissingGlyphPolicy::Panic);
+    h.state_mut().state.language = language;
+    common::settle(&mut h);
+    let new = h
+        .state()
+        .state
+        .controls
+        .of_kind(ControlKind::FileButton)
+        .find(|e| e.label == "New…")
+        .expect("the New… menu")
+        .rect;
+    common::click(
+        &mut h,
+        egui::pos2(0.5 * (new[0] + new[2]), 0.5 * (new[1] + new[3])),
+    );
+    common::settle(&mut h);
+    let item = h
+        .state()
+        .state
+        .controls
+        .of_kind(ControlKind::TemplateItem)
+        .find(|e| e.label == "Gear cutting" && e.visible)
+        .expect("the lab's item")
+        .rect;
+    common::click(
+        &mut h,
+        egui::pos2(0.5 * (item[0] + item[2]), 0.5 * (item[1] + item[3])),
+    );
+    common::settle(&mut h);
+    assert!(h.state().state.gear_lab.is_some(), "the lab is open");
+    h
+}
+
+#[test]
+fn twelve_teeth_are_undercut_and_the_least_shift_cures_them() {
+    let mut h = lab(Language::English);
+    h.state_mut().state.gear_lab.as_mut().expect("lab").roll = 1.0;
+    common::settle(&mut h);
+    assert!(h.query_by_label_contains("Undercut (red)").is_some());
+    h.snapshot("gear_lab_12_teeth_undercut");
+    h.get_by_label("Shift the cutter out to x_min").click();
+    common::settle(&mut h);
+    let shift = h.state().state.gear_lab.as_ref().expect("lab").shift;
+    // x_min = h_a* (z_min − z)/z_min with z_min = 2/sin²20° = 17.1: 0.298, rounded
+    // up to the slider's step.
+    assert!((shift - 0.30).abs() < 1e-12, "{shift}");
+    assert!(h.query_by_label_contains("No undercut").is_some());
+    h.snapshot("gear_lab_12_teeth_least_shift");
+    let before = h.state().state.session.scene().clone();
+    h.get_by_label("Back to the mechanism").click();
+    common::settle(&mut h);
+    assert!(h.state().state.gear_lab.is_none());
+    assert_eq!(h.state().state.session.scene(), &before);
+}
+
+#[test]
+fn the_lab_speaks_chinese() {
+    let mut h = lab(Language::Chinese);
+    h.state_mut().state.gear_lab.as_mut().expect("lab").roll = 1.0;
+    common::settle(&mut h);
+    assert!(h.query_by_label_contains("发生根切").is_some());
+    h.snapshot("gear_lab_12_teeth_undercut_zh");
+    let lab = h.state_mut().state.gear_lab.as_mut().expect("lab");
+    lab.shift = 0.3;
+    common::settle(&mut h);
+    assert!(h.query_by_label_contains("不发生根切").is_some());
+    h.snapshot("gear_lab_12_teeth_least_shift_zh");
+}
