@@ -27,7 +27,7 @@ const ROUND: usize = 180;
 /// Points on each of the cutter's tip fillets.
 const FILLET_POINTS: usize = 8;
 /// Radii along a flank where undercut is looked for.
-const UNDERCUT_SAMPLES: usize = 40;
+const UNDERCUT_SAMPLES: usize = 32;
 
 /// The box the lab's view frames, m: the blank, and the cutter at the roll's ends
 /// and middle.
@@ -44,8 +44,14 @@ pub fn bounds(g: &Gear) -> [f64; 4] {
         })
 }
 
-/// Appends the lab's shapes for `g` to `list`.
-pub fn build_gear_lab(list: &mut Vec<Shape>, lab: &GearLab, g: &Gear, camera: &Camera) {
+/// The lab's shapes for `g` in `list`, its undercut as [`undercut_segments`] gave it.
+pub fn build_gear_lab(
+    list: &mut Vec<Shape>,
+    lab: &GearLab,
+    g: &Gear,
+    undercut: &[[[f64; 2]; 2]],
+    camera: &Camera,
+) {
     list.clear();
     let at = |p: [f64; 2]| camera.local(p);
     // Half a line's width, m: 0.6 screen points.
@@ -80,9 +86,7 @@ pub fn build_gear_lab(list: &mut Vec<Shape>, lab: &GearLab, g: &Gear, camera: &C
     ] {
         circle(&mut push, centre, radius, line, colour, dashed);
     }
-    if GearLab::undercut(g) {
-        undercut_marks(&mut push, g, &at, 3.0 * line);
-    }
+    undercut_marks(&mut push, undercut, &at, 3.0 * line);
     push(Shape::new(
         Kind::Pin,
         [centre; 3],
@@ -168,46 +172,54 @@ fn circle(
     }
 }
 
-/// Red along both flanks of the middle space where the cut tooth is thinner than
-/// the involute tooth at the same radius: the undercut, as cut.
-fn undercut_marks(
-    push: &mut impl FnMut(Option<Shape>),
-    g: &Gear,
-    at: &impl Fn([f64; 2]) -> Vec2,
-    width: f32,
-) {
+/// The undercut of the middle space's two flanks as line segments (m, the gear's
+/// frame): where the cut tooth is thinner than the involute tooth at the same radius.
+/// The dear part of the lab's drawing (a search over the cutter's turn per radius):
+/// the canvas keeps it while the gear stays the same. The flanks are mirror images
+/// about the space's middle (the y axis), so one is searched.
+pub fn undercut_segments(g: &Gear) -> Vec<[[f64; 2]; 2]> {
+    if !GearLab::undercut(g) {
+        return Vec::new();
+    }
     let (lo, hi) = (g.root_radius_m, g.tip_radius_m);
-    let z = f64::from(g.spec.teeth);
-    // The teeth either side of the middle space, centred at 90° ∓ 180°/z.
-    let middles = [
-        std::f64::consts::FRAC_PI_2 - std::f64::consts::PI / z,
-        std::f64::consts::FRAC_PI_2 + std::f64::consts::PI / z,
-    ];
-    let point = |rho: f64, middle: f64, side: f64| -> Option<[f64; 2]> {
+    // The tooth right of the middle space, centred at 90° − 180°/z.
+    let middle = std::f64::consts::FRAC_PI_2 - std::f64::consts::PI / f64::from(g.spec.teeth);
+    let point = |rho: f64| -> Option<[f64; 2]> {
         let cut = cut_tooth_thickness_at(g, rho)?;
         let involute = g.tooth_thickness_at(rho).unwrap_or(f64::INFINITY);
         if cut >= involute - 1e-4 * g.spec.module_m {
             return None;
         }
-        let angle = middle + side * 0.5 * cut / rho;
+        let angle = middle + 0.5 * cut / rho;
         Some([rho * angle.cos(), rho * angle.sin()])
     };
-    for (middle, side) in [(middles[0], 1.0), (middles[1], -1.0)] {
-        let points: Vec<Option<[f64; 2]>> = (0..=UNDERCUT_SAMPLES)
-            .map(|k| lo + (hi - lo) * k as f64 / UNDERCUT_SAMPLES as f64)
-            .map(|rho| point(rho, middle, side))
-            .collect();
-        for pair in points.windows(2) {
-            if let (Some(a), Some(b)) = (pair[0], pair[1]) {
-                let (a, b) = (at(a), at(b));
-                push(Shape::new(
-                    Kind::Line,
-                    [a, b, a],
-                    width,
-                    colour::PAST_LIMIT,
-                    [0.0; 2],
-                ));
-            }
-        }
+    let points: Vec<Option<[f64; 2]>> = (0..=UNDERCUT_SAMPLES)
+        .map(|k| point(lo + (hi - lo) * k as f64 / UNDERCUT_SAMPLES as f64))
+        .collect();
+    let right: Vec<[[f64; 2]; 2]> = points
+        .windows(2)
+        .filter_map(|pair| Some([pair[0]?, pair[1]?]))
+        .collect();
+    let mirror = |[x, y]: [f64; 2]| [-x, y];
+    let left = right.iter().map(|&[a, b]| [mirror(a), mirror(b)]);
+    right.iter().copied().chain(left).collect()
+}
+
+/// The undercut segments in red.
+fn undercut_marks(
+    push: &mut impl FnMut(Option<Shape>),
+    segments: &[[[f64; 2]; 2]],
+    at: &impl Fn([f64; 2]) -> Vec2,
+    width: f32,
+) {
+    for &[a, b] in segments {
+        let (a, b) = (at(a), at(b));
+        push(Shape::new(
+            Kind::Line,
+            [a, b, a],
+            width,
+            colour::PAST_LIMIT,
+            [0.0; 2],
+        ));
     }
 }

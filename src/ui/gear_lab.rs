@@ -11,7 +11,7 @@ use linkage_diagram::numbers::significant;
 use crate::gear_lab::GearLab;
 use crate::i18n::tr;
 use crate::render::Renderer;
-use crate::render::gear_shapes::{BACKGROUND, bounds, build_gear_lab};
+use crate::render::gear_shapes::{BACKGROUND, bounds, build_gear_lab, undercut_segments};
 use crate::render::shape::SharedShapes;
 use crate::state::AppState;
 
@@ -124,8 +124,9 @@ pub fn canvas(
     if rect.width() > 1.0 && rect.height() > 1.0 {
         lab.camera.fit(bounds(&g), rect);
     }
+    let undercut = undercut_of(ui, &g);
     if let Ok(mut list) = shapes.lock() {
-        build_gear_lab(&mut list, lab, &g, &lab.camera);
+        build_gear_lab(&mut list, lab, &g, &undercut, &lab.camera);
     }
     let view = lab.camera.uniform(rect, ui.ctx().pixels_per_point());
     crate::ui::viewport::paint_shapes(&painter, rect, view, shapes, renderer);
@@ -151,3 +152,29 @@ pub fn canvas(
         painter.text(at, Align2::RIGHT_CENTER, name, font.clone(), colour);
     }
 }
+
+/// The undercut's segments, searched once for each gear and kept in egui's memory
+/// while the gear stays the same (the roll moves on every frame of play; the
+/// search costs more than the rest of the frame).
+fn undercut_of(ui: &egui::Ui, g: &Gear) -> std::sync::Arc<Vec<[[f64; 2]; 2]>> {
+    type Kept = (GearKey, std::sync::Arc<Vec<[[f64; 2]; 2]>>);
+    let s = g.spec;
+    let key: GearKey = (
+        s.teeth,
+        s.module_m.to_bits(),
+        s.shift.to_bits(),
+        s.pressure_angle_rad.to_bits(),
+    );
+    let id = egui::Id::unique("gear_lab::undercut");
+    if let Some((kept, segments)) = ui.data(|d| d.get_temp::<Kept>(id))
+        && kept == key
+    {
+        return segments;
+    }
+    let segments = std::sync::Arc::new(undercut_segments(g));
+    ui.data_mut(|d| d.insert_temp::<Kept>(id, (key, segments.clone())));
+    segments
+}
+
+/// What the undercut depends on: teeth, module, shift and pressure angle, bit for bit.
+type GearKey = (u32, u64, u64, u64);
