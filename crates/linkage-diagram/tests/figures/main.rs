@@ -7,5 +7,6 @@ mod construction;
 mod course_sheets;
 mod every_scene_layout;
 mod force_figures;
+mod gear_mesh;
 mod sheet_numbers;
 mod sheet_overlaps;

@@ -10,6 +10,7 @@ mod error;
 mod gear;
 pub mod generation;
 pub mod involute;
+mod mesh_pose;
 mod pair;
 mod train;
 mod train_assembly;
@@ -20,6 +21,7 @@ mod train_torques;
 
 pub use error::{GearError, GearParam, Member};
 pub use gear::{Gear, GearKind, GearSpec, least_teeth_without_undercut, limits};
+pub use mesh_pose::MeshPose;
 pub use pair::{CentreDistance, GearPair, MAX_WORKING_ANGLE_DEG, PairIssue, PairSpec};
 pub use train::{AssemblyCheck, MemberSpeed, Train, TrainError, TrainSolution, WillisRatio};
 pub use train_torques::{MemberTorque, TrainTorques};
