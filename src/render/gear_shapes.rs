@@ -22,10 +22,14 @@ const TRACE: [f32; 4] = [0.36, 0.45, 0.65, 0.22];
 const PITCH: [f32; 4] = [0.1, 0.5, 0.2, 1.0];
 const BASE: [f32; 4] = [0.75, 0.35, 0.1, 1.0];
 const FINE: [f32; 4] = [0.35, 0.35, 0.35, 0.8];
+const LINE_OF_ACTION: [f32; 4] = [0.55, 0.1, 0.45, 1.0];
 /// Segments of a drawn circle.
 const ROUND: usize = 180;
 /// Points on each of the cutter's tip fillets.
 const FILLET_POINTS: usize = 8;
+/// The roll past which the middle space is cut through its undercut (the cutter's
+/// tip has crossed the line of centres and left the base circle's region).
+const UNDERCUT_SHOWN_FROM: f64 = 0.75;
 /// Radii along a flank where undercut is looked for.
 const UNDERCUT_SAMPLES: usize = 32;
 
@@ -86,7 +90,12 @@ pub fn build_gear_lab(
     ] {
         circle(&mut push, centre, radius, line, colour, dashed);
     }
-    undercut_marks(&mut push, undercut, &at, 3.0 * line);
+    if lab.roll >= UNDERCUT_SHOWN_FROM {
+        undercut_marks(&mut push, undercut, &at, 3.0 * line);
+    }
+    if let Some(&now) = positions.last() {
+        cutter_lines(&mut push, g, now, &at, line);
+    }
     push(Shape::new(
         Kind::Pin,
         [centre; 3],
@@ -173,7 +182,10 @@ fn circle(
 }
 
 /// The undercut of the middle space's two flanks as line segments (m, the gear's
-/// frame): where the cut tooth is thinner than the involute tooth at the same radius.
+/// frame): where the cut tooth is thinner than the involute tooth at the same radius,
+/// or, below the base circle where there is no involute, thinner than it is at the
+/// base circle (the neck the cutter's tip leaves; the root fillet of a gear that is
+/// not undercut is thicker there).
 /// The dear part of the lab's drawing (a search over the cutter's turn per radius):
 /// the canvas keeps it while the gear stays the same. The flanks are mirror images
 /// about the space's middle (the y axis), so one is searched.
@@ -186,7 +198,9 @@ pub fn undercut_segments(g: &Gear) -> Vec<[[f64; 2]; 2]> {
     let middle = std::f64::consts::FRAC_PI_2 - std::f64::consts::PI / f64::from(g.spec.teeth);
     let point = |rho: f64| -> Option<[f64; 2]> {
         let cut = cut_tooth_thickness_at(g, rho)?;
-        let involute = g.tooth_thickness_at(rho).unwrap_or(f64::INFINITY);
+        let involute = g
+            .tooth_thickness_at(rho.max(g.base_radius_m))
+            .unwrap_or(f64::INFINITY);
         if cut >= involute - 1e-4 * g.spec.module_m {
             return None;
         }
@@ -222,4 +236,66 @@ fn undercut_marks(
             [0.0; 2],
         ));
     }
+}
+
+/// The cutter's datum line (dash-dotted look: dashed) and the line of action from the
+/// pitch point P to N1, where it touches the base circle, at the cutter's position
+/// `phi`: the undercut happens where the cutter's tip line passes beyond N1.
+fn cutter_lines(
+    push: &mut impl FnMut(Option<Shape>),
+    g: &Gear,
+    phi: f64,
+    at: &impl Fn([f64; 2]) -> Vec2,
+    width: f32,
+) {
+    let (sin, cos) = phi.sin_cos();
+    let to_gear = |[u, y]: [f64; 2]| [u * cos - y * sin, u * sin + y * cos];
+    let m = g.spec.module_m;
+    let r = g.pitch_radius_m;
+    let datum = r + g.spec.shift * m;
+    let half = (CUTTER_TEETH as f64 + 0.5) * std::f64::consts::PI * m;
+    let u0 = r * phi;
+    // The datum line in dashes of a quarter pitch.
+    let dashes = 4 * (2 * CUTTER_TEETH + 1);
+    for k in (0..dashes).step_by(2) {
+        let u = |j: usize| u0 - half + 2.0 * half * j as f64 / dashes as f64;
+        let (a, b) = (at(to_gear([u(k), datum])), at(to_gear([u(k + 1), datum])));
+        push(Shape::new(
+            Kind::Line,
+            [a, b, a],
+            width,
+            CUTTER_EDGE,
+            [0.0; 2],
+        ));
+    }
+    // The line of action through the pitch point (0, r) of the rolling, at α, to
+    // N1 on the base circle: r cos α (sin α, cos α) in the cutter's frame.
+    let alpha = g.spec.pressure_angle_rad;
+    let n1 = [r * alpha.cos() * alpha.sin(), r * alpha.cos() * alpha.cos()];
+    let p = [0.0, r];
+    let beyond = [2.0 * p[0] - n1[0], 2.0 * p[1] - n1[1]];
+    let (a, b) = (at(to_gear(n1)), at(to_gear(beyond)));
+    push(Shape::new(
+        Kind::Line,
+        [a, b, a],
+        width,
+        LINE_OF_ACTION,
+        [0.0; 2],
+    ));
+    push(Shape::new(
+        Kind::Pin,
+        [a; 3],
+        2.5 * width,
+        LINE_OF_ACTION,
+        [0.0; 2],
+    ));
+}
+
+/// Where N1, the line of action's end on the base circle, is at the cutter's
+/// position `phi`, in the gear's frame, m: for its name on the canvas.
+pub fn limit_point(g: &Gear, phi: f64) -> [f64; 2] {
+    let (sin, cos) = phi.sin_cos();
+    let (r, alpha) = (g.pitch_radius_m, g.spec.pressure_angle_rad);
+    let [u, y] = [r * alpha.cos() * alpha.sin(), r * alpha.cos() * alpha.cos()];
+    [u * cos - y * sin, u * sin + y * cos]
 }

@@ -130,26 +130,49 @@ pub fn canvas(
     }
     let view = lab.camera.uniform(rect, ui.ctx().pixels_per_point());
     crate::ui::viewport::paint_shapes(&painter, rect, view, shapes, renderer);
+    names(&painter, rect, lab, &g);
+}
+
+/// The circles' names outside the tip circle, below the centre (where the cutter
+/// never comes and nothing is cut), each with a leader to its circle; N1's beside it.
+fn names(painter: &egui::Painter, rect: egui::Rect, lab: &GearLab, g: &Gear) {
     let font = FontId::proportional(13.0);
-    // Each name where its circle meets a ray of its own, left of the centre, so that
-    // the two near circles' names do not meet.
+    let outside = g.tip_radius_m + 1.5 * g.spec.module_m;
     for (radius, name, colour, angle) in [
         (
             g.pitch_radius_m,
             tr!("gear.pitch_circle"),
             Color32::from_rgb(25, 128, 50),
-            200.0_f64,
+            235.0_f64,
         ),
         (
             g.base_radius_m,
             tr!("gear.base_circle"),
             Color32::from_rgb(190, 90, 25),
-            160.0,
+            305.0,
         ),
     ] {
         let (sin, cos) = angle.to_radians().sin_cos();
-        let at = lab.camera.to_screen([radius * cos, radius * sin], rect);
-        painter.text(at, Align2::RIGHT_CENTER, name, font.clone(), colour);
+        let on = lab.camera.to_screen([radius * cos, radius * sin], rect);
+        let label = lab.camera.to_screen([outside * cos, outside * sin], rect);
+        painter.line_segment([on, label], egui::Stroke::new(1.0, colour));
+        let align = if cos < 0.0 {
+            Align2::RIGHT_TOP
+        } else {
+            Align2::LEFT_TOP
+        };
+        painter.text(label, align, name, font.clone(), colour);
+    }
+    if let Some(&phi) = lab.positions(g).last() {
+        let n1 = crate::render::gear_shapes::limit_point(g, phi);
+        let at = lab.camera.to_screen(n1, rect) + egui::vec2(6.0, 2.0);
+        painter.text(
+            at,
+            Align2::LEFT_TOP,
+            "N₁",
+            font,
+            Color32::from_rgb(140, 25, 115),
+        );
     }
 }
 

@@ -49,12 +49,22 @@ fn lab(language: Language) -> Harness<'static, LinkageApp> {
     h
 }
 
+/// The pointer off the panel and a few frames more, so that a snapshot shows the
+/// panel settled and no text under the pointer.
+fn still(h: &mut Harness<'static, LinkageApp>) {
+    h.event(egui::Event::PointerGone);
+    for _ in 0..4 {
+        h.run();
+    }
+}
+
 #[test]
 fn twelve_teeth_are_undercut_and_the_least_shift_cures_them() {
     let mut h = lab(Language::English);
     h.state_mut().state.gear_lab.as_mut().expect("lab").roll = 1.0;
     common::settle(&mut h);
     assert!(h.query_by_label_contains("Undercut (red)").is_some());
+    still(&mut h);
     h.snapshot("gear_lab_12_teeth_undercut");
     h.get_by_label("Shift the cutter out to x_min").click();
     common::settle(&mut h);
@@ -63,6 +73,7 @@ fn twelve_teeth_are_undercut_and_the_least_shift_cures_them() {
     // up to the slider's step.
     assert!((shift - 0.30).abs() < 1e-12, "{shift}");
     assert!(h.query_by_label_contains("No undercut").is_some());
+    still(&mut h);
     h.snapshot("gear_lab_12_teeth_least_shift");
     let before = h.state().state.session.scene().clone();
     h.get_by_label("Back to the mechanism").click();
@@ -77,10 +88,12 @@ fn the_lab_speaks_chinese() {
     h.state_mut().state.gear_lab.as_mut().expect("lab").roll = 1.0;
     common::settle(&mut h);
     assert!(h.query_by_label_contains("发生根切").is_some());
+    still(&mut h);
     h.snapshot("gear_lab_12_teeth_undercut_zh");
     let lab = h.state_mut().state.gear_lab.as_mut().expect("lab");
     lab.shift = 0.3;
     common::settle(&mut h);
     assert!(h.query_by_label_contains("不发生根切").is_some());
+    still(&mut h);
     h.snapshot("gear_lab_12_teeth_least_shift_zh");
 }

@@ -96,6 +96,7 @@ pub fn drive_train(lang: Lang, p: &DriveTrainProblem) -> String {
         DriveTrainProblem::RatioContradicts { given, train } => sw!(
             lang,
             "train.ratio_contradicts",
+            key = "gear_ratio",
             given = significant(*given, 6),
             train = significant(*train, 6)
         ),
