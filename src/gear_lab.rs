@@ -4,7 +4,7 @@
 //! what follows from it (the gear, the cutter's positions so far); the side panel
 //! (`ui::gear_lab`) edits it and the GPU pass (`render::gear_shapes`) draws it.
 
-use linkage::gears::{Gear, GearError, GearSpec};
+use linkage::gears::{CentreDistance, Gear, GearError, GearPair, GearSpec, PairSpec};
 
 use crate::render::view::Camera;
 
@@ -16,9 +16,30 @@ const ROLL_S: f64 = 8.0;
 /// Cutter teeth either side of the middle one.
 pub const CUTTER_TEETH: usize = 2;
 
+/// What the lab shows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum LabMode {
+    /// A rack cutter generating one gear.
+    #[default]
+    Cutting,
+    /// That gear (the pinion) meshing with a wheel.
+    Pair,
+}
+
+/// Seconds a pinion turn takes while the pair plays.
+const PINION_TURN_S: f64 = 12.0;
+
 /// The lab's state.
 #[derive(Clone, Debug, PartialEq)]
 pub struct GearLab {
+    /// What it shows.
+    pub mode: LabMode,
+    /// The wheel's teeth, in the pair.
+    pub wheel_teeth: u32,
+    /// The wheel's profile shift, in the pair.
+    pub wheel_shift: f64,
+    /// The pinion's turn in the pair, rad (counter-clockwise).
+    pub turn_rad: f64,
     /// Teeth z.
     pub teeth: u32,
     /// Module m, mm.
@@ -39,6 +60,10 @@ impl Default for GearLab {
     /// 12 teeth of module 10 mm, unshifted: undercut, as the textbooks show first.
     fn default() -> Self {
         Self {
+            mode: LabMode::Cutting,
+            wheel_teeth: 40,
+            wheel_shift: 0.0,
+            turn_rad: 0.0,
             teeth: 12,
             module_mm: 10.0,
             shift: 0.0,
@@ -74,9 +99,34 @@ impl GearLab {
             .collect()
     }
 
-    /// Moves the roll on by `dt` seconds of play; stops at its end.
+    /// The pinion (the gear being cut) meshing with the wheel, the centres from the
+    /// shifts (no backlash).
+    ///
+    /// # Errors
+    /// Gears or a pair outside their ranges.
+    pub fn pair(&self) -> Result<GearPair, GearError> {
+        let pinion = self.gear()?.spec;
+        let wheel = GearSpec {
+            shift: self.wheel_shift,
+            teeth: self.wheel_teeth,
+            ..pinion
+        };
+        GearPair::new(PairSpec {
+            pinion,
+            wheel,
+            centre: CentreDistance::FromShifts,
+        })
+    }
+
+    /// Moves the roll (or the pair's turn) on by `dt` seconds of play; the roll stops
+    /// at its end, the pair turns on.
     pub fn advance(&mut self, dt: f64) {
         if !self.playing {
+            return;
+        }
+        if self.mode == LabMode::Pair {
+            self.turn_rad = (self.turn_rad + std::f64::consts::TAU * dt / PINION_TURN_S)
+                % std::f64::consts::TAU;
             return;
         }
         self.roll = (self.roll + dt / ROLL_S).min(1.0);
@@ -87,7 +137,7 @@ impl GearLab {
 
     /// Plays from the start, or from where it is; pauses if playing.
     pub fn toggle_play(&mut self) {
-        if !self.playing && self.roll >= 1.0 {
+        if self.mode == LabMode::Cutting && !self.playing && self.roll >= 1.0 {
             self.roll = 0.0;
         }
         self.playing = !self.playing;

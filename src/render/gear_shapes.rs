@@ -24,7 +24,7 @@ const BASE: [f32; 4] = [0.75, 0.35, 0.1, 1.0];
 const FINE: [f32; 4] = [0.35, 0.35, 0.35, 0.8];
 const LINE_OF_ACTION: [f32; 4] = [0.55, 0.1, 0.45, 1.0];
 /// Segments of a drawn circle.
-const ROUND: usize = 180;
+const ROUND: usize = 240;
 /// Points on each of the cutter's tip fillets.
 const FILLET_POINTS: usize = 8;
 /// The roll past which the middle space is cut through its undercut (the cutter's
@@ -82,13 +82,13 @@ pub fn build_gear_lab(
         }
     }
     let centre = at([0.0, 0.0]);
-    for (radius, colour, dashed) in [
-        (g.pitch_radius_m, PITCH, true),
-        (g.base_radius_m, BASE, true),
-        (g.root_radius_m, FINE, false),
-        (g.tip_radius_m, FINE, false),
+    for (radius, colour, every) in [
+        (g.pitch_radius_m, PITCH, 2),
+        (g.base_radius_m, BASE, 2),
+        (g.root_radius_m, FINE, 0),
+        (g.tip_radius_m, FINE, 0),
     ] {
-        circle(&mut push, centre, radius, line, colour, dashed);
+        circle(&mut push, centre, radius, line, colour, every);
     }
     if lab.roll >= UNDERCUT_SHOWN_FROM {
         undercut_marks(&mut push, undercut, &at, 3.0 * line);
@@ -161,21 +161,22 @@ fn outline(
     }
 }
 
-/// A circle's outline, solid or dashed (every other pair of its segments).
-fn circle(
+/// A circle's outline: solid where `every` is 0, else drawn `every` segments of
+/// [`ROUND`] on and `every` off (dashes; 1 makes dots).
+pub(super) fn circle(
     push: &mut impl FnMut(Option<Shape>),
     centre: Vec2,
     radius: f64,
     width: f32,
     colour: [f32; 4],
-    dashed: bool,
+    every: usize,
 ) {
     let r = radius as f32;
     let point = |k: usize| {
         let t = std::f32::consts::TAU * k as f32 / ROUND as f32;
         centre + r * Vec2::new(t.cos(), t.sin())
     };
-    for i in (0..ROUND).filter(|i| !dashed || (i / 2) % 2 == 0) {
+    for i in (0..ROUND).filter(|i| every == 0 || (i / every).is_multiple_of(2)) {
         let (a, b) = (point(i), point(i + 1));
         push(Shape::new(Kind::Line, [a, b, a], width, colour, [0.0; 2]));
     }

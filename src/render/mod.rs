@@ -9,6 +9,7 @@ pub mod build;
 mod cam_shapes;
 pub mod drawing_shapes;
 mod drawn;
+pub mod gear_pair_shapes;
 pub mod gear_shapes;
 pub mod shape;
 pub mod view;

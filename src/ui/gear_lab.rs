@@ -8,12 +8,13 @@ use eframe::egui::{self, Align2, Color32, FontId, Sense};
 use linkage::gears::Gear;
 use linkage_diagram::numbers::significant;
 
-use crate::gear_lab::GearLab;
+use crate::gear_lab::{GearLab, LabMode};
 use crate::i18n::tr;
 use crate::render::Renderer;
 use crate::render::gear_shapes::{BACKGROUND, bounds, build_gear_lab, undercut_segments};
 use crate::render::shape::SharedShapes;
 use crate::state::AppState;
+use crate::ui::gear_canvas::Canvas;
 
 /// The lab's controls and numbers.
 pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
@@ -26,23 +27,16 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         st.commands.fit = true;
         return;
     }
+    ui.horizontal(|ui| {
+        ui.selectable_value(&mut lab.mode, LabMode::Cutting, tr!("gear.mode_cutting"));
+        ui.selectable_value(&mut lab.mode, LabMode::Pair, tr!("gear.mode_pair"));
+    });
+    if lab.mode == LabMode::Pair {
+        pair_panel(ui, lab);
+        return;
+    }
     ui.label(tr!("gear.how"));
-    ui.add(egui::Slider::new(&mut lab.teeth, 6..=80).text(tr!("gear.teeth")));
-    ui.add(
-        egui::Slider::new(&mut lab.module_mm, 1.0..=20.0)
-            .step_by(0.5)
-            .text(tr!("gear.module")),
-    );
-    ui.add(
-        egui::Slider::new(&mut lab.shift, -1.0..=1.0)
-            .step_by(0.01)
-            .text(tr!("gear.shift")),
-    );
-    ui.add(
-        egui::Slider::new(&mut lab.pressure_angle_deg, 14.5..=25.0)
-            .step_by(0.5)
-            .text(tr!("gear.pressure_angle")),
-    );
+    gear_sliders(ui, lab);
     ui.horizontal(|ui| {
         let label = if lab.playing {
             tr!("gear.pause")
@@ -67,6 +61,39 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
             ui.colored_label(ui.visuals().error_fg_color, e.to_string());
         }
     }
+}
+
+/// The pair's view: the lab's gear as the pinion, the wheel's numbers, the turn.
+fn pair_panel(ui: &mut egui::Ui, lab: &mut GearLab) {
+    ui.label(tr!("gear.pair_how"));
+    gear_sliders(ui, lab);
+    crate::ui::gear_pair::controls(ui, lab);
+    match lab.pair() {
+        Ok(pair) => crate::ui::gear_pair::numbers(ui, &pair),
+        Err(e) => {
+            ui.colored_label(ui.visuals().error_fg_color, e.to_string());
+        }
+    }
+}
+
+/// The gear's teeth, module, shift and pressure angle.
+fn gear_sliders(ui: &mut egui::Ui, lab: &mut GearLab) {
+    ui.add(egui::Slider::new(&mut lab.teeth, 6..=80).text(tr!("gear.teeth")));
+    ui.add(
+        egui::Slider::new(&mut lab.module_mm, 1.0..=20.0)
+            .step_by(0.5)
+            .text(tr!("gear.module")),
+    );
+    ui.add(
+        egui::Slider::new(&mut lab.shift, -1.0..=1.0)
+            .step_by(0.01)
+            .text(tr!("gear.shift")),
+    );
+    ui.add(
+        egui::Slider::new(&mut lab.pressure_angle_deg, 14.5..=25.0)
+            .step_by(0.5)
+            .text(tr!("gear.pressure_angle")),
+    );
 }
 
 /// The gear's circles, its tooth thickness, and undercut or not.
@@ -116,8 +143,25 @@ pub fn canvas(
         return;
     };
     let painter = ui.painter_at(rect);
-    let [r, g_, b, _] = BACKGROUND.map(|c| (c * 255.0).round() as u8);
-    painter.rect_filled(rect, 0.0, Color32::from_rgb(r, g_, b));
+    let [r, g, b, _] = BACKGROUND.map(|c| (c * 255.0).round() as u8);
+    painter.rect_filled(rect, 0.0, Color32::from_rgb(r, g, b));
+    let pixels_per_point = ui.ctx().pixels_per_point();
+    let canvas = Canvas {
+        painter: &painter,
+        rect,
+        shapes,
+        renderer,
+        pixels_per_point,
+    };
+    match lab.mode {
+        LabMode::Pair => crate::ui::gear_pair::draw(ui, &canvas, lab),
+        LabMode::Cutting => cutting(ui, &canvas, lab),
+    }
+}
+
+/// The cutting view: the blank, the cutter and its trace, the circles' names.
+fn cutting(ui: &egui::Ui, canvas: &Canvas<'_>, lab: &mut GearLab) {
+    let (painter, rect) = (canvas.painter, canvas.rect);
     let Ok(g) = lab.gear() else {
         return;
     };
@@ -125,12 +169,11 @@ pub fn canvas(
         lab.camera.fit(bounds(&g), rect);
     }
     let undercut = undercut_of(ui, &g);
-    if let Ok(mut list) = shapes.lock() {
+    if let Ok(mut list) = canvas.shapes.lock() {
         build_gear_lab(&mut list, lab, &g, &undercut, &lab.camera);
     }
-    let view = lab.camera.uniform(rect, ui.ctx().pixels_per_point());
-    crate::ui::viewport::paint_shapes(&painter, rect, view, shapes, renderer);
-    names(&painter, rect, lab, &g);
+    canvas.paint(&lab.camera);
+    names(painter, rect, lab, &g);
 }
 
 /// The circles' names outside the tip circle, below the centre (where the cutter

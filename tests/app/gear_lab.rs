@@ -97,3 +97,49 @@ fn the_lab_speaks_chinese() {
     still(&mut h);
     h.snapshot("gear_lab_12_teeth_least_shift_zh");
 }
+
+/// The lab's second view: the 12-tooth pinion shifted to x_min meshing with a
+/// 40-tooth wheel, turned a little; the contact ratio shown is the solver's, and the
+/// unshifted pinion's undercut is said as a check of the pair.
+#[test]
+fn a_meshing_pair_shows_its_contact_ratio() {
+    meshing_pair(
+        Language::English,
+        "Meshing pair",
+        "the pinion is undercut",
+        "gear_lab_pair_12_40",
+    );
+}
+
+#[test]
+fn a_meshing_pair_speaks_chinese() {
+    meshing_pair(
+        Language::Chinese,
+        "齿轮啮合",
+        "小齿轮发生根切",
+        "gear_lab_pair_12_40_zh",
+    );
+}
+
+fn meshing_pair(language: Language, mode: &str, undercut: &str, name: &str) {
+    {
+        let mut h = lab(language);
+        h.get_by_label(mode).click();
+        common::settle(&mut h);
+        assert!(h.query_by_label_contains(undercut).is_some(), "{undercut}");
+        let lab = h.state_mut().state.gear_lab.as_mut().expect("lab");
+        lab.shift = 0.3;
+        lab.wheel_shift = 0.2;
+        lab.turn_rad = 0.1;
+        let pair = lab.pair().expect("a pair");
+        common::settle(&mut h);
+        let eps = format!(
+            "ε = {}",
+            linkage_diagram::numbers::significant(pair.contact_ratio, 4)
+        );
+        assert!(h.query_by_label_contains(&eps).is_some(), "{eps}");
+        assert!(h.query_by_label_contains(undercut).is_none());
+        still(&mut h);
+        h.snapshot(name);
+    }
+}
