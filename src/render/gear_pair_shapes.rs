@@ -89,14 +89,7 @@ pub fn build_gear_pair(
         ));
     }
     for c in &pose.contacts {
-        let p = camera.local(*c);
-        push(Shape::new(
-            Kind::Pin,
-            [p; 3],
-            5.0 * line,
-            colour::PAST_LIMIT,
-            [0.0; 2],
-        ));
+        dot(&mut push, camera.local(*c), 7.0 * line, colour::PAST_LIMIT);
     }
     for centre in centres {
         let p = camera.local(centre);
