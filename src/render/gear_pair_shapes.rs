@@ -79,15 +79,20 @@ pub fn build_gear_pair(
         LINE_OF_ACTION,
         [0.0; 2],
     ));
-    for p in [n1, n2] {
-        push(Shape::new(
-            Kind::Pin,
-            [p; 3],
-            2.5 * line,
-            LINE_OF_ACTION,
-            [0.0; 2],
-        ));
+    // The line of centres, and the ends of both lines and the pitch point marked.
+    let (o1, o2) = (camera.local(centres[0]), camera.local(centres[1]));
+    push(Shape::new(
+        Kind::Line,
+        [o1, o2, o1],
+        0.6 * line,
+        EDGE,
+        [0.0; 2],
+    ));
+    for p in [n1, n2, b1, b2] {
+        dot(&mut push, p, 3.0 * line, LINE_OF_ACTION);
     }
+    let pitch_point = camera.local([0.0, pair.working_pitch_radii_m[0]]);
+    dot(&mut push, pitch_point, 3.0 * line, EDGE);
     for c in &pose.contacts {
         dot(&mut push, camera.local(*c), 7.0 * line, colour::PAST_LIMIT);
     }

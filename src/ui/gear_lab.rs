@@ -36,7 +36,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         return;
     }
     ui.label(tr!("gear.how"));
-    gear_sliders(ui, lab);
+    gear_sliders(ui, lab, [tr!("gear.teeth"), tr!("gear.shift")]);
     ui.horizontal(|ui| {
         let label = if lab.playing {
             tr!("gear.pause")
@@ -66,7 +66,11 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
 /// The pair's view: the lab's gear as the pinion, the wheel's numbers, the turn.
 fn pair_panel(ui: &mut egui::Ui, lab: &mut GearLab) {
     ui.label(tr!("gear.pair_how"));
-    gear_sliders(ui, lab);
+    gear_sliders(
+        ui,
+        lab,
+        [tr!("gear.pinion_teeth"), tr!("gear.pinion_shift")],
+    );
     crate::ui::gear_pair::controls(ui, lab);
     match lab.pair() {
         Ok(pair) => crate::ui::gear_pair::numbers(ui, &pair),
@@ -76,9 +80,11 @@ fn pair_panel(ui: &mut egui::Ui, lab: &mut GearLab) {
     }
 }
 
-/// The gear's teeth, module, shift and pressure angle.
-fn gear_sliders(ui: &mut egui::Ui, lab: &mut GearLab) {
-    ui.add(egui::Slider::new(&mut lab.teeth, 6..=80).text(tr!("gear.teeth")));
+/// The gear's teeth, module, shift and pressure angle; `names` the teeth's and the
+/// shift's (the pinion's z₁ and x₁ in the pair).
+fn gear_sliders(ui: &mut egui::Ui, lab: &mut GearLab, names: [String; 2]) {
+    let [teeth, shift] = names;
+    ui.add(egui::Slider::new(&mut lab.teeth, 6..=80).text(teeth));
     ui.add(
         egui::Slider::new(&mut lab.module_mm, 1.0..=20.0)
             .step_by(0.5)
@@ -87,7 +93,7 @@ fn gear_sliders(ui: &mut egui::Ui, lab: &mut GearLab) {
     ui.add(
         egui::Slider::new(&mut lab.shift, -1.0..=1.0)
             .step_by(0.01)
-            .text(tr!("gear.shift")),
+            .text(shift),
     );
     ui.add(
         egui::Slider::new(&mut lab.pressure_angle_deg, 14.5..=25.0)

@@ -55,6 +55,21 @@ pub fn numbers(ui: &mut egui::Ui, pair: &GearPair) {
         ratio = n(f64::from(pair.wheel.spec.teeth) / f64::from(pair.pinion.spec.teeth)),
         eps = significant(pair.contact_ratio, 4)
     ));
+    // Where the shifts move the centres apart: the standard centre distance, y, and
+    // the tips' shortening Δy·m, without which ε would be computed from the uncut tips.
+    let m = pair.pinion.spec.module_m;
+    ui.label(tr!(
+        "gear.pair_shift_figures",
+        a0 = n(pair.standard_centre_m * 1e3),
+        y = significant(pair.centre_modification, 4)
+    ));
+    if let Some(dy) = pair.tip_shortening.filter(|dy| *dy > 0.0) {
+        ui.label(tr!(
+            "gear.pair_tips_cut",
+            dy = significant(dy, 3),
+            cut = significant(dy * m * 1e3, 3)
+        ));
+    }
     for issue in &pair.issues {
         ui.colored_label(Color32::from_rgb(190, 40, 30), issue_words(issue));
     }
@@ -124,16 +139,41 @@ pub fn draw(ui: &egui::Ui, canvas: &Canvas<'_>, lab: &mut GearLab) {
     canvas.paint(&lab.camera);
     let font = FontId::proportional(13.0);
     let purple = Color32::from_rgb(140, 25, 115);
+    // N₁ below the line, N₂ above it, B₁ and B₂ on the far side from N's, P beside
+    // the line of centres.
     let [n1, n2] = pose.line_of_action_m;
-    for (p, name) in [(n1, "N₁"), (n2, "N₂")] {
-        let at = lab.camera.to_screen(p, rect) + egui::vec2(6.0, 2.0);
-        painter.text(at, Align2::LEFT_TOP, name, font.clone(), purple);
-    }
     let [b2, b1] = pose.path_of_contact_m;
-    for (p, name) in [(b2, "B₂"), (b1, "B₁")] {
-        let at = lab.camera.to_screen(p, rect) + egui::vec2(-6.0, 2.0);
-        painter.text(at, Align2::RIGHT_TOP, name, font.clone(), purple);
+    let pitch_point = [0.0, pair.working_pitch_radii_m[0]];
+    for (p, name, align, offset) in [
+        (n1, "N₁", Align2::LEFT_TOP, egui::vec2(6.0, 4.0)),
+        (n2, "N₂", Align2::RIGHT_BOTTOM, egui::vec2(-6.0, -4.0)),
+        (b1, "B₁", Align2::LEFT_BOTTOM, egui::vec2(6.0, -4.0)),
+        (b2, "B₂", Align2::RIGHT_TOP, egui::vec2(-6.0, 4.0)),
+        (pitch_point, "P", Align2::LEFT_BOTTOM, egui::vec2(5.0, -3.0)),
+    ] {
+        let at = lab.camera.to_screen(p, rect) + offset;
+        let colour = if name == "P" { Color32::BLACK } else { purple };
+        halo_text(painter, at, align, name, &font, colour);
     }
+}
+
+/// A name with a light halo under it, readable over teeth and lines.
+fn halo_text(
+    painter: &egui::Painter,
+    at: egui::Pos2,
+    align: Align2,
+    text: &str,
+    font: &FontId,
+    colour: Color32,
+) {
+    let galley = painter.layout_no_wrap(text.to_owned(), font.clone(), colour);
+    let rect = align.anchor_size(at, galley.size()).expand(1.5);
+    painter.rect_filled(
+        rect,
+        2.0,
+        Color32::from_rgba_unmultiplied(250, 250, 246, 210),
+    );
+    painter.galley(rect.min + egui::vec2(1.5, 1.5), galley, colour);
 }
 
 type Outlines = Arc<(Vec<[f64; 2]>, Vec<[f64; 2]>)>;

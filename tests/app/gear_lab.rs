@@ -99,14 +99,15 @@ fn the_lab_speaks_chinese() {
 }
 
 /// The lab's second view: the 12-tooth pinion shifted to x_min meshing with a
-/// 40-tooth wheel, turned a little; the contact ratio shown is the solver's, and the
-/// unshifted pinion's undercut is said as a check of the pair.
+/// 40-tooth wheel; the contact ratio shown is the solver's, and the
+/// unshifted pinion's undercut is said as a check of the pair; at 15° two pairs of
+/// teeth touch.
 #[test]
 fn a_meshing_pair_shows_its_contact_ratio() {
     meshing_pair(
         Language::English,
         "Meshing pair",
-        "the pinion is undercut",
+        "The pinion is undercut",
         "gear_lab_pair_12_40",
     );
 }
@@ -130,7 +131,9 @@ fn meshing_pair(language: Language, mode: &str, undercut: &str, name: &str) {
         let lab = h.state_mut().state.gear_lab.as_mut().expect("lab");
         lab.shift = 0.3;
         lab.wheel_shift = 0.2;
-        lab.turn_rad = 0.1;
+        // 15°: within each 30° tooth period, two pairs touch from about 10.6° to 22.8°
+        // (ε = 1.405): the picture shows what ε > 1 means.
+        lab.turn_rad = 15f64.to_radians();
         let pair = lab.pair().expect("a pair");
         common::settle(&mut h);
         let eps = format!(
@@ -139,6 +142,8 @@ fn meshing_pair(language: Language, mode: &str, undercut: &str, name: &str) {
         );
         assert!(h.query_by_label_contains(&eps).is_some(), "{eps}");
         assert!(h.query_by_label_contains(undercut).is_none());
+        let pose = linkage::gears::MeshPose::at(&pair, 15f64.to_radians()).expect("external");
+        assert_eq!(pose.contacts.len(), 2, "two pairs in contact at 15°");
         still(&mut h);
         h.snapshot(name);
     }
