@@ -7,16 +7,15 @@
 use linkage::gears::{GearPair, MeshPose};
 
 use super::drawn::colour;
-use super::gear_shapes::circle;
+use super::gear_shapes::{BASE, BLANK as PINION, LINE_OF_ACTION, PITCH, circle, fill_circle};
 use super::shape::{Kind, Shape};
 use super::view::Camera;
 
-const PINION: [f32; 4] = [0.80, 0.74, 0.58, 1.0];
+/// A marked point: a solid disc of 16 sides, not grown (a pin is drawn white with
+/// a ring; a contact point wants to stand out).
+const DOT: [f32; 2] = [16.0, 0.0];
 const WHEEL: [f32; 4] = [0.66, 0.74, 0.82, 1.0];
 const EDGE: [f32; 4] = [0.25, 0.25, 0.28, 1.0];
-const PITCH: [f32; 4] = [0.1, 0.5, 0.2, 1.0];
-const BASE: [f32; 4] = [0.75, 0.35, 0.1, 1.0];
-const LINE_OF_ACTION: [f32; 4] = [0.55, 0.1, 0.45, 1.0];
 
 /// The box the pair's view frames, m: the whole pinion and as much of the wheel
 /// again above the pitch point, so that the mesh (the line of action, the contacts)
@@ -89,12 +88,18 @@ pub fn build_gear_pair(
         [0.0; 2],
     ));
     for p in [n1, n2, b1, b2] {
-        dot(&mut push, p, 3.0 * line, LINE_OF_ACTION);
+        fill_circle(&mut push, p, f64::from(3.0 * line), LINE_OF_ACTION, DOT);
     }
     let pitch_point = camera.local([0.0, pair.working_pitch_radii_m[0]]);
-    dot(&mut push, pitch_point, 3.0 * line, EDGE);
+    fill_circle(&mut push, pitch_point, f64::from(3.0 * line), EDGE, DOT);
     for c in &pose.contacts {
-        dot(&mut push, camera.local(*c), 7.0 * line, colour::PAST_LIMIT);
+        fill_circle(
+            &mut push,
+            camera.local(*c),
+            f64::from(7.0 * line),
+            colour::PAST_LIMIT,
+            DOT,
+        );
     }
     for centre in centres {
         let p = camera.local(centre);
@@ -131,23 +136,5 @@ fn gear(
     for i in 0..n {
         let (a, b) = (at(outline[i]), at(outline[(i + 1) % n]));
         push(Shape::new(Kind::Line, [a, b, a], line, EDGE, [0.0; 2]));
-    }
-}
-
-/// A solid disc (a pin is drawn white with a ring: a contact point wants to stand out).
-fn dot(push: &mut impl FnMut(Option<Shape>), centre: glam::Vec2, radius: f32, colour: [f32; 4]) {
-    const SIDES: usize = 16;
-    let at = |k: usize| {
-        let t = std::f32::consts::TAU * k as f32 / SIDES as f32;
-        centre + radius * glam::Vec2::new(t.cos(), t.sin())
-    };
-    for k in 0..SIDES {
-        push(Shape::new(
-            Kind::Fill,
-            [centre, at(k), at(k + 1)],
-            0.0,
-            colour,
-            [0.0; 2],
-        ));
     }
 }

@@ -15,14 +15,15 @@ use crate::gear_lab::{CUTTER_TEETH, GearLab};
 
 /// The canvas's colour: the cut-away material is filled with it.
 pub const BACKGROUND: [f32; 4] = [0.965, 0.965, 0.95, 1.0];
-const BLANK: [f32; 4] = [0.80, 0.74, 0.58, 1.0];
+/// The blank, and the pinion of the pair (the same gear).
+pub(super) const BLANK: [f32; 4] = [0.80, 0.74, 0.58, 1.0];
 const CUTTER: [f32; 4] = [0.36, 0.55, 0.78, 0.55];
 const CUTTER_EDGE: [f32; 4] = [0.16, 0.3, 0.55, 1.0];
 const TRACE: [f32; 4] = [0.36, 0.45, 0.65, 0.22];
-const PITCH: [f32; 4] = [0.1, 0.5, 0.2, 1.0];
-const BASE: [f32; 4] = [0.75, 0.35, 0.1, 1.0];
+pub(super) const PITCH: [f32; 4] = [0.1, 0.5, 0.2, 1.0];
+pub(super) const BASE: [f32; 4] = [0.75, 0.35, 0.1, 1.0];
 const FINE: [f32; 4] = [0.35, 0.35, 0.35, 0.8];
-const LINE_OF_ACTION: [f32; 4] = [0.55, 0.1, 0.45, 1.0];
+pub(super) const LINE_OF_ACTION: [f32; 4] = [0.55, 0.1, 0.45, 1.0];
 /// Segments of a drawn circle.
 const ROUND: usize = 240;
 /// Points on each of the cutter's tip fillets.
@@ -61,25 +62,31 @@ pub fn build_gear_lab(
     // Half a line's width, m: 0.6 screen points.
     let line = (0.6 / camera.points_per_m.max(1e-9)) as f32;
     let mut push = |s: Option<Shape>| list.extend(s);
-    fill_circle(&mut push, at([0.0, 0.0]), g.tip_radius_m, BLANK);
+    fill_circle(
+        &mut push,
+        at([0.0, 0.0]),
+        g.tip_radius_m,
+        BLANK,
+        [ROUND as f32, 0.002],
+    );
+    // Each position's cutter once: filled away, then traced, the last drawn over.
     let positions = lab.positions(g);
-    for &phi in &positions {
-        for part in cutter_outline(g, phi, CUTTER_TEETH, FILLET_POINTS).unwrap_or_default() {
-            fill_convex(&mut push, &part, &at, line, BACKGROUND);
-        }
+    let cutters: Vec<Vec<Vec<[f64; 2]>>> = positions
+        .iter()
+        .map(|&phi| cutter_outline(g, phi, CUTTER_TEETH, FILLET_POINTS).unwrap_or_default())
+        .collect();
+    for part in cutters.iter().flatten() {
+        fill_convex(&mut push, part, &at, line, BACKGROUND);
     }
-    for &phi in &positions {
-        let parts = cutter_outline(g, phi, CUTTER_TEETH, FILLET_POINTS).unwrap_or_default();
+    for parts in &cutters {
         // The teeth's outlines (the body's last): what the envelope shows in.
         for part in parts.iter().take(2 * CUTTER_TEETH + 1) {
             outline(&mut push, part, &at, 0.5 * line, TRACE);
         }
     }
-    if let Some(&now) = positions.last() {
-        for part in cutter_outline(g, now, CUTTER_TEETH, FILLET_POINTS).unwrap_or_default() {
-            fill_convex(&mut push, &part, &at, 0.0, CUTTER);
-            outline(&mut push, &part, &at, line, CUTTER_EDGE);
-        }
+    for part in cutters.last().into_iter().flatten() {
+        fill_convex(&mut push, part, &at, 0.0, CUTTER);
+        outline(&mut push, part, &at, line, CUTTER_EDGE);
     }
     let centre = at([0.0, 0.0]);
     for (radius, colour, every) in [
@@ -105,18 +112,26 @@ pub fn build_gear_lab(
     ));
 }
 
-/// A filled circle, as a fan of triangles from its centre.
-fn fill_circle(push: &mut impl FnMut(Option<Shape>), centre: Vec2, radius: f64, colour: [f32; 4]) {
+/// A filled circle, as a fan of `sides` triangles from its centre, each grown by
+/// `grow` of the radius (an opaque fan shows no seams).
+pub(super) fn fill_circle(
+    push: &mut impl FnMut(Option<Shape>),
+    centre: Vec2,
+    radius: f64,
+    colour: [f32; 4],
+    [sides, grow]: [f32; 2],
+) {
+    let sides = sides as usize;
     let r = radius as f32;
-    for i in 0..ROUND {
-        let a = |k: usize| {
-            let t = std::f32::consts::TAU * k as f32 / ROUND as f32;
-            centre + r * Vec2::new(t.cos(), t.sin())
-        };
+    let a = |k: usize| {
+        let t = std::f32::consts::TAU * k as f32 / sides as f32;
+        centre + r * Vec2::new(t.cos(), t.sin())
+    };
+    for i in 0..sides {
         push(Shape::new(
             Kind::Fill,
             [centre, a(i), a(i + 1)],
-            0.002 * r,
+            grow * r,
             colour,
             [0.0; 2],
         ));

@@ -1,9 +1,11 @@
-//! Where the gear lab draws, shared by its two views (the cutting in
-//! `ui/gear_lab.rs`, the meshing pair in `ui/gear_pair.rs`): the canvas's painter
-//! and rectangle, the shapes' list and the GPU pass.
+//! What the gear lab's two views share (the cutting in `ui/gear_lab.rs`, the meshing
+//! pair in `ui/gear_pair.rs`): where they draw (the canvas's painter and rectangle,
+//! the shapes' list and the GPU pass) and the Play button.
 
 use eframe::egui;
 
+use crate::gear_lab::GearLab;
+use crate::i18n::tr;
 use crate::render::Renderer;
 use crate::render::shape::SharedShapes;
 
@@ -33,5 +35,17 @@ impl Canvas<'_> {
             self.shapes,
             self.renderer,
         );
+    }
+}
+
+/// Play or Pause, for the roll or the pair's turn.
+pub fn play_button(ui: &mut egui::Ui, lab: &mut GearLab) {
+    let label = if lab.playing {
+        tr!("gear.pause")
+    } else {
+        tr!("gear.play")
+    };
+    if ui.button(label).clicked() {
+        lab.toggle_play();
     }
 }

@@ -38,14 +38,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     ui.label(tr!("gear.how"));
     gear_sliders(ui, lab, [tr!("gear.teeth"), tr!("gear.shift")]);
     ui.horizontal(|ui| {
-        let label = if lab.playing {
-            tr!("gear.pause")
-        } else {
-            tr!("gear.play")
-        };
-        if ui.button(label).clicked() {
-            lab.toggle_play();
-        }
+        crate::ui::gear_canvas::play_button(ui, lab);
         ui.add(egui::Slider::new(&mut lab.roll, 0.0..=1.0).text(tr!("gear.roll")));
     });
     match lab.gear() {

@@ -28,14 +28,7 @@ pub fn controls(ui: &mut egui::Ui, lab: &mut GearLab) {
             .text(tr!("gear.wheel_shift")),
     );
     ui.horizontal(|ui| {
-        let label = if lab.playing {
-            tr!("gear.pause")
-        } else {
-            tr!("gear.play")
-        };
-        if ui.button(label).clicked() {
-            lab.toggle_play();
-        }
+        crate::ui::gear_canvas::play_button(ui, lab);
         let mut deg = lab.turn_rad.to_degrees();
         let turn = egui::Slider::new(&mut deg, 0.0..=360.0).text(tr!("gear.turn"));
         if ui.add(turn).changed() {

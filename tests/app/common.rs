@@ -141,3 +141,21 @@ pub fn shipped_scene_files() -> Vec<std::path::PathBuf> {
     assert!(files.len() >= 6, "{files:?}");
     files
 }
+
+/// Clicks the control of `kind` labelled `label`, as drawn last frame.
+pub fn click_control(
+    h: &mut Harness<'static, LinkageApp>,
+    kind: linkage_lab::ui::control_map::ControlKind,
+    label: &str,
+) {
+    let entry = h
+        .state()
+        .state
+        .controls
+        .of_kind(kind)
+        .find(|e| e.label == label && e.visible)
+        .unwrap_or_else(|| panic!("no {kind:?} {label:?} on screen"))
+        .clone();
+    let [x0, y0, x1, y1] = entry.rect;
+    click(h, egui::pos2(0.5 * (x0 + x1), 0.5 * (y0 + y1)));
+}

@@ -16,23 +16,10 @@ use linkage_lab::ui::control_map::ControlKind;
 
 use crate::common;
 use common::click;
+use common::click_control;
 
 fn harness() -> Harness<'static, LinkageApp> {
     common::stateful_harness()
-}
-
-/// Clicks the control of `kind` labelled `label`, as drawn last frame.
-fn click_control(h: &mut Harness<'static, LinkageApp>, kind: ControlKind, label: &str) {
-    let entry = h
-        .state()
-        .state
-        .controls
-        .of_kind(kind)
-        .find(|e| e.label == label && e.visible)
-        .unwrap_or_else(|| panic!("no {kind:?} {label:?} on screen"))
-        .clone();
-    let [x0, y0, x1, y1] = entry.rect;
-    click(h, egui::pos2(0.5 * (x0 + x1), 0.5 * (y0 + y1)));
 }
 
 /// Clicks the canvas at world place `(x, y)` (mm).

@@ -19,31 +19,9 @@ fn lab(language: Language) -> Harness<'static, LinkageApp> {
         .set_missing_glyph_policy(egui::MissingGlyphPolicy::Panic);
     h.state_mut().state.language = language;
     common::settle(&mut h);
-    let new = h
-        .state()
-        .state
-        .controls
-        .of_kind(ControlKind::FileButton)
-        .find(|e| e.label == "New…")
-        .expect("the New… menu")
-        .rect;
-    common::click(
-        &mut h,
-        egui::pos2(0.5 * (new[0] + new[2]), 0.5 * (new[1] + new[3])),
-    );
+    common::click_control(&mut h, ControlKind::FileButton, "New…");
     common::settle(&mut h);
-    let item = h
-        .state()
-        .state
-        .controls
-        .of_kind(ControlKind::TemplateItem)
-        .find(|e| e.label == "Gear cutting" && e.visible)
-        .expect("the lab's item")
-        .rect;
-    common::click(
-        &mut h,
-        egui::pos2(0.5 * (item[0] + item[2]), 0.5 * (item[1] + item[3])),
-    );
+    common::click_control(&mut h, ControlKind::TemplateItem, "Gear cutting");
     common::settle(&mut h);
     assert!(h.state().state.gear_lab.is_some(), "the lab is open");
     h

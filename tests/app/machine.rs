@@ -16,20 +16,33 @@ fn the_flywheel_tab_shows_the_die_cutters_flywheel() {
     let mut h = common::app_harness();
     h.run();
     open_scene(&mut h, "die_cutter");
-    h.get_by_role_and_label(Role::Button, "Flywheel").click();
-    // The tab's figures are computed at the end of a frame without an edit.
+    let mut k = open_tab(&mut h, "Flywheel");
+    let sized = size_flywheel(&mut k, 0.05).expect("sized");
+    let shown = format!("J_F = {} kg·m²", significant(sized.flywheel_kg_m2, 4));
+    assert_shown(&h, &shown);
+    h.snapshot("die_cutter_flywheel_tab");
+}
+
+/// Opens the plot tab `tab` and lets its figures be computed (at the end of a frame
+/// without an edit); the scene's kinematics, to compute them again here.
+fn open_tab(
+    h: &mut egui_kittest::Harness<'static, linkage_lab::LinkageApp>,
+    tab: &str,
+) -> Kinematics {
+    h.get_by_role_and_label(Role::Button, tab).click();
     for _ in 0..4 {
         h.run();
     }
     let scene = h.state().state.session.scene().clone();
-    let mut k = Kinematics::new(Mechanism::from_scene(&scene).expect("valid")).expect("k");
-    let sized = size_flywheel(&mut k, 0.05).expect("sized");
-    let shown = format!("J_F = {} kg·m²", significant(sized.flywheel_kg_m2, 4));
+    Kinematics::new(Mechanism::from_scene(&scene).expect("valid")).expect("k")
+}
+
+/// The tab shows the text `shown`.
+fn assert_shown(h: &egui_kittest::Harness<'static, linkage_lab::LinkageApp>, shown: &str) {
     assert!(
-        h.query_by_label_contains(&shown).is_some(),
+        h.query_by_label_contains(shown).is_some(),
         "the tab shows {shown}"
     );
-    h.snapshot("die_cutter_flywheel_tab");
 }
 
 /// The app opened on a scene file of `docs/examples`.
@@ -54,40 +67,24 @@ fn harness_on_example(file: &str) -> egui_kittest::Harness<'static, linkage_lab:
 #[test]
 fn the_steady_speed_tab_shows_the_die_cutter_with_its_motor() {
     let mut h = harness_on_example("die_cutter_linear_motor.ron");
-    h.get_by_role_and_label(Role::Button, "Speed").click();
-    for _ in 0..4 {
-        h.run();
-    }
-    let scene = h.state().state.session.scene().clone();
-    let k = Kinematics::new(Mechanism::from_scene(&scene).expect("valid")).expect("k");
+    let k = open_tab(&mut h, "Speed");
     let st = linkage::machine::steady_state(&k).expect("steady");
     let shown = format!("δ = {:.4}", st.delta);
-    assert!(
-        h.query_by_label_contains(&shown).is_some(),
-        "the tab shows {shown}"
-    );
+    assert_shown(&h, &shown);
     h.snapshot("die_cutter_steady_speed_tab");
 }
 
 #[test]
 fn the_shaking_tab_shows_the_engine_before_and_after_its_counterweight() {
     let mut h = harness_on_example("slider_crank_engine.ron");
-    h.get_by_role_and_label(Role::Button, "Shaking").click();
-    for _ in 0..4 {
-        h.run();
-    }
-    let scene = h.state().state.session.scene().clone();
-    let mut k = Kinematics::new(Mechanism::from_scene(&scene).expect("valid")).expect("k");
+    let mut k = open_tab(&mut h, "Shaking");
     let sc = linkage_lab::session::curves::ShakingCurves::compute(&mut k).expect("shaking");
     let shown = format!(
         "peak {} without, {} with",
         si(sc.before.peak_force_n, "N"),
         si(sc.after.peak_force_n, "N")
     );
-    assert!(
-        h.query_by_label_contains(&shown).is_some(),
-        "the tab shows {shown}"
-    );
+    assert_shown(&h, &shown);
     h.snapshot("engine_shaking_tab");
 }
 
@@ -97,12 +94,7 @@ fn the_shaking_tab_shows_the_engine_before_and_after_its_counterweight() {
 #[test]
 fn the_flywheel_tab_counts_the_drive_trains_inertia() {
     let mut h = harness_on_example("die_cutter_with_train.ron");
-    h.get_by_role_and_label(Role::Button, "Flywheel").click();
-    for _ in 0..4 {
-        h.run();
-    }
-    let scene = h.state().state.session.scene().clone();
-    let mut k = Kinematics::new(Mechanism::from_scene(&scene).expect("valid")).expect("k");
+    let mut k = open_tab(&mut h, "Flywheel");
     let sized = size_flywheel(&mut k, 0.05).expect("sized");
     let on_motor = sized.flywheel_to_add_on_motor_kg_m2.expect("a drive");
     let shown = format!(
@@ -110,9 +102,6 @@ fn the_flywheel_tab_counts_the_drive_trains_inertia() {
         significant(sized.flywheel_to_add_kg_m2, 4),
         significant(on_motor, 4)
     );
-    assert!(
-        h.query_by_label_contains(&shown).is_some(),
-        "the tab shows {shown}"
-    );
+    assert_shown(&h, &shown);
     h.snapshot("die_cutter_with_train_flywheel_tab");
 }

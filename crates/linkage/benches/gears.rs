@@ -47,16 +47,17 @@ fn trains(c: &mut Criterion) {
 }
 
 /// The lab's frame while it rolls: as many cutter outlines as
-/// `src/render/gear_shapes.rs` asks for at the roll's end (72 positions filled, 72
-/// traced, the last drawn again); and a change of the gear, which also searches the
-/// undercut (the cut tooth's thickness at the 33 radii of one flank).
+/// `src/render/gear_shapes.rs` asks for at the roll's end (one a position, 72,
+/// filled, traced and the last drawn again from the same); and a change of the gear,
+/// which also searches the undercut (the cut tooth's thickness at the 33 radii of
+/// one flank).
 fn generation_frame(c: &mut Criterion) {
     let g = Gear::new(GearSpec::standard(0.01, 12)).unwrap_or_else(|e| panic!("{e}"));
     let positions = 72;
     let outlines = |g: &Gear| {
         let mut points = 0usize;
-        for k in 0..(2 * positions + 1) {
-            let phi = -1.0 + 2.0 * (k % positions) as f64 / (positions - 1) as f64;
+        for k in 0..positions {
+            let phi = -1.0 + 2.0 * k as f64 / (positions - 1) as f64;
             let parts = cutter_outline(black_box(g), phi, 2, 8).unwrap_or_default();
             points += parts.iter().map(Vec::len).sum::<usize>();
         }
