@@ -7,6 +7,7 @@
 use linkage::gears::{CentreDistance, Gear, GearError, GearPair, GearSpec, PairSpec};
 
 use crate::render::view::Camera;
+use crate::train_view::TrainView;
 
 /// The cutter's positions over the whole roll: enough that the traces show the
 /// envelope, few enough that every frame draws them all.
@@ -24,6 +25,8 @@ pub enum LabMode {
     Cutting,
     /// That gear (the pinion) meshing with a wheel.
     Pair,
+    /// A gear train's schematic, every member turning at its speed.
+    Train,
 }
 
 /// Seconds a pinion turn takes while the pair plays.
@@ -54,6 +57,8 @@ pub struct GearLab {
     pub playing: bool,
     /// The lab's own view (the mechanism's stays as it was).
     pub camera: Camera,
+    /// The train view.
+    pub train: TrainView,
 }
 
 impl Default for GearLab {
@@ -71,6 +76,7 @@ impl Default for GearLab {
             roll: 0.5,
             playing: false,
             camera: Camera::default(),
+            train: TrainView::default(),
         }
     }
 }
@@ -118,10 +124,14 @@ impl GearLab {
         })
     }
 
-    /// Moves the roll (or the pair's turn) on by `dt` seconds of play; the roll stops
-    /// at its end, the pair turns on.
+    /// Moves the roll (or the pair's or the train's turn) on by `dt` seconds of
+    /// play; the roll stops at its end, the pair and the train turn on.
     pub fn advance(&mut self, dt: f64) {
         if !self.playing {
+            return;
+        }
+        if self.mode == LabMode::Train {
+            self.train.advance(dt);
             return;
         }
         if self.mode == LabMode::Pair {

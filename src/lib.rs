@@ -18,6 +18,7 @@ pub mod start;
 pub mod state;
 #[cfg(test)]
 mod test_sources;
+pub mod train_view;
 pub mod ui;
 #[cfg(target_arch = "wasm32")]
 mod web;

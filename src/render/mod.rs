@@ -12,6 +12,7 @@ mod drawn;
 pub mod gear_pair_shapes;
 pub mod gear_shapes;
 pub mod shape;
+pub mod train_shapes;
 pub mod view;
 
 #[cfg(all(target_arch = "wasm32", feature = "webgl", not(feature = "webgpu")))]

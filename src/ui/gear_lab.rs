@@ -30,10 +30,12 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     ui.horizontal(|ui| {
         ui.selectable_value(&mut lab.mode, LabMode::Cutting, tr!("gear.mode_cutting"));
         ui.selectable_value(&mut lab.mode, LabMode::Pair, tr!("gear.mode_pair"));
+        ui.selectable_value(&mut lab.mode, LabMode::Train, tr!("gear.mode_train"));
     });
-    if lab.mode == LabMode::Pair {
-        pair_panel(ui, lab);
-        return;
+    match lab.mode {
+        LabMode::Pair => return pair_panel(ui, lab),
+        LabMode::Train => return crate::ui::gear_train::panel(ui, lab),
+        LabMode::Cutting => {}
     }
     ui.label(tr!("gear.how"));
     gear_sliders(ui, lab, [tr!("gear.teeth"), tr!("gear.shift")]);
@@ -154,6 +156,7 @@ pub fn canvas(
     };
     match lab.mode {
         LabMode::Pair => crate::ui::gear_pair::draw(ui, &canvas, lab),
+        LabMode::Train => crate::ui::gear_train::draw(&canvas, lab),
         LabMode::Cutting => cutting(ui, &canvas, lab),
     }
 }

@@ -150,8 +150,9 @@ pub fn draw(ui: &egui::Ui, canvas: &Canvas<'_>, lab: &mut GearLab) {
     }
 }
 
-/// A name with a light halo under it, readable over teeth and lines.
-fn halo_text(
+/// A name with a light halo under it, readable over teeth and lines (the pair's
+/// points, the train's members).
+pub fn halo_text(
     painter: &egui::Painter,
     at: egui::Pos2,
     align: Align2,

@@ -19,6 +19,7 @@ pub mod force_polygons;
 pub mod gear_canvas;
 pub mod gear_lab;
 pub mod gear_pair;
+pub mod gear_train;
 pub mod label_place;
 pub mod layout;
 pub mod machine_plots;

@@ -318,6 +318,8 @@ fn history_buttons(ui: &mut egui::Ui, st: &mut AppState) {
 const EMPTY_DRAWING: &str = "Empty: draw your own";
 /// The New… menu's item that opens the gear-cutting lab.
 const GEAR_CUTTING: &str = "Gear cutting";
+/// The New… menu's item that opens the gear lab on its train view.
+const GEAR_TRAINS: &str = "Gear trains";
 /// The New… menu's item that turns the open scene into a drawing to edit.
 const AS_DRAWING: &str = "This scene as a drawing";
 
@@ -332,6 +334,12 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
         as_drawing = menu_item(ui, st, AS_DRAWING, &tr!("top.new_as_drawing"));
         if menu_item(ui, st, GEAR_CUTTING, &tr!("top.new_gear_cutting")) {
             st.gear_lab = Some(crate::gear_lab::GearLab::default());
+        }
+        if menu_item(ui, st, GEAR_TRAINS, &tr!("top.new_gear_trains")) {
+            st.gear_lab = Some(crate::gear_lab::GearLab {
+                mode: crate::gear_lab::LabMode::Train,
+                ..crate::gear_lab::GearLab::default()
+            });
         }
         for (t, name) in crate::catalog::TEMPLATES.iter().zip(template_names()) {
             if menu_item(ui, st, name, name) {

@@ -4,6 +4,7 @@
 
 use eframe::egui;
 use egui_kittest::Harness;
+use linkage_lab::ui::control_map::ControlKind;
 use linkage_lab::{LinkageApp, StartOptions};
 
 /// The app at its default scene, 1500×950, before its first frame.
@@ -143,11 +144,7 @@ pub fn shipped_scene_files() -> Vec<std::path::PathBuf> {
 }
 
 /// Clicks the control of `kind` labelled `label`, as drawn last frame.
-pub fn click_control(
-    h: &mut Harness<'static, LinkageApp>,
-    kind: linkage_lab::ui::control_map::ControlKind,
-    label: &str,
-) {
+pub fn click_control(h: &mut Harness<'static, LinkageApp>, kind: ControlKind, label: &str) {
     let entry = h
         .state()
         .state
@@ -158,4 +155,33 @@ pub fn click_control(
         .clone();
     let [x0, y0, x1, y1] = entry.rect;
     click(h, egui::pos2(0.5 * (x0 + x1), 0.5 * (y0 + y1)));
+}
+
+/// The app at `w`×`h` in `language`, told to panic on a missing glyph, with `item`
+/// of the New… menu chosen (the gear lab's views).
+pub fn opened_from_new_menu(
+    w: f32,
+    h: f32,
+    language: linkage_lab::i18n::Language,
+    item: &str,
+) -> Harness<'static, LinkageApp> {
+    let mut h = sized_harness(w, h);
+    h.ctx
+        .set_missing_glyph_policy(egui::MissingGlyphPolicy::Panic);
+    h.state_mut().state.language = language;
+    settle(&mut h);
+    click_control(&mut h, ControlKind::FileButton, "New…");
+    settle(&mut h);
+    click_control(&mut h, ControlKind::TemplateItem, item);
+    settle(&mut h);
+    h
+}
+
+/// The pointer off the panel and a few frames more, so that a snapshot shows the
+/// panel settled and no text under the pointer.
+pub fn still(h: &mut Harness<'static, LinkageApp>) {
+    h.event(egui::Event::PointerGone);
+    for _ in 0..4 {
+        h.run();
+    }
 }

@@ -3,37 +3,18 @@
 //! (not undercut), at a laptop's 1366×768, in English and Chinese; back to the
 //! mechanism as it was.
 
-use eframe::egui;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable as _;
 use linkage_lab::LinkageApp;
 use linkage_lab::i18n::Language;
-use linkage_lab::ui::control_map::ControlKind;
 
 use crate::common;
 
 /// The lab opened from the New… menu at 1366×768 in `language`.
 fn lab(language: Language) -> Harness<'static, LinkageApp> {
-    let mut h = common::sized_harness(1366.0, 768.0);
-    h.ctx
-        .set_missing_glyph_policy(egui::MissingGlyphPolicy::Panic);
-    h.state_mut().state.language = language;
-    common::settle(&mut h);
-    common::click_control(&mut h, ControlKind::FileButton, "New…");
-    common::settle(&mut h);
-    common::click_control(&mut h, ControlKind::TemplateItem, "Gear cutting");
-    common::settle(&mut h);
+    let h = common::opened_from_new_menu(1366.0, 768.0, language, "Gear cutting");
     assert!(h.state().state.gear_lab.is_some(), "the lab is open");
     h
-}
-
-/// The pointer off the panel and a few frames more, so that a snapshot shows the
-/// panel settled and no text under the pointer.
-fn still(h: &mut Harness<'static, LinkageApp>) {
-    h.event(egui::Event::PointerGone);
-    for _ in 0..4 {
-        h.run();
-    }
 }
 
 #[test]
@@ -42,7 +23,7 @@ fn twelve_teeth_are_undercut_and_the_least_shift_cures_them() {
     h.state_mut().state.gear_lab.as_mut().expect("lab").roll = 1.0;
     common::settle(&mut h);
     assert!(h.query_by_label_contains("Undercut (red)").is_some());
-    still(&mut h);
+    common::still(&mut h);
     h.snapshot("gear_lab_12_teeth_undercut");
     h.get_by_label("Shift the cutter out to x_min").click();
     common::settle(&mut h);
@@ -51,7 +32,7 @@ fn twelve_teeth_are_undercut_and_the_least_shift_cures_them() {
     // up to the slider's step.
     assert!((shift - 0.30).abs() < 1e-12, "{shift}");
     assert!(h.query_by_label_contains("No undercut").is_some());
-    still(&mut h);
+    common::still(&mut h);
     h.snapshot("gear_lab_12_teeth_least_shift");
     let before = h.state().state.session.scene().clone();
     h.get_by_label("Back to the mechanism").click();
@@ -66,13 +47,13 @@ fn the_lab_speaks_chinese() {
     h.state_mut().state.gear_lab.as_mut().expect("lab").roll = 1.0;
     common::settle(&mut h);
     assert!(h.query_by_label_contains("发生根切").is_some());
-    still(&mut h);
+    common::still(&mut h);
     h.snapshot("gear_lab_12_teeth_undercut_zh");
     let lab = h.state_mut().state.gear_lab.as_mut().expect("lab");
     lab.shift = 0.3;
     common::settle(&mut h);
     assert!(h.query_by_label_contains("不发生根切").is_some());
-    still(&mut h);
+    common::still(&mut h);
     h.snapshot("gear_lab_12_teeth_least_shift_zh");
 }
 
@@ -122,7 +103,7 @@ fn meshing_pair(language: Language, mode: &str, undercut: &str, name: &str) {
         assert!(h.query_by_label_contains(undercut).is_none());
         let pose = linkage::gears::MeshPose::at(&pair, 15f64.to_radians()).expect("external");
         assert_eq!(pose.contacts.len(), 2, "two pairs in contact at 15°");
-        still(&mut h);
+        common::still(&mut h);
         h.snapshot(name);
     }
 }

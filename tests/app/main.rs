@@ -10,6 +10,7 @@ mod drawing;
 mod every_control;
 mod file_actions;
 mod gear_lab;
+mod gear_train;
 mod gl_shaders;
 mod keystrokes;
 mod labels;

@@ -17,6 +17,7 @@
 //!   arrows in newtons, with its table of forces and couples.
 //! - [`cycle_table`]: the table of the cycle as CSV a student pastes (degrees,
 //!   the scene's length unit, columns named with units): the app's and the CLI's.
+//! - [`train_schematic`]: a gear train as the textbooks draw it, from its file.
 //! - [`svg`]: an A4 sheet of the chosen figures and the vector-equation tables;
 //!   `png` (feature `png`) renders it.
 
@@ -54,6 +55,7 @@ mod svg_forces;
 mod svg_plan;
 pub mod svg_report;
 pub mod svg_timing;
+pub mod train_schematic;
 pub mod words;
 
 pub use force_figure::ForceFigure;

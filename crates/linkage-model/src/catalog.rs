@@ -43,6 +43,16 @@ pub const TEMPLATES: &[BuiltinScene] = &[
     embedded!("templates", "stephenson_six_bar"),
 ];
 
+/// The gear trains in `assets/trains`, for the gear lab's train view: the source
+/// machines' drives first, then the planetary set and the differential. A test
+/// checks that this list and the directory agree.
+pub const TRAINS: &[BuiltinScene] = &[
+    embedded!("trains", "die_cutter_drive"),
+    embedded!("trains", "paper_cup_feed_drive"),
+    embedded!("trains", "planetary_ring_fixed"),
+    embedded!("trains", "differential"),
+];
+
 impl BuiltinScene {
     /// Its display name (the file's `name` field), or its key if the text does not
     /// parse (a test checks that every built-in one does).
@@ -104,6 +114,20 @@ mod tests {
         on_disk.sort();
         listed.sort();
         assert_eq!(listed, on_disk);
+    }
+
+    #[test]
+    fn the_catalog_lists_exactly_the_train_files_and_each_solves() {
+        let mut listed: Vec<String> = TRAINS.iter().map(|s| s.key.to_string()).collect();
+        listed.sort();
+        assert_eq!(listed, keys_on_disk("assets/trains"));
+        for t in TRAINS {
+            let file = linkage::gears::train_file::TrainFile::from_ron(t.text)
+                .unwrap_or_else(|e| panic!("{}: {e}", t.key));
+            let train =
+                linkage::gears::Train::new(file).unwrap_or_else(|e| panic!("{}: {e}", t.key));
+            assert!(train.solve().is_ok(), "{}", t.key);
+        }
     }
 
     #[test]

@@ -10,3 +10,4 @@ mod force_figures;
 mod gear_mesh;
 mod sheet_numbers;
 mod sheet_overlaps;
+mod train_schematic;

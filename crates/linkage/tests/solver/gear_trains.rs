@@ -365,3 +365,24 @@ fn a_fixed_axis_trains_torques_are_the_load_over_the_ratio() {
         Err(TrainError::Unknown { .. })
     ));
 }
+
+/// The paper-cup feed's drive (assets/trains/paper_cup_feed_drive.ron) turns the
+/// crank at the paper's 45 rpm (one turn per cup), counter-clockwise as the scene's
+/// crank, from a 1440 rpm motor: a total ratio of −32 (belt 3.2 · gears 72/18 ·
+/// chain 2.5, the gear pair reversing).
+#[test]
+fn the_paper_cup_drive_turns_the_crank_at_the_papers_speed() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../assets/trains/paper_cup_feed_drive.ron"
+    ))
+    .expect("read");
+    let s = train(&text).solve().expect("solved");
+    let crank = s.speed_rpm("crank").expect("crank");
+    assert!((crank - 45.0).abs() <= 1e-12 * 45.0, "{s:?}");
+    let ratio = s.ratio("motor", "crank").expect("ratio");
+    assert!(
+        (ratio + 3.2 * 72.0 / 18.0 * 2.5).abs() <= 1e-12 * 32.0,
+        "{ratio}"
+    );
+}

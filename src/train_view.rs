@@ -1,0 +1,130 @@
+//! The gear lab's train view: one of the shipped trains (`assets/trains`), its
+//! inputs' speeds as the user sets them, every member's angle as it turns (the
+//! lab's Play turns it). The side panel (`ui::gear_train`) edits it; the GPU pass
+//! (`render::train_shapes`) draws its schematic with each gear turning at its speed.
+
+use linkage::gears::train_file::TrainFile;
+use linkage::gears::{Train, TrainError, TrainSolution};
+
+use crate::catalog::TRAINS;
+use crate::render::view::Camera;
+
+/// The fastest member's speed as shown, rpm: a motor at 1450 rpm cannot be watched,
+/// so the whole train is shown that many times slower (and says so).
+pub const SHOWN_FASTEST_RPM: f64 = 20.0;
+
+/// The train view's state.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TrainView {
+    /// Which shipped train (index in `TRAINS`).
+    pub choice: usize,
+    /// Its file, with the inputs' speeds as set.
+    pub file: TrainFile,
+    /// Every member's turn so far, rad (counter-clockwise seen from the front).
+    pub angles: Vec<f64>,
+    /// The view's own camera.
+    pub camera: Camera,
+}
+
+impl Default for TrainView {
+    /// The planetary set: the textbook's first epicyclic train.
+    fn default() -> Self {
+        let choice = TRAINS
+            .iter()
+            .position(|t| t.key == "planetary_ring_fixed")
+            .unwrap_or(0);
+        Self::of(choice)
+    }
+}
+
+impl TrainView {
+    /// The shipped train `choice` as its file gives it, standing still.
+    pub fn of(choice: usize) -> Self {
+        let file = TRAINS
+            .get(choice)
+            .and_then(|t| TrainFile::from_ron(t.text).ok())
+            .unwrap_or_else(|| TrainFile {
+                name: String::new(),
+                notes: String::new(),
+                module_mm: None,
+                members: Vec::new(),
+                gears: Vec::new(),
+                meshes: Vec::new(),
+                stages: Vec::new(),
+                inputs: Vec::new(),
+            });
+        Self {
+            choice,
+            angles: vec![0.0; file.members.len()],
+            file,
+            camera: Camera::default(),
+        }
+    }
+
+    /// Every member's speed from the inputs as set.
+    ///
+    /// # Errors
+    /// The train's refusal (a shipped file solves; inputs set to tie it up cannot
+    /// be, since the view only changes their speeds).
+    pub fn solve(&self) -> Result<TrainSolution, TrainError> {
+        Train::new(self.file.clone())?.solve()
+    }
+
+    /// How many times slower than life the train is shown: the fastest member at
+    /// [`SHOWN_FASTEST_RPM`], never faster than life.
+    pub fn slowed(solution: &TrainSolution) -> f64 {
+        let fastest = solution
+            .speeds_rpm
+            .iter()
+            .map(|s| s.rpm.abs())
+            .fold(0.0, f64::max);
+        (fastest / SHOWN_FASTEST_RPM).max(1.0)
+    }
+
+    /// Turns every member on by `dt` seconds of play, slowed as [`Self::slowed`] says.
+    pub fn advance(&mut self, dt: f64) {
+        let Ok(solution) = self.solve() else {
+            return;
+        };
+        let slowed = Self::slowed(&solution);
+        for (angle, speed) in self.angles.iter_mut().zip(&solution.speeds_rpm) {
+            let omega = speed.rpm * std::f64::consts::TAU / 60.0;
+            *angle = (*angle + omega * dt / slowed) % std::f64::consts::TAU;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The planetary set with the ring held: the carrier turns at the sun's
+    /// 1/(1 + 80/20) and the same way; shown slowed, the angles keep that ratio.
+    #[test]
+    fn members_turn_at_their_speeds_slowed_alike() {
+        let mut view = TrainView::default();
+        let solution = view.solve().expect("solves");
+        let slowed = TrainView::slowed(&solution);
+        assert!((slowed - 1450.0 / SHOWN_FASTEST_RPM).abs() < 1e-9 * slowed);
+        view.advance(0.1);
+        let index = |name: &str| {
+            view.file
+                .members
+                .iter()
+                .position(|m| m.name == name)
+                .expect("member")
+        };
+        let (sun, carrier) = (view.angles[index("sun")], view.angles[index("carrier")]);
+        assert!((carrier / sun - 0.2).abs() < 1e-12, "{carrier} {sun}");
+        assert_eq!(view.angles[index("ring")], 0.0);
+    }
+
+    #[test]
+    fn every_shipped_train_opens_and_solves() {
+        for (choice, train) in TRAINS.iter().enumerate() {
+            let view = TrainView::of(choice);
+            assert!(!view.file.members.is_empty(), "{}", train.key);
+            assert!(view.solve().is_ok(), "{}", train.key);
+        }
+    }
+}
