@@ -183,9 +183,11 @@ fn gear_index(file: &TrainFile, name: &str) -> Option<usize> {
 
 /// Every member's axis height: the first input's (or the first member's) at 0,
 /// then outwards through meshes (an external pair's axes r₁ + r₂ apart, the second
-/// above; an internal pair's the ring's radius less the pinion's, the pinion near
-/// the ring's upper side) and stages (pulleys 3 units apart, the driven one above);
-/// a carrier on the axis of the central gears its planets mesh with.
+/// above; an internal pair's the ring's radius less the pinion's, the ring's centre
+/// on the side of the pinion's other mates, so that a planet's ring is coaxial with
+/// its sun whichever way round the meshes are written) and stages (pulleys 3 units
+/// apart, the driven one above); a carrier on the axis of the central gears its
+/// planets mesh with.
 fn heights(file: &TrainFile, radii: &Radii, unit: f64) -> Vec<Option<f64>> {
     let n = file.members.len();
     let mut y: Vec<Option<f64>> = vec![None; n];
@@ -197,15 +199,11 @@ fn heights(file: &TrainFile, radii: &Radii, unit: f64) -> Vec<Option<f64>> {
     if n > 0 {
         y[start] = Some(0.0);
     }
-    let edges = edges(file, radii, unit);
+    let links = links(file, radii, unit);
     // Each pass places every member next to one placed; n passes reach them all.
     for _ in 0..n {
-        for &(a, b, offset) in &edges {
-            match (y[a], y[b]) {
-                (Some(ya), None) => y[b] = Some(ya + offset),
-                (None, Some(yb)) => y[a] = Some(yb - offset),
-                _ => {}
-            }
+        for link in &links {
+            place(link, &links, &mut y);
         }
     }
     for (c, m) in file.members.iter().enumerate() {
@@ -216,9 +214,51 @@ fn heights(file: &TrainFile, radii: &Radii, unit: f64) -> Vec<Option<f64>> {
     y
 }
 
-/// The members' pairs and how far above the first the second's axis lies.
-fn edges(file: &TrainFile, radii: &Radii, unit: f64) -> Vec<(usize, usize, f64)> {
-    let mut edges = Vec::new();
+/// Two members whose axes a mesh or a stage sets apart.
+enum Link {
+    /// `b`'s axis `offset` above `a`'s (an external mesh, a stage).
+    Above { a: usize, b: usize, offset: f64 },
+    /// A pinion inside a ring, their axes `apart`.
+    Inside {
+        ring: usize,
+        pinion: usize,
+        apart: f64,
+    },
+}
+
+/// Places the member of `link` not yet placed, if the other is.
+fn place(link: &Link, links: &[Link], y: &mut [Option<f64>]) {
+    match *link {
+        Link::Above { a, b, offset } => match (y[a], y[b]) {
+            (Some(ya), None) => y[b] = Some(ya + offset),
+            (None, Some(yb)) => y[a] = Some(yb - offset),
+            _ => {}
+        },
+        Link::Inside {
+            ring,
+            pinion,
+            apart,
+        } => match (y[ring], y[pinion]) {
+            (Some(yr), None) => y[pinion] = Some(yr + apart),
+            (None, Some(yp)) => {
+                // The ring's centre lies towards the pinion's placed external mates
+                // (the sun), below a planet drawn above it.
+                let mate = links.iter().find_map(|l| match *l {
+                    Link::Above { a, b, .. } if a == pinion => y[b],
+                    Link::Above { a, b, .. } if b == pinion => y[a],
+                    _ => None,
+                });
+                let side = mate.map_or(1.0, |ym| if yp >= ym { 1.0 } else { -1.0 });
+                y[ring] = Some(yp - side * apart);
+            }
+            _ => {}
+        },
+    }
+}
+
+/// The links of every mesh and stage.
+fn links(file: &TrainFile, radii: &Radii, unit: f64) -> Vec<Link> {
+    let mut links = Vec::new();
     for (a, b) in &file.meshes {
         let (Some(ga), Some(gb)) = (gear_index(file, a), gear_index(file, b)) else {
             continue;
@@ -231,21 +271,36 @@ fn edges(file: &TrainFile, radii: &Radii, unit: f64) -> Vec<(usize, usize, f64)>
             continue;
         };
         let (ra, rb) = (radii.gears[ga], radii.gears[gb]);
-        let offset = match (fa.internal, fb.internal) {
-            (true, false) => ra - rb,
-            (false, true) => -(rb - ra),
-            _ => ra + rb,
-        };
-        edges.push((ma, mb, offset));
+        links.push(match (fa.internal, fb.internal) {
+            (true, false) => Link::Inside {
+                ring: ma,
+                pinion: mb,
+                apart: ra - rb,
+            },
+            (false, true) => Link::Inside {
+                ring: mb,
+                pinion: ma,
+                apart: rb - ra,
+            },
+            _ => Link::Above {
+                a: ma,
+                b: mb,
+                offset: ra + rb,
+            },
+        });
     }
     for (s, stage) in file.stages.iter().enumerate() {
         let Some((a, b)) = stage_members(file, stage) else {
             continue;
         };
         let [ra, rb] = radii.stages[s];
-        edges.push((a, b, ra + rb + 3.0 * unit));
+        links.push(Link::Above {
+            a,
+            b,
+            offset: ra + rb + 3.0 * unit,
+        });
     }
-    edges
+    links
 }
 
 /// A carrier's axis: that of a frame-held member whose gear meshes with one of its

@@ -2,7 +2,8 @@
 //! in mesh touch at their pitch lines (external pairs' axes r₁ + r₂ apart, an
 //! internal pair's r_ring − r_pinion), a planetary set's central gears and carrier
 //! share one axis, blocks of different members in one column do not overlap, every
-//! shaft reaches its gears, names stand apart, and nothing is non-finite.
+//! shaft reaches its gears, names stand apart, and nothing is non-finite; each file
+//! also with its meshes written the other way round.
 
 use linkage::gears::train_file::TrainFile;
 use linkage_diagram::train_schematic::{Block, Schematic, schematic};
@@ -16,12 +17,22 @@ fn shipped() -> Vec<(String, TrainFile)> {
         .collect();
     files.sort();
     assert!(files.len() >= 4, "{files:?}");
+    // Each as written and with every mesh named the other way round (a ring
+    // first): the layout must not depend on the order a user writes.
     files
         .into_iter()
-        .map(|p| {
+        .flat_map(|p| {
             let text = std::fs::read_to_string(&p).expect("read");
             let file = TrainFile::from_ron(&text).expect("a train file");
-            (p.display().to_string(), file)
+            let mut swapped = file.clone();
+            for mesh in &mut swapped.meshes {
+                *mesh = (mesh.1.clone(), mesh.0.clone());
+            }
+            let name = p.display().to_string();
+            [
+                (name.clone(), file),
+                (format!("{name}, meshes reversed"), swapped),
+            ]
         })
         .collect()
 }
