@@ -663,6 +663,13 @@ pub(crate) struct ProfileArgs {
     /// Write the outline as DXF (millimetres) here.
     #[arg(long)]
     pub(crate) dxf: Option<PathBuf>,
+    /// An internal gear (a ring), cut by a pinion cutter (a gear shaper) instead of
+    /// a rack.
+    #[arg(long)]
+    pub(crate) internal: bool,
+    /// The pinion cutter's number of teeth, for an internal gear.
+    #[arg(long, default_value_t = 25)]
+    pub(crate) cutter_teeth: u32,
 }
 
 /// A pair's numbers as typed: millimetres and degrees.

@@ -22,18 +22,33 @@ pub(crate) fn run(what: GearsCommand) -> Result<String> {
 }
 
 /// `gears profile`: the cut gear's outline to SVG and DXF files; a line saying what
-/// was written (and the undercut, where there is one).
+/// was written (and the undercut, where there is one; for a ring, how it was cut).
 fn profile(a: &ProfileArgs) -> Result<String> {
     let spec = GearSpec {
         pressure_angle_rad: a.pressure_angle_deg.to_radians(),
         ..GearSpec::standard(a.module * 1e-3, a.teeth).shifted(a.shift)
     };
+    let spec = if a.internal { spec.internal() } else { spec };
     let g = Gear::new(spec).map_err(|e| CliError::refused(words(&e)))?;
     if a.svg.is_none() && a.dxf.is_none() {
         return Err(CliError::refused("give --svg FILE or --dxf FILE"));
     }
+    let mut said = String::new();
+    let outline = if a.internal {
+        let cut = ring_cut(&g, a.cutter_teeth)?;
+        let _ = writeln!(
+            said,
+            "cut by a pinion cutter of {} teeth at a centre distance of {} mm, to a root \
+             diameter of {} mm",
+            a.cutter_teeth,
+            significant(cut.centre_m * 1e3, 6),
+            significant(2.0 * cut.cut_root_radius_m * 1e3, 6)
+        );
+        linkage_diagram::gear_profile::ring_outline(&g, a.cutter_teeth, 60)
+    } else {
+        linkage_diagram::gear_profile::gear_outline(&g, 60)
+    };
     // Empty where the rack cuts nothing: its teeth pointed above their tip line.
-    let outline = linkage_diagram::gear_profile::gear_outline(&g, 60);
     if outline.is_empty() {
         return Err(CliError::refused(format!(
             "at a pressure angle of {}° the basic rack's teeth (h_a* = 1, c* = 0.25) come to a \
@@ -42,7 +57,6 @@ fn profile(a: &ProfileArgs) -> Result<String> {
             significant(a.pressure_angle_deg, 4)
         )));
     }
-    let mut said = String::new();
     if let Some(path) = &a.svg {
         let svg = linkage_diagram::gear_profile::gear_svg(&g, &outline);
         std::fs::write(path, svg).map_err(|source| CliError::Write {
@@ -64,6 +78,20 @@ fn profile(a: &ProfileArgs) -> Result<String> {
         );
     }
     Ok(said)
+}
+
+/// How a pinion cutter of `cutter_teeth` cuts the ring `g`, or why it cannot.
+fn ring_cut(g: &Gear, cutter_teeth: u32) -> Result<linkage::gears::shaper::ShaperCut> {
+    linkage::gears::shaper::ShaperCut::new(g, cutter_teeth).ok_or_else(|| {
+        CliError::refused(format!(
+            "a pinion cutter of {cutter_teeth} teeth cannot cut a ring of {} teeth with a \
+             shift of {}: the cutter needs 3 to {} teeth, and the shift a working pressure \
+             angle (inv α' = inv α − 2 tan α x / (z − z_cutter) above 0)",
+            g.spec.teeth,
+            significant(g.spec.shift, 4),
+            g.spec.teeth - 1
+        ))
+    })
 }
 
 #[cfg(not(target_arch = "wasm32"))]

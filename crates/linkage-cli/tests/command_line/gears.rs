@@ -211,6 +211,42 @@ fn a_cut_profile_is_written_and_its_undercut_said() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// `linkage gears profile --internal`: a ring of 60 teeth cut by a pinion cutter of
+/// 25, at the cutting centre distance (60 − 25)·2/2 = 35 mm, to the root diameter
+/// 2·(35 + 25 + 2.5) = 125 mm; written as the ring's body; a cutter with as many
+/// teeth as the ring is refused with the range.
+#[test]
+fn a_ring_is_cut_by_a_pinion_cutter() {
+    let dir = std::env::temp_dir().join(format!("linkage_ring_profile_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let svg = dir.join("ring.svg");
+    let svg_s = svg.display().to_string();
+    let ring = [
+        "gears",
+        "profile",
+        "--module",
+        "2",
+        "--teeth",
+        "60",
+        "--internal",
+    ];
+    let (code, out, err) = run_linkage(&[&ring[..], &["--svg", &svg_s]].concat());
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        out.contains(
+            "pinion cutter of 25 teeth at a centre distance of 35 mm, to a root diameter of 125 mm"
+        ),
+        "{out}"
+    );
+    let text = std::fs::read_to_string(&svg).expect("the SVG");
+    assert!(text.contains("fill-rule=\"evenodd\"") && text.contains("internal, z = 60"));
+    let (code, _, err) =
+        run_linkage(&[&ring[..], &["--cutter-teeth", "60", "--svg", &svg_s]].concat());
+    assert_ne!(code, Some(0));
+    assert!(err.contains("needs 3 to 59 teeth"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// A scene whose drive is a train: `linkage flywheel` counts the train's inertias
 /// beside the flywheel, and a train that cannot drive the crank is refused naming
 /// the key and the train's members.

@@ -4,7 +4,9 @@
 //! checks), the involute function ([`involute`]) under both, and gear trains
 //! ([`Train`]: a train file's members, gears, meshes and belt or chain stages; every
 //! member's speed from the inputs, Willis' converted ratios, a planetary set's
-//! assembly conditions). Nothing here depends on the linkage solver.
+//! assembly conditions); the tooth as cut, by a rack ([`generation`]) or, for an
+//! internal gear, a pinion cutter ([`shaper`]). Nothing here depends on the linkage
+//! solver.
 
 mod error;
 mod gear;
@@ -12,6 +14,7 @@ pub mod generation;
 pub mod involute;
 mod mesh_pose;
 mod pair;
+pub mod shaper;
 mod train;
 mod train_assembly;
 pub mod train_file;

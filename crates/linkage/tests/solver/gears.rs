@@ -6,7 +6,7 @@
 //! least shift. Random gears and pairs nobody chose (teeth 6..200, shifts −1..1,
 //! modules 0.1..50 mm) give finite numbers or a clean refusal.
 
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_2, PI};
 
 use linkage::gears::{
     CentreDistance, Gear, GearError, GearKind, GearPair, GearParam, GearSpec, Member, PairIssue,
@@ -493,4 +493,130 @@ fn inside_depth(polygon: &[[f64; 2]], p: [f64; 2]) -> f64 {
         }
     }
     if depth >= 0.0 { depth } else { -outside }
+}
+
+/// An internal gear cut by a pinion cutter (a gear shaper) is the involute ring
+/// from its tip circle to where the cutter's tip corner takes over: its tooth
+/// thickness at every radius there equals the involute's, written out in
+/// `thickness_by_involute` from the ring's space width, for unshifted and shifted
+/// rings and cutters of several sizes; the cut root is the cutting centre distance
+/// plus the cutter's tip radius, with a₀ from inv α₀' = inv α − 2 tan α x₂/(z₂ − z_c)
+/// (ISO 21771's signs: a positive x₂ thickens the ring's teeth) written here (a₀ = r₂ − r_c unshifted); where the ring's tip lies inside the circle
+/// through the cutter's tangent point N_c, its tips are trimmed.
+#[test]
+fn a_ring_cut_by_a_pinion_cutter_is_the_involute() {
+    use linkage::gears::shaper::{ShaperCut, shaper_cut_tooth_thickness_at};
+    let m = 0.002;
+    // The last: a small cutter in a ring shifted inwards, whose tip then lies inside
+    // the circle through N_c: its tips are trimmed.
+    let mut trimmed = 0;
+    for (z2, x2, zc) in [
+        (60, 0.0, 25),
+        (80, 0.0, 20),
+        (60, 0.4, 25),
+        (72, -0.3, 30),
+        (45, 0.2, 16),
+        (60, -0.4, 12),
+    ] {
+        let ring = Gear::new(GearSpec::standard(m, z2).shifted(x2).internal()).expect("a ring");
+        let cut = ShaperCut::new(&ring, zc).expect("a cut");
+        let alpha = DEG20;
+        let inv = |a: f64| a.tan() - a;
+        let target = inv(alpha) - 2.0 * alpha.tan() * x2 / f64::from(z2 - zc);
+        // inv⁻¹ by Newton from α (inv' = tan²).
+        let mut working = alpha;
+        for _ in 0..50 {
+            working -= (inv(working) - target) / working.tan().powi(2);
+        }
+        let a0 = 0.5 * f64::from(z2 - zc) * m * alpha.cos() / working.cos();
+        assert!(
+            (cut.centre_m - a0).abs() < 1e-14,
+            "{z2}/{zc}: {} vs {a0}",
+            cut.centre_m
+        );
+        if x2 == 0.0 {
+            assert!((a0 - 0.5 * m * f64::from(z2 - zc)).abs() < 1e-15);
+        }
+        let r_ac = 0.5 * m * f64::from(zc) + 1.25 * m;
+        assert!((cut.cut_root_radius_m - (a0 + r_ac)).abs() < 1e-15);
+        // The involute part: from the tip circle to the point the cutter's tip
+        // corner generates, on the line of action |N₂K| = √(r_ac² − r_bc²) from the
+        // cutter's tangent point N_c, whose ring radius is √(r_b2² + (N₂N_c + that)²).
+        let (rb2, rbc) = (ring.base_radius_m, cut.cutter_base_radius_m);
+        let nn = (a0 * a0 - (rb2 - rbc).powi(2)).sqrt();
+        let form = rb2.hypot(nn + (r_ac * r_ac - rbc * rbc).sqrt());
+        // Below the circle through the cutter's tangent point N_c the ring's involute
+        // cannot be generated (its contact would lie past N_c): there the cutter's
+        // flank below its base circle trims the ring's tips (a shifted ring's tip moves
+        // inside it), thinner than the involute.
+        let n_c = rb2.hypot(nn);
+        if ring.tip_radius_m < n_c {
+            let rho = 0.5 * (ring.tip_radius_m + n_c);
+            let cut_s = shaper_cut_tooth_thickness_at(&ring, zc, rho).expect("a radius");
+            let short = (thickness_by_involute(&ring, rho) - cut_s) / m;
+            assert!(
+                short > 1e-3,
+                "{z2} x {x2} by {zc}: tips not trimmed ({short:e})"
+            );
+            trimmed += 1;
+        }
+        let (lo, hi) = (ring.tip_radius_m.max(n_c), form);
+        assert!(lo < hi, "{z2}/{zc}: {lo} {hi}");
+        for k in 0..=30 {
+            let rho = lo + (hi - lo) * (0.002 + 0.996 * f64::from(k) / 30.0);
+            let cut_s =
+                shaper_cut_tooth_thickness_at(&ring, zc, rho).expect("a radius on the ring");
+            let involute = thickness_by_involute(&ring, rho);
+            assert!(
+                ((cut_s - involute) / m).abs() < 1e-10,
+                "{z2} x {x2} by {zc} at {rho}: cut {cut_s} vs involute {involute}"
+            );
+        }
+    }
+    assert!(trimmed >= 1, "a trimmed ring was checked");
+}
+
+/// Rings and pinion cutters nobody chose (ring teeth 20..200, cutters 3 to the
+/// ring's, shifts −1..1, modules 0.1..50 mm): no panic, every edge finite and right
+/// of the space's middle, or no cut at all (a cutter as large as the
+/// ring, a shift with no working angle), never a non-finite number.
+#[test]
+fn shaper_cuts_of_random_rings_are_finite() {
+    use linkage::gears::shaper::{ShaperCut, shaper_cut_edge_angle};
+    let mut state = 0x9e37_79b9_7f4a_7c15_u64;
+    let mut next = || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut cut_some = 0;
+    for _ in 0..60 {
+        let z2 = 20 + (next() * 180.0) as u32;
+        let zc = 3 + (next() * f64::from(z2)) as u32;
+        let x2 = -1.0 + 2.0 * next();
+        let m = 1e-4 * 500f64.powf(next());
+        let Ok(ring) = Gear::new(GearSpec::standard(m, z2).shifted(x2).internal()) else {
+            continue;
+        };
+        let Some(cut) = ShaperCut::new(&ring, zc) else {
+            continue;
+        };
+        assert!(cut.centre_m.is_finite() && cut.cut_root_radius_m > ring.tip_radius_m);
+        for k in 0..6 {
+            let rho = ring.tip_radius_m
+                + (cut.cut_root_radius_m - ring.tip_radius_m) * (0.05 + 0.9 * f64::from(k) / 5.0);
+            if let Some(edge) = shaper_cut_edge_angle(&ring, zc, rho) {
+                // Never past the space's middle (the cutter's tooth is there); past
+                // the tooth's middle, 90° − 180°/z₂ − 180°/z₂, where a cutter nearly as
+                // large as the ring cuts its teeth away.
+                assert!(
+                    edge.is_finite() && edge <= FRAC_PI_2 + 1e-12,
+                    "{z2}/{zc} x {x2} m {m} at {rho}: {edge}"
+                );
+                cut_some += 1;
+            }
+        }
+    }
+    assert!(cut_some > 100, "{cut_some} edges found");
 }
