@@ -57,5 +57,29 @@ fn bench(c: &mut Criterion) {
     }
 }
 
-criterion_group!(benches, bench);
+/// The gear lab's train view each frame: the schematic laid out from the file and
+/// the train solved (the die cutter's drive, the planetary set); and a ring's whole
+/// cut outline by a pinion cutter (60 teeth, a cutter of 25), made when it changes.
+fn gears(c: &mut Criterion) {
+    use linkage::gears::train_file::TrainFile;
+    use linkage::gears::{Gear, GearSpec, Train};
+    for file in ["die_cutter_drive.ron", "planetary_ring_fixed.ron"] {
+        let path = format!("{}/../../assets/trains/{file}", env!("CARGO_MANIFEST_DIR"));
+        let train = TrainFile::from_ron(&std::fs::read_to_string(path).expect("train"))
+            .expect("a train file");
+        c.bench_function(&format!("train_view_frame/{file}"), |b| {
+            b.iter(|| {
+                let s = linkage_diagram::train_schematic::schematic(&train);
+                let solved = Train::new(train.clone()).and_then(|t| t.solve());
+                (s.bounds, solved.is_ok())
+            })
+        });
+    }
+    let ring = Gear::new(GearSpec::standard(0.002, 60).internal()).expect("a ring");
+    c.bench_function("ring_outline/60_by_25", |b| {
+        b.iter(|| linkage_diagram::gear_profile::ring_outline(&ring, 25, 30).len())
+    });
+}
+
+criterion_group!(benches, bench, gears);
 criterion_main!(benches);

@@ -7,7 +7,7 @@
 //! cutter's flank generates the edge it is the involute, where its tip corner does
 //! it is the trochoid of the root fillet, and where the corner cuts deeper than the
 //! flank the tooth is undercut, as on a cut gear. External gears (a rack cuts them);
-//! an internal gear is cut by a pinion cutter, not modelled here.
+//! an internal gear is cut by a pinion cutter ([`super::shaper`]).
 
 use std::f64::consts::{FRAC_PI_2, PI};
 

@@ -24,7 +24,7 @@ use super::involute::{inv, inv_inverse};
 /// Points of the grid over the ring's turn that brackets the cut edge's extremum.
 const GRID: usize = 256;
 /// Points along the cutter's flank where the circle's crossing is bracketed.
-const FLANK_SAMPLES: usize = 48;
+const FLANK_SAMPLES: usize = 24;
 
 /// The pinion cutter inside a ring, and where it cuts from.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -98,23 +98,23 @@ impl ShaperCut {
     }
 
     /// The smallest polar angle, in the ring's frame, where the circle of radius
-    /// `rho` crosses the middle cutter tooth's edge (its right flank, its tip arc or
-    /// its left flank) with the ring turned by `phi`; +∞ where it does not cross it.
+    /// `rho` crosses the middle cutter tooth's edge (its right flank or its tip arc)
+    /// with the ring turned by `phi`; +∞ where it does not cross it.
     fn right_exit(&self, rho: f64, phi: f64) -> f64 {
         let (c, dir) = self.pose(phi);
         let at =
             |radius: f64, angle: f64| [c[0] + radius * angle.cos(), c[1] + radius * angle.sin()];
         let mut least = f64::INFINITY;
         let mut keep = |p: [f64; 2]| least = least.min(p[1].atan2(p[0]));
-        for side in [-1.0, 1.0] {
-            let flank = |radius: f64| at(radius, dir + side * self.half_angle(radius));
-            let miss = |radius: f64| {
-                let p = flank(radius);
-                p[0].hypot(p[1]) - rho
-            };
-            for root in crossings(miss, self.cutter_root_radius_m, self.cutter_tip_radius_m) {
-                keep(flank(root));
-            }
+        // The right flank (the left one's crossings lie at larger angles: the cutter's
+        // centre is nearer the ring's than the circle).
+        let flank = |radius: f64| at(radius, dir - self.half_angle(radius));
+        let miss = |radius: f64| {
+            let p = flank(radius);
+            p[0].hypot(p[1]) - rho
+        };
+        for root in crossings(miss, self.cutter_root_radius_m, self.cutter_tip_radius_m) {
+            keep(flank(root));
         }
         // The tip arc: |p| = ρ and |p − c| = r_tip, within the tooth's angle.
         let (ra, d) = (self.cutter_tip_radius_m, self.centre_m);
@@ -170,7 +170,7 @@ fn crossings(f: impl Fn(f64) -> f64, a: f64, b: f64) -> Vec<f64> {
             roots.push(x0);
         } else if f0 * f1 < 0.0 {
             let (mut lo, mut hi, mut flo) = (x0, x1, f0);
-            for _ in 0..80 {
+            for _ in 0..64 {
                 let mid = 0.5 * (lo + hi);
                 let fm = f(mid);
                 if fm * flo > 0.0 {
