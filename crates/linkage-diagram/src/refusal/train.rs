@@ -3,7 +3,7 @@
 //! number with its range. The file's own keys (`motor_member`, `gear_ratio`) stay as
 //! written there, so that the reader finds them.
 
-use linkage::error::{DriveEnd, DriveTrainProblem, TrainError};
+use linkage::error::{DriveEnd, DriveTrainProblem, NameKind, TrainError, TrainField};
 
 use super::list;
 use crate::numbers::significant;
@@ -13,10 +13,12 @@ use crate::words::{Lang, sw};
 pub fn train(lang: Lang, e: &TrainError) -> String {
     match e {
         TrainError::Unknown { what, name, kind } => {
-            let kind = match *kind {
-                "gears" => sw!(lang, "train.kind_gears"),
-                _ => sw!(lang, "train.kind_members"),
+            let kind = match kind {
+                NameKind::Gears => sw!(lang, "train.kind_gears"),
+                NameKind::Members => sw!(lang, "train.kind_members"),
+                NameKind::TurningMembers => sw!(lang, "train.kind_turning"),
             };
+            let what = field(lang, what);
             sw!(lang, "train.unknown", what = what, name = name, kind = kind)
         }
         TrainError::Duplicate { name } => sw!(lang, "train.duplicate", name = name),
@@ -28,7 +30,7 @@ pub fn train(lang: Lang, e: &TrainError) -> String {
         } => sw!(
             lang,
             "train.out_of_range",
-            what = what,
+            what = field(lang, what),
             value = significant(*value, 6),
             min = significant(*min, 6),
             max = significant(*max, 6)
@@ -103,6 +105,65 @@ pub fn drive_train(lang: Lang, p: &DriveTrainProblem) -> String {
     }
 }
 
+/// Where in the train file: the member, gear or stage by its name, the file's key as
+/// written there.
+fn field(lang: Lang, f: &TrainField) -> String {
+    match f {
+        TrainField::AxisOn { member } => {
+            sw!(
+                lang,
+                "train.field_member_key",
+                member = member,
+                key = "axis_on"
+            )
+        }
+        TrainField::Inertia { member } => sw!(
+            lang,
+            "train.field_member_key",
+            member = member,
+            key = "inertia_kg_m2"
+        ),
+        TrainField::GearMember { gear } => {
+            sw!(lang, "train.field_gear_key", gear = gear, key = "member")
+        }
+        TrainField::Teeth { gear } => sw!(lang, "train.field_gear_key", gear = gear, key = "teeth"),
+        TrainField::Mesh { a, b } => sw!(lang, "train.field_mesh", a = a, b = b),
+        TrainField::StageFrom { from, to } => {
+            sw!(
+                lang,
+                "train.field_stage_key",
+                from = from,
+                to = to,
+                key = "from"
+            )
+        }
+        TrainField::StageTo { from, to } => {
+            sw!(
+                lang,
+                "train.field_stage_key",
+                from = from,
+                to = to,
+                key = "to"
+            )
+        }
+        TrainField::StageRatio { from, to } => {
+            sw!(
+                lang,
+                "train.field_stage_key",
+                from = from,
+                to = to,
+                key = "ratio"
+            )
+        }
+        TrainField::Input { member } => sw!(lang, "train.field_input", member = member),
+        TrainField::InputOnFrame => sw!(lang, "train.field_an_input"),
+        TrainField::InputRpm { member } => {
+            sw!(lang, "train.field_input_key", member = member, key = "rpm")
+        }
+        TrainField::Load => sw!(lang, "train.field_load"),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -112,18 +173,89 @@ mod tests {
         let name = |s: &str| s.to_string();
         let trains = vec![
             TrainError::Unknown {
-                what: name("gear z1's member"),
+                what: TrainField::GearMember { gear: name("z1") },
                 name: name("shaft"),
-                kind: "members",
+                kind: NameKind::Members,
             },
             TrainError::Unknown {
-                what: name("mesh"),
+                what: TrainField::Mesh {
+                    a: name("z1"),
+                    b: name("z9"),
+                },
                 name: name("z9"),
-                kind: "gears",
+                kind: NameKind::Gears,
+            },
+            TrainError::Unknown {
+                what: TrainField::InputOnFrame,
+                name: name("frame"),
+                kind: NameKind::TurningMembers,
+            },
+            TrainError::Unknown {
+                what: TrainField::Input {
+                    member: name("frame"),
+                },
+                name: name("frame"),
+                kind: NameKind::TurningMembers,
+            },
+            TrainError::Unknown {
+                what: TrainField::Load,
+                name: name("rotor"),
+                kind: NameKind::Members,
+            },
+            TrainError::OutOfRange {
+                what: TrainField::AxisOn {
+                    member: name("sun"),
+                },
+                value: -1.0,
+                min: 0.0,
+                max: 1e9,
+            },
+            TrainError::OutOfRange {
+                what: TrainField::Inertia {
+                    member: name("sun"),
+                },
+                value: -1.0,
+                min: 0.0,
+                max: 1e9,
+            },
+            TrainError::OutOfRange {
+                what: TrainField::StageRatio {
+                    from: name("motor"),
+                    to: name("shaft"),
+                },
+                value: 0.0,
+                min: 1e-6,
+                max: 1e6,
+            },
+            TrainError::OutOfRange {
+                what: TrainField::StageFrom {
+                    from: name("motor"),
+                    to: name("shaft"),
+                },
+                value: 0.0,
+                min: 1e-6,
+                max: 1e6,
+            },
+            TrainError::OutOfRange {
+                what: TrainField::StageTo {
+                    from: name("motor"),
+                    to: name("shaft"),
+                },
+                value: 0.0,
+                min: 1e-6,
+                max: 1e6,
+            },
+            TrainError::OutOfRange {
+                what: TrainField::InputRpm {
+                    member: name("sun"),
+                },
+                value: 1e8,
+                min: -1e7,
+                max: 1e7,
             },
             TrainError::Duplicate { name: name("z1") },
             TrainError::OutOfRange {
-                what: name("gear z1's teeth"),
+                what: TrainField::Teeth { gear: name("z1") },
                 value: 3.0,
                 min: 4.0,
                 max: 10000.0,
@@ -178,7 +310,8 @@ mod tests {
     }
 
     /// Every refusal has its own words in both languages, with the names and numbers
-    /// in them; the Chinese is not the English fallback.
+    /// in them; the Chinese is not the English fallback and holds no English word but
+    /// the file's names and keys.
     #[test]
     fn every_train_refusal_is_worded_in_both_languages() {
         for p in every_problem() {
@@ -198,6 +331,35 @@ mod tests {
                 english_names.filter(|w| ["rotor", "z1", "z9", "sun", "30", "29"].contains(w))
             {
                 assert!(zh.contains(word), "{word} missing from {zh}");
+            }
+            // No English in the Chinese but the file's names and keys as written.
+            let file_words = [
+                "rotor",
+                "motor",
+                "crank",
+                "shaft",
+                "sun",
+                "ring",
+                "carrier",
+                "carrier2",
+                "frame",
+                "axis_on",
+                "inertia_kg_m2",
+                "member",
+                "teeth",
+                "from",
+                "ratio",
+                "rpm",
+                "motor_member",
+                "crank_member",
+                "gear_ratio",
+                // The unit r/min.
+                "min",
+            ];
+            for word in zh.split(|c: char| !c.is_ascii_alphanumeric() && c != '_') {
+                let english =
+                    word.len() >= 3 && word.chars().all(|c| c.is_ascii_alphabetic() || c == '_');
+                assert!(!english || file_words.contains(&word), "{word:?} in {zh}");
             }
         }
     }

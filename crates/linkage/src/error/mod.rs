@@ -11,6 +11,7 @@ mod param;
 mod run_refusal;
 mod scene_problem;
 mod singularity;
+mod train_field;
 mod train_problem;
 mod valid;
 
@@ -20,7 +21,7 @@ pub use param::Param;
 pub use run_refusal::{ImplicitFailure, RunRefusal, RunWarning, StabilityLimit};
 pub use scene_problem::{LonePoint, MadeJoint, SceneProblem};
 pub use singularity::{Singularity, Undecomposable};
-pub use train_problem::{DriveEnd, DriveTrainProblem, TrainError};
+pub use train_problem::{DriveEnd, DriveTrainProblem, NameKind, TrainError, TrainField};
 pub use valid::Valid;
 
 /// Why a chain does not close at an input, as data ([`LinkageError::CannotAssemble`]).

@@ -3,6 +3,8 @@
 //! scene's drive can carry it in [`super::SceneProblem`]).
 
 use serde::Serialize;
+
+pub use super::train_field::{NameKind, TrainField};
 use thiserror::Error;
 
 /// Why a train is refused.
@@ -11,12 +13,12 @@ pub enum TrainError {
     /// A name used but not defined.
     #[error("{what} names `{name}`, which is not one of the train's {kind}")]
     Unknown {
-        /// Where the name is used ("gear z1's member").
-        what: String,
+        /// Where the name is used (a gear's `member`).
+        what: TrainField,
         /// The name.
         name: String,
-        /// "members" or "gears".
-        kind: &'static str,
+        /// What it must be one of.
+        kind: NameKind,
     },
     /// A name defined twice.
     #[error("`{name}` is defined twice")]
@@ -27,8 +29,8 @@ pub enum TrainError {
     /// A number outside its range.
     #[error("{what} {value} is outside the range {min} … {max}")]
     OutOfRange {
-        /// Which number ("gear z1's teeth").
-        what: String,
+        /// Which number (a gear's `teeth`).
+        what: TrainField,
         /// The value.
         value: f64,
         /// The least allowed.

@@ -4,6 +4,7 @@
 
 use super::train_file::{FRAME, GearFile, TrainFile, is_frame};
 use super::train_results::TrainError;
+use crate::error::{NameKind, TrainField};
 
 /// Every name defined once, every name used defined, every number in range.
 pub(crate) fn check_names(file: &TrainFile) -> Result<(), TrainError> {
@@ -17,43 +18,71 @@ pub(crate) fn check_names(file: &TrainFile) -> Result<(), TrainError> {
         }
         seen.push(name);
     }
-    let member = |what: String, name: &str| known(&seen, what, name);
+    let member = |what: TrainField, name: &str| known(&seen, what, name);
     for m in &file.members {
-        member(format!("member {}'s axis_on", m.name), &m.axis_on)?;
-        let what = format!("member {}'s inertia_kg_m2", m.name);
-        range(&what, m.inertia_kg_m2, 0.0, 1e9)?;
+        let named = m.name.clone();
+        member(
+            TrainField::AxisOn {
+                member: named.clone(),
+            },
+            &m.axis_on,
+        )?;
+        range(
+            TrainField::Inertia { member: named },
+            m.inertia_kg_m2,
+            0.0,
+            1e9,
+        )?;
     }
     check_gears(file, &seen)?;
     for s in &file.stages {
-        member(format!("stage {} → {}'s from", s.from, s.to), &s.from)?;
-        member(format!("stage {} → {}'s to", s.from, s.to), &s.to)?;
-        let what = format!("stage {} → {}'s ratio", s.from, s.to);
-        range(&what, s.ratio, 1e-6, 1e6)?;
+        let (from, to) = (s.from.clone(), s.to.clone());
+        member(
+            TrainField::StageFrom {
+                from: from.clone(),
+                to: to.clone(),
+            },
+            &s.from,
+        )?;
+        member(
+            TrainField::StageTo {
+                from: from.clone(),
+                to: to.clone(),
+            },
+            &s.to,
+        )?;
+        range(TrainField::StageRatio { from, to }, s.ratio, 1e-6, 1e6)?;
     }
     for i in &file.inputs {
         if is_frame(&i.member) {
             // The frame does not turn: a member held still is one with an input of 0.
             return Err(TrainError::Unknown {
-                what: "an input".into(),
+                what: TrainField::InputOnFrame,
                 name: i.member.clone(),
-                kind: "members that turn (a member held still is an input of 0 rpm)",
+                kind: NameKind::TurningMembers,
             });
         }
-        member(format!("input on {}", i.member), &i.member)?;
-        range(&format!("input on {}'s rpm", i.member), i.rpm, -1e7, 1e7)?;
+        let what = TrainField::Input {
+            member: i.member.clone(),
+        };
+        member(what, &i.member)?;
+        let rpm = TrainField::InputRpm {
+            member: i.member.clone(),
+        };
+        range(rpm, i.rpm, -1e7, 1e7)?;
     }
     Ok(())
 }
 
 /// `name`, used by `what`, is one of the members `seen` (the frame among them).
-fn known(seen: &[&str], what: String, name: &str) -> Result<(), TrainError> {
+fn known(seen: &[&str], what: TrainField, name: &str) -> Result<(), TrainError> {
     if seen.contains(&name) {
         Ok(())
     } else {
         Err(TrainError::Unknown {
             what,
             name: name.into(),
-            kind: "members",
+            kind: NameKind::Members,
         })
     }
 }
@@ -69,17 +98,29 @@ fn check_gears(file: &TrainFile, seen: &[&str]) -> Result<(), TrainError> {
             });
         }
         gear_names.push(&g.name);
-        known(seen, format!("gear {}'s member", g.name), &g.member)?;
-        let what = format!("gear {}'s teeth", g.name);
-        range(&what, f64::from(g.teeth), 3.0, 10_000.0)?;
+        let gear = g.name.clone();
+        known(
+            seen,
+            TrainField::GearMember { gear: gear.clone() },
+            &g.member,
+        )?;
+        range(
+            TrainField::Teeth { gear },
+            f64::from(g.teeth),
+            3.0,
+            10_000.0,
+        )?;
     }
     for (a, b) in &file.meshes {
         for name in [a, b] {
             if !gear_names.contains(&name.as_str()) {
                 return Err(TrainError::Unknown {
-                    what: format!("mesh ({a}, {b})"),
+                    what: TrainField::Mesh {
+                        a: a.clone(),
+                        b: b.clone(),
+                    },
                     name: name.clone(),
-                    kind: "gears",
+                    kind: NameKind::Gears,
                 });
             }
         }
@@ -87,12 +128,12 @@ fn check_gears(file: &TrainFile, seen: &[&str]) -> Result<(), TrainError> {
     Ok(())
 }
 
-fn range(what: &str, value: f64, min: f64, max: f64) -> Result<(), TrainError> {
+fn range(what: TrainField, value: f64, min: f64, max: f64) -> Result<(), TrainError> {
     if value.is_finite() && (min..=max).contains(&value) {
         Ok(())
     } else {
         Err(TrainError::OutOfRange {
-            what: what.into(),
+            what,
             value,
             min,
             max,

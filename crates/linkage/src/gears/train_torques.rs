@@ -59,9 +59,9 @@ impl Train {
     ) -> Result<TrainTorques, TrainError> {
         let n = self.file.members.len();
         let load_at = self.index(loaded).ok_or_else(|| TrainError::Unknown {
-            what: "the load".into(),
+            what: crate::error::TrainField::Load,
             name: loaded.into(),
-            kind: "members",
+            kind: crate::error::NameKind::Members,
         })?;
         let held: Vec<usize> = self
             .file
