@@ -129,6 +129,13 @@ fn numbers(ui: &mut egui::Ui, g: &Gear) {
     if g.is_pointed() {
         ui.colored_label(Color32::from_rgb(190, 40, 30), tr!("gear.pointed"));
     }
+    if let Some(s) = g.thin_tip_m() {
+        let least = linkage::gears::LEAST_TIP_THICKNESS_MODULES * g.spec.module_m;
+        ui.colored_label(
+            Color32::from_rgb(190, 40, 30),
+            tr!("gear.thin_tip", s = mm(s), least = mm(least)),
+        );
+    }
     ui.label(tr!("gear.legend"));
 }
 

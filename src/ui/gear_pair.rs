@@ -88,6 +88,16 @@ fn issue_words(issue: &PairIssue) -> String {
             short = significant(shift_short, 3)
         ),
         PairIssue::PointedTip { member: m } => tr!("gear.issue_pointed", gear = member(m)),
+        PairIssue::ThinTip {
+            member: m,
+            thickness_m,
+            least_m,
+        } => tr!(
+            "gear.issue_thin_tip",
+            gear = member(m),
+            s = significant(thickness_m * 1e3, 3),
+            least = significant(least_m * 1e3, 3)
+        ),
         PairIssue::TipInterference { member: m } => {
             tr!("gear.issue_interference", gear = member(m))
         }

@@ -107,3 +107,18 @@ fn meshing_pair(language: Language, mode: &str, undercut: &str, name: &str) {
         h.snapshot(name);
     }
 }
+
+/// Shifted far out, the 12 teeth's tips grow thin: s_a under 0.25·m is said with
+/// the textbooks' least (0.067·m at x = 0.75), in both languages.
+#[test]
+fn thin_tips_are_said() {
+    for (language, words) in [
+        (Language::English, "the tips are too thin"),
+        (Language::Chinese, "齿顶过薄"),
+    ] {
+        let mut h = lab(language);
+        h.state_mut().state.gear_lab.as_mut().expect("lab").shift = 0.75;
+        common::settle(&mut h);
+        assert!(h.query_by_label_contains(words).is_some(), "{words}");
+    }
+}

@@ -273,6 +273,16 @@ fn issue_words(issue: &PairIssue) -> String {
                 member.words()
             )
         }
+        PairIssue::ThinTip {
+            member,
+            thickness_m,
+            least_m,
+        } => format!(
+            "the {}'s tip is {} mm thick, under 0.25·m = {} mm (0.4·m for hardened teeth)",
+            member.words(),
+            mm(thickness_m),
+            mm(least_m)
+        ),
         PairIssue::TipInterference { member } => format!(
             "the {}'s tip passes the other gear's interference point: it cuts into its root",
             member.words()

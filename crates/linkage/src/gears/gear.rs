@@ -70,6 +70,10 @@ impl GearSpec {
     }
 }
 
+/// The least tooth thickness on the tip circle the textbooks allow, in modules:
+/// s_a ≥ 0.25·m (0.4·m for hardened teeth, whose thin tips chip).
+pub const LEAST_TIP_THICKNESS_MODULES: f64 = 0.25;
+
 /// The ranges a gear's numbers must keep: wide enough for every gear a course or a
 /// machine uses (modules of 0.05 to 100 mm, 3 to 10 000 teeth, pressure angles of
 /// 10° to 35°), narrow enough that the geometry stays meaningful.
@@ -182,6 +186,17 @@ impl Gear {
     /// inside it): an external gear with too large a shift.
     pub fn is_pointed(&self) -> bool {
         self.spec.kind == GearKind::External && self.tip_thickness_m().is_some_and(|s| s <= 0.0)
+    }
+
+    /// The tooth's thickness on the tip circle where it is thinner than the textbooks'
+    /// least, [`LEAST_TIP_THICKNESS_MODULES`]·m, but not pointed (an external gear
+    /// shifted far out): `None` where it is thick enough, pointed or internal.
+    pub fn thin_tip_m(&self) -> Option<f64> {
+        if self.spec.kind != GearKind::External {
+            return None;
+        }
+        let least = LEAST_TIP_THICKNESS_MODULES * self.spec.module_m;
+        self.tip_thickness_m().filter(|s| *s > 0.0 && *s < least)
     }
 
     /// The least shift that cuts the gear without undercut with a rack cutter,

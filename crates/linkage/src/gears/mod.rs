@@ -23,7 +23,9 @@ mod train_rows;
 mod train_torques;
 
 pub use error::{GearError, GearParam, Member};
-pub use gear::{Gear, GearKind, GearSpec, least_teeth_without_undercut, limits};
+pub use gear::{
+    Gear, GearKind, GearSpec, LEAST_TIP_THICKNESS_MODULES, least_teeth_without_undercut, limits,
+};
 pub use mesh_pose::MeshPose;
 pub use pair::{CentreDistance, GearPair, MAX_WORKING_ANGLE_DEG, PairIssue, PairSpec};
 pub use train::{AssemblyCheck, MemberSpeed, Train, TrainError, TrainSolution, WillisRatio};

@@ -49,6 +49,16 @@ pub enum PairIssue {
         /// The gear.
         member: Member,
     },
+    /// This gear's tooth is thinner on its tip circle than 0.25·m (the textbooks'
+    /// least; 0.4·m for hardened teeth), but not pointed.
+    ThinTip {
+        /// The gear.
+        member: Member,
+        /// Its tip thickness s_a, m.
+        thickness_m: f64,
+        /// The least, 0.25·m, m.
+        least_m: f64,
+    },
     /// This gear's tip passes the other's interference point (where the line of action
     /// touches the other's base circle): it would cut into the other's root.
     TipInterference {
@@ -247,6 +257,13 @@ impl GearPair {
             }
             if g.is_pointed() {
                 issues.push(PairIssue::PointedTip { member });
+            }
+            if let Some(thickness_m) = g.thin_tip_m() {
+                issues.push(PairIssue::ThinTip {
+                    member,
+                    thickness_m,
+                    least_m: super::gear::LEAST_TIP_THICKNESS_MODULES * g.spec.module_m,
+                });
             }
         }
         let across = self.centre_m * self.working_pressure_angle_rad.sin();

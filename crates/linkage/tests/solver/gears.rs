@@ -620,3 +620,50 @@ fn shaper_cuts_of_random_rings_are_finite() {
     }
     assert!(cut_some > 100, "{cut_some} edges found");
 }
+
+/// The tip thickness, s_a = r_a (s/r + 2(inv α − inv α_a)) written out, against the
+/// textbooks' least 0.25·m: a gear shifted out step by step is said to have thin tips
+/// exactly where s_a falls below it and is still positive, and pointed past that;
+/// a pair says so of the gear it concerns.
+#[test]
+fn thin_tips_are_said_where_the_tip_is_under_a_quarter_module() {
+    let m = 0.002;
+    let inv = |a: f64| a.tan() - a;
+    let mut seen_thin = 0;
+    for z in [10, 12, 17, 30] {
+        for k in 0..=30 {
+            let x = -0.2 + 0.05 * f64::from(k);
+            let g = Gear::new(GearSpec::standard(m, z).shifted(x)).expect("a gear");
+            let (r, ra) = (g.pitch_radius_m, g.tip_radius_m);
+            let s = m * (PI / 2.0 + 2.0 * x * DEG20.tan());
+            let alpha_a = (r * DEG20.cos() / ra).acos();
+            let sa = ra * (s / r + 2.0 * (inv(DEG20) - inv(alpha_a)));
+            let thin = sa > 0.0 && sa < 0.25 * m;
+            assert_eq!(g.thin_tip_m().is_some(), thin, "z {z} x {x}: s_a {sa}");
+            assert_eq!(g.is_pointed(), sa <= 0.0, "z {z} x {x}: s_a {sa}");
+            if let Some(t) = g.thin_tip_m() {
+                assert!((t - sa).abs() < 1e-12 * m, "{t} vs {sa}");
+                seen_thin += 1;
+            }
+        }
+    }
+    assert!(seen_thin >= 3, "{seen_thin} thin tips seen");
+    // A 12-tooth pinion shifted 0.75 with a 40-tooth wheel: the pinion's tip, cut
+    // short by Δy·m, is thin; the pair says so of the pinion.
+    let p = pair(
+        GearSpec::standard(m, 12).shifted(0.75),
+        GearSpec::standard(m, 40),
+    );
+    let thin: Vec<_> = p
+        .issues
+        .iter()
+        .filter(|i| matches!(i, PairIssue::ThinTip { .. }))
+        .collect();
+    let sa = p.pinion.tip_thickness_m().expect("a tip");
+    assert!(sa > 0.0 && sa < 0.25 * m, "the cut tip {sa}");
+    assert!(
+        matches!(thin.as_slice(), [PairIssue::ThinTip { member: Member::Pinion, thickness_m, .. }] if (thickness_m - sa).abs() < 1e-15),
+        "{:?}",
+        p.issues
+    );
+}
