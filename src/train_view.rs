@@ -43,16 +43,7 @@ impl TrainView {
         let file = TRAINS
             .get(choice)
             .and_then(|t| TrainFile::from_ron(t.text).ok())
-            .unwrap_or_else(|| TrainFile {
-                name: String::new(),
-                notes: String::new(),
-                module_mm: None,
-                members: Vec::new(),
-                gears: Vec::new(),
-                meshes: Vec::new(),
-                stages: Vec::new(),
-                inputs: Vec::new(),
-            });
+            .unwrap_or_default();
         Self {
             choice,
             angles: vec![0.0; file.members.len()],

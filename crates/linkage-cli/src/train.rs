@@ -83,8 +83,13 @@ pub(crate) fn run(args: &TrainArgs) -> Result<String> {
 
 /// Every member's torque and power with the load, and the housing's reaction.
 fn torque_words(t: &TrainTorques) -> String {
+    let losses = if t.lost_w == 0.0 {
+        "ideal gears"
+    } else {
+        "with the file's efficiencies"
+    };
     let mut out = format!(
-        "with a load on {} (ideal gears)\n{:<24}{:>14}{:>14}\n",
+        "with a load on {} ({losses})\n{:<24}{:>14}{:>14}\n",
         t.loaded, "member", "torque (N·m)", "power (W)"
     );
     for m in &t.members {
@@ -101,6 +106,17 @@ fn torque_words(t: &TrainTorques) -> String {
         "the frame (housing) takes {} N·m",
         significant(t.frame_n_m, 6)
     );
+    // What goes in: the members taking power from outside (the motor's).
+    let given: f64 = t.members.iter().map(|m| m.power_w.max(0.0)).sum();
+    if t.lost_w != 0.0 && given > 0.0 {
+        let _ = writeln!(
+            out,
+            "lost in the meshes and stages: {} W of the {} W put in (efficiency {})",
+            significant(t.lost_w, 6),
+            significant(given, 6),
+            significant(1.0 - t.lost_w / given, 5)
+        );
+    }
     out
 }
 

@@ -310,3 +310,40 @@ fn train_torques_with_a_load() {
         "{err}"
     );
 }
+
+/// `linkage train --load` with the file's efficiencies: the die cutter's drive with
+/// a V-belt of 0.96 and meshes of 0.98 asks 1/(0.96·0.98²) more of its motor than
+/// ideal gears (548.8 → 595.2 N·m) and says what is lost; an efficiency above 1 is
+/// refused with its range.
+#[test]
+fn a_train_with_efficiencies_says_what_it_loses() {
+    let text = std::fs::read_to_string(common::repo("assets/trains/die_cutter_drive.ron"))
+        .expect("the drive");
+    let lossy = text
+        .replace(
+            "meshes: [(\"z1\", \"z2\"), (\"z3\", \"z4\")],",
+            "meshes: [(\"z1\", \"z2\"), (\"z3\", \"z4\")], mesh_efficiency: Some(0.98),",
+        )
+        .replace("ratio: 2.9)", "ratio: 2.9, efficiency: Some(0.96))");
+    assert_ne!(lossy, text, "the efficiencies were put in");
+    let dir = std::env::temp_dir().join(format!("linkage_train_eff_{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary folder");
+    let file = dir.join("drive.ron");
+    std::fs::write(&file, &lossy).expect("written");
+    let f = file.display().to_string();
+    let (code, out, err) = run_linkage(&["train", &f, "--load", "crank", "-15915.5"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        out.contains("motor                          595.249"),
+        "{out}"
+    );
+    assert!(out.contains("(efficiency 0.92198)"), "{out}");
+    std::fs::write(&file, lossy.replace("Some(0.98)", "Some(1.2)")).expect("written");
+    let (code, _, err) = run_linkage(&["train", &f]);
+    assert_ne!(code, Some(0));
+    assert!(
+        err.contains("mesh_efficiency 1.2 is outside the range 0.01 … 1"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

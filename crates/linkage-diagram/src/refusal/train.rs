@@ -22,6 +22,7 @@ pub fn train(lang: Lang, e: &TrainError) -> String {
             sw!(lang, "train.unknown", what = what, name = name, kind = kind)
         }
         TrainError::Duplicate { name } => sw!(lang, "train.duplicate", name = name),
+        TrainError::LossesIndeterminate => sw!(lang, "train.losses_indeterminate"),
         TrainError::OutOfRange {
             what,
             value,
@@ -155,6 +156,16 @@ fn field(lang: Lang, f: &TrainField) -> String {
                 key = "ratio"
             )
         }
+        TrainField::MeshEfficiency => sw!(lang, "train.field_key", key = "mesh_efficiency"),
+        TrainField::StageEfficiency { from, to } => {
+            sw!(
+                lang,
+                "train.field_stage_key",
+                from = from,
+                to = to,
+                key = "efficiency"
+            )
+        }
         TrainField::Input { member } => sw!(lang, "train.field_input", member = member),
         TrainField::InputOnFrame => sw!(lang, "train.field_an_input"),
         TrainField::InputRpm { member } => {
@@ -246,6 +257,21 @@ mod tests {
                 max: 1e6,
             },
             TrainError::OutOfRange {
+                what: TrainField::MeshEfficiency,
+                value: 0.0,
+                min: 0.01,
+                max: 1.0,
+            },
+            TrainError::OutOfRange {
+                what: TrainField::StageEfficiency {
+                    from: name("motor"),
+                    to: name("shaft"),
+                },
+                value: 1.5,
+                min: 0.01,
+                max: 1.0,
+            },
+            TrainError::OutOfRange {
                 what: TrainField::InputRpm {
                     member: name("sun"),
                 },
@@ -273,6 +299,7 @@ mod tests {
                 mate_teeth: 30,
             },
             TrainError::NoMembers,
+            TrainError::LossesIndeterminate,
             TrainError::BothInternal {
                 a: name("z3"),
                 b: name("z4"),
@@ -353,6 +380,8 @@ mod tests {
                 "motor_member",
                 "crank_member",
                 "gear_ratio",
+                "mesh_efficiency",
+                "efficiency",
                 // The unit r/min.
                 "min",
             ];

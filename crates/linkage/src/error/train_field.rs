@@ -48,6 +48,15 @@ pub enum TrainField {
         /// Its driven member as written.
         to: String,
     },
+    /// The file's `mesh_efficiency`.
+    MeshEfficiency,
+    /// A stage's `efficiency`.
+    StageEfficiency {
+        /// The stage's driving member.
+        from: String,
+        /// Its driven member.
+        to: String,
+    },
     /// A stage's `ratio`.
     StageRatio {
         /// The stage's driving member.
@@ -82,6 +91,8 @@ impl std::fmt::Display for TrainField {
             Self::StageFrom { from, to } => write!(f, "stage {from} → {to}'s from"),
             Self::StageTo { from, to } => write!(f, "stage {from} → {to}'s to"),
             Self::StageRatio { from, to } => write!(f, "stage {from} → {to}'s ratio"),
+            Self::MeshEfficiency => write!(f, "mesh_efficiency"),
+            Self::StageEfficiency { from, to } => write!(f, "stage {from} → {to}'s efficiency"),
             Self::Input { member } => write!(f, "input on {member}"),
             Self::InputOnFrame => write!(f, "an input"),
             Self::InputRpm { member } => write!(f, "input on {member}'s rpm"),

@@ -99,6 +99,15 @@ pub enum TrainError {
         /// A member the inputs leave undetermined or over-determined.
         member: String,
     },
+    /// Efficiencies given for a train whose meshes or stages close a loop: the load
+    /// splits between the loop's paths as the parts' stiffness says, which the file
+    /// does not, so the losses cannot be apportioned.
+    #[error(
+        "the train's meshes or stages close a loop (gears tying members already tied), \
+         so the load's split between its paths, and the losses, depend on the parts' \
+         stiffness: leave out the efficiencies, or the mesh or stage that closes the loop"
+    )]
+    LossesIndeterminate,
     /// A load on a member whose speed is given: it goes straight to what drives or
     /// holds that member, through no gear.
     #[error(

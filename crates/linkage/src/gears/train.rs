@@ -19,6 +19,8 @@ pub struct Train {
     pub(super) file: TrainFile,
     /// The constraint rows over the members' speeds.
     pub(super) rows: Vec<Vec<f64>>,
+    /// The members each row ties.
+    pub(super) row_members: Vec<super::train_rows::RowMembers>,
 }
 
 impl Train {
@@ -29,8 +31,12 @@ impl Train {
     /// axes move apart or of two internal gears.
     pub fn new(file: TrainFile) -> Result<Self, TrainError> {
         super::train_rows::check_names(&file)?;
-        let rows = super::train_rows::rows(&file)?;
-        Ok(Self { file, rows })
+        let (rows, row_members) = super::train_rows::rows(&file)?;
+        Ok(Self {
+            file,
+            rows,
+            row_members,
+        })
     }
 
     /// The degrees of freedom: the members less the rank of the meshes' and stages'

@@ -15,8 +15,8 @@ pub fn is_frame(name: &str) -> bool {
     name == FRAME
 }
 
-/// A train file.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+/// A train file (its default: no members, which `Train::new` refuses).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TrainFile {
     /// What the train is.
@@ -36,6 +36,10 @@ pub struct TrainFile {
     /// Pairs of gears in mesh, by name.
     #[serde(default)]
     pub meshes: Vec<(String, String)>,
+    /// Every mesh's efficiency (0.97 to 0.99 for cut spur gears), for the torques;
+    /// ideal (1) where absent. The speeds do not depend on it.
+    #[serde(default)]
+    pub mesh_efficiency: Option<f64>,
     /// Belt and chain stages between members.
     #[serde(default)]
     pub stages: Vec<StageFile>,
@@ -108,6 +112,10 @@ pub struct StageFile {
     /// A crossed belt turns the driven member the other way.
     #[serde(default)]
     pub crossed: bool,
+    /// Its efficiency (a V-belt about 0.96, a roller chain 0.97), for the torques;
+    /// ideal (1) where absent.
+    #[serde(default)]
+    pub efficiency: Option<f64>,
 }
 
 /// What a stage is.

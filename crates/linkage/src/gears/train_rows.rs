@@ -35,6 +35,9 @@ pub(crate) fn check_names(file: &TrainFile) -> Result<(), TrainError> {
         )?;
     }
     check_gears(file, &seen)?;
+    if let Some(eta) = file.mesh_efficiency {
+        range(TrainField::MeshEfficiency, eta, 0.01, 1.0)?;
+    }
     for s in &file.stages {
         let (from, to) = (s.from.clone(), s.to.clone());
         member(
@@ -51,6 +54,13 @@ pub(crate) fn check_names(file: &TrainFile) -> Result<(), TrainError> {
             },
             &s.to,
         )?;
+        if let Some(eta) = s.efficiency {
+            let what = TrainField::StageEfficiency {
+                from: from.clone(),
+                to: to.clone(),
+            };
+            range(what, eta, 0.01, 1.0)?;
+        }
         range(TrainField::StageRatio { from, to }, s.ratio, 1e-6, 1e6)?;
     }
     for i in &file.inputs {
@@ -141,8 +151,19 @@ fn range(what: TrainField, value: f64, min: f64, max: f64) -> Result<(), TrainEr
     }
 }
 
-/// The rows over the members' speeds (the frame's is 0 and has no column).
-pub(crate) fn rows(file: &TrainFile) -> Result<Vec<Vec<f64>>, TrainError> {
+/// The members a row ties: a mesh's two gears' members and the member holding their
+/// line of centres, or a stage's driving and driven members (held by the frame);
+/// `None` for the frame, which has no column.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RowMembers {
+    pub(crate) a: Option<usize>,
+    pub(crate) b: Option<usize>,
+    pub(crate) holder: Option<usize>,
+}
+
+/// The rows over the members' speeds (the frame's is 0 and has no column), and the
+/// members each ties.
+pub(crate) fn rows(file: &TrainFile) -> Result<(Vec<Vec<f64>>, Vec<RowMembers>), TrainError> {
     let n = file.members.len();
     let column = |name: &str| file.members.iter().position(|m| m.name == name);
     let add = |row: &mut Vec<f64>, name: &str, v: f64| {
@@ -151,6 +172,7 @@ pub(crate) fn rows(file: &TrainFile) -> Result<Vec<Vec<f64>>, TrainError> {
         }
     };
     let mut rows = Vec::new();
+    let mut members = Vec::new();
     for (a, b) in &file.meshes {
         let (ga, gb) = (gear(file, a), gear(file, b));
         if ga.internal && gb.internal {
@@ -181,6 +203,11 @@ pub(crate) fn rows(file: &TrainFile) -> Result<Vec<Vec<f64>>, TrainError> {
         add(&mut row, &gb.member, sigma * zb);
         add(&mut row, &holder, -(za + sigma * zb));
         rows.push(row);
+        members.push(RowMembers {
+            a: column(&ga.member),
+            b: column(&gb.member),
+            holder: column(&holder),
+        });
     }
     for s in &file.stages {
         let sign = if s.crossed { -1.0 } else { 1.0 };
@@ -188,8 +215,24 @@ pub(crate) fn rows(file: &TrainFile) -> Result<Vec<Vec<f64>>, TrainError> {
         add(&mut row, &s.from, 1.0);
         add(&mut row, &s.to, -sign * s.ratio);
         rows.push(row);
+        members.push(RowMembers {
+            a: column(&s.from),
+            b: column(&s.to),
+            holder: None,
+        });
     }
-    Ok(rows)
+    Ok((rows, members))
+}
+
+/// Each row's efficiency, in the rows' order (the meshes', then the stages'): 1
+/// where the file gives none.
+pub(crate) fn efficiencies(file: &TrainFile) -> Vec<f64> {
+    let mesh = file.mesh_efficiency.unwrap_or(1.0);
+    file.meshes
+        .iter()
+        .map(|_| mesh)
+        .chain(file.stages.iter().map(|s| s.efficiency.unwrap_or(1.0)))
+        .collect()
 }
 
 /// A gear by name (checked to exist).

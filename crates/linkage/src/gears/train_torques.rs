@@ -1,6 +1,6 @@
 //! The torques through a train: with a load on one member, the torque every member
 //! with a given speed takes from outside (the motor's, a brake's) and the power each
-//! member exchanges, for ideal gears (no friction).
+//! member exchanges, for ideal gears or with the file's efficiencies.
 //!
 //! The external torques are the constraint rows' multipliers: T = Aᵀ λ, where row k
 //! of A is mesh k's Willis relation z_A (ω_A − ω_C) + σ z_B (ω_B − ω_C) = 0 (or a
@@ -11,6 +11,15 @@
 //! torque from outside but the load; the members with given speeds take whatever
 //! balances it. The power Σ T_i ω_i is then zero (Aω = 0), which the tests check
 //! together with the textbooks' closed forms.
+//!
+//! With efficiencies (a mesh's η, a stage's), the ideal multipliers first say which
+//! side of each mesh drives, relative to the member holding it (the sign of the power
+//! it takes from that side); the coefficient of the side the power reaches is then
+//! η times its ideal one and the holder's bearing takes the difference, so that the
+//! driven side gets η of what the driver gives in the relative motion: in series,
+//! the textbooks' products of efficiencies; in a planetary set, the converted
+//! train's efficiency where the power flows (for the ring held and the sun driving,
+//! η = (1 + η^H z_r/z_s)/(1 + z_r/z_s)).
 
 use nalgebra::{DMatrix, DVector};
 use serde::Serialize;
@@ -40,9 +49,23 @@ pub struct TrainTorques {
     /// The torque the frame takes (the housing's reaction), N·m: the sum of the
     /// members' torques reversed.
     pub frame_n_m: f64,
+    /// The power lost in the meshes and stages, W: what the members take in, less
+    /// what they give out (0 for ideal gears, as the file's efficiencies are absent).
+    pub lost_w: f64,
 }
 
 const RPM: f64 = std::f64::consts::TAU / 60.0;
+
+/// `sum` of `terms`, or 0 where it is round-off of their largest (torques or powers
+/// that cancel).
+fn zero_to_round_off(sum: f64, terms: &[f64]) -> f64 {
+    let largest = terms.iter().fold(0.0_f64, |m, t| m.max(t.abs()));
+    if sum.abs() <= 1e-12 * largest {
+        0.0
+    } else {
+        sum
+    }
+}
 
 impl Train {
     /// The torques with `torque_n_m` on `loaded` (from outside, counter-clockwise
@@ -74,7 +97,24 @@ impl Train {
                 member: loaded.into(),
             });
         }
-        let torques = self.balance(&held, load_at, torque_n_m)?;
+        // Ideal first: the multipliers say which way power crosses each mesh and
+        // stage (relative to the member holding it), and so which side its losses
+        // come off; then the train with its efficiencies.
+        let (ideal_torques, ideal, determinate) =
+            self.balance(&self.rows, &held, load_at, torque_n_m)?;
+        let lossless = super::train_rows::efficiencies(&self.file)
+            .iter()
+            .all(|&eta| eta >= 1.0);
+        let torques = if lossless {
+            ideal_torques
+        } else if !determinate {
+            // A loop of meshes or stages splits the load by the parts' stiffness,
+            // which the train does not know: its losses cannot be apportioned.
+            return Err(TrainError::LossesIndeterminate);
+        } else {
+            let lossy = self.lossy_rows(&ideal, solution);
+            self.balance(&lossy, &held, load_at, torque_n_m)?.0
+        };
         let members = self
             .file
             .members
@@ -90,25 +130,31 @@ impl Train {
         debug_assert_eq!(members.len(), n);
         // The housing's reaction, 0 where the members' torques cancel to round-off
         // (a planetary set whose brake is a member held by an input).
-        let frame: f64 = -torques.iter().sum::<f64>();
-        let largest = torques.iter().fold(0.0_f64, |m, t| m.max(t.abs()));
+        let frame = -torques.iter().sum::<f64>();
+        let powers: Vec<f64> = members.iter().map(|m| m.power_w).collect();
+        // The power lost, what the members take in less what they give out.
+        let lost = powers.iter().sum::<f64>();
         Ok(TrainTorques {
+            lost_w: zero_to_round_off(lost, &powers),
             loaded: loaded.into(),
-            frame_n_m: if frame.abs() <= 1e-12 * largest {
-                0.0
-            } else {
-                frame
-            },
+            frame_n_m: zero_to_round_off(frame, &torques),
             members,
         })
     }
 
-    /// Solves Aᵀ λ − Σ_held e_i T_i = load for λ and the held members' torques;
-    /// every member's torque from outside.
-    fn balance(&self, held: &[usize], load_at: usize, load: f64) -> Result<Vec<f64>, TrainError> {
-        let (n, r) = (self.file.members.len(), self.rows.len());
+    /// Solves Aᵀ λ − Σ_held e_i T_i = load for λ and the held members' torques, A
+    /// `rows`; every member's torque from outside, λ, and whether λ is the only
+    /// solution (no loop of meshes or stages that the load could go round).
+    fn balance(
+        &self,
+        rows: &[Vec<f64>],
+        held: &[usize],
+        load_at: usize,
+        load: f64,
+    ) -> Result<(Vec<f64>, Vec<f64>, bool), TrainError> {
+        let (n, r) = (self.file.members.len(), rows.len());
         let mut a = DMatrix::<f64>::zeros(n, r + held.len());
-        for (k, row) in self.rows.iter().enumerate() {
+        for (k, row) in rows.iter().enumerate() {
             for (i, &v) in row.iter().enumerate() {
                 a[(i, k)] = v;
             }
@@ -140,6 +186,61 @@ impl Train {
                 t
             };
         }
-        Ok(torques)
+        let rank = svd.singular_values.iter().filter(|&&v| v > tol).count();
+        let determinate = rank == r + held.len();
+        Ok((torques, x.rows(0, r).iter().copied().collect(), determinate))
+    }
+
+    /// The rows with their efficiencies: in each mesh or stage, the coefficient of
+    /// the side that power reaches (relative to the member holding it) times η, the
+    /// holder's changed so that the row's coefficients still sum to nothing (the
+    /// bearings take the difference). Its power Σ c_i ω_i λ is then (1 − η) times
+    /// the power the driving side gives, lost.
+    fn lossy_rows(&self, ideal: &[f64], solution: &TrainSolution) -> Vec<Vec<f64>> {
+        let speeds: Vec<f64> = solution.speeds_rpm.iter().map(|s| s.rpm).collect();
+        let eta = super::train_rows::efficiencies(&self.file);
+        // Side a's share of each row's torque (T = Aᵀλ is the torque from outside
+        // that the row passes on) times its speed relative to the holder: positive
+        // where a takes power in and drives the other side.
+        let drives_a: Vec<f64> = self
+            .rows
+            .iter()
+            .zip(&self.row_members)
+            .zip(ideal)
+            .map(|((row, ties), &lambda)| {
+                let holder = ties.holder.map_or(0.0, |h| speeds[h]);
+                ties.a
+                    .map_or(0.0, |a| row[a] * lambda * (speeds[a] - holder))
+            })
+            .collect();
+        let largest = drives_a.iter().fold(0.0_f64, |m, p| m.max(p.abs()));
+        self.rows
+            .iter()
+            .zip(&self.row_members)
+            .zip(drives_a.iter().zip(eta))
+            .map(|((row, ties), (&power, eta))| {
+                let mut row = row.clone();
+                // A row that carries no power loses none (a second mesh of the same
+                // gears, a gear running idle): left ideal, so that a loss cannot
+                // make its multiplier free.
+                if eta >= 1.0 || power.abs() <= 1e-8 * largest {
+                    return row;
+                }
+                // A side on the frame has no column: the other is reached.
+                let reached = if power > 0.0 || ties.a.is_none() {
+                    ties.b
+                } else {
+                    ties.a
+                };
+                if let Some(r) = reached {
+                    let before = row[r];
+                    row[r] *= eta;
+                    if let Some(h) = ties.holder {
+                        row[h] += before - row[r];
+                    }
+                }
+                row
+            })
+            .collect()
     }
 }

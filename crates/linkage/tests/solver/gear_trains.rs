@@ -386,3 +386,80 @@ fn the_paper_cup_drive_turns_the_crank_at_the_papers_speed() {
         "{ratio}"
     );
 }
+
+/// With efficiencies, the textbooks' closed forms: the die cutter's drive (a belt of
+/// η_b = 0.96, two meshes of η = 0.98 in series) asks of its motor the load over
+/// i·η_b·η², and loses 1 − η_b·η² of what the motor gives; a planetary set with the
+/// ring held and the sun driving the loaded carrier: T_sun = −T_H/(1 + η^H z_r/z_s),
+/// η^H = η² (sun to planet, planet to ring in the converted train), the set's
+/// efficiency (1 + η^H z_r/z_s)/(1 + z_r/z_s); efficiencies outside (0, 1] refused.
+#[test]
+fn efficiencies_take_their_share_as_the_textbooks_say() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../assets/trains/");
+    let read = |f: &str| std::fs::read_to_string(format!("{path}{f}")).expect("read");
+    let with = |text: &str, mesh: f64, belt: Option<f64>| {
+        let mut file = TrainFile::from_ron(text).expect("file");
+        file.mesh_efficiency = Some(mesh);
+        for s in &mut file.stages {
+            s.efficiency = belt;
+        }
+        Train::new(file).expect("train")
+    };
+    let (eta, eta_b) = (0.98, 0.96);
+    let drive = with(&read("die_cutter_drive.ron"), eta, Some(eta_b));
+    let s = drive.solve().expect("solved");
+    let load = -15_915.5;
+    let q = drive.torques(&s, "crank", load).expect("torques");
+    let motor = q
+        .members
+        .iter()
+        .find(|m| m.member == "motor")
+        .expect("motor");
+    let through = eta_b * eta * eta;
+    assert!(
+        (motor.torque_n_m + load / (29.0 * through)).abs() <= 1e-12 * load.abs(),
+        "{q:?}"
+    );
+    assert!(
+        (q.lost_w - (1.0 - through) * motor.power_w).abs() <= 1e-9 * motor.power_w,
+        "{q:?}"
+    );
+    let set = with(&read("planetary_ring_fixed.ron"), eta, None);
+    let s = set.solve().expect("solved");
+    let load = -100.0;
+    let q = set.torques(&s, "carrier", load).expect("torques");
+    let sun = q.members.iter().find(|m| m.member == "sun").expect("sun");
+    let (zs, zr) = (20.0, 80.0);
+    let eta_h = eta * eta;
+    assert!(
+        (sun.torque_n_m + load / (1.0 + eta_h * zr / zs)).abs() <= 1e-12 * load.abs(),
+        "{q:?}"
+    );
+    let out = -q
+        .members
+        .iter()
+        .find(|m| m.member == "carrier")
+        .expect("carrier")
+        .power_w;
+    let efficiency = out / sun.power_w;
+    let textbook = (1.0 + eta_h * zr / zs) / (1.0 + zr / zs);
+    assert!(
+        (efficiency - textbook).abs() <= 1e-12,
+        "{efficiency} vs {textbook}"
+    );
+    // Ideal, nothing is lost.
+    let ideal = train(&read("planetary_ring_fixed.ron"));
+    let s = ideal.solve().expect("solved");
+    assert_eq!(
+        ideal.torques(&s, "carrier", load).expect("torques").lost_w,
+        0.0
+    );
+    for bad in [0.0, 1.2, f64::NAN] {
+        let mut file = TrainFile::from_ron(&read("die_cutter_drive.ron")).expect("file");
+        file.mesh_efficiency = Some(bad);
+        assert!(
+            matches!(Train::new(file), Err(TrainError::OutOfRange { .. })),
+            "{bad}"
+        );
+    }
+}

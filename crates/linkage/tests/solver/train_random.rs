@@ -66,6 +66,7 @@ fn train_file(
             .iter()
             .map(|&(a, b)| (format!("z{a}"), format!("z{b}")))
             .collect(),
+        mesh_efficiency: None,
         stages: stages
             .iter()
             .map(|&(a, b, ratio, crossed)| StageFile {
@@ -74,6 +75,7 @@ fn train_file(
                 to: member(b % n),
                 ratio,
                 crossed,
+                efficiency: None,
             })
             .collect(),
         inputs: inputs
@@ -127,8 +129,14 @@ proptest! {
         stages in prop::collection::vec((0usize..6, 0usize..6, 0.1f64..10.0, any::<bool>()), 0..2),
         inputs in prop::collection::vec((0usize..6, prop::sample::select(vec![0.0, 1450.0, -100.0])), 1..3),
         load in -1000.0f64..1000.0,
+        eta in prop::option::of(0.5f64..1.0),
     ) {
-        let file = shaped(&members, &extra, &stages, &inputs);
+        let mut file = shaped(&members, &extra, &stages, &inputs);
+        // Efficiencies on every mesh and stage, or none (ideal).
+        file.mesh_efficiency = eta;
+        for stage in &mut file.stages {
+            stage.efficiency = eta;
+        }
         let drive = DriveTrainSpec {
             motor_member: member(0),
             crank_member: member(members.len() - 1),
@@ -166,7 +174,16 @@ proptest! {
                     let fastest = s.speeds_rpm.iter().map(|m| m.rpm.abs()).fold(0.0, f64::max);
                     let scale = load.abs() * fastest * std::f64::consts::TAU / 60.0;
                     let net: f64 = q.members.iter().map(|t| t.power_w).sum();
-                    prop_assert!(net.abs() <= 1e-9 * scale.max(f64::MIN_POSITIVE), "{net} of {scale}: {q:?}");
+                    let tolerance = 1e-9 * scale.max(f64::MIN_POSITIVE);
+                    if eta.is_none() {
+                        // Ideal gears: what goes in comes out.
+                        prop_assert!(net.abs() <= tolerance, "{net} of {scale}: {q:?}");
+                    } else {
+                        // With losses the train takes power, never gives it, and
+                        // says how much.
+                        prop_assert!(net >= -tolerance, "{net} of {scale}: {q:?}");
+                        prop_assert!((q.lost_w - net).abs() <= tolerance, "{q:?}");
+                    }
                 }
                 Err(e) => prop_assert!(!e.to_string().is_empty()),
             }
