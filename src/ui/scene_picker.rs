@@ -54,7 +54,10 @@ fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &efr
         history_buttons(ui, st);
         edited_mark(ui, st);
         view_buttons(ui, st);
-        view_toggles(ui, st);
+        // The mechanism view's overlays do nothing in the gear lab, which replaces it.
+        if st.gear_lab.is_none() {
+            view_toggles(ui, st);
+        }
         language_switch(ui, st);
     });
 }
@@ -97,8 +100,10 @@ fn compact_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &
                 st.commands.fit = true;
             }
             ui.separator();
-            view_toggles(ui, st);
-            ui.separator();
+            if st.gear_lab.is_none() {
+                view_toggles(ui, st);
+                ui.separator();
+            }
             language_switch(ui, st);
         });
         st.controls
