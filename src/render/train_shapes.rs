@@ -150,8 +150,9 @@ fn shaft(
     }
 }
 
-/// A member held still (a brake): its block's top fixed to the frame, a base line
-/// along it hatched above, as the textbooks draw a gear fixed to the housing.
+/// A member held still (a brake): its block fixed to the frame, a base line along
+/// its outer edge hatched outwards, as the textbooks draw a gear fixed to the
+/// housing.
 fn frame_hatch(
     push: &mut impl FnMut(Option<Shape>),
     b: &Block,
@@ -159,22 +160,26 @@ fn frame_hatch(
     line: f32,
     at: &impl Fn([f64; 2]) -> Vec2,
 ) {
-    let top = b.centres_y[0]
-        + if b.internal {
-            b.radius + unit
-        } else {
-            b.radius
-        };
+    let yc = b.centres_y[0];
+    // A ring's teeth are drawn above and below its axis: both fixed, hatched
+    // outwards; a gear's block along its top.
+    let edges: &[(f64, f64)] = if b.internal {
+        &[(yc + b.radius + unit, 1.0), (yc - b.radius - unit, -1.0)]
+    } else {
+        &[(yc + b.radius, 1.0)]
+    };
     let (x0, x1) = (
         b.x - b.half_width - 0.5 * unit,
         b.x + b.half_width + 0.5 * unit,
     );
-    segment(push, at([x0, top]), at([x1, top]), 1.5 * line, FRAME);
-    let steps = 5;
-    for k in 0..steps {
-        let x = x0 + (x1 - x0) * f64::from(k) / f64::from(steps - 1);
-        let tip = [x + 0.6 * unit, top + 0.8 * unit];
-        segment(push, at([x, top]), at(tip), line, FRAME);
+    for &(edge, out) in edges {
+        segment(push, at([x0, edge]), at([x1, edge]), 1.5 * line, FRAME);
+        let steps = 5;
+        for k in 0..steps {
+            let x = x0 + (x1 - x0) * f64::from(k) / f64::from(steps - 1);
+            let tip = [x + 0.6 * unit, edge + out * 0.8 * unit];
+            segment(push, at([x, edge]), at(tip), line, FRAME);
+        }
     }
 }
 

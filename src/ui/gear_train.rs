@@ -5,6 +5,7 @@
 //! speed at its shaft's free end and each gear with its teeth.
 
 use eframe::egui::{self, Align2, Color32, FontId};
+use linkage::gears::train_file::StageKind;
 use linkage::gears::{AssemblyCheck, TrainSolution};
 use linkage_diagram::numbers::significant;
 use linkage_diagram::train_schematic::{Schematic, schematic};
@@ -90,7 +91,25 @@ fn rgb(c: [f32; 4]) -> Color32 {
 /// Every member's speed and ratio, the Willis ratios, the assembly checks.
 fn numbers(ui: &mut egui::Ui, view: &TrainView, s: &TrainSolution) {
     ui.separator();
-    ui.label(tr!("gear.train_dof", dof = s.dof));
+    // A member held still (a brake) is an input of 0 rpm: the textbooks count it as
+    // fixed, a planetary train of F = 1 rather than a differential of F = 2.
+    let held: Vec<String> = view
+        .file
+        .inputs
+        .iter()
+        .filter(|i| i.rpm == 0.0)
+        .map(|i| i.member.clone())
+        .collect();
+    if held.is_empty() {
+        ui.label(tr!("gear.train_dof", dof = s.dof));
+    } else {
+        ui.label(tr!(
+            "gear.train_dof_held",
+            free = s.dof.saturating_sub(held.len()),
+            held = held.join(", "),
+            dof = s.dof
+        ));
+    }
     let first = view.file.inputs.first().map(|i| i.member.clone());
     egui::Grid::new("train speeds")
         .striped(true)
@@ -317,5 +336,26 @@ fn gear_names(
         let (at, align) = tries.iter().copied().find(free).unwrap_or(tries[0]);
         placed.push(align.anchor_size(at, size));
         halo_text(painter, at, align, &text, &small, Color32::from_gray(40));
+    }
+    // Each belt or chain named with its ratio beside its run's middle.
+    for run in &s.runs {
+        let Some(stage) = view.file.stages.get(run.stage) else {
+            continue;
+        };
+        let ratio = significant(stage.ratio, 4);
+        let text = match stage.kind {
+            StageKind::Belt => tr!("gear.train_belt", ratio = ratio),
+            StageKind::Chain => tr!("gear.train_chain", ratio = ratio),
+        };
+        let middle = [run.x + s.unit, 0.5 * (run.y[0] + run.y[1])];
+        let at = view.camera.to_screen(middle, rect) + egui::vec2(4.0, 0.0);
+        halo_text(
+            painter,
+            at,
+            Align2::LEFT_CENTER,
+            &text,
+            &small,
+            Color32::from_gray(40),
+        );
     }
 }

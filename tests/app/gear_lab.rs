@@ -114,7 +114,7 @@ fn meshing_pair(language: Language, mode: &str, undercut: &str, name: &str) {
 fn thin_tips_are_said() {
     for (language, words) in [
         (Language::English, "the tips are too thin"),
-        (Language::Chinese, "齿顶过薄"),
+        (Language::Chinese, "齿顶厚过小"),
     ] {
         let mut h = lab(language);
         h.state_mut().state.gear_lab.as_mut().expect("lab").shift = 0.75;

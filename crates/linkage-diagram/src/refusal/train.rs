@@ -23,6 +23,7 @@ pub fn train(lang: Lang, e: &TrainError) -> String {
         }
         TrainError::Duplicate { name } => sw!(lang, "train.duplicate", name = name),
         TrainError::LossesIndeterminate => sw!(lang, "train.losses_indeterminate"),
+        TrainError::SelfLocking => sw!(lang, "train.self_locking"),
         TrainError::OutOfRange {
             what,
             value,
@@ -300,6 +301,7 @@ mod tests {
             },
             TrainError::NoMembers,
             TrainError::LossesIndeterminate,
+            TrainError::SelfLocking,
             TrainError::BothInternal {
                 a: name("z3"),
                 b: name("z4"),

@@ -108,6 +108,15 @@ pub enum TrainError {
          stiffness: leave out the efficiencies, or the mesh or stage that closes the loop"
     )]
     LossesIndeterminate,
+    /// With its efficiencies the train locks itself: no choice of the side each mesh
+    /// drives agrees with the torques it gives.
+    #[error(
+        "with these efficiencies the train locks itself: no direction of the power \
+         through its meshes and stages agrees with the torques it gives (a closed \
+         differential or a high ratio with low efficiencies); check the efficiencies, \
+         or drive it from another member"
+    )]
+    SelfLocking,
     /// A load on a member whose speed is given: it goes straight to what drives or
     /// holds that member, through no gear.
     #[error(

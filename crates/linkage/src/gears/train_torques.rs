@@ -112,8 +112,7 @@ impl Train {
             // which the train does not know: its losses cannot be apportioned.
             return Err(TrainError::LossesIndeterminate);
         } else {
-            let lossy = self.lossy_rows(&ideal, solution);
-            self.balance(&lossy, &held, load_at, torque_n_m)?.0
+            self.lossy_balance(ideal, solution, &held, load_at, torque_n_m)?
         };
         let members = self
             .file
@@ -140,6 +139,31 @@ impl Train {
             frame_n_m: zero_to_round_off(frame, &torques),
             members,
         })
+    }
+
+    /// The torques with losses: the sides power reaches taken from the ideal
+    /// multipliers, then from the lossy ones until they agree. Where losses turn
+    /// the power round in a mesh (a closed differential with low efficiencies) the
+    /// sides are chosen anew; where no choice agrees with its own solution the train
+    /// locks itself.
+    fn lossy_balance(
+        &self,
+        ideal: Vec<f64>,
+        solution: &TrainSolution,
+        held: &[usize],
+        load_at: usize,
+        load: f64,
+    ) -> Result<Vec<f64>, TrainError> {
+        let mut rows = self.lossy_rows(&ideal, solution);
+        for _ in 0..self.rows.len() + 2 {
+            let (torques, lambda, _) = self.balance(&rows, held, load_at, load)?;
+            let again = self.lossy_rows(&lambda, solution);
+            if again == rows {
+                return Ok(torques);
+            }
+            rows = again;
+        }
+        Err(TrainError::SelfLocking)
     }
 
     /// Solves Aᵀ λ − Σ_held e_i T_i = load for λ and the held members' torques, A
