@@ -285,6 +285,12 @@ pub(crate) enum Command {
         #[arg(long)]
         decode: Option<String>,
     },
+    /// Exercises for a class: each student's variant of an exercise file (RON,
+    /// docs/exercises.md), the answer codes, the class graded.
+    Exercise {
+        #[command(subcommand)]
+        what: ExerciseCommand,
+    },
     /// Dimensional synthesis.
     Synth {
         #[command(subcommand)]
@@ -301,6 +307,52 @@ pub(crate) enum Command {
     Train {
         #[command(flatten)]
         args: TrainArgs,
+    },
+}
+
+#[derive(Subcommand, Debug)]
+pub(crate) enum ExerciseCommand {
+    /// Checks an exercise file and says what it asks and what varies.
+    Check {
+        /// Exercise file (RON).
+        file: PathBuf,
+    },
+    /// The class's variants: each student's dimensions and the true answers (the
+    /// teacher's key), as CSV.
+    Variants {
+        /// Exercise file (RON).
+        file: PathBuf,
+        /// The class list: a CSV whose first column holds the students' numbers.
+        #[arg(long)]
+        students: PathBuf,
+    },
+    /// A student's answer code from answers typed with their units (one --answer
+    /// per question, in order; "" for one not answered).
+    Code {
+        /// Exercise file (RON).
+        file: PathBuf,
+        /// The student's number.
+        #[arg(long)]
+        student: String,
+        /// An answer, e.g. "1.25 m/s" (repeat for every question).
+        #[arg(long, allow_hyphen_values = true)]
+        answer: Vec<String>,
+    },
+    /// Grades answer codes (one a line, or a CSV with a column of them) and writes
+    /// the grades as CSV; lines that are not valid codes are reported on stderr.
+    Grade {
+        /// Exercise file (RON).
+        file: PathBuf,
+        /// The answer codes.
+        #[arg(long)]
+        answers: PathBuf,
+        /// The class list (a CSV whose first column holds the students' numbers):
+        /// codes from others are reported, students without a code graded 0.
+        #[arg(long)]
+        students: Option<PathBuf>,
+        /// Where to write the grades (default: standard output).
+        #[arg(long)]
+        out: Option<PathBuf>,
     },
 }
 

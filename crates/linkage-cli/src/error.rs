@@ -74,6 +74,9 @@ pub enum CliError {
     /// An option or input the command refuses, with the valid range where one exists.
     #[error("{0}")]
     Refused(String),
+    /// An exercise file refused, or no variant for a student.
+    #[error(transparent)]
+    Exercise(#[from] linkage_model::exercise::ExerciseError),
     /// The output as JSON.
     #[error(transparent)]
     Json(#[from] serde_json::Error),

@@ -12,6 +12,7 @@ mod counts;
 mod course;
 mod diagram;
 mod error;
+mod exercise;
 mod flywheel;
 mod gears;
 mod io;
@@ -74,6 +75,7 @@ fn run(command: Command, out: &mut dyn Write) -> Result<()> {
             format,
         } => at::at(&scene, input_deg, format),
         Command::Report { scene, format } => report::report(&scene, format),
+        Command::Exercise { what } => exercise::run(what),
         Command::Synth { what } => synth::synth(what),
         Command::Gears { what } => gears::run(what),
         Command::Train { args } => train::run(&args),

@@ -7,6 +7,7 @@
 
 pub mod catalog;
 pub mod drawing;
+pub mod exercise;
 pub mod job;
 pub mod session;
 pub mod synthesis;

@@ -10,6 +10,7 @@ mod common;
 mod course_report;
 mod dead_points;
 mod diagram;
+mod exercise;
 mod gears;
 mod messages_found_by_fuzzing;
 mod share;
