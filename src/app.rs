@@ -305,6 +305,35 @@ impl LinkageApp {
         });
     }
 
+    /// An exercise open: its pane at the side (on a phone or tablet, above), the
+    /// mechanism (or the cam) in the middle; nothing of the analyses.
+    fn exercise_panels(&mut self, ui: &mut egui::Ui, solver_us: &mut f64) {
+        if self.state.layout.compact() {
+            // The questions need room: half the screen, at least.
+            let half = ui.available_height() * 0.5;
+            egui::Panel::top(self.state.layout.panel_id("exercise"))
+                .resizable(true)
+                .default_size(half)
+                .min_size(half)
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical()
+                        .show(ui, |ui| ui::exercise::panel(ui, &mut self.state));
+                });
+        } else {
+            self.controls_pane(ui, ui::exercise::panel);
+        }
+        self.state.apply_commands();
+        egui::CentralPanel::default_margins().show(ui, |ui| {
+            if ui::exercise_cam::show(ui, &self.state) {
+                return;
+            }
+            *solver_us +=
+                self.panels
+                    .viewport
+                    .ui(ui, &mut self.state, &self.shapes, self.renderer.as_ref());
+        });
+    }
+
     /// While drawing: the tools beside the drawing; the report, plots and polygons
     /// once the drawing is a mechanism.
     fn drawing_panels(&mut self, ui: &mut egui::Ui) {
@@ -412,7 +441,9 @@ impl eframe::App for LinkageApp {
         crate::i18n::set_language(self.state.language);
         ui::scene_picker::top_bar(ui, &mut self.state, &mut self.panels.files, frame);
         self.take_app_commands();
-        if self.state.gear_lab.is_some() {
+        if self.state.exercise.is_some() {
+            self.exercise_panels(ui, &mut solver_us);
+        } else if self.state.gear_lab.is_some() {
             self.gear_lab_panels(ui);
         } else if self.state.drawing.is_some() {
             self.drawing_panels(ui);

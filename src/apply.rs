@@ -35,6 +35,19 @@ impl AppState {
         self.push(Command::Open(Box::new(session)));
     }
 
+    /// Opens the exercise file `text` at the student's desk, in place of the labs (a
+    /// refused file is said in the status line, naming the cause).
+    pub fn open_exercise(&mut self, text: &str) {
+        match crate::exercise::Exercise::parse(text) {
+            Ok(exercise) => {
+                self.gear_lab = None;
+                self.course.open = false;
+                self.exercise = Some(crate::exercise_desk::ExerciseDesk::new(exercise));
+            }
+            Err(e) => self.status = Some(e.to_string()),
+        }
+    }
+
     /// Applies the commands asked for, in order, and adds their time to the frame's.
     pub fn apply_commands(&mut self) {
         if self.commands.queue.is_empty() {

@@ -6,6 +6,7 @@
 mod app;
 mod apply;
 pub mod command;
+pub mod exercise_desk;
 pub mod file_action;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod file_dialog;
@@ -46,7 +47,7 @@ pub fn edit_cpu_json(key: &str) -> String {
 pub use app::LinkageApp;
 pub use state::AppState;
 // The model lives in its own crate (no GUI); the app and its tests reach it here too.
-pub use linkage_model::{catalog, drawing, job, session, synthesis};
+pub use linkage_model::{catalog, drawing, exercise, job, session, synthesis};
 
 pub use start::StartOptions;
 

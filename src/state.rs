@@ -124,6 +124,8 @@ pub struct AppState {
     pub drawing: Option<DrawingEditor>,
     /// The gear-cutting lab, while it is open in place of the mechanism view.
     pub gear_lab: Option<crate::gear_lab::GearLab>,
+    /// The exercise open on the student's side, in place of the analyses.
+    pub exercise: Option<crate::exercise_desk::ExerciseDesk>,
     /// What the panels asked for and the app has not yet done.
     pub commands: Commands,
     /// The animation.
@@ -206,6 +208,7 @@ impl AppState {
             session,
             drawing: None,
             gear_lab: None,
+            exercise: None,
             commands: Commands {
                 fit: true,
                 ..Commands::default()

@@ -71,6 +71,8 @@ pub enum ControlKind {
     Menu,
     /// A polygon figure by its box; in view where at least half of it shows.
     Figure,
+    /// A control of the exercise desk: the student number, an answer, a button.
+    Exercise,
 }
 
 /// One control as drawn this frame.

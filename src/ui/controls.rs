@@ -28,7 +28,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
 }
 
 /// Play or pause, and the animation's speed.
-fn play_and_speed(ui: &mut egui::Ui, st: &mut AppState) {
+pub(crate) fn play_and_speed(ui: &mut egui::Ui, st: &mut AppState) {
     let (id, text) = if st.play.playing {
         ("Pause", tr!("controls.pause"))
     } else {
@@ -48,7 +48,7 @@ fn play_and_speed(ui: &mut egui::Ui, st: &mut AppState) {
 }
 
 /// The crank angle, the dynamic run's time, and a refused edit's message.
-fn crank_and_run_time(ui: &mut egui::Ui, st: &mut AppState) {
+pub(crate) fn crank_and_run_time(ui: &mut egui::Ui, st: &mut AppState) {
     let [lo, hi] = st.session.input_range_deg();
     let mut input = st.session.input_rad().to_degrees();
     if st.session.curves().full_rotation {

@@ -508,6 +508,10 @@ fn report(st: &mut AppState, level: log::Level, message: String) {
 
 /// Opens scene text read from a file named `name`.
 pub fn open_text(st: &mut AppState, name: String, text: &str) {
+    if crate::exercise::is_exercise_file(text) {
+        st.open_exercise(text);
+        return;
+    }
     match Session::open_text(SceneSource::File(name.clone()), text) {
         Ok(s) => {
             st.open(s);

@@ -22,7 +22,9 @@ fn names() -> &'static [String] {
 /// scene, undo, redo and fit, with the rest in a menu.
 pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &eframe::Frame) {
     egui::Panel::top("scene_bar").show(ui, |ui| {
-        if st.layout.compact() {
+        if st.exercise.is_some() {
+            exercise_bar(ui, st);
+        } else if st.layout.compact() {
             compact_bar(ui, st, files, frame);
         } else {
             wide_bar(ui, st, files, frame);
@@ -57,6 +59,24 @@ fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &efr
         // The mechanism view's overlays do nothing in the gear lab, which replaces it.
         if st.gear_lab.is_none() {
             view_toggles(ui, st);
+        }
+        language_switch(ui, st);
+    });
+}
+
+/// While an exercise is open: the app's name, closing the exercise, fitting the
+/// view and the language; no file, analysis or overlay that would show an answer.
+fn exercise_bar(ui: &mut egui::Ui, st: &mut AppState) {
+    ui.horizontal_wrapped(|ui| {
+        ui.strong(tr!("app.name"));
+        let close = ui.button(tr!("exercise.close"));
+        st.controls
+            .note(ui, ControlKind::Exercise, "close the exercise", &close);
+        if close.clicked() {
+            st.exercise = None;
+        }
+        if ui.button(tr!("top.fit_view")).clicked() {
+            st.commands.fit = true;
         }
         language_switch(ui, st);
     });
@@ -286,6 +306,21 @@ fn view_toggles(ui: &mut egui::Ui, st: &mut AppState) {
     }
 }
 
+/// The shipped exercises' titles (their files' `name`), read once.
+fn exercise_names() -> &'static [String] {
+    static NAMES: OnceLock<Vec<String>> = OnceLock::new();
+    NAMES.get_or_init(|| {
+        let title = |text: &str| {
+            ron::from_str::<crate::exercise::ExerciseFile>(text)
+                .map_or_else(|e| e.to_string(), |f| f.name)
+        };
+        crate::catalog::EXERCISES
+            .iter()
+            .map(|e| title(e.text))
+            .collect()
+    })
+}
+
 /// Display names of the templates, read once.
 fn template_names() -> &'static [String] {
     static NAMES: OnceLock<Vec<String>> = OnceLock::new();
@@ -346,6 +381,13 @@ fn new_menu(ui: &mut egui::Ui, st: &mut AppState) {
                 ..crate::gear_lab::GearLab::default()
             });
         }
+        ui.menu_button(tr!("exercise.menu"), |ui| {
+            for (e, name) in crate::catalog::EXERCISES.iter().zip(exercise_names()) {
+                if menu_item(ui, st, e.key, name) {
+                    st.open_exercise(e.text);
+                }
+            }
+        });
         for (t, name) in crate::catalog::TEMPLATES.iter().zip(template_names()) {
             if menu_item(ui, st, name, name) {
                 chosen = Some(t);

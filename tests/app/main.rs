@@ -8,6 +8,7 @@ mod chinese_names;
 mod commands;
 mod drawing;
 mod every_control;
+mod exercise;
 mod file_actions;
 mod gear_lab;
 mod gear_train;

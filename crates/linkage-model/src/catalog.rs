@@ -53,6 +53,14 @@ pub const TRAINS: &[BuiltinScene] = &[
     embedded!("trains", "differential"),
 ];
 
+/// The exercises in `assets/exercises` a student opens from *New… → Exercises*. A
+/// test checks that this list and the directory agree.
+pub const EXERCISES: &[BuiltinScene] = &[
+    embedded!("exercises", "die_cutter_slider"),
+    embedded!("exercises", "four_bar_instant_centres"),
+    embedded!("exercises", "cam_pressure_angle"),
+];
+
 impl BuiltinScene {
     /// Its display name (the file's `name` field), or its key if the text does not
     /// parse (a test checks that every built-in one does).
@@ -83,6 +91,17 @@ mod tests {
             .collect();
         keys.sort();
         keys
+    }
+
+    #[test]
+    fn the_catalog_lists_exactly_the_exercise_files_and_each_reads() {
+        let mut listed: Vec<String> = EXERCISES.iter().map(|s| s.key.to_string()).collect();
+        listed.sort();
+        assert_eq!(listed, keys_on_disk("assets/exercises"));
+        for e in EXERCISES {
+            crate::exercise::Exercise::parse(e.text)
+                .unwrap_or_else(|why| panic!("{}: {why}", e.key));
+        }
     }
 
     #[test]

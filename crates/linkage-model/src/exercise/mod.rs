@@ -151,6 +151,15 @@ fn check_questions(file: &ExerciseFile, subject: &SubjectData) -> Result<(), Exe
     Ok(())
 }
 
+/// Whether `text` is an exercise file (its first word, past comments, is
+/// `Exercise`), so that a file opened or dropped goes to the exercise desk.
+pub fn is_exercise_file(text: &str) -> bool {
+    text.lines()
+        .map(str::trim)
+        .find(|l| !l.is_empty() && !l.starts_with("//"))
+        .is_some_and(|l| l.starts_with("Exercise"))
+}
+
 /// FNV-1a, 32 bits (written out: a fingerprint no crate's release may change).
 pub(crate) fn fnv1a32(bytes: &[u8]) -> u32 {
     bytes.iter().fold(0x811c_9dc5_u32, |h, b| {

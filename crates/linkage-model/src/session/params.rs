@@ -70,14 +70,7 @@ impl LengthParam {
 /// or a slider's guide passes through; spring anchors, centroids and tool points are
 /// not dimensions of the chain and get no slider.
 pub fn length_params(scene: &SceneFile) -> Vec<LengthParam> {
-    let shared = |name: &str, me: usize| {
-        scene
-            .links
-            .iter()
-            .enumerate()
-            .any(|(i, l)| i != me && l.points.contains_key(name))
-            || scene.sliders.iter().any(|s| s.through == name)
-    };
+    let shared = |name: &str, me: usize| is_joint_point(scene, name, me);
     let mut out = Vec::new();
     for (i, link) in scene.links.iter().enumerate() {
         let joints: Vec<(&String, &(f64, f64))> = link
@@ -102,6 +95,17 @@ pub fn length_params(scene: &SceneFile) -> Vec<LengthParam> {
         }
     }
     out
+}
+
+/// Whether `name` on link number `link` is a joint point: another link shares it (a
+/// pin) or a slider's guide passes through it.
+pub fn is_joint_point(scene: &SceneFile, name: &str, link: usize) -> bool {
+    let pinned = scene
+        .links
+        .iter()
+        .enumerate()
+        .any(|(i, l)| i != link && l.points.contains_key(name));
+    pinned || scene.sliders.iter().any(|s| s.through == name)
 }
 
 /// `AB` for one-letter names, `O4-O2` otherwise (so that the pair stays readable).

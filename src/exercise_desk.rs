@@ -1,0 +1,140 @@
+//! The student's side of an exercise: the exercise open, the student's number typed,
+//! the variant drawn from it and opened as the scene, the answers as typed, and from
+//! them the marks (homework) and the answer code. While a desk is open the app shows
+//! only what the exercise gives (its data, the mechanism moving, the questions): the
+//! analyses that would show the answers stay closed.
+
+use linkage_model::exercise::code::{AnswerSheet, TypedAnswerError, typed_answer};
+use linkage_model::exercise::{Exercise, Mode, StudentId, SubjectData, Variant};
+
+use crate::session::{SceneSource, Session};
+
+/// An exercise open on the student's side.
+#[derive(Clone, Debug)]
+pub struct ExerciseDesk {
+    /// The exercise.
+    pub exercise: Exercise,
+    /// The student's number as being typed.
+    pub student_text: String,
+    /// The student's variant, once the number was taken.
+    pub variant: Option<Variant>,
+    /// Each question's answer as typed (with or without its unit).
+    pub answers: Vec<String>,
+    /// Why the number typed gave no variant.
+    pub refusal: Option<DeskRefusal>,
+}
+
+/// Why a student's number gave no variant.
+#[derive(Clone, Debug, PartialEq)]
+pub enum DeskRefusal {
+    /// Not a student number.
+    BadNumber,
+    /// No variant for it (the exercise's requirements), or the variant's scene did
+    /// not open: worded by the model.
+    NoVariant(String),
+}
+
+/// One answer as typed, read.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Answer {
+    /// Nothing typed.
+    Empty,
+    /// A number in the question's unit.
+    Value(f64),
+    /// Not a number, or in a unit of another kind.
+    Refused(TypedAnswerError),
+}
+
+impl ExerciseDesk {
+    /// A desk over `exercise`, no student yet.
+    pub fn new(exercise: Exercise) -> Self {
+        let answers = vec![String::new(); exercise.file.questions.len()];
+        Self {
+            exercise,
+            student_text: String::new(),
+            variant: None,
+            answers,
+            refusal: None,
+        }
+    }
+
+    /// Takes the number typed: draws its variant and returns the scene to open (a
+    /// mechanism's; a cam exercise opens none).
+    pub fn start(&mut self) -> Option<Session> {
+        self.variant = None;
+        self.answers.iter_mut().for_each(String::clear);
+        let Ok(student) = StudentId::parse(&self.student_text) else {
+            self.refusal = Some(DeskRefusal::BadNumber);
+            return None;
+        };
+        let variant = match self.exercise.variant(&student) {
+            Ok(v) => v,
+            Err(e) => {
+                self.refusal = Some(DeskRefusal::NoVariant(e.to_string()));
+                return None;
+            }
+        };
+        self.refusal = None;
+        let session = match &variant.subject {
+            SubjectData::Scene(scene) => {
+                let name = format!("{}_{}.ron", self.exercise.file.id, student);
+                match Session::open_scene(SceneSource::File(name), scene.as_ref().clone()) {
+                    Ok(s) => Some(s),
+                    Err(e) => {
+                        self.refusal = Some(DeskRefusal::NoVariant(e.to_string()));
+                        return None;
+                    }
+                }
+            }
+            SubjectData::Cam(_) => None,
+        };
+        self.variant = Some(variant);
+        session
+    }
+
+    /// Answer `i` as typed, read in its question's unit.
+    pub fn answer(&self, i: usize) -> Answer {
+        let (Some(text), Some(q)) = (self.answers.get(i), self.exercise.file.questions.get(i))
+        else {
+            return Answer::Empty;
+        };
+        match text.trim() {
+            "" => Answer::Empty,
+            t => typed_answer(t, q.unit).map_or_else(Answer::Refused, Answer::Value),
+        }
+    }
+
+    /// In homework, whether answer `i` is right (`None`: a test, no variant, or no
+    /// number typed).
+    pub fn mark(&self, i: usize) -> Option<bool> {
+        let variant = self.variant.as_ref()?;
+        if self.exercise.file.mode != Mode::Homework {
+            return None;
+        }
+        let Answer::Value(v) = self.answer(i) else {
+            return None;
+        };
+        Some(
+            self.exercise.file.questions[i]
+                .tolerance
+                .accepts(v, variant.truths[i]),
+        )
+    }
+
+    /// The answer code of the answers typed (`None` before a variant, or while an
+    /// answer is refused).
+    pub fn code(&self) -> Option<String> {
+        let variant = self.variant.as_ref()?;
+        let answers = (0..self.answers.len())
+            .map(|i| match self.answer(i) {
+                Answer::Empty => Some(None),
+                Answer::Value(v) => Some(Some(v)),
+                Answer::Refused(_) => None,
+            })
+            .collect::<Option<Vec<_>>>()?;
+        Some(self.exercise.answer_code(&AnswerSheet {
+            student: variant.student.clone(),
+            answers,
+        }))
+    }
+}

@@ -1,0 +1,198 @@
+//! The exercise desk's pane: the student's number, then the variant's data, the
+//! mechanism's play and crank angle, the questions with an answer field each (marked
+//! in homework), and the answer code to send. The words are `exercise_words`'.
+
+use eframe::egui;
+
+use crate::exercise_desk::{Answer, DeskRefusal, ExerciseDesk};
+use crate::i18n::tr;
+use crate::state::AppState;
+use crate::ui::control_map::ControlKind;
+use crate::ui::exercise_words as words;
+use linkage_model::exercise::{Mode, SubjectData};
+
+/// The student-number field's and the answers' names in the control map (the tests'
+/// handles in any language).
+pub const STUDENT_FIELD: &str = "student number";
+/// The start button's name in the control map.
+pub const START_BUTTON: &str = "get my exercise";
+
+/// The pane.
+pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
+    let Some(desk) = st.exercise.as_mut() else {
+        return;
+    };
+    ui.heading(desk.exercise.file.name.clone());
+    ui.label(match desk.exercise.file.mode {
+        Mode::Homework => tr!("exercise.homework"),
+        Mode::Test => tr!("exercise.test"),
+    });
+    if student_row(ui, desk, &mut st.controls) {
+        start(st);
+    }
+    let Some(desk) = st.exercise.as_ref() else {
+        return;
+    };
+    if let Some(why) = &desk.refusal {
+        let words = match why {
+            DeskRefusal::BadNumber => tr!("exercise.bad_number"),
+            DeskRefusal::NoVariant(why) => tr!("exercise.no_variant", why = why),
+        };
+        ui.colored_label(ui.visuals().error_fg_color, words);
+    }
+    if desk.variant.is_none() {
+        return;
+    }
+    ui.separator();
+    data(ui, st);
+    if matches!(
+        st.exercise
+            .as_ref()
+            .and_then(|d| d.variant.as_ref())
+            .map(|v| &v.subject),
+        Some(SubjectData::Scene(_))
+    ) {
+        crate::ui::controls::play_and_speed(ui, st);
+        crate::ui::controls::crank_and_run_time(ui, st);
+    }
+    ui.separator();
+    if let Some(desk) = st.exercise.as_mut() {
+        questions(ui, desk, &mut st.controls);
+        ui.separator();
+        code(ui, desk);
+    }
+    ui.separator();
+    ui.small(tr!("exercise.hidden_note"));
+}
+
+/// The student-number field and its button; whether the number was taken.
+fn student_row(
+    ui: &mut egui::Ui,
+    desk: &mut ExerciseDesk,
+    controls: &mut crate::ui::control_map::ControlMap,
+) -> bool {
+    ui.horizontal_wrapped(|ui| {
+        let label = ui.label(tr!("exercise.student_number"));
+        let field = ui
+            .add(
+                egui::TextEdit::singleline(&mut desk.student_text)
+                    .id_salt("exercise student")
+                    .desired_width(140.0),
+            )
+            .labelled_by(label.id);
+        controls.note(ui, ControlKind::Exercise, STUDENT_FIELD, &field);
+        let entered = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+        let button = ui.button(tr!("exercise.start"));
+        controls.note(ui, ControlKind::Exercise, START_BUTTON, &button);
+        button.clicked() || entered
+    })
+    .inner
+}
+
+/// Draws the variant of the number typed and opens its scene, with the overlays
+/// that would show the answers (vectors, instant centres) off.
+fn start(st: &mut AppState) {
+    let Some(desk) = st.exercise.as_mut() else {
+        return;
+    };
+    if let Some(session) = desk.start() {
+        st.play.playing = false;
+        st.view.edit_points = false;
+        st.view.layers.velocities = false;
+        st.view.layers.accelerations = false;
+        st.view.layers.centres = false;
+        st.open(session);
+    }
+}
+
+/// The variant's data.
+fn data(ui: &mut egui::Ui, st: &AppState) {
+    let Some(variant) = st.exercise.as_ref().and_then(|d| d.variant.as_ref()) else {
+        return;
+    };
+    ui.strong(tr!("exercise.data"));
+    let rows = match &variant.subject {
+        SubjectData::Scene(_) => words::mechanism_data(&st.session),
+        SubjectData::Cam(cam) => words::cam_data(cam),
+    };
+    egui::Grid::new("exercise data")
+        .num_columns(2)
+        .show(ui, |ui| {
+            for (name, value) in rows {
+                ui.label(name);
+                ui.add(egui::Label::new(value).wrap());
+                ui.end_row();
+            }
+        });
+}
+
+/// Each question with its answer field, unit and (homework) mark.
+fn questions(
+    ui: &mut egui::Ui,
+    desk: &mut ExerciseDesk,
+    controls: &mut crate::ui::control_map::ControlMap,
+) {
+    ui.strong(tr!("exercise.questions"));
+    for i in 0..desk.answers.len() {
+        let q = &desk.exercise.file.questions[i];
+        let (unit, tolerance) = (q.unit, q.tolerance);
+        let label = ui.label(format!("{}. {}", i + 1, words::question(&q.ask)));
+        ui.horizontal_wrapped(|ui| {
+            let field = ui
+                .add(
+                    egui::TextEdit::singleline(&mut desk.answers[i])
+                        .id_salt(("exercise answer", i))
+                        .desired_width(120.0),
+                )
+                .labelled_by(label.id);
+            controls.note(
+                ui,
+                ControlKind::Exercise,
+                &format!("answer {}", i + 1),
+                &field,
+            );
+            ui.label(words::unit_words(unit));
+            match (desk.answer(i), desk.mark(i)) {
+                (Answer::Refused(e), _) => {
+                    ui.colored_label(ui.visuals().error_fg_color, words::refusal(&e));
+                }
+                (_, Some(right)) => {
+                    let tol = words::tolerance(tolerance, unit);
+                    let (text, colour) = if right {
+                        (
+                            tr!("exercise.right", tol = tol),
+                            egui::Color32::from_rgb(40, 140, 60),
+                        )
+                    } else {
+                        (
+                            tr!("exercise.wrong", tol = tol),
+                            ui.visuals().error_fg_color,
+                        )
+                    };
+                    ui.colored_label(colour, text);
+                }
+                _ => {}
+            }
+        });
+    }
+}
+
+/// The answer code and its copy button.
+fn code(ui: &mut egui::Ui, desk: &ExerciseDesk) {
+    let Some(code) = desk.code() else {
+        ui.label(tr!("exercise.code_waiting"));
+        return;
+    };
+    ui.label(tr!("exercise.code"));
+    ui.horizontal_wrapped(|ui| {
+        let mut shown = code.as_str();
+        ui.add(
+            egui::TextEdit::singleline(&mut shown)
+                .id_salt("exercise code")
+                .desired_width(f32::INFINITY),
+        );
+    });
+    if ui.button(tr!("exercise.copy")).clicked() {
+        ui.ctx().copy_text(code);
+    }
+}
