@@ -4,7 +4,8 @@
 # 127.0.0.1, and runs tests/browser/browser_test.mjs in Debian's headless Chromium via
 # playwright-core, once per build (WebGL2, WebGPU; in the WebGPU build what its renderer
 # decides, over every scene), and every_scene.mjs, links_and_drops.mjs,
-# every_device.mjs (phones and tablets, by touch) and laptop.mjs in the WebGL2 build.
+# exercise.mjs, every_device.mjs (phones and tablets, by touch) and laptop.mjs in the
+# WebGL2 build.
 # First the unit tests of the browser tests' own judges (frames_test.mjs).
 # Installs chromium and the npm packages if missing.
 set -euo pipefail
@@ -71,6 +72,9 @@ done
 # same code in both builds and draw nothing of their own: once, in the WebGL2 build
 # (53 s in the WebGPU build on this machine).
 LINKAGE_BUILD=webgl2 timed node tests/browser/links_and_drops.mjs "http://127.0.0.1:$port/" || status=1
+# An exercise's link, an answer typed, thirty students' codes made in the page and
+# graded by the command line (the same code in both builds, drawing nothing of its own).
+LINKAGE_BUILD=webgl2 timed node tests/browser/exercise.mjs "http://127.0.0.1:$port/" || status=1
 # Layout and touch are the same code in both builds, and the WebGPU build draws
 # through SwiftShader's Vulkan at a fifth of the speed: the devices and the laptop
 # run once. Their screenshots of every scene go to SCREENSHOT_DIR, to be looked at.

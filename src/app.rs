@@ -76,6 +76,11 @@ impl LinkageApp {
             Some(Err(why)) => state.status = Some(why),
             None => {}
         }
+        #[cfg(target_arch = "wasm32")]
+        if let Some((key, student)) = crate::exercise_desk::exercise_link(&crate::web::fragment()) {
+            state.open_exercise_link(&key, student.as_deref());
+            state.apply_commands();
+        }
         #[cfg(not(target_arch = "wasm32"))]
         if let Some(path) = &start.file {
             panels.files.open_path(&mut state, path);
@@ -169,9 +174,11 @@ fn initial_session() -> (Session, Option<String>) {
 fn initial_session() -> (Session, Option<String>) {
     let fragment = crate::web::fragment();
     let st = crate::session::url_state::decode(&fragment);
+    // An exercise's link opens the desk (`LinkageApp::new`) over the default scene.
+    let exercise = crate::exercise_desk::exercise_link(&fragment).is_some();
     match crate::session::url_state::open(&st) {
         Ok(s) => (s, None),
-        Err(e) if fragment.len() > 1 => {
+        Err(e) if fragment.len() > 1 && !exercise => {
             log::warn!("the link's scene did not open: {e}");
             (
                 open_or_explain(DEFAULT_SCENE),
@@ -501,7 +508,10 @@ impl LinkageApp {
     /// the stored drawing, the Chinese face, the controls the browser test reads, and
     /// on the first frame the time it was drawn.
     fn end_web_frame(&mut self, ctx: &egui::Context) {
-        if let Some(why) = self.url.update(&self.state.session, self.state.language) {
+        // While an exercise is open the address stays the exercise's link.
+        if self.state.exercise.is_none()
+            && let Some(why) = self.url.update(&self.state.session, self.state.language)
+        {
             self.state.status = Some(why);
         }
         self.drawing_store.update(self.state.drawing.as_ref());

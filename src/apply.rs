@@ -48,6 +48,41 @@ impl AppState {
         }
     }
 
+    /// Takes the student number typed at the open desk: draws its variant and opens
+    /// its scene, with the overlays that would show the answers (vectors, instant
+    /// centres) and moving points off.
+    pub fn start_exercise(&mut self) {
+        let Some(desk) = self.exercise.as_mut() else {
+            return;
+        };
+        if let Some(session) = desk.start() {
+            self.play.playing = false;
+            self.view.edit_points = false;
+            self.view.layers.velocities = false;
+            self.view.layers.accelerations = false;
+            self.view.layers.centres = false;
+            self.open(session);
+        }
+    }
+
+    /// Opens the shipped exercise `key` (a link's), with `student`'s variant if one
+    /// is given; an unknown key is said in the status line.
+    pub fn open_exercise_link(&mut self, key: &str, student: Option<&str>) {
+        let Some(e) = crate::catalog::EXERCISES.iter().find(|e| e.key == key) else {
+            let known: Vec<&str> = crate::catalog::EXERCISES.iter().map(|e| e.key).collect();
+            self.status = Some(format!(
+                "no exercise \"{key}\" (one of {})",
+                known.join(", ")
+            ));
+            return;
+        };
+        self.open_exercise(e.text);
+        if let (Some(desk), Some(student)) = (self.exercise.as_mut(), student) {
+            desk.student_text = student.to_string();
+            self.start_exercise();
+        }
+    }
+
     /// Applies the commands asked for, in order, and adds their time to the frame's.
     pub fn apply_commands(&mut self) {
         if self.commands.queue.is_empty() {

@@ -138,3 +138,93 @@ impl ExerciseDesk {
         }))
     }
 }
+
+/// The shipped exercise and student a link names (`#exercise=KEY&student=N`).
+pub fn exercise_link(fragment: &str) -> Option<(String, Option<String>)> {
+    let pairs: Vec<(&str, &str)> = fragment
+        .trim_start_matches('#')
+        .split('&')
+        .filter_map(|p| p.split_once('='))
+        .collect();
+    let value = |key: &str| {
+        pairs
+            .iter()
+            .find(|(k, _)| *k == key)
+            .map(|(_, v)| v.to_string())
+    };
+    Some((value("exercise")?, value("student")))
+}
+
+fn shipped(key: &str) -> Result<Exercise, String> {
+    let e = crate::catalog::EXERCISES
+        .iter()
+        .find(|e| e.key == key)
+        .ok_or_else(|| format!("no exercise {key}"))?;
+    Exercise::parse(e.text).map_err(|e| e.to_string())
+}
+
+/// The varied dimensions of `student`'s variant of the shipped exercise `key`, as
+/// JSON (`{"values": [...], "draws": n}`, or `{"error": "..."}`): the browser test
+/// compares them with the command line's, to the last bit. No truth: the page
+/// could show it.
+pub fn variant_json(key: &str, student: &str) -> String {
+    let variant = shipped(key).and_then(|ex| {
+        let student = StudentId::parse(student).map_err(|e| e.to_string())?;
+        ex.variant(&student).map_err(|e| e.to_string())
+    });
+    let json = match variant {
+        Ok(v) => serde_json::json!({"values": v.values, "draws": v.draws}),
+        Err(e) => serde_json::json!({"error": e}),
+    };
+    json.to_string()
+}
+
+/// The answer code of `student`'s answers `answers` (each typed with or without its
+/// unit, separated by `|`) to the shipped exercise `key`, made as the desk makes it
+/// (or why not, after `error: `).
+pub fn code_for(key: &str, student: &str, answers: &str) -> String {
+    let made = shipped(key).and_then(|exercise| {
+        let mut desk = ExerciseDesk::new(exercise);
+        desk.student_text = student.to_string();
+        desk.start();
+        desk.answers = answers.split('|').map(str::to_string).collect();
+        desk.code()
+            .ok_or_else(|| "no code: a student number or an answer refused".to_string())
+    });
+    made.unwrap_or_else(|e| format!("error: {e}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_link_names_the_exercise_and_the_student() {
+        let link = exercise_link("#exercise=die_cutter_slider&student=2026001");
+        assert_eq!(
+            link,
+            Some(("die_cutter_slider".into(), Some("2026001".into())))
+        );
+        assert_eq!(
+            exercise_link("#exercise=cam_pressure_angle").map(|l| l.1),
+            Some(None)
+        );
+        assert_eq!(exercise_link("#scene=die_cutter"), None);
+    }
+
+    /// The page's hooks give what the desk gives: the same dimensions as the
+    /// variant, a code the teacher reads back with the answers converted.
+    #[test]
+    fn the_pages_hooks_give_the_desks_variant_and_code() {
+        let json = variant_json("die_cutter_slider", "2026001");
+        assert_eq!(json, r#"{"draws":3,"values":[76.0,184.0,40.0]}"#);
+        assert!(variant_json("die_cutter_slider", "no number!").contains("error"));
+        let code = code_for("die_cutter_slider", "2026001", "105 mm/s|||||1.3");
+        assert!(
+            code.starts_with("LX1:die-slider:") && code.contains(":2026001:0.105/////1.3:"),
+            "{code}"
+        );
+        assert!(code_for("die_cutter_slider", "2026001", "1 rad/s|||||").starts_with("error: "));
+        assert!(code_for("no_such", "1", "").starts_with("error: "));
+    }
+}

@@ -25,6 +25,9 @@ pub enum FileAction {
     CoursePdf,
     /// The course-design report (its window's choices) as one PDF.
     ReportPdf,
+    /// The open exercise's task sheet of the student's variant as one PDF (in the
+    /// browser: its print dialog).
+    TaskSheetPdf,
     /// Write a cam joint (by its index) over its turn as CSV.
     CamCsv(usize),
     /// Write a cam joint's profile sheet as SVG.
@@ -47,6 +50,7 @@ impl FileAction {
                 crate::i18n::tr!("action.course", format = self.file_type().1)
             }
             Self::ReportPdf => crate::i18n::tr!("action.report"),
+            Self::TaskSheetPdf => crate::i18n::tr!("action.task_sheet"),
             Self::CamCsv(_) => crate::i18n::tr!("action.cam_csv"),
             Self::CamSvg(_) => crate::i18n::tr!("action.cam_svg"),
             Self::CamDxf(_) => crate::i18n::tr!("action.cam_dxf"),
@@ -60,7 +64,9 @@ impl FileAction {
             Self::ExportCsv | Self::CamCsv(_) => ("CSV table", "csv"),
             Self::ExportSheet | Self::CamSvg(_) | Self::CourseSvg => ("SVG drawing", "svg"),
             Self::ExportSheetPng | Self::CoursePng => ("PNG picture", "png"),
-            Self::ExportSheetPdf | Self::CoursePdf | Self::ReportPdf => ("PDF document", "pdf"),
+            Self::ExportSheetPdf | Self::CoursePdf | Self::ReportPdf | Self::TaskSheetPdf => {
+                ("PDF document", "pdf")
+            }
             Self::CamDxf(_) => ("DXF drawing", "dxf"),
         }
     }

@@ -67,3 +67,19 @@ pub fn linkage_lab_controls() -> String {
 pub fn linkage_lab_edit_cpu(key: String) -> String {
     linkage_lab::edit_cpu_json(&key)
 }
+
+/// The browser test's hook: the varied dimensions of a student's variant of a
+/// shipped exercise, as JSON (`window.wasmBindings.linkage_lab_exercise_variant`).
+#[cfg(target_arch = "wasm32")]
+#[wasm_bindgen::prelude::wasm_bindgen]
+pub fn linkage_lab_exercise_variant(key: String, student: String) -> String {
+    linkage_lab::exercise_desk::variant_json(&key, &student)
+}
+
+/// The browser test's hook: a student's answer code made in the page as the desk
+/// makes it (`window.wasmBindings.linkage_lab_exercise_code`).
+#[cfg(target_arch = "wasm32")]
+#[wasm_bindgen::prelude::wasm_bindgen]
+pub fn linkage_lab_exercise_code(key: String, student: String, answers: String) -> String {
+    linkage_lab::exercise_desk::code_for(&key, &student, &answers)
+}

@@ -58,6 +58,21 @@ struct Published<'a> {
     sheet_tab: crate::ui::layout::SheetTab,
     /// The language of the app's words, as its locale code ("en", "zh-CN").
     language: &'static str,
+    /// The exercise open at the desk, if any.
+    exercise: Option<PublishedExercise<'a>>,
+}
+
+/// The open exercise as the test hook shows it.
+#[derive(serde::Serialize)]
+struct PublishedExercise<'a> {
+    /// The exercise's id.
+    id: &'a str,
+    /// The student's number, once a variant is drawn.
+    student: Option<&'a str>,
+    /// The varied dimensions (no truth).
+    values: Vec<f64>,
+    /// The answer code, while every answer typed reads.
+    code: Option<String>,
 }
 
 /// A path search as the test hook shows it.
@@ -192,6 +207,16 @@ pub fn publish_controls(
         arrangement: st.layout.arrangement,
         sheet_tab: st.layout.tab,
         language: st.language.code(),
+        exercise: st.exercise.as_ref().map(|d| PublishedExercise {
+            id: &d.exercise.file.id,
+            student: d.variant.as_ref().map(|v| v.student.as_str()),
+            values: d
+                .variant
+                .as_ref()
+                .map(|v| v.values.clone())
+                .unwrap_or_default(),
+            code: d.code(),
+        }),
     };
     let json = serde_json::to_string(&published).unwrap_or_default();
     CONTROLS.with(|c| *c.borrow_mut() = json);
@@ -301,6 +326,10 @@ pub fn follow_fragment(st: &mut crate::state::AppState, url: &mut UrlSync) {
     // the scene.
     if let Some(language) = crate::language_pref::in_fragment(&fragment) {
         st.language = language;
+    }
+    if let Some((key, student)) = crate::exercise_desk::exercise_link(&fragment) {
+        st.open_exercise_link(&key, student.as_deref());
+        return;
     }
     let wanted = crate::language_pref::without_language(&fragment);
     if wanted == url_state::encode(&st.session) {

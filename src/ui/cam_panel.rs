@@ -126,16 +126,7 @@ fn law_menu(
 
 /// A law as the textbooks name it, in the app's language.
 pub fn law_name(law: Law) -> String {
-    match law {
-        Law::ConstantVelocity => tr!("law.constant_velocity"),
-        Law::SimpleHarmonic => tr!("law.simple_harmonic"),
-        Law::Cycloidal => tr!("law.cycloidal"),
-        Law::Polynomial345 => tr!("law.polynomial_345"),
-        Law::Polynomial4567 => tr!("law.polynomial_4567"),
-        Law::ModifiedTrapezoid => tr!("law.modified_trapezoid"),
-        Law::ModifiedSine => tr!("law.modified_sine"),
-        Law::ModifiedConstantVelocity => tr!("law.modified_constant_velocity"),
-    }
+    linkage_model::exercise::words::law_name(law, crate::ui::words::lang())
 }
 
 /// The largest lift (every lift scales with it) and the roller's radius.

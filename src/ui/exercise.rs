@@ -28,7 +28,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         Mode::Test => tr!("exercise.test"),
     });
     if student_row(ui, desk, &mut st.controls) {
-        start(st);
+        st.start_exercise();
     }
     let Some(desk) = st.exercise.as_ref() else {
         return;
@@ -61,6 +61,12 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
         ui.separator();
         code(ui, desk);
     }
+    let sheet = ui.button(tr!("exercise.task_sheet"));
+    st.controls
+        .note(ui, ControlKind::Exercise, "task sheet", &sheet);
+    if sheet.clicked() {
+        st.commands.file = Some(crate::file_action::FileAction::TaskSheetPdf);
+    }
     ui.separator();
     ui.small(tr!("exercise.hidden_note"));
 }
@@ -89,28 +95,14 @@ fn student_row(
     .inner
 }
 
-/// Draws the variant of the number typed and opens its scene, with the overlays
-/// that would show the answers (vectors, instant centres) off.
-fn start(st: &mut AppState) {
-    let Some(desk) = st.exercise.as_mut() else {
-        return;
-    };
-    if let Some(session) = desk.start() {
-        st.play.playing = false;
-        st.view.edit_points = false;
-        st.view.layers.velocities = false;
-        st.view.layers.accelerations = false;
-        st.view.layers.centres = false;
-        st.open(session);
-    }
-}
-
 /// The variant's data.
 fn data(ui: &mut egui::Ui, st: &AppState) {
     let Some(variant) = st.exercise.as_ref().and_then(|d| d.variant.as_ref()) else {
         return;
     };
-    ui.strong(tr!("exercise.data"));
+    ui.strong(linkage_model::exercise::words::data_heading(
+        crate::ui::words::lang(),
+    ));
     let rows = match &variant.subject {
         SubjectData::Scene(_) => words::mechanism_data(&st.session),
         SubjectData::Cam(cam) => words::cam_data(cam),
@@ -132,7 +124,9 @@ fn questions(
     desk: &mut ExerciseDesk,
     controls: &mut crate::ui::control_map::ControlMap,
 ) {
-    ui.strong(tr!("exercise.questions"));
+    ui.strong(linkage_model::exercise::words::questions_heading(
+        crate::ui::words::lang(),
+    ));
     for i in 0..desk.answers.len() {
         let q = &desk.exercise.file.questions[i];
         let (unit, tolerance) = (q.unit, q.tolerance);

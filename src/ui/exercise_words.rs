@@ -1,228 +1,32 @@
-//! The exercise's words in the app's language: each question as the textbooks ask
-//! it, the variant's data (every length as the length sliders name it, the crank's
-//! speed; a cam's radii, offset, stroke and program), a typed answer's refusal and a
-//! tolerance.
+//! The exercise's words in the app's language: the model's
+//! ([`linkage_model::exercise::words`], which the task sheets use too), in the
+//! language of the frame.
 
-use linkage::cam::{CamSpec, FaceSpec, FollowerSpec, SegmentSpec};
-use linkage::scene::Speed;
-use linkage_diagram::numbers::significant;
 use linkage_model::exercise::code::TypedAnswerError;
-use linkage_model::exercise::quantity::{Axis, Quantity};
-use linkage_model::exercise::{Tolerance, Unit};
+use linkage_model::exercise::quantity::Quantity;
+use linkage_model::exercise::words;
 
-use crate::i18n::tr;
 use crate::session::Session;
+use crate::ui::words::lang;
+
+pub use words::{tolerance, unit_words};
 
 /// A question as the student reads it.
 pub fn question(q: &Quantity) -> String {
-    let deg = |d: &f64| significant(*d, 6);
-    match q {
-        Quantity::PointSpeed { point, crank_deg } => {
-            tr!(
-                "exercise.q_point_speed",
-                point = point,
-                deg = deg(crank_deg)
-            )
-        }
-        Quantity::PointAcceleration { point, crank_deg } => {
-            tr!(
-                "exercise.q_point_acceleration",
-                point = point,
-                deg = deg(crank_deg)
-            )
-        }
-        Quantity::AngularVelocity { link, crank_deg } => {
-            tr!(
-                "exercise.q_angular_velocity",
-                link = link,
-                deg = deg(crank_deg)
-            )
-        }
-        Quantity::AngularAcceleration { link, crank_deg } => {
-            tr!(
-                "exercise.q_angular_acceleration",
-                link = link,
-                deg = deg(crank_deg)
-            )
-        }
-        Quantity::InstantCentre {
-            links: (a, b),
-            crank_deg,
-            axis,
-        } => {
-            let axis = match axis {
-                Axis::X => "x",
-                Axis::Y => "y",
-            };
-            tr!(
-                "exercise.q_instant_centre",
-                axis = axis,
-                a = a,
-                b = b,
-                deg = deg(crank_deg)
-            )
-        }
-        Quantity::TimeRatio => tr!("exercise.q_time_ratio"),
-        Quantity::Stroke { output } => tr!("exercise.q_stroke", output = output),
-        Quantity::Swing { output } => tr!("exercise.q_swing", output = output),
-        Quantity::LeastTransmissionAngle => tr!("exercise.q_least_transmission"),
-        Quantity::BalancingTorque { crank_deg } => {
-            tr!("exercise.q_balancing_torque", deg = deg(crank_deg))
-        }
-        Quantity::LargestPressureAngle => tr!("exercise.q_pressure_angle"),
-        Quantity::LeastRadiusOfCurvature => tr!("exercise.q_curvature"),
-    }
+    words::question(q, lang())
 }
 
 /// Why a typed answer was refused.
 pub fn refusal(e: &TypedAnswerError) -> String {
-    match e {
-        TypedAnswerError::NotANumber(_) => tr!("exercise.not_a_number"),
-        TypedAnswerError::Unit { expected, .. } => {
-            tr!("exercise.give_unit", unit = unit_words(*expected))
-        }
-    }
+    words::refusal(e, lang())
 }
 
-/// A unit as shown beside an answer (`m/s²`, `N·m`, `°`).
-pub fn unit_words(unit: Unit) -> String {
-    match unit {
-        Unit::MetrePerSecondSquared => "m/s²".into(),
-        Unit::MillimetrePerSecondSquared => "mm/s²".into(),
-        Unit::RadianPerSecondSquared => "rad/s²".into(),
-        Unit::Degree => "°".into(),
-        Unit::NewtonMetre => "N·m".into(),
-        Unit::KilogramSquareMetre => "kg·m²".into(),
-        Unit::Rpm => "r/min".into(),
-        other => other.symbol().to_string(),
-    }
-}
-
-/// A tolerance as shown with a mark: `3 %` or `± 0.03 m/s`.
-pub fn tolerance(t: Tolerance, unit: Unit) -> String {
-    match t {
-        Tolerance::Relative(r) => format!("{} %", significant(r * 100.0, 3)),
-        Tolerance::Absolute(a) => format!("± {} {}", significant(a, 3), unit_words(unit))
-            .trim_end()
-            .to_string(),
-    }
-}
-
-/// The mechanism's data: the frame's pivots (x, y), the sliders' guides, every
-/// length as the sliders name it, then the crank's speed.
+/// The mechanism's data.
 pub fn mechanism_data(session: &Session) -> Vec<(String, String)> {
-    let scene = session.scene();
-    let unit = linkage_diagram::numbers::unit_symbol(scene.length_unit);
-    let mut rows: Vec<(String, String)> = Vec::new();
-    for link in scene.links.iter().filter(|l| l.ground) {
-        for (name, (x, y)) in &link.points {
-            let at = format!("({}, {}) {unit}", significant(*x, 6), significant(*y, 6));
-            rows.push((tr!("exercise.pivot", point = name), at));
-        }
-    }
-    for s in &scene.sliders {
-        let guide = tr!(
-            "exercise.guide_value",
-            point = &s.through,
-            deg = significant(s.angle, 6)
-        );
-        rows.push((tr!("exercise.guide", slider = &s.slider), guide));
-    }
-    rows.extend(session.lengths().iter().filter_map(|p| {
-        Some((
-            p.label.clone(),
-            format!("{} {unit}", significant(p.value(scene)?, 6)),
-        ))
-    }));
-    rows.extend(carried_points(scene, unit));
-    let rpm = match scene.driver.speed {
-        Speed::Rpm(n) => n,
-        Speed::RadPerSecond(w) => w * 60.0 / std::f64::consts::TAU,
-    };
-    rows.push((
-        tr!("exercise.crank_speed"),
-        format!("{} r/min", significant(rpm, 6)),
-    ));
-    rows
+    words::mechanism_data(session.scene(), lang())
 }
 
-/// Points a moving link carries that no other link shares (a coupler's tracer
-/// point): each one's distance from the link's joints (`BE = 187 mm, CE = 193 mm`).
-fn carried_points(scene: &linkage::SceneFile, unit: &str) -> Vec<(String, String)> {
-    let shared = |name: &str, me: usize| {
-        scene
-            .links
-            .iter()
-            .enumerate()
-            .any(|(i, l)| i != me && l.points.contains_key(name))
-    };
-    let mut rows = Vec::new();
-    for (i, link) in scene.links.iter().enumerate().filter(|(_, l)| !l.ground) {
-        let joints: Vec<_> = link.points.iter().filter(|(n, _)| shared(n, i)).collect();
-        for (name, p) in link.points.iter().filter(|(n, _)| !shared(n, i)) {
-            let distances: Vec<String> = joints
-                .iter()
-                .map(|(j, q)| {
-                    format!(
-                        "{j}{name} = {} {unit}",
-                        significant((p.0 - q.0).hypot(p.1 - q.1), 6)
-                    )
-                })
-                .collect();
-            if !distances.is_empty() {
-                rows.push((
-                    tr!("exercise.carried", point = name, link = &link.name),
-                    distances.join(", "),
-                ));
-            }
-        }
-    }
-    rows
-}
-
-/// A cam's data: its radii, offset, stroke, speed and program.
-pub fn cam_data(cam: &CamSpec) -> Vec<(String, String)> {
-    let mm = |v: f64| format!("{} mm", significant(v, 6));
-    let mut rows = vec![(tr!("exercise.base_radius"), mm(cam.base_radius_mm))];
-    let face = match cam.follower {
-        FollowerSpec::Translating { offset_mm, face } => {
-            rows.push((tr!("exercise.offset"), mm(offset_mm)));
-            face
-        }
-        FollowerSpec::Oscillating { face, .. } => face,
-    };
-    if let FaceSpec::Roller { radius_mm } = face {
-        rows.push((tr!("exercise.roller_radius"), mm(radius_mm)));
-    }
-    if let Some(h) = cam.segments.iter().find_map(SegmentSpec::lift) {
-        rows.push((tr!("exercise.cam_stroke"), mm(h)));
-    }
-    rows.push((
-        tr!("exercise.cam_speed"),
-        format!("{} r/min", significant(cam.rpm, 6)),
-    ));
-    let program: Vec<String> = cam.segments.iter().map(segment).collect();
-    rows.push((tr!("exercise.program"), program.join(", ")));
-    rows
-}
-
-fn segment(s: &SegmentSpec) -> String {
-    let deg = significant(s.angle_deg(), 6);
-    match *s {
-        SegmentSpec::Rise { law, .. } => {
-            tr!(
-                "exercise.seg_rise",
-                deg = deg,
-                law = crate::ui::cam_panel::law_name(law)
-            )
-        }
-        SegmentSpec::Return { law, .. } => {
-            tr!(
-                "exercise.seg_return",
-                deg = deg,
-                law = crate::ui::cam_panel::law_name(law)
-            )
-        }
-        SegmentSpec::Dwell { .. } => tr!("exercise.seg_dwell", deg = deg),
-    }
+/// A cam's data.
+pub fn cam_data(cam: &linkage::cam::CamSpec) -> Vec<(String, String)> {
+    words::cam_data(cam, lang())
 }

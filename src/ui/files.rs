@@ -103,6 +103,12 @@ impl Files {
         self.take_answers(st);
     }
 
+    /// Acts on the answer of a dialog opened while the file buttons are not shown
+    /// (the exercise desk's task sheet).
+    pub fn take_dialog_answers(&mut self, st: &mut AppState) {
+        self.take_answers(st);
+    }
+
     /// Starts a file action another panel asked for (the cam panel's exports): the
     /// file buttons may be out of sight, in a phone's menu.
     pub fn take_requested(
@@ -232,7 +238,10 @@ impl Files {
                     })
                 })
             }
-            FileAction::ExportSheetPdf | FileAction::CoursePdf | FileAction::ReportPdf => {
+            FileAction::ExportSheetPdf
+            | FileAction::CoursePdf
+            | FileAction::ReportPdf
+            | FileAction::TaskSheetPdf => {
                 let printed = pages_of(st, action)
                     .and_then(|sheet| crate::web::print_pages(&sheet).map_err(WriteError::Browser));
                 if printed.is_ok() {
@@ -317,6 +326,7 @@ fn default_name(st: &AppState, action: FileAction) -> String {
             format!("{stem}_course.{}", action.file_type().1)
         }
         FileAction::ReportPdf => format!("{stem}_report.pdf"),
+        FileAction::TaskSheetPdf => format!("{stem}_task.pdf"),
     }
 }
 
@@ -340,6 +350,9 @@ enum WriteError {
     /// The course sheet's positions to draw, mistyped (the words say the range).
     #[error("{0}")]
     Course(String),
+    /// No exercise open with a student's variant.
+    #[error("no student's exercise is open")]
+    NoVariant,
     /// The scene has no cam joint of that number (an edit took it away).
     #[error("the scene has no cam joint {0}")]
     NoCam(usize),
@@ -374,6 +387,7 @@ impl WriteError {
             Self::Opening => tr!("file.nothing_to_write"),
             Self::Course(why) => why.clone(),
             Self::NoCam(n) => tr!("file.no_cam", number = n),
+            Self::NoVariant => tr!("file.no_variant"),
             #[cfg(target_arch = "wasm32")]
             Self::DxfInBrowser => tr!("file.dxf_in_browser"),
             #[cfg(target_arch = "wasm32")]
@@ -397,9 +411,10 @@ fn contents(st: &AppState, action: FileAction) -> Result<Vec<Vec<u8>>, WriteErro
             .map(String::into_bytes)
             .collect()),
         FileAction::ExportSheetPng | FileAction::CoursePng => sheet_png(st, action),
-        FileAction::ExportSheetPdf | FileAction::CoursePdf | FileAction::ReportPdf => {
-            sheet_pdf(st, action).map(one)
-        }
+        FileAction::ExportSheetPdf
+        | FileAction::CoursePdf
+        | FileAction::ReportPdf
+        | FileAction::TaskSheetPdf => sheet_pdf(st, action).map(one),
         FileAction::CamCsv(i) => st
             .session
             .cam_csv(i)
@@ -460,6 +475,15 @@ fn pages_of(st: &AppState, action: FileAction) -> Result<Sheet, WriteError> {
             Ok(st.session.course_sheet(&course()?, lang)?)
         }
         FileAction::ReportPdf => Ok(st.session.course_report(&course()?, lang)?),
+        FileAction::TaskSheetPdf => {
+            let desk = st.exercise.as_ref();
+            let variant = desk
+                .and_then(|d| d.variant.as_ref())
+                .ok_or(WriteError::NoVariant)?;
+            Ok(desk
+                .map(|d| d.exercise.task_sheet(variant, lang))
+                .ok_or(WriteError::NoVariant)?)
+        }
         _ => Ok(sheet(st)),
     }
 }

@@ -23,7 +23,7 @@ fn names() -> &'static [String] {
 pub fn top_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &eframe::Frame) {
     egui::Panel::top("scene_bar").show(ui, |ui| {
         if st.exercise.is_some() {
-            exercise_bar(ui, st);
+            exercise_bar(ui, st, files);
         } else if st.layout.compact() {
             compact_bar(ui, st, files, frame);
         } else {
@@ -66,7 +66,9 @@ fn wide_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files, frame: &efr
 
 /// While an exercise is open: the app's name, closing the exercise, fitting the
 /// view and the language; no file, analysis or overlay that would show an answer.
-fn exercise_bar(ui: &mut egui::Ui, st: &mut AppState) {
+fn exercise_bar(ui: &mut egui::Ui, st: &mut AppState, files: &mut Files) {
+    // The desk's task sheet is a file action: its dialog's answer comes here.
+    files.take_dialog_answers(st);
     ui.horizontal_wrapped(|ui| {
         ui.strong(tr!("app.name"));
         let close = ui.button(tr!("exercise.close"));

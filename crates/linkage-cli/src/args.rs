@@ -338,6 +338,18 @@ pub(crate) enum ExerciseCommand {
         #[arg(long, allow_hyphen_values = true)]
         answer: Vec<String>,
     },
+    /// Every student's task sheet (A4: the title and number, the mechanism drawn,
+    /// the student's data, the questions with lines for the answers), one after
+    /// another in one PDF (or SVG/PNG pages).
+    Sheets {
+        /// Exercise file (RON).
+        file: PathBuf,
+        /// The class list: a CSV whose first column holds the students' numbers.
+        #[arg(long)]
+        students: PathBuf,
+        #[command(flatten)]
+        out: SheetOut,
+    },
     /// Grades answer codes (one a line, or a CSV with a column of them) and writes
     /// the grades as CSV; lines that are not valid codes are reported on stderr.
     Grade {

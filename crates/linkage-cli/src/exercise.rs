@@ -5,6 +5,8 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use linkage_diagram::numbers::significant;
+use linkage_diagram::pages::Sheet;
+use linkage_diagram::words::Lang;
 use linkage_model::exercise::class_list::class_list;
 use linkage_model::exercise::code::{AnswerSheet, typed_answer};
 use linkage_model::exercise::{Exercise, StudentId};
@@ -20,6 +22,14 @@ pub(crate) fn run(command: ExerciseCommand) -> Result<String> {
         ExerciseCommand::Variants { file, students } => {
             variants(&read_exercise(&file)?, &read_class(&students)?)
         }
+        ExerciseCommand::Sheets {
+            file,
+            students,
+            out,
+        } => {
+            let sheet = sheets(&read_exercise(&file)?, &read_class(&students)?, out.lang)?;
+            crate::diagram::write_sheet(sheet, &out)
+        }
         ExerciseCommand::Code {
             file,
             student,
@@ -30,32 +40,52 @@ pub(crate) fn run(command: ExerciseCommand) -> Result<String> {
             answers,
             students,
             out,
-        } => {
-            let exercise = read_exercise(&file)?;
-            let class = students.as_deref().map(read_class).transpose()?;
-            let text = read(&answers)?;
-            let graded = exercise.grade_class(&text, class.as_deref());
-            for (line, why) in &graded.problems {
-                eprintln!("{}: line {line}: {why}", answers.display());
-            }
-            let csv = exercise.grades_csv(&graded.grades);
-            match out {
-                None => Ok(csv),
-                Some(path) => {
-                    std::fs::write(&path, csv).map_err(|source| CliError::Write {
-                        path: path.clone(),
-                        source,
-                    })?;
-                    Ok(format!(
-                        "{} students graded, {} lines not graded; grades in {}\n",
-                        graded.grades.len(),
-                        graded.problems.len(),
-                        path.display()
-                    ))
-                }
-            }
-        }
+        } => grade(
+            &read_exercise(&file)?,
+            &answers,
+            students.as_deref(),
+            out.as_deref(),
+        ),
     }
+}
+
+/// Every student's task sheet, one after another.
+fn sheets(ex: &Exercise, class: &[StudentId], lang: Lang) -> Result<Sheet> {
+    let mut pages = Vec::new();
+    for student in class {
+        pages.extend(ex.task_sheet(&ex.variant(student)?, lang).pages);
+    }
+    Ok(Sheet {
+        title: ex.file.name.clone(),
+        pages,
+    })
+}
+
+/// The grades CSV of the codes in `answers` (to `out`, or returned); each line not
+/// graded said on stderr.
+fn grade(
+    ex: &Exercise,
+    answers: &Path,
+    students: Option<&Path>,
+    out: Option<&Path>,
+) -> Result<String> {
+    let class = students.map(read_class).transpose()?;
+    let graded = ex.grade_class(&read(answers)?, class.as_deref());
+    for (line, why) in &graded.problems {
+        eprintln!("{}: line {line}: {why}", answers.display());
+    }
+    let csv = ex.grades_csv(&graded.grades);
+    let Some(path) = out else { return Ok(csv) };
+    std::fs::write(path, csv).map_err(|source| CliError::Write {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    Ok(format!(
+        "{} students graded, {} lines not graded; grades in {}\n",
+        graded.grades.len(),
+        graded.problems.len(),
+        path.display()
+    ))
 }
 
 fn read(path: &Path) -> Result<String> {

@@ -54,6 +54,7 @@ mod svg_draw;
 mod svg_forces;
 mod svg_plan;
 pub mod svg_report;
+pub mod svg_task;
 pub mod svg_timing;
 pub mod train_schematic;
 pub mod words;

@@ -141,7 +141,7 @@ fn polygons(pages: &mut Pages, pos: &Position<'_>, parts: Parts, sizes: Sizes, l
 }
 
 /// Draws the pose; the centres not drawn are listed below it, a line each.
-fn pose(pages: &mut Pages, laid: &LaidPose, lang: Lang) {
+pub(crate) fn pose(pages: &mut Pages, laid: &LaidPose, lang: Lang) {
     let out = pages.out();
     frame(out, &laid.pane);
     for l in &laid.links {

@@ -141,3 +141,45 @@ fn bad_input_is_refused_with_its_cause() {
     let (_, _, err) = run_linkage(&["exercise", "variants", &exercise, "--students", &class]);
     assert!(err.contains("line 3: student number \"2026 001\""), "{err}");
 }
+
+/// Every student's task sheet, a page each: as SVG pages (A4, each with its
+/// student's number) and as one PDF.
+#[test]
+fn the_classes_task_sheets_are_a_page_a_student() {
+    let exercise = repo("assets/exercises/die_cutter_slider.ron");
+    let class = temp("sheet_class.csv", "student\n2026001\n2026002\n2026003\n");
+    let dir = std::env::temp_dir().join(format!("linkage-tasks-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a folder");
+    let svg = dir.join("task.svg").display().to_string();
+    let pdf = dir.join("tasks.pdf").display().to_string();
+    ok(&[
+        "exercise",
+        "sheets",
+        &exercise,
+        "--students",
+        &class,
+        "--svg",
+        &svg,
+        "--pdf",
+        &pdf,
+        "--lang",
+        "zh-CN",
+    ]);
+    for (i, name) in ["task.svg", "task-2.svg", "task-3.svg"].iter().enumerate() {
+        let page = std::fs::read_to_string(dir.join(name)).expect("a page a student");
+        assert!(
+            page.contains("width=\"210.0mm\" height=\"297.0mm\""),
+            "{name}: A4"
+        );
+        assert!(
+            page.contains(&format!("学号：202600{}", i + 1)),
+            "{name}: its student"
+        );
+    }
+    assert!(
+        !dir.join("task-4.svg").exists(),
+        "three students, three pages"
+    );
+    assert!(std::fs::read(&pdf).expect("the PDF").starts_with(b"%PDF"));
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -114,6 +114,22 @@ fn check(sheet: &Sheet, what: &str, out: &mut Vec<String>, lines: &mut Vec<Strin
     }
 }
 
+/// No problem found and no line through a text, or each listed.
+fn assert_clean(found: &[String], lines: &[String]) {
+    assert!(
+        found.is_empty(),
+        "{} problems:\n{}",
+        found.len(),
+        found.join("\n")
+    );
+    assert!(
+        lines.is_empty(),
+        "{} lines through texts:\n{}",
+        lines.len(),
+        lines.join("\n")
+    );
+}
+
 #[test]
 fn every_page_of_every_sheet_is_a4_with_no_text_over_text() {
     let (mut found, mut lines) = (Vec::new(), Vec::new());
@@ -131,18 +147,7 @@ fn every_page_of_every_sheet_is_a4_with_no_text_over_text() {
             check(&course_sheet(&course, lang), &what, &mut found, &mut lines);
         }
     }
-    assert!(
-        found.is_empty(),
-        "{} problems:\n{}",
-        found.len(),
-        found.join("\n")
-    );
-    assert!(
-        lines.is_empty(),
-        "{} lines through texts:\n{}",
-        lines.len(),
-        lines.join("\n")
-    );
+    assert_clean(&found, &lines);
 }
 
 /// The check finds what it is for: two texts drawn on one spot, a text past the
@@ -167,4 +172,52 @@ fn the_check_sees_an_overlap_and_a_text_off_the_page() {
     );
     assert!(found.iter().any(|p| p.contains("overlaps")));
     assert!(found.iter().any(|p| p.contains("past the page")));
+}
+
+/// A student's task sheet, as an exercise words it: every shipped scene drawn at its
+/// start with data and questions long enough to wrap, in English and Chinese.
+#[test]
+fn every_task_sheet_is_a4_with_no_text_over_text() {
+    use linkage_diagram::svg_task::{TaskSheet, task_sheet};
+    let (mut found, mut lines) = (Vec::new(), Vec::new());
+    for (file, m) in common::scenes_and_examples() {
+        let mut k = Kinematics::new(m).expect("kinematics");
+        let s = k
+            .solve(k.mechanism().driver.start_rad)
+            .expect("assembles at its start");
+        for lang in Lang::ALL {
+            let (q, v) = match lang {
+                Lang::English => (
+                    "Angular velocity ω of rocker at φ = 30° (counter-clockwise +)",
+                    "through D, at 90° to x",
+                ),
+                Lang::Chinese => (
+                    "φ = 30° 时构件 rocker 的角速度 ω（逆时针为正）",
+                    "过 D 点，与 x 轴成 90°",
+                ),
+            };
+            let task = TaskSheet {
+                title: format!(
+                    "{file}: an exercise with a long title that wraps onto a second line of the page"
+                ),
+                student: "Student number: 2026001".into(),
+                data: (
+                    "Your data".into(),
+                    (0..12)
+                        .map(|i| (format!("Frame pivot P{i} (x, y)"), format!("{v}; {v}; {v}")))
+                        .collect(),
+                ),
+                questions: (
+                    "Find".into(),
+                    (0..14)
+                        .map(|i| (format!("{q} {i}"), "rad/s²".to_string()))
+                        .collect(),
+                ),
+                pose: Some((k.mechanism(), &s)),
+            };
+            let what = format!("{file}: task sheet ({})", lang.code());
+            check(&task_sheet(&task, lang), &what, &mut found, &mut lines);
+        }
+    }
+    assert_clean(&found, &lines);
 }

@@ -10,9 +10,11 @@ pub mod error;
 pub mod file;
 pub mod grade;
 pub mod quantity;
+pub mod sheet;
 pub mod subject;
 pub mod unit;
 pub mod variant;
+pub mod words;
 
 #[cfg(test)]
 mod tests;

@@ -407,3 +407,33 @@ fn a_bad_exercise_file_is_refused_with_what_and_where() {
         ExerciseError::Syntax { .. }
     ));
 }
+
+/// The task sheet carries the student's number, the student's own data and every
+/// question, in the language asked for, on A4 pages; a cam's sheet has no drawing
+/// of a mechanism.
+#[test]
+fn a_task_sheet_holds_the_students_data_and_questions_in_their_language() {
+    use linkage_diagram::words::Lang;
+    let ex = Exercise::parse(DIE).expect("as set up");
+    let v = ex.variant(&student(1)).expect("as set up");
+    let zh = ex.task_sheet(&v, Lang::Chinese);
+    let text = zh.pages.join("");
+    assert!(
+        zh.pages
+            .iter()
+            .all(|p| p.contains("width=\"210.0mm\" height=\"297.0mm\""))
+    );
+    assert!(text.contains("学号：2026001"), "the number");
+    assert!(
+        text.contains("76 mm") && text.contains("184 mm"),
+        "AB and BC of this student"
+    );
+    assert!(text.contains("行程速比系数 K"), "the questions in Chinese");
+    for t in &v.truths {
+        let shown = linkage_diagram::numbers::significant(*t, 4);
+        assert!(!text.contains(&shown), "the truth {shown} on the sheet");
+    }
+    let cam = Exercise::parse(CAM).expect("as set up");
+    let sheet = cam.task_sheet(&cam.variant(&student(1)).expect("as set up"), Lang::English);
+    assert!(sheet.pages.join("").contains("Largest pressure angle"));
+}

@@ -214,5 +214,10 @@ mod tests {
             .expect("as set up");
         assert!((w - std::f64::consts::TAU).abs() < 1e-15);
         assert_eq!(Unit::Degree.convert(1.0, Unit::Millimetre), None);
+        // As typed: 105 mm/s is the 0.105 m/s a student would type, to the last bit.
+        assert_eq!(
+            Unit::MillimetrePerSecond.convert(105.0, Unit::MetrePerSecond),
+            Some(0.105)
+        );
     }
 }

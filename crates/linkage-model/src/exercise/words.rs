@@ -1,0 +1,257 @@
+//! An exercise's words in the user's language, for the app's desk and the task
+//! sheets alike: each question as the textbooks ask it, the variant's data (the
+//! frame's pivots, the guides, every length as the length sliders name it, points
+//! carried, the crank's speed; a cam's radii, offset, stroke and program), a typed
+//! answer's refusal, a tolerance and a unit as shown, a cam law's name.
+
+use linkage::SceneFile;
+use linkage::cam::Law;
+use linkage::cam::{CamSpec, FaceSpec, FollowerSpec, SegmentSpec};
+use linkage::scene::Speed;
+use linkage_diagram::numbers::significant;
+use linkage_diagram::words::Lang;
+
+use super::code::TypedAnswerError;
+use super::quantity::{Axis, Quantity};
+use super::{Tolerance, Unit};
+use crate::session::params::{is_joint_point, length_params};
+use crate::session::words::mw;
+
+/// A question as the student reads it.
+pub fn question(q: &Quantity, lang: Lang) -> String {
+    let deg = |d: &f64| significant(*d, 6);
+    match q {
+        Quantity::PointSpeed { point, crank_deg } => {
+            mw!(
+                lang,
+                "exercise.q_point_speed",
+                point = point,
+                deg = deg(crank_deg)
+            )
+        }
+        Quantity::PointAcceleration { point, crank_deg } => {
+            mw!(
+                lang,
+                "exercise.q_point_acceleration",
+                point = point,
+                deg = deg(crank_deg)
+            )
+        }
+        Quantity::AngularVelocity { link, crank_deg } => {
+            mw!(
+                lang,
+                "exercise.q_angular_velocity",
+                link = link,
+                deg = deg(crank_deg)
+            )
+        }
+        Quantity::AngularAcceleration { link, crank_deg } => {
+            mw!(
+                lang,
+                "exercise.q_angular_acceleration",
+                link = link,
+                deg = deg(crank_deg)
+            )
+        }
+        Quantity::InstantCentre {
+            links: (a, b),
+            crank_deg,
+            axis,
+        } => {
+            let axis = match axis {
+                Axis::X => "x",
+                Axis::Y => "y",
+            };
+            mw!(
+                lang,
+                "exercise.q_instant_centre",
+                axis = axis,
+                a = a,
+                b = b,
+                deg = deg(crank_deg)
+            )
+        }
+        Quantity::TimeRatio => mw!(lang, "exercise.q_time_ratio"),
+        Quantity::Stroke { output } => mw!(lang, "exercise.q_stroke", output = output),
+        Quantity::Swing { output } => mw!(lang, "exercise.q_swing", output = output),
+        Quantity::LeastTransmissionAngle => mw!(lang, "exercise.q_least_transmission"),
+        Quantity::BalancingTorque { crank_deg } => {
+            mw!(lang, "exercise.q_balancing_torque", deg = deg(crank_deg))
+        }
+        Quantity::LargestPressureAngle => mw!(lang, "exercise.q_pressure_angle"),
+        Quantity::LeastRadiusOfCurvature => mw!(lang, "exercise.q_curvature"),
+    }
+}
+
+/// Why a typed answer was refused.
+pub fn refusal(e: &TypedAnswerError, lang: Lang) -> String {
+    match e {
+        TypedAnswerError::NotANumber(_) => mw!(lang, "exercise.not_a_number"),
+        TypedAnswerError::Unit { expected, .. } => {
+            mw!(lang, "exercise.give_unit", unit = unit_words(*expected))
+        }
+    }
+}
+
+/// A unit as shown beside an answer (`m/s²`, `N·m`, `°`).
+pub fn unit_words(unit: Unit) -> String {
+    match unit {
+        Unit::MetrePerSecondSquared => "m/s²".into(),
+        Unit::MillimetrePerSecondSquared => "mm/s²".into(),
+        Unit::RadianPerSecondSquared => "rad/s²".into(),
+        Unit::Degree => "°".into(),
+        Unit::NewtonMetre => "N·m".into(),
+        Unit::KilogramSquareMetre => "kg·m²".into(),
+        Unit::Rpm => "r/min".into(),
+        other => other.symbol().to_string(),
+    }
+}
+
+/// A tolerance as shown with a mark: `3 %` or `± 0.03 m/s`.
+pub fn tolerance(t: Tolerance, unit: Unit) -> String {
+    match t {
+        Tolerance::Relative(r) => format!("{} %", significant(r * 100.0, 3)),
+        Tolerance::Absolute(a) => format!("± {} {}", significant(a, 3), unit_words(unit))
+            .trim_end()
+            .to_string(),
+    }
+}
+
+/// The mechanism's data: the frame's pivots (x, y), the sliders' guides, every
+/// length as the sliders name it, then the crank's speed.
+pub fn mechanism_data(scene: &SceneFile, lang: Lang) -> Vec<(String, String)> {
+    let unit = linkage_diagram::numbers::unit_symbol(scene.length_unit);
+    let mut rows: Vec<(String, String)> = Vec::new();
+    for link in scene.links.iter().filter(|l| l.ground) {
+        for (name, (x, y)) in &link.points {
+            let at = format!("({}, {}) {unit}", significant(*x, 6), significant(*y, 6));
+            rows.push((mw!(lang, "exercise.pivot", point = name), at));
+        }
+    }
+    for s in &scene.sliders {
+        let guide = mw!(
+            lang,
+            "exercise.guide_value",
+            point = &s.through,
+            deg = significant(s.angle, 6)
+        );
+        rows.push((mw!(lang, "exercise.guide", slider = &s.slider), guide));
+    }
+    rows.extend(length_params(scene).iter().filter_map(|p| {
+        Some((
+            p.label.clone(),
+            format!("{} {unit}", significant(p.value(scene)?, 6)),
+        ))
+    }));
+    rows.extend(carried_points(scene, unit, lang));
+    let rpm = match scene.driver.speed {
+        Speed::Rpm(n) => n,
+        Speed::RadPerSecond(w) => w * 60.0 / std::f64::consts::TAU,
+    };
+    rows.push((
+        mw!(lang, "exercise.crank_speed"),
+        format!("{} r/min", significant(rpm, 6)),
+    ));
+    rows
+}
+
+/// Points a moving link carries that no other link shares (a coupler's tracer
+/// point): each one's distance from the link's joints (`BE = 187 mm, CE = 193 mm`).
+fn carried_points(scene: &SceneFile, unit: &str, lang: Lang) -> Vec<(String, String)> {
+    let shared = |name: &str, me: usize| is_joint_point(scene, name, me);
+    let mut rows = Vec::new();
+    for (i, link) in scene.links.iter().enumerate().filter(|(_, l)| !l.ground) {
+        let joints: Vec<_> = link.points.iter().filter(|(n, _)| shared(n, i)).collect();
+        for (name, p) in link.points.iter().filter(|(n, _)| !shared(n, i)) {
+            let distances: Vec<String> = joints
+                .iter()
+                .map(|(j, q)| {
+                    format!(
+                        "{j}{name} = {} {unit}",
+                        significant((p.0 - q.0).hypot(p.1 - q.1), 6)
+                    )
+                })
+                .collect();
+            if !distances.is_empty() {
+                rows.push((
+                    mw!(lang, "exercise.carried", point = name, link = &link.name),
+                    distances.join(", "),
+                ));
+            }
+        }
+    }
+    rows
+}
+
+/// A cam's data: its radii, offset, stroke, speed and program.
+pub fn cam_data(cam: &CamSpec, lang: Lang) -> Vec<(String, String)> {
+    let mm = |v: f64| format!("{} mm", significant(v, 6));
+    let mut rows = vec![(mw!(lang, "exercise.base_radius"), mm(cam.base_radius_mm))];
+    let face = match cam.follower {
+        FollowerSpec::Translating { offset_mm, face } => {
+            rows.push((mw!(lang, "exercise.offset"), mm(offset_mm)));
+            face
+        }
+        FollowerSpec::Oscillating { face, .. } => face,
+    };
+    if let FaceSpec::Roller { radius_mm } = face {
+        rows.push((mw!(lang, "exercise.roller_radius"), mm(radius_mm)));
+    }
+    if let Some(h) = cam.segments.iter().find_map(SegmentSpec::lift) {
+        rows.push((mw!(lang, "exercise.cam_stroke"), mm(h)));
+    }
+    rows.push((
+        mw!(lang, "exercise.cam_speed"),
+        format!("{} r/min", significant(cam.rpm, 6)),
+    ));
+    let program: Vec<String> = cam.segments.iter().map(|s| segment(s, lang)).collect();
+    rows.push((mw!(lang, "exercise.program"), program.join(", ")));
+    rows
+}
+
+fn segment(s: &SegmentSpec, lang: Lang) -> String {
+    let deg = significant(s.angle_deg(), 6);
+    match *s {
+        SegmentSpec::Rise { law, .. } => {
+            mw!(
+                lang,
+                "exercise.seg_rise",
+                deg = deg,
+                law = law_name(law, lang)
+            )
+        }
+        SegmentSpec::Return { law, .. } => {
+            mw!(
+                lang,
+                "exercise.seg_return",
+                deg = deg,
+                law = law_name(law, lang)
+            )
+        }
+        SegmentSpec::Dwell { .. } => mw!(lang, "exercise.seg_dwell", deg = deg),
+    }
+}
+
+/// A law as the textbooks name it.
+pub fn law_name(law: Law, lang: Lang) -> String {
+    match law {
+        Law::ConstantVelocity => mw!(lang, "law.constant_velocity"),
+        Law::SimpleHarmonic => mw!(lang, "law.simple_harmonic"),
+        Law::Cycloidal => mw!(lang, "law.cycloidal"),
+        Law::Polynomial345 => mw!(lang, "law.polynomial_345"),
+        Law::Polynomial4567 => mw!(lang, "law.polynomial_4567"),
+        Law::ModifiedTrapezoid => mw!(lang, "law.modified_trapezoid"),
+        Law::ModifiedSine => mw!(lang, "law.modified_sine"),
+        Law::ModifiedConstantVelocity => mw!(lang, "law.modified_constant_velocity"),
+    }
+}
+
+/// The heading of a variant's data.
+pub fn data_heading(lang: Lang) -> String {
+    mw!(lang, "exercise.data")
+}
+
+/// The heading of the questions.
+pub fn questions_heading(lang: Lang) -> String {
+    mw!(lang, "exercise.questions")
+}
