@@ -217,7 +217,7 @@ mod tests {
     #[test]
     fn the_pages_hooks_give_the_desks_variant_and_code() {
         let json = variant_json("die_cutter_slider", "2026001");
-        assert_eq!(json, r#"{"draws":3,"values":[76.0,184.0,40.0]}"#);
+        assert_eq!(json, r#"{"draws":3,"values":[80.5,188.0,40.0]}"#);
         assert!(variant_json("die_cutter_slider", "no number!").contains("error"));
         let code = code_for("die_cutter_slider", "2026001", "105 mm/s|||||1.3");
         assert!(

@@ -22,7 +22,7 @@ pub fn panel(ui: &mut egui::Ui, st: &mut AppState) {
     let Some(desk) = st.exercise.as_mut() else {
         return;
     };
-    ui.heading(desk.exercise.file.name.clone());
+    ui.heading(desk.exercise.title(crate::ui::words::lang()).to_string());
     ui.label(match desk.exercise.file.mode {
         Mode::Homework => tr!("exercise.homework"),
         Mode::Test => tr!("exercise.test"),
@@ -111,7 +111,7 @@ fn data(ui: &mut egui::Ui, st: &AppState) {
         .num_columns(2)
         .show(ui, |ui| {
             for (name, value) in rows {
-                ui.label(name);
+                ui.label(marked(ui, &name));
                 ui.add(egui::Label::new(value).wrap());
                 ui.end_row();
             }
@@ -130,7 +130,10 @@ fn questions(
     for i in 0..desk.answers.len() {
         let q = &desk.exercise.file.questions[i];
         let (unit, tolerance) = (q.unit, q.tolerance);
-        let label = ui.label(format!("{}. {}", i + 1, words::question(&q.ask)));
+        let label = ui.label(marked(
+            ui,
+            &format!("{}. {}", i + 1, words::question(&q.ask)),
+        ));
         ui.horizontal_wrapped(|ui| {
             let field = ui
                 .add(
@@ -189,4 +192,14 @@ fn code(ui: &mut egui::Ui, desk: &ExerciseDesk) {
     if ui.button(tr!("exercise.copy")).clicked() {
         ui.ctx().copy_text(code);
     }
+}
+
+/// `text` with its `_{…}` subscripts set as the textbooks set them (v_E, α_max),
+/// wrapped to the pane.
+fn marked(ui: &egui::Ui, text: &str) -> egui::text::LayoutJob {
+    let size = egui::TextStyle::Body.resolve(ui.style()).size;
+    let label = linkage_diagram::label::Label::marked(text);
+    let mut job = crate::ui::typeset::job(&label, size, ui.visuals().text_color());
+    job.wrap.max_width = ui.available_width();
+    job
 }

@@ -120,9 +120,15 @@ fn a_student_gets_the_variant_of_the_number_typed_and_answers_it() {
     let student = linkage_lab::exercise::StudentId::parse("2026001").expect("a number");
     let variant = ex.variant(&student).expect("a variant");
     // The data as drawn: AB and BC of this student, the crank's speed.
-    assert!(h.query_by_label("76 mm").is_some(), "AB");
-    assert!(h.query_by_label("184 mm").is_some(), "BC");
-    assert!(h.query_by_label("40 r/min").is_some(), "the crank's speed");
+    let number = |x: f64| linkage_diagram::numbers::significant(x, 6);
+    let [ab, bc, rpm] = [0, 1, 2].map(|i| number(variant.values[i]));
+    assert!(h.query_by_label(&format!("{ab} mm")).is_some(), "AB");
+    assert!(h.query_by_label(&format!("{bc} mm")).is_some(), "BC");
+    assert!(
+        h.query_by_label(&format!("{rpm} r/min, counter-clockwise"))
+            .is_some(),
+        "the crank's speed"
+    );
     assert_eq!(
         h.state().state.session.scene(),
         match &variant.subject {
@@ -164,9 +170,11 @@ fn a_student_gets_the_variant_of_the_number_typed_and_answers_it() {
     );
 }
 
+/// Question `i` as its label reads (its subscripts set apart, so no marks).
 fn question_words(h: &Harness<'static, LinkageApp>, i: usize) -> String {
     let desk = h.state().state.exercise.as_ref().expect("open");
-    linkage_lab::ui::exercise_words::question(&desk.exercise.file.questions[i].ask)
+    let words = linkage_lab::ui::exercise_words::question(&desk.exercise.file.questions[i].ask);
+    linkage_diagram::label::Label::marked(&words).text()
 }
 
 /// No true answer on screen while the exercise is open: every shipped exercise, five

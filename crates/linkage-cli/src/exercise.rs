@@ -9,7 +9,9 @@ use linkage_diagram::pages::Sheet;
 use linkage_diagram::words::Lang;
 use linkage_model::exercise::class_list::class_list;
 use linkage_model::exercise::code::{AnswerSheet, typed_answer};
-use linkage_model::exercise::{Exercise, StudentId};
+use linkage_model::exercise::error::requirement_words;
+use linkage_model::exercise::words::{self, plain};
+use linkage_model::exercise::{Exercise, Mode, StudentId};
 
 use crate::args::ExerciseCommand;
 use crate::error::{CliError, Result};
@@ -107,36 +109,46 @@ fn read_class(path: &Path) -> Result<Vec<StudentId>> {
 fn check(ex: &Exercise) -> Result<String> {
     let f = &ex.file;
     let mut t = String::new();
+    let mode = match f.mode {
+        Mode::Homework => "homework: each answer marked as it is typed",
+        Mode::Test => "test: answers marked when graded",
+    };
+    let _ = writeln!(t, "{} (id {}; {mode})", f.name, f.id);
     let _ = writeln!(
         t,
-        "{} (id {}, {:?}, fingerprint {:08X})",
-        f.name,
-        f.id,
-        f.mode,
+        "answer codes carry the fingerprint {:08X}",
         ex.fingerprint()
     );
     for (i, v) in f.vary.iter().enumerate() {
-        let count = ex.value_count(i).unwrap_or(0);
-        let _ = writeln!(
-            t,
-            "varies: {} ({}), {count} values: {:?}",
-            v.label(),
-            ex.vary_unit(v),
-            v.values()
-        );
+        if let Some((first, last, step, count)) = ex.value_range(i) {
+            let unit = ex.vary_unit(v);
+            let [a, b, s] = [first, last, step].map(|x| significant(x, 10));
+            let _ = writeln!(
+                t,
+                "varies: {} from {a} to {b} {unit} in steps of {s} ({count} values)",
+                v.label()
+            );
+        }
     }
     for r in &f.require {
-        let _ = writeln!(t, "requires: {r:?}");
+        let _ = writeln!(t, "requires: {}", requirement_words(r));
     }
     for (i, q) in f.questions.iter().enumerate() {
+        let unit = match q.unit.symbol() {
+            "" => "no unit".to_string(),
+            s => format!("in {s}"),
+        };
+        let tolerance = plain(&words::tolerance(q.tolerance, q.unit));
+        let points = if q.points == 1.0 {
+            "1 point".into()
+        } else {
+            format!("{} points", significant(q.points, 6))
+        };
+        let asked = plain(&words::question(&q.ask, Lang::English));
         let _ = writeln!(
             t,
-            "question {}: {:?} in {}, {:?}, {} points",
-            i + 1,
-            q.ask,
-            q.unit,
-            q.tolerance,
-            q.points
+            "question {}: {asked}, {unit}, right within {tolerance}, {points}",
+            i + 1
         );
     }
     let mut most = 0;
@@ -144,9 +156,14 @@ fn check(ex: &Exercise) -> Result<String> {
         let student = StudentId::parse(&n.to_string()).expect("a number");
         most = most.max(ex.variant(&student)?.draws);
     }
+    let draws = if most == 1 {
+        "1 draw".to_string()
+    } else {
+        format!("{most} draws")
+    };
     let _ = writeln!(
         t,
-        "students 1 to 100: every variant drawn, at most {most} draws for one"
+        "students 1 to 100: every variant drawn, at most {draws} for one"
     );
     Ok(t)
 }
@@ -187,8 +204,11 @@ fn code(ex: &Exercise, student: &str, typed: &[String]) -> Result<String> {
     let questions = &ex.file.questions;
     if typed.len() != questions.len() {
         return Err(CliError::refused(format!(
-            "{} answers given, the exercise asks {} questions (--answer \"\" for one not answered)",
-            typed.len(),
+            "{} given, the exercise asks {} questions (--answer \"\" for one not answered)",
+            match typed.len() {
+                1 => "1 answer".to_string(),
+                n => format!("{n} answers"),
+            },
             questions.len()
         )));
     }

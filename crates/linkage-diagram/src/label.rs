@@ -45,6 +45,32 @@ impl Label {
         }
     }
 
+    /// Text whose subscripts the catalogue marks `_{…}` (M_{b}, α_{max}, v_{E}):
+    /// each one a subscript run. A name typed with an underscore and no brace
+    /// (`bell_crank`), or a brace left open, stays as written.
+    pub fn marked(text: &str) -> Self {
+        let mut runs = Vec::new();
+        let mut push = |text: &str, script| {
+            if !text.is_empty() {
+                runs.push(Run {
+                    text: text.to_string(),
+                    script,
+                });
+            }
+        };
+        let mut rest = text;
+        while let Some(at) = rest.find("_{") {
+            let Some(len) = rest[at..].find('}') else {
+                break;
+            };
+            push(&rest[..at], Script::Base);
+            push(&rest[at + 2..at + len], Script::Sub);
+            rest = &rest[at + len + 1..];
+        }
+        push(rest, Script::Base);
+        Self { runs }
+    }
+
     /// A polygon term's symbol: its letter, the points as subscript, the component
     /// (n, t, k, r) as superscript.
     pub fn of_symbol(s: &Symbol) -> Self {

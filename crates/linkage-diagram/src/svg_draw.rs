@@ -101,23 +101,20 @@ pub(crate) fn escape(t: &str) -> String {
 /// an underscore. A name the user typed with an underscore (`bell_crank`) has no
 /// brace after it and stays as typed.
 pub(crate) fn typeset(t: &str, size: f64) -> String {
-    let plain = escape;
     let mut out = String::new();
-    let mut rest = t;
-    while let Some(at) = rest.find("_{") {
-        let Some(len) = rest[at..].find('}') else {
-            break;
-        };
-        out.push_str(&plain(&rest[..at]));
-        let _ = write!(
-            out,
-            "<tspan font-size=\"{:.1}\" baseline-shift=\"sub\">{}</tspan>",
-            size * SCRIPT_SCALE,
-            plain(&rest[at + 2..at + len])
-        );
-        rest = &rest[at + len + 1..];
+    for run in Label::marked(t).runs {
+        match run.script {
+            Script::Sub => {
+                let _ = write!(
+                    out,
+                    "<tspan font-size=\"{:.1}\" baseline-shift=\"sub\">{}</tspan>",
+                    size * SCRIPT_SCALE,
+                    escape(&run.text)
+                );
+            }
+            _ => out.push_str(&escape(&run.text)),
+        }
     }
-    out.push_str(&plain(rest));
     out
 }
 

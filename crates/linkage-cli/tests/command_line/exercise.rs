@@ -119,7 +119,7 @@ fn bad_input_is_refused_with_its_cause() {
     ]);
     assert_eq!(code, Some(1));
     assert!(
-        err.contains("1 answers given, the exercise asks 6 questions"),
+        err.contains("1 answer given, the exercise asks 6 questions"),
         "{err}"
     );
     let six = [

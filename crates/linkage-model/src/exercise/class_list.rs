@@ -16,7 +16,7 @@ pub enum ClassListError {
         message: String,
     },
     /// A first cell that is not a student number.
-    #[error("line {line}: {why}")]
+    #[error("line {line}: {why}{}", if *line == 1 { " (a header row's first cell holds no digit)" } else { "" })]
     Student {
         /// Line, from 1.
         line: u64,

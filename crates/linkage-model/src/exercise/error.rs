@@ -67,9 +67,7 @@ pub enum ExerciseError {
         why: &'static str,
     },
     /// A question's unit measures something else than the quantity.
-    #[error(
-        "question {question}: unit \"{unit}\" does not measure a {kind:?} (the quantity's kind)"
-    )]
+    #[error("question {question}: unit \"{unit}\" does not measure {} (give one of {})", kind.words(), units_of(*kind))]
     UnitKind {
         /// Which question, from 1.
         question: usize,
@@ -77,6 +75,24 @@ pub enum ExerciseError {
         unit: Unit,
         /// What the quantity measures.
         kind: Kind,
+    },
+    /// A crank angle that is not finite or lies outside one turn either way.
+    #[error("question {question}: crank angle {deg} deg: give one within -360 to 360 deg")]
+    CrankAngle {
+        /// Which question, from 1.
+        question: usize,
+        /// The angle given, degrees.
+        deg: f64,
+    },
+    /// A requirement the subject cannot be held to (Grashof's classes of a
+    /// mechanism with no four-bar loop on its crank, a cam's pressure angle of a
+    /// mechanism, or the other way round).
+    #[error("require {index}: {why}")]
+    Requirement {
+        /// Which requirement, from 1.
+        index: usize,
+        /// Why it does not apply.
+        why: &'static str,
     },
     /// A tolerance that is not finite and positive, or points that are not.
     #[error("question {question}: the tolerance and the points must be finite and positive")]
@@ -121,6 +137,11 @@ pub enum DrawFailure {
         /// What the variant has.
         measured: Option<f64>,
     },
+    /// The variant folds flat somewhere in its turn.
+    #[error(
+        "the variant folds flat somewhere in its turn (a change point, where its assembly can switch and its answers are not defined)"
+    )]
+    ChangePoint,
     /// A question has no value on the variant.
     #[error("question {question}: {why}")]
     Question {
@@ -131,7 +152,18 @@ pub enum DrawFailure {
     },
 }
 
-fn requirement_words(r: &Requirement) -> String {
+/// The units of `kind`, quoted, for a refusal.
+fn units_of(kind: Kind) -> String {
+    let units: Vec<String> = super::unit::UNITS
+        .iter()
+        .filter(|u| u.kind() == kind)
+        .map(|u| format!("\"{}\"", u.symbol()))
+        .collect();
+    units.join(", ")
+}
+
+/// A requirement in words (`least transmission angle >= 30 deg`).
+pub fn requirement_words(r: &Requirement) -> String {
     match r {
         Requirement::Grashof(class) => format!("Grashof class {class:?}"),
         Requirement::FullRotation => "the crank's full rotation".into(),

@@ -16,6 +16,10 @@ use super::unit::Unit;
 pub struct ExerciseFile {
     /// Its title, shown to the students.
     pub name: String,
+    /// Its title in Chinese (简体中文), shown where the app or the sheet speaks
+    /// Chinese; the title above where there is none.
+    #[serde(default)]
+    pub name_zh: Option<String>,
     /// A short tag (letters, digits, `-`, `_`) carried in every answer code, so that
     /// a code for another exercise is told apart.
     pub id: String,

@@ -20,7 +20,7 @@ pub mod words;
 mod tests;
 
 pub use error::{DrawFailure, ExerciseError};
-pub use file::{ExerciseFile, Mode, Question, Tolerance, Values, Vary};
+pub use file::{ExerciseFile, Mode, Question, Requirement, Tolerance, Values, Vary};
 pub use quantity::Quantity;
 pub use subject::SubjectData;
 pub use unit::Unit;
@@ -82,13 +82,21 @@ impl Exercise {
             .map(|(i, v)| subject::grid(v.values(), subject.value(v, i + 1)?, i + 1))
             .collect::<Result<Vec<_>, _>>()?;
         check_questions(&file, &subject)?;
-        let written = ron::to_string(&file).unwrap_or_default();
+        check_requirements(&file, &subject)?;
         Ok(Self {
             grids,
-            fingerprint: fnv1a32(written.as_bytes()),
+            fingerprint: fingerprint(&file),
             file,
             subject,
         })
+    }
+
+    /// Its title in `lang`: the Chinese one where the file gives one.
+    pub fn title(&self, lang: linkage_diagram::words::Lang) -> &str {
+        match (&self.file.name_zh, lang) {
+            (Some(zh), linkage_diagram::words::Lang::Chinese) => zh,
+            _ => &self.file.name,
+        }
     }
 
     /// Its fingerprint.
@@ -113,10 +121,44 @@ impl Exercise {
         }
     }
 
-    /// How many values the varied dimension number `index` (from 0) takes.
-    pub fn value_count(&self, index: usize) -> Option<i64> {
-        self.grids.get(index).map(|g| g.1)
+    /// The values the varied dimension number `index` (from 0) takes: the first,
+    /// the last, the step and how many.
+    pub fn value_range(&self, index: usize) -> Option<(f64, f64, f64, i64)> {
+        let &(first, count, step) = self.grids.get(index)?;
+        Some((
+            first as f64 * step,
+            (first + count - 1) as f64 * step,
+            step,
+            count,
+        ))
     }
+}
+
+/// Each requirement applies to the subject: Grashof's classes to a mechanism with
+/// a four-bar loop on its crank, a mechanism's to a mechanism, a cam's to a cam.
+fn check_requirements(file: &ExerciseFile, subject: &SubjectData) -> Result<(), ExerciseError> {
+    let built = subject.build().map_err(ExerciseError::Subject)?;
+    for (i, r) in file.require.iter().enumerate() {
+        let why = match (r, &built) {
+            (Requirement::PressureAngleAtMostDeg(_), quantity::Built::Cam(_)) => None,
+            (Requirement::PressureAngleAtMostDeg(_), _) => {
+                Some("a cam's requirement: the subject is a mechanism")
+            }
+            (_, quantity::Built::Cam(_)) => Some("a mechanism's requirement: the subject is a cam"),
+            (Requirement::Grashof(_), quantity::Built::Mechanism { kinematics, .. })
+                if linkage::analysis::grashof(kinematics).is_none() =>
+            {
+                Some(
+                    "Grashof's classes are a four-bar's: this mechanism has no four-bar loop on its crank",
+                )
+            }
+            _ => None,
+        };
+        if let Some(why) = why {
+            return Err(ExerciseError::Requirement { index: i + 1, why });
+        }
+    }
+    Ok(())
 }
 
 /// Each question's unit measures its quantity, its tolerance and points are
@@ -133,6 +175,13 @@ fn check_questions(file: &ExerciseFile, subject: &SubjectData) -> Result<(), Exe
                 kind: q.ask.kind(),
             });
         }
+        if let Some(deg) = q
+            .ask
+            .crank_deg()
+            .filter(|d| !(d.is_finite() && d.abs() <= 360.0))
+        {
+            return Err(ExerciseError::CrankAngle { question, deg });
+        }
         let positive = |x: f64| x.is_finite() && x > 0.0;
         let tolerance = match q.tolerance {
             Tolerance::Relative(r) | Tolerance::Absolute(r) => r,
@@ -141,8 +190,9 @@ fn check_questions(file: &ExerciseFile, subject: &SubjectData) -> Result<(), Exe
             return Err(ExerciseError::Tolerance { question });
         }
         if let Err(
-            why @ (Unanswerable::NoPoint(_)
-            | Unanswerable::NoLink(_)
+            why @ (Unanswerable::NoPoint { .. }
+            | Unanswerable::NoLink { .. }
+            | Unanswerable::Frame(_)
             | Unanswerable::NoOutput { .. }
             | Unanswerable::WrongSubject(_)),
         ) = truth_si(&q.ask, &mut built)
@@ -160,6 +210,16 @@ pub fn is_exercise_file(text: &str) -> bool {
         .map(str::trim)
         .find(|l| !l.is_empty() && !l.starts_with("//"))
         .is_some_and(|l| l.starts_with("Exercise"))
+}
+
+/// The fingerprint of what an answer means: the subject, what varies, the
+/// requirements, and each question's quantity and unit, written out again. The
+/// title, the mode, the tolerances and the points are not in it: a teacher who
+/// mends a title or widens a tolerance after the codes came in still grades them.
+fn fingerprint(file: &ExerciseFile) -> u32 {
+    let asked: Vec<(&Quantity, Unit)> = file.questions.iter().map(|q| (&q.ask, q.unit)).collect();
+    let meaning = (&file.subject, &file.vary, &file.require, asked);
+    fnv1a32(ron::to_string(&meaning).unwrap_or_default().as_bytes())
 }
 
 /// FNV-1a, 32 bits (written out: a fingerprint no crate's release may change).

@@ -90,11 +90,24 @@ pub enum Axis {
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum Unanswerable {
     /// The subject has no point of that name.
-    #[error("there is no point \"{0}\"")]
-    NoPoint(String),
+    #[error("there is no point \"{name}\" (the points: {})", known.join(", "))]
+    NoPoint {
+        /// The name asked for.
+        name: String,
+        /// The points there are.
+        known: Vec<String>,
+    },
     /// The subject has no link of that name.
-    #[error("there is no link \"{0}\"")]
-    NoLink(String),
+    #[error("there is no link \"{name}\" (the links: {})", known.join(", "))]
+    NoLink {
+        /// The name asked for.
+        name: String,
+        /// The links there are.
+        known: Vec<String>,
+    },
+    /// A motion asked of the frame, which does not move.
+    #[error("\"{0}\" is the frame: it does not move")]
+    Frame(String),
     /// The report has no output of that name.
     #[error("there is no {kind} output \"{name}\" (the outputs: {})", known.join(", "))]
     NoOutput {
@@ -275,25 +288,50 @@ fn motion_at(
     crank_deg: f64,
     acceleration: bool,
 ) -> Result<f64, Unanswerable> {
+    // The names first: a name the subject lacks is said whether or not the chain
+    // assembles at the angle.
+    match read {
+        Read::Point(name) => point_id(built.kinematics()?.mechanism(), name).map(drop)?,
+        Read::Link(name) => moving_link_id(built.kinematics()?.mechanism(), name).map(drop)?,
+    }
     let (s, k) = built.solve(crank_deg)?;
     let m = k.mechanism();
     let derivative = usize::from(acceleration);
     match read {
         Read::Point(name) => {
-            let id = m
-                .point_index(name)
-                .ok_or_else(|| Unanswerable::NoPoint(name.into()))?;
-            let p = &s.points[id];
+            let p = &s.points[point_id(m, name)?];
             Ok([p.velocity, p.acceleration][derivative].norm())
         }
         Read::Link(name) => {
-            let id = m
-                .link_index(name)
-                .ok_or_else(|| Unanswerable::NoLink(name.into()))?;
-            let l = &s.links[id];
+            let l = &s.links[moving_link_id(m, name)?];
             Ok([l.omega_rad_s, l.alpha_rad_s2][derivative])
         }
     }
+}
+
+/// The point named `name`, or the points there are.
+fn point_id(m: &linkage::Mechanism, name: &str) -> Result<linkage::PointId, Unanswerable> {
+    m.point_index(name).ok_or_else(|| Unanswerable::NoPoint {
+        name: name.into(),
+        known: m.points.iter().map(|p| p.name.clone()).collect(),
+    })
+}
+
+/// The link named `name`, or the links there are.
+fn link_id(m: &linkage::Mechanism, name: &str) -> Result<linkage::LinkId, Unanswerable> {
+    m.link_index(name).ok_or_else(|| Unanswerable::NoLink {
+        name: name.into(),
+        known: m.links.iter().map(|l| l.name.clone()).collect(),
+    })
+}
+
+/// The moving link named `name` (the frame refused: it does not move).
+fn moving_link_id(m: &linkage::Mechanism, name: &str) -> Result<linkage::LinkId, Unanswerable> {
+    let id = link_id(m, name)?;
+    if id == m.ground {
+        return Err(Unanswerable::Frame(name.into()));
+    }
+    Ok(id)
 }
 
 fn centre_coordinate(
@@ -302,13 +340,12 @@ fn centre_coordinate(
     crank_deg: f64,
     axis: Axis,
 ) -> Result<f64, Unanswerable> {
+    let m = built.kinematics()?.mechanism();
+    link_id(m, a)?;
+    link_id(m, b)?;
     let (s, k) = built.solve(crank_deg)?;
     let m = k.mechanism();
-    let id = |name: &String| {
-        m.link_index(name)
-            .ok_or_else(|| Unanswerable::NoLink(name.clone()))
-    };
-    let (i, j) = (id(a)?, id(b)?);
+    let (i, j) = (link_id(m, a)?, link_id(m, b)?);
     let at = instant_centres(m, &s)
         .between(i, j)
         .and_then(|c| match c.centre {

@@ -38,7 +38,7 @@ impl Exercise {
             title: mw!(
                 lang,
                 "exercise.sheet_title",
-                name = &self.file.name,
+                name = self.title(lang),
                 student = student
             ),
             student: mw!(lang, "exercise.sheet_student", student = student),

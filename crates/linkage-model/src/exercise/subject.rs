@@ -191,10 +191,18 @@ pub fn grid(values: &Values, base: f64, index: usize) -> Result<(i64, i64, f64),
     if !(step.is_finite() && step > 0.0 && min.is_finite() && max.is_finite()) {
         return Err(bad("the step must be positive and the range finite"));
     }
+    if min > max {
+        return Err(bad("min is above max"));
+    }
     let (first, last) = ((min / step).ceil(), (max / step).floor());
     if last < first || last - first > 1e9 {
         return Err(bad(
             "the range holds no whole multiple of the step (or over 10^9 of them)",
+        ));
+    }
+    if last == first {
+        return Err(bad(
+            "the range holds one whole multiple of the step only, so it would not vary: widen it or take the entry out",
         ));
     }
     Ok((first as i64, (last - first) as i64 + 1, step))

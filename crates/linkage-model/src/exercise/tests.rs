@@ -58,7 +58,7 @@ fn every_shipped_exercise_gives_every_student_a_variant_the_same_each_time() {
 fn a_students_dimensions_are_pinned_to_the_file_and_the_number() {
     let ex = Exercise::parse(DIE).expect("as set up");
     let v = ex.variant(&student(1)).expect("as set up");
-    assert_eq!(v.values, [76.0, 184.0, 40.0]);
+    assert_eq!(v.values, [80.5, 188.0, 40.0]);
     assert_eq!(v.draws, 3);
     // Whole multiples of the step: the numbers a student reads are round.
     for (x, vary) in v.values.iter().zip(&ex.file.vary) {
@@ -225,9 +225,21 @@ fn an_answer_code_reads_back_the_answers_and_refuses_what_is_not_its_own() {
         other.read_code(&code),
         Err(CodeError::OtherExercise("die-slider".into()))
     );
+    // A question asked at another angle: the answers mean something else.
     let edited =
-        Exercise::parse(&DIE.replace("Relative(0.03)", "Relative(0.04)")).expect("as set up");
+        Exercise::parse(&DIE.replacen("crank_deg: 30.0", "crank_deg: 31.0", 1)).expect("as set up");
     assert_eq!(edited.read_code(&code), Err(CodeError::OtherVersion));
+    // A tolerance widened, a title mended after the codes came in: still graded,
+    // and every student keeps the variant.
+    let mended = DIE
+        .replace("Relative(0.03)", "Relative(0.04)")
+        .replace("Die cutter:", "The die cutter:");
+    let mended = Exercise::parse(&mended).expect("as set up");
+    assert_eq!(mended.read_code(&code), Ok(sheet.clone()));
+    assert_eq!(
+        mended.variant(&student(7)).expect("a variant").values,
+        ex.variant(&student(7)).expect("a variant").values
+    );
 }
 
 #[test]
@@ -425,7 +437,7 @@ fn a_task_sheet_holds_the_students_data_and_questions_in_their_language() {
     );
     assert!(text.contains("学号：2026001"), "the number");
     assert!(
-        text.contains("76 mm") && text.contains("184 mm"),
+        text.contains("80.5 mm") && text.contains("188 mm"),
         "AB and BC of this student"
     );
     assert!(text.contains("行程速比系数 K"), "the questions in Chinese");
@@ -436,4 +448,72 @@ fn a_task_sheet_holds_the_students_data_and_questions_in_their_language() {
     let cam = Exercise::parse(CAM).expect("as set up");
     let sheet = cam.task_sheet(&cam.variant(&student(1)).expect("as set up"), Lang::English);
     assert!(sheet.pages.join("").contains("Largest pressure angle"));
+}
+
+/// An in-line slider-crank whose crank and rod are drawn from overlapping ranges:
+/// a crank longer than the rod does not turn (refused by the requirement), one as
+/// long as the rod folds flat at a change point (redrawn: its stroke came out 0);
+/// every variant's stroke is the closed form 2·AB.
+const SLIDER_CRANK: &str = r#"Exercise(
+    name: "Slider-crank", id: "sc", mode: Homework, subject: Scene("slider_crank"),
+    vary: [
+        Length(length: "AB", values: Range(min: 150.0, max: 250.0, step: 10.0)),
+        Length(length: "BC", values: Around(spread: 0.1, step: 5.0)),
+    ],
+    require: [FullRotation],
+    questions: [(ask: Stroke(output: "slider"), unit: "mm", tolerance: Absolute(1.0))],
+)"#;
+
+#[test]
+fn a_variant_that_folds_flat_is_drawn_again_and_strokes_are_twice_the_crank() {
+    let ex = Exercise::parse(SLIDER_CRANK).expect("as set up");
+    let mut redrawn = false;
+    for n in 1..=60 {
+        let v = ex.variant(&student(n)).expect("a variant");
+        let (ab, bc) = (v.values[0], v.values[1]);
+        assert!(ab < bc, "student {n}: AB {ab} BC {bc}");
+        assert!(
+            (v.truths[0] - 2.0 * ab).abs() < 1e-9 * ab,
+            "student {n}: stroke {} for AB {ab}",
+            v.truths[0]
+        );
+        redrawn |= v.draws > 1;
+    }
+    assert!(redrawn, "some student's first draws were refused");
+}
+
+#[test]
+fn what_a_teacher_gets_wrong_is_refused_with_its_cause() {
+    let err = |text: String| Exercise::parse(&text).expect_err("refused");
+    let e = err(SLIDER_CRANK.replace("require: [FullRotation]", "require: [Grashof(CrankRocker)]"));
+    assert!(
+        matches!(e, ExerciseError::Requirement { index: 1, .. }),
+        "{e:?}"
+    );
+    assert!(e.to_string().contains("four-bar"), "{e}");
+    let e = err(FOUR_BAR.replacen("crank_deg: 60.0", "crank_deg: 400.0", 1));
+    assert!(
+        matches!(e, ExerciseError::CrankAngle { question: 1, .. }),
+        "{e:?}"
+    );
+    let e = err(FOUR_BAR.replace("link: \"rocker\"", "link: \"ground\""));
+    assert!(
+        e.to_string().contains("is the frame: it does not move"),
+        "{e}"
+    );
+    let e = err(FOUR_BAR.replace("link: \"rocker\"", "link: \"rockr\""));
+    assert!(
+        e.to_string()
+            .contains("(the links: ground, crank, coupler, rocker)"),
+        "{e}"
+    );
+    let e = err(FOUR_BAR.replace("unit: \"rad/s\"", "unit: \"m/s\""));
+    assert!(
+        e.to_string().contains("give one of \"rad/s\", \"rpm\""),
+        "{e}"
+    );
+    let e = err(FOUR_BAR.replace("min: 80.0, max: 120.0", "min: 120.0, max: 80.0"));
+    assert!(e.to_string().contains("min is above max"), "{e}");
+    let e = err(FOUR_BAR.replace("min: 80.0, max: 120.0", "min: 80.0, max: 84.0"));
+    assert!(e.to_string().contains("would not vary"), "{e}");
 }

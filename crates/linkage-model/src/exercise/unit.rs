@@ -28,6 +28,23 @@ pub enum Kind {
     Ratio,
 }
 
+impl Kind {
+    /// What it measures, in words for a refusal.
+    pub fn words(self) -> &'static str {
+        match self {
+            Kind::Speed => "a speed",
+            Kind::Acceleration => "an acceleration",
+            Kind::AngularSpeed => "an angular velocity",
+            Kind::AngularAcceleration => "an angular acceleration",
+            Kind::Length => "a length",
+            Kind::Angle => "an angle",
+            Kind::Torque => "a torque",
+            Kind::Inertia => "a moment of inertia",
+            Kind::Ratio => "a ratio (no unit: \"\")",
+        }
+    }
+}
+
 /// A unit of a question's answer.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(try_from = "String", into = "String")]
@@ -138,24 +155,41 @@ impl Unit {
         }
     }
 
-    /// One of this unit in SI.
+    /// Whether it is a thousandth of its SI unit (mm, mm/s, mm/s²).
+    fn milli(self) -> bool {
+        matches!(
+            self,
+            Unit::MillimetrePerSecond | Unit::MillimetrePerSecondSquared | Unit::Millimetre
+        )
+    }
+
+    /// One of this unit in SI (1 for the milli units, which divide by 1000).
     fn si_factor(self) -> f64 {
         match self {
-            Unit::MillimetrePerSecond | Unit::MillimetrePerSecondSquared | Unit::Millimetre => 1e-3,
             Unit::Rpm => std::f64::consts::TAU / 60.0,
             Unit::Degree => std::f64::consts::PI / 180.0,
             _ => 1.0,
         }
     }
 
-    /// `value` in this unit, in SI.
+    /// `value` in this unit, in SI. A thousandth is divided by 1000 (correctly
+    /// rounded), not multiplied by 1e-3 (which is not exact): 119 mm/s is the
+    /// 0.119 m/s a student would type, to the last bit.
     pub fn to_si(self, value: f64) -> f64 {
-        value * self.si_factor()
+        if self.milli() {
+            value / 1000.0
+        } else {
+            value * self.si_factor()
+        }
     }
 
     /// `si` (SI) in this unit.
     pub fn from_si(self, si: f64) -> f64 {
-        si / self.si_factor()
+        if self.milli() {
+            si * 1000.0
+        } else {
+            si / self.si_factor()
+        }
     }
 
     /// `value` in `self` converted to `to` (`None` if they measure different things).
@@ -214,6 +248,16 @@ mod tests {
             .expect("as set up");
         assert!((w - std::f64::consts::TAU).abs() < 1e-15);
         assert_eq!(Unit::Degree.convert(1.0, Unit::Millimetre), None);
+        // As typed: 119 mm/s is the 0.119 m/s a student would type, to the last bit
+        // (119 × 1e-3 is 0.11900000000000001).
+        assert_eq!(
+            Unit::MillimetrePerSecond.convert(119.0, Unit::MetrePerSecond),
+            Some(0.119)
+        );
+        assert_eq!(
+            Unit::MetrePerSecond.convert(0.119, Unit::MillimetrePerSecond),
+            Some(119.0)
+        );
         // As typed: 105 mm/s is the 0.105 m/s a student would type, to the last bit.
         assert_eq!(
             Unit::MillimetrePerSecond.convert(105.0, Unit::MetrePerSecond),

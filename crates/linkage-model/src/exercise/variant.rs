@@ -69,13 +69,16 @@ pub struct Variant {
     pub subject: SubjectData,
 }
 
-/// FNV-1a, 64 bits: the student's seed from the exercise's fingerprint and the
-/// number (written out: a hash whose value no release of a crate may change).
-fn seed(fingerprint: u32, student: &StudentId) -> u64 {
+/// FNV-1a, 64 bits: the student's seed from the exercise's id and the number
+/// (written out: a hash whose value no release of a crate may change). Not from the
+/// whole file: a title mended after the variants went out changes none of them;
+/// changed ranges give each student other values from the same draws.
+fn seed(id: &str, student: &StudentId) -> u64 {
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for b in fingerprint
-        .to_le_bytes()
+    for b in id
+        .as_bytes()
         .iter()
+        .chain(b":")
         .chain(student.as_str().as_bytes())
     {
         h ^= u64::from(*b);
@@ -91,7 +94,7 @@ impl Exercise {
     /// No variant meets the requirements and answers every question within
     /// [`MOST_DRAWS`] draws (one draw where nothing varies): the failure seen most.
     pub fn variant(&self, student: &StudentId) -> Result<Variant, ExerciseError> {
-        let mut rng = SplitMix::new(seed(self.fingerprint, student));
+        let mut rng = SplitMix::new(seed(&self.file.id, student));
         let most = if self.file.vary.is_empty() {
             1
         } else {
@@ -147,6 +150,9 @@ impl Exercise {
         for r in &self.file.require {
             check(*r, &mut built)?;
         }
+        if passes_a_change_point(&mut built)? {
+            return Err(DrawFailure::ChangePoint);
+        }
         let truths = self.file.questions.iter().enumerate().map(|(i, q)| {
             truth_si(&q.ask, &mut built)
                 .map(|si| q.unit.from_si(si))
@@ -169,9 +175,24 @@ fn same_cause(a: &DrawFailure, b: &DrawFailure) -> bool {
         (DrawFailure::Question { question: x, .. }, DrawFailure::Question { question: y, .. }) => {
             x == y
         }
-        (DrawFailure::Subject(_), DrawFailure::Subject(_)) => true,
+        (DrawFailure::Subject(_), DrawFailure::Subject(_))
+        | (DrawFailure::ChangePoint, DrawFailure::ChangePoint) => true,
         _ => false,
     }
+}
+
+/// Whether a mechanism whose crank turns fully folds flat somewhere in the turn (a
+/// branch point: a change-point four-bar, a slider-crank with its rod as long as its
+/// crank), where its assembly can switch and strokes and speeds are not what a
+/// student works out. A cam never does.
+fn passes_a_change_point(built: &mut Built) -> Result<bool, DrawFailure> {
+    if matches!(built, Built::Cam(_)) {
+        return Ok(false);
+    }
+    let report = built
+        .report()
+        .map_err(|why| DrawFailure::Subject(why.to_string()))?;
+    Ok(report.full_rotation && !report.branch_points.is_empty())
 }
 
 /// Whether `built` meets `r`.

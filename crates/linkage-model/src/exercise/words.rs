@@ -41,7 +41,7 @@ pub fn question(q: &Quantity, lang: Lang) -> String {
             mw!(
                 lang,
                 "exercise.q_angular_velocity",
-                link = link,
+                link = link_words(link, lang),
                 deg = deg(crank_deg)
             )
         }
@@ -49,7 +49,7 @@ pub fn question(q: &Quantity, lang: Lang) -> String {
             mw!(
                 lang,
                 "exercise.q_angular_acceleration",
-                link = link,
+                link = link_words(link, lang),
                 deg = deg(crank_deg)
             )
         }
@@ -66,14 +66,18 @@ pub fn question(q: &Quantity, lang: Lang) -> String {
                 lang,
                 "exercise.q_instant_centre",
                 axis = axis,
-                a = a,
-                b = b,
+                a = link_words(a, lang),
+                b = link_words(b, lang),
                 deg = deg(crank_deg)
             )
         }
         Quantity::TimeRatio => mw!(lang, "exercise.q_time_ratio"),
-        Quantity::Stroke { output } => mw!(lang, "exercise.q_stroke", output = output),
-        Quantity::Swing { output } => mw!(lang, "exercise.q_swing", output = output),
+        Quantity::Stroke { output } => {
+            mw!(lang, "exercise.q_stroke", output = link_words(output, lang))
+        }
+        Quantity::Swing { output } => {
+            mw!(lang, "exercise.q_swing", output = link_words(output, lang))
+        }
         Quantity::LeastTransmissionAngle => mw!(lang, "exercise.q_least_transmission"),
         Quantity::BalancingTorque { crank_deg } => {
             mw!(lang, "exercise.q_balancing_torque", deg = deg(crank_deg))
@@ -148,11 +152,34 @@ pub fn mechanism_data(scene: &SceneFile, lang: Lang) -> Vec<(String, String)> {
         Speed::Rpm(n) => n,
         Speed::RadPerSecond(w) => w * 60.0 / std::f64::consts::TAU,
     };
-    rows.push((
-        mw!(lang, "exercise.crank_speed"),
-        format!("{} r/min", significant(rpm, 6)),
-    ));
+    rows.push((mw!(lang, "exercise.crank_speed"), turning(rpm, lang)));
+    rows.push((mw!(lang, "exercise.phi"), mw!(lang, "exercise.phi_from")));
     rows
+}
+
+/// A speed and its sense: `40 r/min, counter-clockwise`.
+fn turning(rpm: f64, lang: Lang) -> String {
+    let n = significant(rpm.abs(), 6);
+    if rpm < 0.0 {
+        mw!(lang, "exercise.turning_cw", n = n)
+    } else {
+        mw!(lang, "exercise.turning_ccw", n = n)
+    }
+}
+
+/// A link's name as the student reads it: the textbooks' word for a link named by
+/// its role (ground, crank, coupler, rocker, slider), else its name as written
+/// ("构件 link_ce" in Chinese).
+pub fn link_words(name: &str, lang: Lang) -> String {
+    match name.to_ascii_lowercase().as_str() {
+        "ground" | "frame" => mw!(lang, "exercise.ground"),
+        "crank" => mw!(lang, "exercise.crank"),
+        "coupler" => mw!(lang, "exercise.coupler"),
+        "rocker" => mw!(lang, "exercise.rocker"),
+        "slider" => mw!(lang, "exercise.slider"),
+        "die" => mw!(lang, "exercise.die"),
+        _ => mw!(lang, "exercise.link_named", name = name),
+    }
 }
 
 /// Points a moving link carries that no other link shares (a coupler's tracer
@@ -174,7 +201,12 @@ fn carried_points(scene: &SceneFile, unit: &str, lang: Lang) -> Vec<(String, Str
                 .collect();
             if !distances.is_empty() {
                 rows.push((
-                    mw!(lang, "exercise.carried", point = name, link = &link.name),
+                    mw!(
+                        lang,
+                        "exercise.carried",
+                        point = name,
+                        link = link_words(&link.name, lang)
+                    ),
                     distances.join(", "),
                 ));
             }
@@ -200,16 +232,23 @@ pub fn cam_data(cam: &CamSpec, lang: Lang) -> Vec<(String, String)> {
     if let Some(h) = cam.segments.iter().find_map(SegmentSpec::lift) {
         rows.push((mw!(lang, "exercise.cam_stroke"), mm(h)));
     }
+    rows.push((mw!(lang, "exercise.cam_speed"), turning(cam.rpm, lang)));
+    let program: Vec<String> = cam
+        .segments
+        .iter()
+        .enumerate()
+        .map(|(i, s)| segment(s, i.checked_sub(1).map(|p| &cam.segments[p]), lang))
+        .collect();
     rows.push((
-        mw!(lang, "exercise.cam_speed"),
-        format!("{} r/min", significant(cam.rpm, 6)),
+        mw!(lang, "exercise.program"),
+        program.join(&mw!(lang, "exercise.joiner")),
     ));
-    let program: Vec<String> = cam.segments.iter().map(|s| segment(s, lang)).collect();
-    rows.push((mw!(lang, "exercise.program"), program.join(", ")));
     rows
 }
 
-fn segment(s: &SegmentSpec, lang: Lang) -> String {
+/// A segment of a cam's program; a dwell after a rise is the outer (远休止), any
+/// other the inner (近休止).
+fn segment(s: &SegmentSpec, before: Option<&SegmentSpec>, lang: Lang) -> String {
     let deg = significant(s.angle_deg(), 6);
     match *s {
         SegmentSpec::Rise { law, .. } => {
@@ -228,7 +267,10 @@ fn segment(s: &SegmentSpec, lang: Lang) -> String {
                 law = law_name(law, lang)
             )
         }
-        SegmentSpec::Dwell { .. } => mw!(lang, "exercise.seg_dwell", deg = deg),
+        SegmentSpec::Dwell { .. } if matches!(before, Some(SegmentSpec::Rise { .. })) => {
+            mw!(lang, "exercise.seg_dwell_far", deg = deg)
+        }
+        SegmentSpec::Dwell { .. } => mw!(lang, "exercise.seg_dwell_near", deg = deg),
     }
 }
 
@@ -254,4 +296,21 @@ pub fn data_heading(lang: Lang) -> String {
 /// The heading of the questions.
 pub fn questions_heading(lang: Lang) -> String {
     mw!(lang, "exercise.questions")
+}
+
+/// `text` with its subscripts marked `_{...}` written plainly (`v_{E}` as `v_E`),
+/// for a terminal.
+pub fn plain(text: &str) -> String {
+    let mut out = String::new();
+    let mut rest = text;
+    while let Some(at) = rest.find("_{") {
+        let Some(len) = rest[at..].find('}') else {
+            break;
+        };
+        out.push_str(&rest[..at + 1]);
+        out.push_str(&rest[at + 2..at + len]);
+        rest = &rest[at + len + 1..];
+    }
+    out.push_str(rest);
+    out
 }
