@@ -257,3 +257,13 @@ fn a_cam_exercise_in_chinese() {
         "cam_pressure_angle",
     );
 }
+
+#[test]
+fn the_desk_on_a_phone_in_english() {
+    snapshot(
+        "exercise_die_cutter_phone",
+        [390.0, 844.0],
+        Language::English,
+        "die_cutter_slider",
+    );
+}

@@ -72,6 +72,30 @@ pub fn cam_sheet(c: &CamSheet<'_>, lang: Lang) -> Sheet {
     pages.finish()
 }
 
+/// A cam drawn in `pane` (of a task sheet): the profile, the pitch curve dashed,
+/// the base circle and the centre, scaled to fit, with no mark of where the
+/// pressure angle passes a limit (that is what the student works out).
+pub(crate) fn cam_in_pane(out: &mut String, points: &[CamPoint], base_radius_m: f64, pane: &Rect) {
+    let reach = points
+        .iter()
+        .flat_map(|p| [p.profile_m, p.pitch_m])
+        .map(|[x, y]| x.hypot(y))
+        .fold(base_radius_m, f64::max);
+    let scale = 0.45 * pane.width().min(pane.height()) / reach.max(1e-12);
+    let centre: Pt = [
+        0.5 * (pane.min[0] + pane.max[0]),
+        0.5 * (pane.min[1] + pane.max[1]),
+    ];
+    let px = |[x, y]: [f64; 2]| -> Pt { [centre[0] + x * scale, centre[1] - y * scale] };
+    let cam = CamSheet {
+        title: "",
+        points,
+        base_radius_m,
+        pressure_limit_rad: f64::INFINITY,
+    };
+    draw_cam(out, &cam, &px, scale, centre);
+}
+
 /// The pitch curve dashed, the profile, the base circle, the centre, the marks.
 fn draw_cam(out: &mut String, c: &CamSheet<'_>, px: &dyn Fn([f64; 2]) -> Pt, scale: f64, at: Pt) {
     let n = 180;

@@ -214,6 +214,7 @@ fn every_task_sheet_is_a4_with_no_text_over_text() {
                         .collect(),
                 ),
                 pose: Some((k.mechanism(), &s)),
+                cam: None,
             };
             let what = format!("{file}: task sheet ({})", lang.code());
             check(&task_sheet(&task, lang), &what, &mut found, &mut lines);

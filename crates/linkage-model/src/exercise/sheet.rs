@@ -3,6 +3,7 @@
 //! [`linkage_diagram::svg_task`]. One sheet for the app's desk and, a student
 //! after another, the teacher's `linkage exercise sheets`.
 
+use linkage::cam::CamPoint;
 use linkage::{Kinematics, Mechanism};
 use linkage_diagram::pages::Sheet;
 use linkage_diagram::svg_task::{TaskSheet, task_sheet};
@@ -34,6 +35,14 @@ impl Exercise {
                 .ok(),
             SubjectData::Cam(_) => None,
         };
+        // A cam over its turn, as the desk draws it.
+        let cam: Option<(Vec<CamPoint>, f64)> = match &variant.subject {
+            SubjectData::Cam(spec) => spec.design().ok().map(|d| {
+                let turn = (0..720).map(|i| d.cam.at(f64::from(i) * std::f64::consts::TAU / 720.0));
+                (turn.collect(), d.cam.base_radius_m)
+            }),
+            SubjectData::Scene(_) => None,
+        };
         let task = TaskSheet {
             title: mw!(
                 lang,
@@ -45,6 +54,7 @@ impl Exercise {
             data: (words::data_heading(lang), data),
             questions: (words::questions_heading(lang), questions),
             pose: posed.as_ref().map(|(k, s)| (k.mechanism(), s)),
+            cam: cam.as_ref().map(|(points, r)| (points.as_slice(), *r)),
         };
         task_sheet(&task, lang)
     }

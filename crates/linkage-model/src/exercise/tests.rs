@@ -446,8 +446,23 @@ fn a_task_sheet_holds_the_students_data_and_questions_in_their_language() {
         assert!(!text.contains(&shown), "the truth {shown} on the sheet");
     }
     let cam = Exercise::parse(CAM).expect("as set up");
-    let sheet = cam.task_sheet(&cam.variant(&student(1)).expect("as set up"), Lang::English);
-    assert!(sheet.pages.join("").contains("Largest pressure angle"));
+    let v = cam.variant(&student(1)).expect("as set up");
+    let text = cam.task_sheet(&v, Lang::English).pages.join("");
+    assert!(text.contains("Largest pressure angle"));
+    // The cam drawn (its profile a polygon), and neither its extremes nor the
+    // marks of where the pressure angle passes a limit: the answers.
+    assert!(text.contains("<polygon"), "the cam drawn");
+    for t in &v.truths {
+        let shown = linkage_diagram::numbers::significant(*t, 4);
+        assert!(
+            !text.contains(&shown),
+            "the truth {shown} on the cam's sheet"
+        );
+    }
+    assert!(
+        !text.contains("#c0392b"),
+        "a pressure-angle mark on the cam's sheet"
+    );
 }
 
 /// An in-line slider-crank whose crank and rod are drawn from overlapping ranges:
