@@ -5,6 +5,7 @@
 //! analyses that would show the answers stay closed.
 
 use linkage_model::exercise::code::{AnswerSheet, TypedAnswerError, typed_answer};
+use linkage_model::exercise::subject::CamTurn;
 use linkage_model::exercise::{Exercise, Mode, StudentId, SubjectData, Variant};
 
 use crate::session::{SceneSource, Session};
@@ -22,6 +23,9 @@ pub struct ExerciseDesk {
     pub answers: Vec<String>,
     /// Why the number typed gave no variant.
     pub refusal: Option<DeskRefusal>,
+    /// A cam variant sampled over its turn, made once when the variant is drawn
+    /// (the view draws it every frame).
+    pub cam: Option<CamTurn>,
 }
 
 /// Why a student's number gave no variant.
@@ -55,6 +59,7 @@ impl ExerciseDesk {
             variant: None,
             answers,
             refusal: None,
+            cam: None,
         }
     }
 
@@ -62,6 +67,7 @@ impl ExerciseDesk {
     /// mechanism's; a cam exercise opens none).
     pub fn start(&mut self) -> Option<Session> {
         self.variant = None;
+        self.cam = None;
         self.answers.iter_mut().for_each(String::clear);
         let Ok(student) = StudentId::parse(&self.student_text) else {
             self.refusal = Some(DeskRefusal::BadNumber);
@@ -88,6 +94,7 @@ impl ExerciseDesk {
             }
             SubjectData::Cam(_) => None,
         };
+        self.cam = variant.subject.cam_turn();
         self.variant = Some(variant);
         session
     }

@@ -8,29 +8,23 @@ use linkage_model::exercise::SubjectData;
 
 use crate::state::AppState;
 
-/// Samples of the curves over a turn.
-const SAMPLES: usize = 720;
-
 /// Draws the open exercise's cam; `false` where the exercise's subject is a
 /// mechanism (or no variant is drawn yet), which the mechanism view shows.
 pub fn show(ui: &mut egui::Ui, st: &AppState) -> bool {
-    let Some(variant) = st.exercise.as_ref().and_then(|d| d.variant.as_ref()) else {
+    let Some(desk) = st.exercise.as_ref().filter(|d| d.variant.is_some()) else {
         return false;
     };
-    let SubjectData::Cam(spec) = &variant.subject else {
-        return false;
+    let Some(cam) = &desk.cam else {
+        // A mechanism's variant (the view draws it), or a cam the solver refused.
+        return !matches!(
+            desk.variant.as_ref().map(|v| &v.subject),
+            Some(SubjectData::Scene(_))
+        );
     };
-    let Ok(design) = spec.design() else {
-        return true;
-    };
-    let (pitch, profile): (Vec<[f64; 2]>, Vec<[f64; 2]>) = (0..=SAMPLES)
-        .map(|i| {
-            design
-                .cam
-                .at(i as f64 * std::f64::consts::TAU / SAMPLES as f64)
-        })
-        .map(|p| (p.pitch_m, p.profile_m))
-        .unzip();
+    // The curves closed: the turn's last point joins the first.
+    let closed = cam.points.iter().chain(cam.points.first());
+    let (pitch, profile): (Vec<[f64; 2]>, Vec<[f64; 2]>) =
+        closed.map(|p| (p.pitch_m, p.profile_m)).unzip();
     let reach = pitch
         .iter()
         .map(|p| p[0].hypot(p[1]))
@@ -43,7 +37,7 @@ pub fn show(ui: &mut egui::Ui, st: &AppState) -> bool {
         |p: &[f64; 2]| centre + egui::vec2((p[0] * scale) as f32, (-p[1] * scale) as f32);
     let painter = ui.painter_at(rect);
     let ink = ui.visuals().text_color();
-    let base = design.cam.base_radius_m * scale;
+    let base = cam.base_radius_m * scale;
     painter.circle_stroke(
         centre,
         base as f32,

@@ -81,8 +81,10 @@ impl Exercise {
             .enumerate()
             .map(|(i, v)| subject::grid(v.values(), subject.value(v, i + 1)?, i + 1))
             .collect::<Result<Vec<_>, _>>()?;
-        check_questions(&file, &subject)?;
-        check_requirements(&file, &subject)?;
+        // Built once for both checks (a mechanism's report is made once, if asked).
+        let mut built = subject.build().map_err(ExerciseError::Subject)?;
+        check_questions(&file, &mut built)?;
+        check_requirements(&file, &built)?;
         Ok(Self {
             grids,
             fingerprint: fingerprint(&file),
@@ -136,10 +138,9 @@ impl Exercise {
 
 /// Each requirement applies to the subject: Grashof's classes to a mechanism with
 /// a four-bar loop on its crank, a mechanism's to a mechanism, a cam's to a cam.
-fn check_requirements(file: &ExerciseFile, subject: &SubjectData) -> Result<(), ExerciseError> {
-    let built = subject.build().map_err(ExerciseError::Subject)?;
+fn check_requirements(file: &ExerciseFile, built: &quantity::Built) -> Result<(), ExerciseError> {
     for (i, r) in file.require.iter().enumerate() {
-        let why = match (r, &built) {
+        let why = match (r, built) {
             (Requirement::PressureAngleAtMostDeg(_), quantity::Built::Cam(_)) => None,
             (Requirement::PressureAngleAtMostDeg(_), _) => {
                 Some("a cam's requirement: the subject is a mechanism")
@@ -164,8 +165,7 @@ fn check_requirements(file: &ExerciseFile, subject: &SubjectData) -> Result<(), 
 /// Each question's unit measures its quantity, its tolerance and points are
 /// positive, and it names only what the subject has (asked of the subject as
 /// written: a pose where it does not assemble is left to the variants).
-fn check_questions(file: &ExerciseFile, subject: &SubjectData) -> Result<(), ExerciseError> {
-    let mut built = subject.build().map_err(ExerciseError::Subject)?;
+fn check_questions(file: &ExerciseFile, built: &mut quantity::Built) -> Result<(), ExerciseError> {
     for (i, q) in file.questions.iter().enumerate() {
         let question = i + 1;
         if q.unit.kind() != q.ask.kind() {
@@ -195,7 +195,7 @@ fn check_questions(file: &ExerciseFile, subject: &SubjectData) -> Result<(), Exe
             | Unanswerable::Frame(_)
             | Unanswerable::NoOutput { .. }
             | Unanswerable::WrongSubject(_)),
-        ) = truth_si(&q.ask, &mut built)
+        ) = truth_si(&q.ask, built)
         {
             return Err(ExerciseError::Question { question, why });
         }

@@ -3,7 +3,6 @@
 //! [`linkage_diagram::svg_task`]. One sheet for the app's desk and, a student
 //! after another, the teacher's `linkage exercise sheets`.
 
-use linkage::cam::CamPoint;
 use linkage::{Kinematics, Mechanism};
 use linkage_diagram::pages::Sheet;
 use linkage_diagram::svg_task::{TaskSheet, task_sheet};
@@ -36,13 +35,7 @@ impl Exercise {
             SubjectData::Cam(_) => None,
         };
         // A cam over its turn, as the desk draws it.
-        let cam: Option<(Vec<CamPoint>, f64)> = match &variant.subject {
-            SubjectData::Cam(spec) => spec.design().ok().map(|d| {
-                let turn = (0..720).map(|i| d.cam.at(f64::from(i) * std::f64::consts::TAU / 720.0));
-                (turn.collect(), d.cam.base_radius_m)
-            }),
-            SubjectData::Scene(_) => None,
-        };
+        let cam = variant.subject.cam_turn();
         let task = TaskSheet {
             title: mw!(
                 lang,
@@ -54,7 +47,7 @@ impl Exercise {
             data: (words::data_heading(lang), data),
             questions: (words::questions_heading(lang), questions),
             pose: posed.as_ref().map(|(k, s)| (k.mechanism(), s)),
-            cam: cam.as_ref().map(|(points, r)| (points.as_slice(), *r)),
+            cam: cam.as_ref().map(|c| (c.points.as_slice(), c.base_radius_m)),
         };
         task_sheet(&task, lang)
     }

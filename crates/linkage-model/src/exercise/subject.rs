@@ -11,6 +11,18 @@ use super::quantity::Built;
 use crate::catalog::{BUILTIN_SCENES, BuiltinScene, TEMPLATES};
 use crate::session::params::{LengthParam, length_params};
 
+/// Points over a cam's turn, where a drawing samples it.
+const CAM_SAMPLES: u32 = 720;
+
+/// A cam sampled over its turn, to draw.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CamTurn {
+    /// Its points in order over the turn (the last joins the first).
+    pub points: Vec<linkage::cam::CamPoint>,
+    /// Its base circle's radius, m.
+    pub base_radius_m: f64,
+}
+
 /// A subject as the solver reads it.
 #[derive(Clone, Debug, PartialEq)]
 pub enum SubjectData {
@@ -44,6 +56,25 @@ impl SubjectData {
             Subject::SceneFile(scene) => Ok(SubjectData::Scene(scene.clone())),
             Subject::Cam(cam) => Ok(SubjectData::Cam(cam.clone())),
         }
+    }
+
+    /// A cam's points over its turn (720, evenly spaced) and its base radius, m, as
+    /// the desk and the task sheet draw it (`None` for a mechanism, or a cam the
+    /// solver refuses).
+    pub fn cam_turn(&self) -> Option<CamTurn> {
+        let SubjectData::Cam(spec) = self else {
+            return None;
+        };
+        let design = spec.design().ok()?;
+        let at = |i: u32| {
+            design
+                .cam
+                .at(f64::from(i) * std::f64::consts::TAU / f64::from(CAM_SAMPLES))
+        };
+        Some(CamTurn {
+            points: (0..CAM_SAMPLES).map(at).collect(),
+            base_radius_m: design.cam.base_radius_m,
+        })
     }
 
     /// Built for the analyses.
