@@ -69,6 +69,8 @@ pub fn start_web() {
             log::error!("the page has no <canvas id=\"linkage_canvas\">");
             return;
         };
+        #[cfg(feature = "webgl")]
+        single_sampled_webgl2(&canvas);
         let result = eframe::WebRunner::new()
             .start(
                 canvas,
@@ -80,6 +82,24 @@ pub fn start_web() {
             log::error!("failed to start Linkage Lab: {err:?}");
         }
     });
+}
+
+/// Creates the canvas's WebGL2 context without multisampling or a depth buffer, before
+/// eframe asks for it (a canvas hands every later `getContext("webgl2")` the context it
+/// already has). eframe asks with WebGL's defaults, which multisample: egui feathers its
+/// own edges and the mechanism's shader computes its coverage, so the four samples a
+/// pixel bought nothing but raster work. Measured in headless Chromium on SwiftShader,
+/// `tests/browser/laptop.mjs` took 33 s instead of 53 s (docs/architecture.md, "CI time").
+#[cfg(all(target_arch = "wasm32", feature = "webgl"))]
+fn single_sampled_webgl2(canvas: &web_sys::HtmlCanvasElement) {
+    let options = js_sys::Object::new();
+    for key in ["antialias", "depth"] {
+        let _ = js_sys::Reflect::set(&options, &key.into(), &false.into());
+    }
+    if let Err(err) = canvas.get_context_with_context_options("webgl2", &options) {
+        // eframe then makes its own, multisampled: slower, not wrong.
+        log::warn!("no single-sampled WebGL2 context: {err:?}");
+    }
 }
 
 /// The web demo's start: the language a share link asks for, else the one chosen on
