@@ -51,6 +51,7 @@ pub mod svg;
 pub mod svg_cam;
 pub mod svg_course;
 mod svg_draw;
+mod svg_follower;
 mod svg_forces;
 mod svg_plan;
 pub mod svg_report;

@@ -7,7 +7,7 @@
 use std::f64::consts::TAU;
 use std::fmt::Write as _;
 
-use linkage::cam::CamPoint;
+use linkage::cam::{CamPoint, FollowerOutline};
 
 use crate::geometry::{Pt, Rect};
 use crate::layout::ScaleBar;
@@ -16,6 +16,7 @@ use crate::pages::{Pages, Sheet};
 use crate::svg_draw::{
     MARGIN, PAGE_W, circle, fit_text, line, polygon_shape, scale_bar, text_at, titled_pane,
 };
+use crate::svg_follower::{follower, reach_points};
 use crate::words::{Lang, sw};
 
 const PROFILE: &str = "#222222";
@@ -33,6 +34,17 @@ pub struct CamSheet<'a> {
     pub base_radius_m: f64,
     /// The largest pressure angle allowed, rad.
     pub pressure_limit_rad: f64,
+}
+
+/// A cam as a task sheet draws it: at the start of its turn, with its follower.
+#[derive(Clone, Copy)]
+pub struct CamFigure<'a> {
+    /// Its points over the turn.
+    pub points: &'a [CamPoint],
+    /// Its base circle's radius, m.
+    pub base_radius_m: f64,
+    /// Its follower at the start.
+    pub follower: &'a FollowerOutline,
 }
 
 /// The sheet in `lang`: one A4 page.
@@ -72,28 +84,32 @@ pub fn cam_sheet(c: &CamSheet<'_>, lang: Lang) -> Sheet {
     pages.finish()
 }
 
-/// A cam drawn in `pane` (of a task sheet): the profile, the pitch curve dashed,
-/// the base circle and the centre, scaled to fit, with no mark of where the
-/// pressure angle passes a limit (that is what the student works out).
-pub(crate) fn cam_in_pane(out: &mut String, points: &[CamPoint], base_radius_m: f64, pane: &Rect) {
-    let reach = points
+/// A cam drawn in `pane` (of a task sheet) with its follower at the start: the
+/// profile, the pitch curve dashed, the base circle and the centre, scaled to fit,
+/// with no mark of where the pressure angle passes a limit (that is what the student
+/// works out).
+pub(crate) fn cam_in_pane(out: &mut String, cam: &CamFigure<'_>, pane: &Rect) {
+    let reach = cam
+        .points
         .iter()
         .flat_map(|p| [p.profile_m, p.pitch_m])
+        .chain(reach_points(cam.follower))
         .map(|[x, y]| x.hypot(y))
-        .fold(base_radius_m, f64::max);
+        .fold(cam.base_radius_m, f64::max);
     let scale = 0.45 * pane.width().min(pane.height()) / reach.max(1e-12);
     let centre: Pt = [
         0.5 * (pane.min[0] + pane.max[0]),
         0.5 * (pane.min[1] + pane.max[1]),
     ];
     let px = |[x, y]: [f64; 2]| -> Pt { [centre[0] + x * scale, centre[1] - y * scale] };
-    let cam = CamSheet {
+    let sheet = CamSheet {
         title: "",
-        points,
-        base_radius_m,
+        points: cam.points,
+        base_radius_m: cam.base_radius_m,
         pressure_limit_rad: f64::INFINITY,
     };
-    draw_cam(out, &cam, &px, scale, centre);
+    draw_cam(out, &sheet, &px, scale, centre);
+    follower(out, cam.follower, &px, scale);
 }
 
 /// The pitch curve dashed, the profile, the base circle, the centre, the marks.

@@ -3,7 +3,7 @@
 //! student's data, and the questions, each with a line for the answer and its unit.
 //! Every word comes worded (by the model's exercise words): the sheet lays out.
 
-use linkage::cam::CamPoint;
+pub use crate::svg_cam::CamFigure;
 use linkage::{Mechanism, Solution};
 
 use crate::geometry::Rect;
@@ -26,9 +26,8 @@ pub struct TaskSheet<'a> {
     pub questions: (String, Vec<(String, String)>),
     /// The mechanism and its pose to draw (none for a cam).
     pub pose: Option<(&'a Mechanism, &'a Solution)>,
-    /// A cam to draw: its points over the turn and its base radius, m (none for a
-    /// mechanism).
-    pub cam: Option<(&'a [CamPoint], f64)>,
+    /// A cam to draw with its follower (none for a mechanism).
+    pub cam: Option<CamFigure<'a>>,
 }
 
 /// The pose pane's height, px.
@@ -60,11 +59,11 @@ pub fn task_sheet(task: &TaskSheet<'_>, lang: Lang) -> Sheet {
         };
         crate::svg::pose(&mut pages, &layout_pose(&fig, pane, sizes, &measure), lang);
     }
-    if let Some((points, base_radius_m)) = task.cam {
+    if let Some(cam) = &task.cam {
         let top = pages.place(POSE_H + 10.0);
         let pane = Rect::from_min_size([MARGIN, top], WIDTH, POSE_H);
         crate::svg_draw::frame(pages.out(), &pane);
-        crate::svg_cam::cam_in_pane(pages.out(), points, base_radius_m, &pane);
+        crate::svg_cam::cam_in_pane(pages.out(), cam, &pane);
     }
     data(&mut pages, &task.data);
     questions(&mut pages, &task.questions);

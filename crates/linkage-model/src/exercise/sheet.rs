@@ -5,7 +5,7 @@
 
 use linkage::{Kinematics, Mechanism};
 use linkage_diagram::pages::Sheet;
-use linkage_diagram::svg_task::{TaskSheet, task_sheet};
+use linkage_diagram::svg_task::{CamFigure, TaskSheet, task_sheet};
 use linkage_diagram::words::Lang;
 
 use super::words::{self, unit_words};
@@ -47,7 +47,11 @@ impl Exercise {
             data: (words::data_heading(lang), data),
             questions: (words::questions_heading(lang), questions),
             pose: posed.as_ref().map(|(k, s)| (k.mechanism(), s)),
-            cam: cam.as_ref().map(|c| (c.points.as_slice(), c.base_radius_m)),
+            cam: cam.as_ref().map(|c| CamFigure {
+                points: &c.points,
+                base_radius_m: c.base_radius_m,
+                follower: &c.follower,
+            }),
         };
         task_sheet(&task, lang)
     }

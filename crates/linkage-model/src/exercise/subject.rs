@@ -21,6 +21,8 @@ pub struct CamTurn {
     pub points: Vec<linkage::cam::CamPoint>,
     /// Its base circle's radius, m.
     pub base_radius_m: f64,
+    /// The follower where it stands at the start of the turn.
+    pub follower: linkage::cam::FollowerOutline,
 }
 
 /// A subject as the solver reads it.
@@ -74,6 +76,7 @@ impl SubjectData {
         Some(CamTurn {
             points: (0..CAM_SAMPLES).map(at).collect(),
             base_radius_m: design.cam.base_radius_m,
+            follower: design.cam.follower_outline(0.0),
         })
     }
 

@@ -270,7 +270,7 @@ impl DiscCam {
         }
     }
 
-    fn face(&self) -> Face {
+    pub(super) fn face(&self) -> Face {
         match self.follower {
             Follower::Translating { face, .. } | Follower::Oscillating { face, .. } => face,
         }

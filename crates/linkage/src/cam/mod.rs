@@ -5,7 +5,8 @@
 //!   at any cam angle, the continuity at every join, the laws' peak coefficients.
 //! - [`DiscCam`]: a disc cam with a translating or oscillating follower: pitch curve,
 //!   profile, pressure angle and radii of curvature at any cam angle; the smallest
-//!   base circle for a pressure-angle limit, the contact force and the least preload.
+//!   base circle for a pressure-angle limit, the contact force and the least preload;
+//!   the follower's outline at a cam angle, as figures draw it ([`FollowerOutline`]).
 //! - [`Geneva`]: the external Geneva wheel, an intermittent indexer.
 //! - [`CamSpec`]: a cam file (RON, millimetres and degrees) and its [`CamDesign`].
 
@@ -13,6 +14,7 @@ mod disc;
 mod extremes;
 mod geneva;
 mod laws;
+mod outline;
 mod program;
 mod sizing;
 mod spec;
@@ -23,6 +25,7 @@ pub(crate) use disc::{pitch_on_turning_cam, turn};
 pub use extremes::{CamExtremes, Extreme};
 pub use geneva::{Geneva, GenevaMotion};
 pub use laws::{Law, Motion};
+pub use outline::FollowerOutline;
 pub use program::{
     Continuity, FollowerMotion, Join, PeakCoefficients, Program, Segment, SegmentKind,
     peak_coefficients,

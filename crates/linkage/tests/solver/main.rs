@@ -6,6 +6,7 @@ mod balance;
 mod cam_disc;
 mod cam_joint;
 mod cam_laws;
+mod cam_outline;
 mod cam_random;
 mod cam_sizing;
 mod common;
