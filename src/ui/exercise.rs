@@ -132,7 +132,11 @@ fn questions(
         let (unit, tolerance) = (q.unit, q.tolerance);
         let label = ui.label(marked(
             ui,
-            &format!("{}. {}", i + 1, words::question(&q.ask)),
+            &format!(
+                "{}. {}",
+                i + 1,
+                words::question(&q.ask, &desk.exercise.subject)
+            ),
         ));
         ui.horizontal_wrapped(|ui| {
             let field = ui

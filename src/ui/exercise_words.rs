@@ -2,6 +2,7 @@
 //! ([`linkage_model::exercise::words`], which the task sheets use too), in the
 //! language of the frame.
 
+use linkage_model::exercise::SubjectData;
 use linkage_model::exercise::code::TypedAnswerError;
 use linkage_model::exercise::quantity::Quantity;
 use linkage_model::exercise::words;
@@ -11,9 +12,9 @@ use crate::ui::words::lang;
 
 pub use words::{tolerance, unit_words};
 
-/// A question as the student reads it.
-pub fn question(q: &Quantity) -> String {
-    words::question(q, lang())
+/// A question about `subject` as the student reads it.
+pub fn question(q: &Quantity, subject: &SubjectData) -> String {
+    words::question(q, subject, lang())
 }
 
 /// Why a typed answer was refused.

@@ -173,7 +173,8 @@ fn a_student_gets_the_variant_of_the_number_typed_and_answers_it() {
 /// Question `i` as its label reads (its subscripts set apart, so no marks).
 fn question_words(h: &Harness<'static, LinkageApp>, i: usize) -> String {
     let desk = h.state().state.exercise.as_ref().expect("open");
-    let words = linkage_lab::ui::exercise_words::question(&desk.exercise.file.questions[i].ask);
+    let ask = &desk.exercise.file.questions[i].ask;
+    let words = linkage_lab::ui::exercise_words::question(ask, &desk.exercise.subject);
     linkage_diagram::label::Label::marked(&words).text()
 }
 

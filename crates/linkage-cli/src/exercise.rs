@@ -144,7 +144,7 @@ fn check(ex: &Exercise) -> Result<String> {
         } else {
             format!("{} points", significant(q.points, 6))
         };
-        let asked = plain(&words::question(&q.ask, Lang::English));
+        let asked = plain(&words::question(&q.ask, &ex.subject, Lang::English));
         let _ = writeln!(
             t,
             "question {}: {asked}, {unit}, right within {tolerance}, {points}",

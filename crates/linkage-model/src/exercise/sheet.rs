@@ -24,7 +24,10 @@ impl Exercise {
             .file
             .questions
             .iter()
-            .map(|q| (words::question(&q.ask, lang), unit_words(q.unit)))
+            .map(|q| {
+                let asked = words::question(&q.ask, &self.subject, lang);
+                (asked, unit_words(q.unit))
+            })
             .collect();
         // The mechanism at its start, as the desk opens it.
         let posed = match &variant.subject {

@@ -559,3 +559,32 @@ fn what_a_teacher_gets_wrong_is_refused_with_its_cause() {
     let e = err(FOUR_BAR.replace("min: 80.0, max: 120.0", "min: 80.0, max: 84.0"));
     assert!(e.to_string().contains("would not vary"), "{e}");
 }
+
+/// A link with no role of its own is named by the joints it carries, as the textbooks
+/// name it ("link CE", "构件 CE"), on the sheet and in the app alike: never by the
+/// scene's inner name (`link_ce`, which the questions' words showed before).
+#[test]
+fn a_link_without_a_role_is_named_by_its_joints() {
+    use linkage_diagram::words::Lang;
+    let rocker = r#"AngularVelocity(link: "rocker", crank_deg: 30.0)"#;
+    assert!(DIE.contains(rocker), "as set up");
+    let text = DIE.replace(
+        rocker,
+        r#"AngularVelocity(link: "link_ce", crank_deg: 30.0)"#,
+    );
+    let ex = Exercise::parse(&text).expect("link_ce is the die cutter's link CE");
+    let asked = |lang| {
+        let q = ex.file.questions.iter().find(
+            |q| matches!(&q.ask, Quantity::AngularVelocity { link, .. } if link == "link_ce"),
+        );
+        words::question(&q.expect("asked").ask, &ex.subject, lang)
+    };
+    let (en, zh) = (asked(Lang::English), asked(Lang::Chinese));
+    assert!(en.contains("link CE") && !en.contains("link_ce"), "{en}");
+    assert!(zh.contains("构件 CE") && !zh.contains("link_ce"), "{zh}");
+    let sheet = ex.task_sheet(&ex.variant(&student(1)).expect("as set up"), Lang::Chinese);
+    assert!(
+        sheet_words(&sheet.pages).contains("构件 CE"),
+        "on the sheet"
+    );
+}

@@ -13,12 +13,17 @@ use linkage_diagram::words::Lang;
 
 use super::code::TypedAnswerError;
 use super::quantity::{Axis, Quantity};
-use super::{Tolerance, Unit};
+use super::{SubjectData, Tolerance, Unit};
 use crate::session::params::{is_joint_point, length_params};
 use crate::session::words::mw;
 
-/// A question as the student reads it.
-pub fn question(q: &Quantity, lang: Lang) -> String {
+/// A question about `subject` as the student reads it.
+pub fn question(q: &Quantity, subject: &SubjectData, lang: Lang) -> String {
+    let scene = match subject {
+        SubjectData::Scene(scene) => Some(scene.as_ref()),
+        SubjectData::Cam(_) => None,
+    };
+    let link_words = |name: &str, lang| link_words(name, scene, lang);
     let deg = |d: &f64| significant(*d, 6);
     match q {
         Quantity::PointSpeed { point, crank_deg } => {
@@ -167,10 +172,11 @@ fn turning(rpm: f64, lang: Lang) -> String {
     }
 }
 
-/// A link's name as the student reads it: the textbooks' word for a link named by
-/// its role (ground, crank, coupler, rocker, slider), else its name as written
-/// ("构件 link_ce" in Chinese).
-pub fn link_words(name: &str, lang: Lang) -> String {
+/// A link of `scene` as the student reads it: the textbooks' word for a link named
+/// by its role (ground, crank, coupler, rocker, slider), else by the joints it
+/// carries as the textbooks name a link ("link CE", "构件 CE"), else its name as
+/// written. Never the scene's inner name (`link_ce`) where the joints name it.
+pub fn link_words(name: &str, scene: Option<&SceneFile>, lang: Lang) -> String {
     match name.to_ascii_lowercase().as_str() {
         "ground" | "frame" => mw!(lang, "exercise.ground"),
         "crank" => mw!(lang, "exercise.crank"),
@@ -178,8 +184,29 @@ pub fn link_words(name: &str, lang: Lang) -> String {
         "rocker" => mw!(lang, "exercise.rocker"),
         "slider" => mw!(lang, "exercise.slider"),
         "die" => mw!(lang, "exercise.die"),
-        _ => mw!(lang, "exercise.link_named", name = name),
+        _ => match scene.and_then(|scene| joints_of(scene, name)) {
+            Some(joints) => mw!(lang, "exercise.link_by_joints", joints = joints),
+            None => mw!(lang, "exercise.link_named", name = name),
+        },
     }
+}
+
+/// The joints the link `name` carries (its points other links or a guide share),
+/// in order: `CE` for one-letter names, `O2-B` otherwise; none for fewer than two.
+fn joints_of(scene: &SceneFile, name: &str) -> Option<String> {
+    let (index, link) = scene
+        .links
+        .iter()
+        .enumerate()
+        .find(|(_, l)| l.name == name)?;
+    let joints: Vec<&str> = link
+        .points
+        .keys()
+        .filter(|p| is_joint_point(scene, p, index))
+        .map(String::as_str)
+        .collect();
+    let single = joints.iter().all(|j| j.chars().count() == 1);
+    (joints.len() >= 2).then(|| joints.join(if single { "" } else { "-" }))
 }
 
 /// Points a moving link carries that no other link shares (a coupler's tracer
@@ -205,7 +232,7 @@ fn carried_points(scene: &SceneFile, unit: &str, lang: Lang) -> Vec<(String, Str
                         lang,
                         "exercise.carried",
                         point = name,
-                        link = link_words(&link.name, lang)
+                        link = link_words(&link.name, Some(scene), lang)
                     ),
                     distances.join(", "),
                 ));
