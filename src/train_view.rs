@@ -18,12 +18,16 @@ pub const SHOWN_FASTEST_RPM: f64 = 20.0;
 pub struct TrainView {
     /// Which shipped train (index in `TRAINS`).
     pub choice: usize,
-    /// Its file, with the inputs' speeds as set.
+    /// Its file, with the inputs' speeds as set: set them with
+    /// [`Self::set_input_rpm`], which solves the train again.
     pub file: TrainFile,
     /// Every member's turn so far, rad (counter-clockwise seen from the front).
     pub angles: Vec<f64>,
     /// The view's own camera.
     pub camera: Camera,
+    /// Every member's speed from the inputs as set: solved when they change, not in
+    /// every frame's panel, drawing and play (three solves a frame before).
+    solution: Result<TrainSolution, TrainError>,
 }
 
 impl Default for TrainView {
@@ -47,8 +51,20 @@ impl TrainView {
         Self {
             choice,
             angles: vec![0.0; file.members.len()],
+            solution: solve(&file),
             file,
             camera: Camera::default(),
+        }
+    }
+
+    /// Sets input `index`'s speed, rpm, and solves the train again.
+    pub fn set_input_rpm(&mut self, index: usize, rpm: f64) {
+        let Some(input) = self.file.inputs.get_mut(index) else {
+            return;
+        };
+        if input.rpm != rpm {
+            input.rpm = rpm;
+            self.solution = solve(&self.file);
         }
     }
 
@@ -57,10 +73,17 @@ impl TrainView {
     /// # Errors
     /// The train's refusal (a shipped file solves; inputs set to tie it up cannot
     /// be, since the view only changes their speeds).
-    pub fn solve(&self) -> Result<TrainSolution, TrainError> {
-        Train::new(self.file.clone())?.solve()
+    pub fn solve(&self) -> Result<&TrainSolution, &TrainError> {
+        self.solution.as_ref()
     }
+}
 
+/// Every member's speed from `file`'s inputs.
+fn solve(file: &TrainFile) -> Result<TrainSolution, TrainError> {
+    Train::new(file.clone())?.solve()
+}
+
+impl TrainView {
     /// How many times slower than life the train is shown: the fastest member at
     /// [`SHOWN_FASTEST_RPM`], never faster than life.
     pub fn slowed(solution: &TrainSolution) -> f64 {
@@ -74,10 +97,10 @@ impl TrainView {
 
     /// Turns every member on by `dt` seconds of play, slowed as [`Self::slowed`] says.
     pub fn advance(&mut self, dt: f64) {
-        let Ok(solution) = self.solve() else {
+        let Ok(solution) = &self.solution else {
             return;
         };
-        let slowed = Self::slowed(&solution);
+        let slowed = Self::slowed(solution);
         for (angle, speed) in self.angles.iter_mut().zip(&solution.speeds_rpm) {
             let omega = speed.rpm * std::f64::consts::TAU / 60.0;
             *angle = (*angle + omega * dt / slowed) % std::f64::consts::TAU;
@@ -95,7 +118,7 @@ mod tests {
     fn members_turn_at_their_speeds_slowed_alike() {
         let mut view = TrainView::default();
         let solution = view.solve().expect("solves");
-        let slowed = TrainView::slowed(&solution);
+        let slowed = TrainView::slowed(solution);
         assert!((slowed - 1450.0 / SHOWN_FASTEST_RPM).abs() < 1e-9 * slowed);
         view.advance(0.1);
         let index = |name: &str| {
@@ -108,6 +131,23 @@ mod tests {
         let (sun, carrier) = (view.angles[index("sun")], view.angles[index("carrier")]);
         assert!((carrier / sun - 0.2).abs() < 1e-12, "{carrier} {sun}");
         assert_eq!(view.angles[index("ring")], 0.0);
+    }
+
+    /// The speeds follow an input set: solved again when it changes (the view keeps
+    /// its solution between frames).
+    #[test]
+    fn an_input_set_solves_the_train_again() {
+        let mut view = TrainView::default();
+        let carrier = |view: &TrainView| view.solve().ok().and_then(|s| s.speed_rpm("carrier"));
+        let before = carrier(&view).expect("the carrier turns");
+        let rpm = view.file.inputs[0].rpm;
+        view.set_input_rpm(0, 2.0 * rpm);
+        let after = carrier(&view).expect("the carrier turns");
+        assert!(
+            (after - 2.0 * before).abs() < 1e-9 * before.abs(),
+            "{before} -> {after}"
+        );
+        assert_eq!(view.file.inputs[0].rpm, 2.0 * rpm);
     }
 
     #[test]

@@ -29,28 +29,28 @@ pub fn panel(ui: &mut egui::Ui, lab: &mut GearLab) {
     if !view.file.notes.is_empty() {
         ui.small(view.file.notes.clone());
     }
-    for input in &mut view.file.inputs {
+    for index in 0..view.file.inputs.len() {
+        let input = &view.file.inputs[index];
         let text = tr!("gear.train_input", member = input.member.clone());
+        let mut rpm = input.rpm;
         ui.add(
-            egui::Slider::new(&mut input.rpm, -INPUT_RPM..=INPUT_RPM)
+            egui::Slider::new(&mut rpm, -INPUT_RPM..=INPUT_RPM)
                 .step_by(1.0)
                 .text(text),
         );
+        view.set_input_rpm(index, rpm);
     }
-    let solved = view.solve();
+    let slowed = view.solve().ok().map(TrainView::slowed);
     ui.horizontal(|ui| {
         crate::ui::gear_canvas::play_button(ui, lab);
-        if let Ok(s) = &solved {
-            let slowed = TrainView::slowed(s);
-            if slowed > 1.0 {
-                ui.label(tr!("gear.train_slowed", times = significant(slowed, 3)));
-            }
+        if let Some(slowed) = slowed.filter(|&times| times > 1.0) {
+            ui.label(tr!("gear.train_slowed", times = significant(slowed, 3)));
         }
     });
-    match solved {
-        Ok(s) => numbers(ui, &lab.train, &s),
+    match lab.train.solve() {
+        Ok(s) => numbers(ui, &lab.train, s),
         Err(e) => {
-            let why = linkage_diagram::refusal::train(crate::ui::words::lang(), &e);
+            let why = linkage_diagram::refusal::train(crate::ui::words::lang(), e);
             ui.colored_label(ui.visuals().error_fg_color, why);
         }
     }
@@ -215,12 +215,13 @@ pub fn draw(canvas: &Canvas<'_>, lab: &mut GearLab) {
     let view = &mut lab.train;
     let (painter, rect) = (canvas.painter, canvas.rect);
     let s = schematic(&view.file);
-    let solved = view.solve().ok();
     // The names stand outside the shafts' ends: room for them either side.
     if rect.width() > 1.0 && rect.height() > 1.0 {
         let room = egui::vec2((0.2 * rect.width()).min(130.0), 16.0);
         view.camera.fit_within(s.bounds, rect, rect.shrink2(room));
     }
+    let view = &*view;
+    let solved = view.solve().ok();
     let held: Vec<bool> = view
         .file
         .members
@@ -236,7 +237,7 @@ pub fn draw(canvas: &Canvas<'_>, lab: &mut GearLab) {
         build_train(&mut list, &s, &view.angles, &held, &view.camera);
     }
     canvas.paint(&view.camera);
-    names(painter, rect, view, &s, solved.as_ref());
+    names(painter, rect, view, &s, solved);
 }
 
 /// Each member's name and speed at its shaft's free end (above a hollow shaft's

@@ -115,7 +115,7 @@ fn every_shipped_train_shows_at_every_size() {
             for (choice, train) in TRAINS.iter().enumerate() {
                 *view(&mut h) = TrainView::of(choice);
                 common::settle(&mut h);
-                let solution = view(&mut h).solve().expect("solves");
+                let solution = view(&mut h).solve().expect("solves").clone();
                 for m in &solution.speeds_rpm {
                     assert!(
                         h.query_all_by_label_contains(&m.member).next().is_some(),
