@@ -89,7 +89,7 @@ pub fn start_web() {
 /// already has). eframe asks with WebGL's defaults, which multisample: egui feathers its
 /// own edges and the mechanism's shader computes its coverage, so the four samples a
 /// pixel bought nothing but raster work. Measured in headless Chromium on SwiftShader,
-/// `tests/browser/laptop.mjs` took 33 s instead of 53 s (docs/architecture.md, "CI time").
+/// `tests/browser/laptop.mjs` took 30 s instead of 53 s (docs/architecture.md, "CI time").
 #[cfg(all(target_arch = "wasm32", feature = "webgl"))]
 fn single_sampled_webgl2(canvas: &web_sys::HtmlCanvasElement) {
     let options = js_sys::Object::new();
