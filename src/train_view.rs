@@ -78,6 +78,19 @@ impl TrainView {
     }
 }
 
+impl TrainView {
+    /// The members held still: inputs set to 0 rpm (a brake). The textbooks count
+    /// such a member as fixed: a planetary train of F = 1 rather than a differential
+    /// of F = 2. The panel's count and the drawing's hatching both ask this.
+    pub fn held(&self) -> impl Iterator<Item = &str> {
+        self.file
+            .inputs
+            .iter()
+            .filter(|i| i.rpm == 0.0)
+            .map(|i| i.member.as_str())
+    }
+}
+
 /// Every member's speed from `file`'s inputs.
 fn solve(file: &TrainFile) -> Result<TrainSolution, TrainError> {
     Train::new(file.clone())?.solve()

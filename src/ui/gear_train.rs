@@ -91,15 +91,7 @@ fn rgb(c: [f32; 4]) -> Color32 {
 /// Every member's speed and ratio, the Willis ratios, the assembly checks.
 fn numbers(ui: &mut egui::Ui, view: &TrainView, s: &TrainSolution) {
     ui.separator();
-    // A member held still (a brake) is an input of 0 rpm: the textbooks count it as
-    // fixed, a planetary train of F = 1 rather than a differential of F = 2.
-    let held: Vec<String> = view
-        .file
-        .inputs
-        .iter()
-        .filter(|i| i.rpm == 0.0)
-        .map(|i| i.member.clone())
-        .collect();
+    let held: Vec<&str> = view.held().collect();
     if held.is_empty() {
         ui.label(tr!("gear.train_dof", dof = s.dof));
     } else {
@@ -226,12 +218,7 @@ pub fn draw(canvas: &Canvas<'_>, lab: &mut GearLab) {
         .file
         .members
         .iter()
-        .map(|m| {
-            solved
-                .as_ref()
-                .and_then(|sol| sol.speed_rpm(&m.name))
-                .is_some_and(|rpm| rpm == 0.0)
-        })
+        .map(|m| view.held().any(|h| h == m.name))
         .collect();
     if let Ok(mut list) = canvas.shapes.lock() {
         build_train(&mut list, &s, &view.angles, &held, &view.camera);

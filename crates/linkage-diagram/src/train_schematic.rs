@@ -191,21 +191,15 @@ fn gear_index(file: &TrainFile, name: &str) -> Option<usize> {
 fn heights(file: &TrainFile, radii: &Radii, unit: f64) -> Vec<Option<f64>> {
     let n = file.members.len();
     let mut y: Vec<Option<f64>> = vec![None; n];
-    let start = file
-        .inputs
-        .first()
-        .and_then(|i| member_index(file, &i.member))
-        .unwrap_or(0);
     if n > 0 {
-        y[start] = Some(0.0);
+        y[first_input(file)] = Some(0.0);
     }
     let links = links(file, radii, unit);
-    // Each pass places every member next to one placed; n passes reach them all.
-    for _ in 0..n {
+    relax(n, || {
         for link in &links {
             place(link, &links, &mut y);
         }
-    }
+    });
     for (c, m) in file.members.iter().enumerate() {
         if y[c].is_none() && file.members.iter().any(|p| p.axis_on == m.name) {
             y[c] = carrier_height(file, c, &y);
@@ -442,15 +436,10 @@ fn mesh_set(file: &TrainFile, start: usize) -> Vec<usize> {
 fn depths(file: &TrainFile) -> Vec<usize> {
     let n = file.members.len();
     let mut depth = vec![usize::MAX; n];
-    let start = file
-        .inputs
-        .first()
-        .and_then(|i| member_index(file, &i.member))
-        .unwrap_or(0);
     if n == 0 {
         return depth;
     }
-    depth[start] = 0;
+    depth[first_input(file)] = 0;
     let member_of = |gear: &str| {
         let g = file.gears.iter().find(|g| g.name == gear)?;
         member_index(file, &g.member)
@@ -461,7 +450,7 @@ fn depths(file: &TrainFile) -> Vec<usize> {
         .filter_map(|(a, b)| Some((member_of(a)?, member_of(b)?)))
         .collect();
     links.extend(file.stages.iter().filter_map(|s| stage_members(file, s)));
-    for _ in 0..n {
+    relax(n, || {
         for &(a, b) in &links {
             let d = depth[a].min(depth[b]).saturating_add(1);
             for m in [a, b] {
@@ -470,8 +459,26 @@ fn depths(file: &TrainFile) -> Vec<usize> {
                 }
             }
         }
-    }
+    });
     depth
+}
+
+/// The member the drawing starts from: the first input's (the first member where
+/// the inputs name none).
+fn first_input(file: &TrainFile) -> usize {
+    file.inputs
+        .first()
+        .and_then(|i| member_index(file, &i.member))
+        .unwrap_or(0)
+}
+
+/// Runs `pass` once per member: a pass carries what is known (a height, a depth)
+/// one link further from the first input, so `members` passes reach every member
+/// the meshes and stages join to it, however the file orders them.
+fn relax(members: usize, mut pass: impl FnMut()) {
+    for _ in 0..members {
+        pass();
+    }
 }
 
 /// The gears' blocks: a planet's twice (mirrored about its carrier's axis when it

@@ -3,7 +3,7 @@
 //! number with its range. The file's own keys (`motor_member`, `gear_ratio`) stay as
 //! written there, so that the reader finds them.
 
-use linkage::error::{DriveEnd, DriveTrainProblem, NameKind, TrainError, TrainField};
+use linkage::error::{DriveEnd, DriveTrainProblem, FieldOwner, NameKind, TrainError, TrainField};
 
 use super::list;
 use crate::numbers::significant;
@@ -110,69 +110,29 @@ pub fn drive_train(lang: Lang, p: &DriveTrainProblem) -> String {
 /// Where in the train file: the member, gear or stage by its name, the file's key as
 /// written there.
 fn field(lang: Lang, f: &TrainField) -> String {
-    match f {
-        TrainField::AxisOn { member } => {
-            sw!(
-                lang,
-                "train.field_member_key",
-                member = member,
-                key = "axis_on"
-            )
+    let key = f.key().unwrap_or_default();
+    match f.owner() {
+        FieldOwner::Member(member) => {
+            sw!(lang, "train.field_member_key", member = member, key = key)
         }
-        TrainField::Inertia { member } => sw!(
-            lang,
-            "train.field_member_key",
-            member = member,
-            key = "inertia_kg_m2"
-        ),
-        TrainField::GearMember { gear } => {
-            sw!(lang, "train.field_gear_key", gear = gear, key = "member")
-        }
-        TrainField::Teeth { gear } => sw!(lang, "train.field_gear_key", gear = gear, key = "teeth"),
-        TrainField::Mesh { a, b } => sw!(lang, "train.field_mesh", a = a, b = b),
-        TrainField::StageFrom { from, to } => {
+        FieldOwner::Gear(gear) => sw!(lang, "train.field_gear_key", gear = gear, key = key),
+        FieldOwner::Mesh(a, b) => sw!(lang, "train.field_mesh", a = a, b = b),
+        FieldOwner::Stage(from, to) => {
             sw!(
                 lang,
                 "train.field_stage_key",
                 from = from,
                 to = to,
-                key = "from"
+                key = key
             )
         }
-        TrainField::StageTo { from, to } => {
-            sw!(
-                lang,
-                "train.field_stage_key",
-                from = from,
-                to = to,
-                key = "to"
-            )
+        FieldOwner::Input(member) if f.key().is_some() => {
+            sw!(lang, "train.field_input_key", member = member, key = key)
         }
-        TrainField::StageRatio { from, to } => {
-            sw!(
-                lang,
-                "train.field_stage_key",
-                from = from,
-                to = to,
-                key = "ratio"
-            )
-        }
-        TrainField::MeshEfficiency => sw!(lang, "train.field_key", key = "mesh_efficiency"),
-        TrainField::StageEfficiency { from, to } => {
-            sw!(
-                lang,
-                "train.field_stage_key",
-                from = from,
-                to = to,
-                key = "efficiency"
-            )
-        }
-        TrainField::Input { member } => sw!(lang, "train.field_input", member = member),
-        TrainField::InputOnFrame => sw!(lang, "train.field_an_input"),
-        TrainField::InputRpm { member } => {
-            sw!(lang, "train.field_input_key", member = member, key = "rpm")
-        }
-        TrainField::Load => sw!(lang, "train.field_load"),
+        FieldOwner::Input(member) => sw!(lang, "train.field_input", member = member),
+        FieldOwner::InputOnFrame => sw!(lang, "train.field_an_input"),
+        FieldOwner::File => sw!(lang, "train.field_key", key = key),
+        FieldOwner::Load => sw!(lang, "train.field_load"),
     }
 }
 

@@ -21,7 +21,9 @@ pub use param::Param;
 pub use run_refusal::{ImplicitFailure, RunRefusal, RunWarning, StabilityLimit};
 pub use scene_problem::{LonePoint, MadeJoint, SceneProblem};
 pub use singularity::{Singularity, Undecomposable};
-pub use train_problem::{DriveEnd, DriveTrainProblem, NameKind, TrainError, TrainField};
+pub use train_problem::{
+    DriveEnd, DriveTrainProblem, FieldOwner, NameKind, TrainError, TrainField,
+};
 pub use valid::Valid;
 
 /// Why a chain does not close at an input, as data ([`LinkageError::CannotAssemble`]).

@@ -80,23 +80,82 @@ pub enum TrainField {
     Load,
 }
 
+/// Whose field a [`TrainField`] is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FieldOwner<'a> {
+    /// A member, by name.
+    Member(&'a str),
+    /// A gear, by name.
+    Gear(&'a str),
+    /// A mesh of two gears, by their names as written.
+    Mesh(&'a str, &'a str),
+    /// A belt or chain stage, by its driving and driven members.
+    Stage(&'a str, &'a str),
+    /// The input on a member.
+    Input(&'a str),
+    /// An input given on the frame.
+    InputOnFrame,
+    /// The file itself: a key at its top level.
+    File,
+    /// The load put on a member (`linkage train --load`).
+    Load,
+}
+
+impl TrainField {
+    /// Whose field this is.
+    pub fn owner(&self) -> FieldOwner<'_> {
+        match self {
+            Self::AxisOn { member } | Self::Inertia { member } => FieldOwner::Member(member),
+            Self::GearMember { gear } | Self::Teeth { gear } => FieldOwner::Gear(gear),
+            Self::Mesh { a, b } => FieldOwner::Mesh(a, b),
+            Self::StageFrom { from, to }
+            | Self::StageTo { from, to }
+            | Self::StageRatio { from, to }
+            | Self::StageEfficiency { from, to } => FieldOwner::Stage(from, to),
+            Self::Input { member } | Self::InputRpm { member } => FieldOwner::Input(member),
+            Self::InputOnFrame => FieldOwner::InputOnFrame,
+            Self::MeshEfficiency => FieldOwner::File,
+            Self::Load => FieldOwner::Load,
+        }
+    }
+
+    /// The field's key as written in the train file, so that the reader finds it;
+    /// none where the field is its owner itself (a mesh, an input's member, the load).
+    pub fn key(&self) -> Option<&'static str> {
+        Some(match self {
+            Self::AxisOn { .. } => "axis_on",
+            Self::Inertia { .. } => "inertia_kg_m2",
+            Self::GearMember { .. } => "member",
+            Self::Teeth { .. } => "teeth",
+            Self::StageFrom { .. } => "from",
+            Self::StageTo { .. } => "to",
+            Self::StageRatio { .. } => "ratio",
+            Self::StageEfficiency { .. } => "efficiency",
+            Self::MeshEfficiency => "mesh_efficiency",
+            Self::InputRpm { .. } => "rpm",
+            Self::Mesh { .. } | Self::Input { .. } | Self::InputOnFrame | Self::Load => {
+                return None;
+            }
+        })
+    }
+}
+
 impl std::fmt::Display for TrainField {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
-            Self::AxisOn { member } => write!(f, "member {member}'s axis_on"),
-            Self::Inertia { member } => write!(f, "member {member}'s inertia_kg_m2"),
-            Self::GearMember { gear } => write!(f, "gear {gear}'s member"),
-            Self::Teeth { gear } => write!(f, "gear {gear}'s teeth"),
-            Self::Mesh { a, b } => write!(f, "mesh ({a}, {b})"),
-            Self::StageFrom { from, to } => write!(f, "stage {from} → {to}'s from"),
-            Self::StageTo { from, to } => write!(f, "stage {from} → {to}'s to"),
-            Self::StageRatio { from, to } => write!(f, "stage {from} → {to}'s ratio"),
-            Self::MeshEfficiency => write!(f, "mesh_efficiency"),
-            Self::StageEfficiency { from, to } => write!(f, "stage {from} → {to}'s efficiency"),
-            Self::Input { member } => write!(f, "input on {member}"),
-            Self::InputOnFrame => write!(f, "an input"),
-            Self::InputRpm { member } => write!(f, "input on {member}'s rpm"),
-            Self::Load => write!(f, "the load"),
+        match self.owner() {
+            FieldOwner::Member(member) => write!(f, "member {member}")?,
+            FieldOwner::Gear(gear) => write!(f, "gear {gear}")?,
+            FieldOwner::Mesh(a, b) => write!(f, "mesh ({a}, {b})")?,
+            FieldOwner::Stage(from, to) => write!(f, "stage {from} → {to}")?,
+            FieldOwner::Input(member) => write!(f, "input on {member}")?,
+            FieldOwner::InputOnFrame => f.write_str("an input")?,
+            FieldOwner::Load => f.write_str("the load")?,
+            FieldOwner::File => {}
+        }
+        match (self.owner(), self.key()) {
+            (FieldOwner::File, Some(key)) => f.write_str(key),
+            (_, Some(key)) => write!(f, "'s {key}"),
+            (_, None) => Ok(()),
         }
     }
 }

@@ -4,7 +4,7 @@
 
 use serde::Serialize;
 
-pub use super::train_field::{NameKind, TrainField};
+pub use super::train_field::{FieldOwner, NameKind, TrainField};
 use thiserror::Error;
 
 /// Why a train is refused.

@@ -197,21 +197,29 @@ fn wrap(a: f64) -> f64 {
 /// cutter's middle tooth cuts is centred at 90°; `None` outside the ring's tip and
 /// cut root circles or where [`ShaperCut::new`] is.
 pub fn shaper_cut_edge_angle(ring: &Gear, cutter_teeth: u32, radius_m: f64) -> Option<f64> {
-    let cut = ShaperCut::new(ring, cutter_teeth)?;
-    if radius_m < ring.tip_radius_m || radius_m >= cut.cut_root_radius_m {
-        return None;
+    ShaperCut::new(ring, cutter_teeth)?.edge_angle(ring.tip_radius_m, radius_m)
+}
+
+impl ShaperCut {
+    /// [`shaper_cut_edge_angle`] of this cut, on a ring whose tip circle is
+    /// `tip_radius_m`: the least exit angle over the cutter's turn, found on a grid
+    /// and refined by golden section.
+    fn edge_angle(&self, tip_radius_m: f64, radius_m: f64) -> Option<f64> {
+        if radius_m < tip_radius_m || radius_m >= self.cut_root_radius_m {
+            return None;
+        }
+        let reach = self.reach(tip_radius_m);
+        let f = |phi: f64| self.right_exit(radius_m, phi);
+        let step = 2.0 * reach / GRID as f64;
+        let best = (0..=GRID)
+            .map(|k| -reach + step * k as f64)
+            .min_by(|a, b| f(*a).total_cmp(&f(*b)))?;
+        if !f(best).is_finite() {
+            return None;
+        }
+        let least = crate::extremum::golden_max(|phi| Some(-f(phi)), best - step, best + step)?;
+        Some(-least.value).filter(|a| a.is_finite())
     }
-    let reach = cut.reach(ring.tip_radius_m);
-    let f = |phi: f64| cut.right_exit(radius_m, phi);
-    let step = 2.0 * reach / GRID as f64;
-    let best = (0..=GRID)
-        .map(|k| -reach + step * k as f64)
-        .min_by(|a, b| f(*a).total_cmp(&f(*b)))?;
-    if !f(best).is_finite() {
-        return None;
-    }
-    let least = crate::extremum::golden_max(|phi| Some(-f(phi)), best - step, best + step)?;
-    Some(-least.value).filter(|a| a.is_finite())
 }
 
 /// The ring's cut tooth thickness (arc) at `radius_m`: the pitch's share less the
@@ -236,7 +244,8 @@ pub fn shaper_cut_flank(ring: &Gear, cutter_teeth: u32, samples: usize) -> Vec<[
         .filter_map(|k| {
             // Short of the cut root, where the edge meets the root arc.
             let rho = lo + (hi - lo) * k as f64 / n as f64;
-            let angle = shaper_cut_edge_angle(ring, cutter_teeth, rho)?;
+            // The cut built once for every sample (it was built again for each).
+            let angle = cut.edge_angle(ring.tip_radius_m, rho)?;
             Some([rho * angle.cos(), rho * angle.sin()])
         })
         .collect()

@@ -117,6 +117,48 @@ fn the_flywheel_sizing_counts_the_drives_inertia() {
     assert_eq!(bare.flywheel_to_add_on_motor_kg_m2, None);
 }
 
+/// The paper-cup feed ships with its drive as the die cutter does: the example
+/// carries assets/trains/paper_cup_feed_drive.ron as shipped, its ratio is the
+/// stages' product written out (a belt of 3.2, the external pair 18/72 reversing, a
+/// chain of 2.5: −32, the motor turning against the crank), its members reduced to
+/// the crank join the flywheel sizing, and they cover what the energy method asks for
+/// at δ = 0.05 (no flywheel to add).
+#[test]
+fn the_paper_cup_feed_ships_with_its_drive() {
+    let shipped =
+        TrainFile::from_ron(&repo("assets/trains/paper_cup_feed_drive.ron")).expect("train file");
+    let scene =
+        SceneFile::parse(&repo("docs/examples/paper_cup_cam_feed_with_drive.ron")).expect("scene");
+    assert_eq!(
+        drive(&scene).train.as_ref().expect("a train").train,
+        shipped
+    );
+    let m = Mechanism::from_scene(&scene).expect("valid");
+    let train = m
+        .drive
+        .as_ref()
+        .and_then(|d| d.train.as_ref())
+        .expect("a train");
+    let ratio = -(3.2 * (72.0 / 18.0) * 2.5);
+    assert!(
+        (train.ratio - ratio).abs() <= 1e-12 * 32.0,
+        "{}",
+        train.ratio
+    );
+    // Σ J (ω/ω_crank)²: the rotor at −32, the input shaft at −10, the output shaft
+    // at 2.5, the crank's sprocket.
+    let want = 0.02 * 32.0 * 32.0 + 0.05 * 10.0 * 10.0 + 0.3 * 2.5 * 2.5 + 0.8;
+    assert!((train.inertia_at_crank_kg_m2 - want).abs() <= 1e-12 * want);
+    let s = size_flywheel(&mut kinematics(&scene), 0.05).expect("sized");
+    assert!((s.drive_inertia_kg_m2 - want).abs() <= 1e-12 * want);
+    assert!(
+        s.flywheel_kg_m2 > 0.0 && s.flywheel_kg_m2 < want,
+        "{}",
+        s.flywheel_kg_m2
+    );
+    assert_eq!(s.flywheel_to_add_kg_m2, 0.0);
+}
+
 fn drive_mut(scene: &mut SceneFile) -> &mut DriveSpec {
     scene.drive.as_mut().expect("a drive")
 }
