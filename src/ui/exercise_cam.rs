@@ -32,8 +32,8 @@ pub fn show(ui: &mut egui::Ui, st: &AppState) -> bool {
     let follower = &cam.follower;
     let reach = pitch
         .iter()
-        .chain(&[follower.stem_m[0], follower.stem_m[1]])
-        .chain(&follower.pivot_m)
+        .copied()
+        .chain(follower.extent_m())
         .map(|p| p[0].hypot(p[1]))
         .fold(0.0, f64::max)
         .max(1e-9);

@@ -16,7 +16,7 @@ use crate::pages::{Pages, Sheet};
 use crate::svg_draw::{
     MARGIN, PAGE_W, circle, fit_text, line, polygon_shape, scale_bar, text_at, titled_pane,
 };
-use crate::svg_follower::{follower, reach_points};
+use crate::svg_follower::follower;
 use crate::words::{Lang, sw};
 
 const PROFILE: &str = "#222222";
@@ -93,7 +93,7 @@ pub(crate) fn cam_in_pane(out: &mut String, cam: &CamFigure<'_>, pane: &Rect) {
         .points
         .iter()
         .flat_map(|p| [p.profile_m, p.pitch_m])
-        .chain(reach_points(cam.follower))
+        .chain(cam.follower.extent_m())
         .map(|[x, y]| x.hypot(y))
         .fold(cam.base_radius_m, f64::max);
     let scale = 0.45 * pane.width().min(pane.height()) / reach.max(1e-12);

@@ -11,14 +11,6 @@ use crate::svg_draw::{circle, line};
 const FOLLOWER: &str = "#2f5f9e";
 const FRAME: &str = "#444444";
 
-/// The points a figure must hold to show the follower whole, m.
-pub(crate) fn reach_points(o: &FollowerOutline) -> Vec<[f64; 2]> {
-    let mut points = vec![o.tip_m, o.stem_m[0], o.stem_m[1]];
-    points.extend(o.flat_face_m.iter().flatten());
-    points.extend(o.pivot_m);
-    points
-}
-
 /// Draws `o` through `px` (metres to the page) at `scale` px per metre.
 pub(crate) fn follower(
     out: &mut String,

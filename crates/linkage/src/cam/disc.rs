@@ -205,7 +205,7 @@ impl DiscCam {
 
     /// The pitch point C in the frame and its first two derivatives by θ, with the
     /// follower's direction of travel there.
-    fn pitch_point(&self, m: &FollowerMotion) -> ([Vec2; 3], Vec2) {
+    pub(super) fn pitch_point(&self, m: &FollowerMotion) -> ([Vec2; 3], Vec2) {
         let rp = self.prime_radius_m();
         match self.follower {
             Follower::Translating {

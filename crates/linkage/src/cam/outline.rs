@@ -6,8 +6,7 @@
 
 use std::f64::consts::TAU;
 
-use super::disc::{DiscCam, Face, Follower, turn};
-use crate::motion::Vec2;
+use super::disc::{DiscCam, Face, Follower};
 
 /// Samples of the turn over which a flat face's width is found.
 const FACE_SAMPLES: u32 = 180;
@@ -30,6 +29,17 @@ pub struct FollowerOutline {
     pub pivot_m: Option<[f64; 2]>,
     /// A translating follower's guide: its line's two ends beside the stem.
     pub guide_m: Option<[[f64; 2]; 2]>,
+}
+
+impl FollowerOutline {
+    /// The points a figure must hold to show the follower whole: the tip, the stem's
+    /// or arm's ends, a flat face's ends, the pivot.
+    pub fn extent_m(&self) -> impl Iterator<Item = [f64; 2]> + '_ {
+        [self.tip_m, self.stem_m[0], self.stem_m[1]]
+            .into_iter()
+            .chain(self.flat_face_m.into_iter().flatten())
+            .chain(self.pivot_m)
+    }
 }
 
 impl DiscCam {
@@ -68,11 +78,11 @@ impl DiscCam {
         }
     }
 
-    /// The pitch point at `theta_rad` in the frame (the cam's points are in its own).
+    /// The pitch point at `theta_rad` in the frame, as the follower's motion puts it
+    /// (not the cam's own-frame point of [`DiscCam::at`] turned back).
     fn pitch_in_frame(&self, theta_rad: f64) -> [f64; 2] {
-        let [x, y] = self.at(theta_rad).pitch_m;
-        let v = turn(Vec2::new(x, y), theta_rad);
-        [v.x, v.y]
+        let ([c, ..], _) = self.pitch_point(&self.program.at(theta_rad));
+        [c.x, c.y]
     }
 
     /// Half a flat face's width: its farthest contact from the stem over the turn,
